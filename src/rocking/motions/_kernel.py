@@ -1,0 +1,124 @@
+"""Compiled evaluation of base motions, shared by every model kernel.
+
+A motion reaches compiled code as a *spec*: an integer ``kind``, a float parameter vector
+``prm`` (``prm[0]`` is always a load factor) and a sample array (empty except for
+records). ``ground_acc`` evaluates the acceleration at one time; ``next_breakpoint`` gives
+the next time at which the acceleration has a kink or a jump, so that integrators can step
+exactly onto it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+NONE = 0
+RECORD = 1  # prm: scale, dt, n
+SINE = 2  # prm: scale, freq, amplitude (displacement), duration, phase
+HANNING = 3  # prm: scale, freq, amplitude (displacement), duration
+ONE_SINE = 4  # prm: scale, amplitude (acc), period, t0
+ONE_COSINE = 5  # prm: scale, amplitude (acc), period, t0
+HALF_SINE = 6  # prm: scale, amplitude (acc), length, t0
+RECTANGULAR = 7  # prm: scale, amplitude (acc), length, t0
+RICKER = 8  # prm: scale, amplitude (acc), peak frequency, centre time
+
+NPRM = 6
+TWO_PI = 2.0 * math.pi
+
+
+@njit(cache=True)
+def ground_acc(kind, prm, samples, t):
+    """Ground acceleration (m/s^2) at time ``t`` of the motion ``(kind, prm, samples)``."""
+    s = prm[0]
+    if kind == NONE:
+        return 0.0
+    if kind == RECORD:
+        dt = prm[1]
+        n = samples.shape[0]
+        if t < 0.0 or n == 0:
+            return 0.0
+        x = t / dt
+        i = int(math.floor(x))
+        if i >= n - 1:
+            # the last sample holds at t = (n-1) dt exactly, zero after the end
+            if i == n - 1 and x - i < 1e-9:
+                return s * samples[n - 1]
+            return 0.0
+        f = x - i
+        return s * (samples[i] + f * (samples[i + 1] - samples[i]))
+    if kind == SINE:
+        f, X, dur, ph = prm[1], prm[2], prm[3], prm[4]
+        if t < 0.0 or t > dur:
+            return 0.0
+        w = TWO_PI * f
+        return -s * X * w * w * math.sin(w * t + ph)
+    if kind == HANNING:
+        f, X, dur = prm[1], prm[2], prm[3]
+        if t < 0.0 or t > dur:
+            return 0.0
+        w = TWO_PI * f
+        W = TWO_PI / dur
+        win = 0.5 * (1.0 - math.cos(W * t))
+        dwin = 0.5 * W * math.sin(W * t)
+        ddwin = 0.5 * W * W * math.cos(W * t)
+        # second derivative of the table displacement X * win(t) * sin(w t)
+        return s * X * (ddwin * math.sin(w * t) + 2.0 * dwin * w * math.cos(w * t)
+                        - win * w * w * math.sin(w * t))
+    A, T, t0 = prm[1], prm[2], prm[3]
+    if kind == RICKER:
+        x = math.pi * T * (t - t0)  # T holds the peak frequency here
+        return s * A * (1.0 - 2.0 * x * x) * math.exp(-x * x)
+    tau = t - t0
+    if tau < 0.0 or tau > T:
+        return 0.0
+    if kind == ONE_SINE:
+        return s * A * math.sin(TWO_PI * tau / T)
+    if kind == ONE_COSINE:
+        return s * A * math.cos(TWO_PI * tau / T)
+    if kind == HALF_SINE:
+        return s * A * math.sin(math.pi * tau / T)
+    if kind == RECTANGULAR:
+        return s * A
+    return 0.0
+
+
+@njit(cache=True)
+def next_breakpoint(kind, prm, samples, t):
+    """The first time > ``t`` (+1e-12) where the acceleration has a kink or jump (inf if none)."""
+    eps = 1e-12
+    if kind == RECORD:
+        dt = prm[1]
+        n = samples.shape[0]
+        end = (n - 1) * dt
+        if t < -eps:
+            return 0.0
+        if t >= end - eps:
+            return math.inf
+        k = math.floor(t / dt + 1e-9) + 1.0
+        return min(k * dt, end)
+    if kind == SINE or kind == HANNING:
+        dur = prm[3]
+        if t < -eps:
+            return 0.0
+        if t < dur - eps:
+            return dur
+        return math.inf
+    if kind >= ONE_SINE and kind <= RECTANGULAR:
+        t0, T = prm[3], prm[2]
+        if t < t0 - eps:
+            return t0
+        if t < t0 + T - eps:
+            return t0 + T
+        return math.inf
+    return math.inf
+
+
+@njit(cache=True)
+def acc_many(kind, prm, samples, t):
+    """Vectorised :func:`ground_acc` over an array of times."""
+    out = np.empty(t.shape[0])
+    for i in range(t.shape[0]):
+        out[i] = ground_acc(kind, prm, samples, t[i])
+    return out

@@ -1,0 +1,83 @@
+"""The base-motion interface.
+
+Every motion gives the horizontal ground acceleration ``a(t)`` in m/s^2 as a vectorised
+function of time (:meth:`Motion.acceleration`) and a ``duration`` (s), the default length
+of a simulation. Sign convention: ``a`` is the ground acceleration of the paper's Eq (1),
+so a positive ``a`` drives the rocking angle ``theta`` positive (see
+:mod:`rocking.models.housner`). ``-motion`` or ``motion.scaled(-1)`` flips the motion.
+
+Internally a motion is handed to compiled kernels as a *spec* ``(kind, prm, samples)``
+(see :mod:`rocking.motions._kernel`); the numpy evaluation uses the same compiled code,
+so the Python and the kernel views of a motion can never disagree.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import ClassVar
+
+import numpy as np
+
+from .._validate import as_float, positive
+from . import _kernel as K
+
+
+class Motion:
+    """Abstract base of all base motions (dataclasses with a ``scale`` load factor)."""
+
+    kind: ClassVar[int] = K.NONE
+    duration: float
+    scale: float
+
+    # ---- to be provided by subclasses
+    def _params(self) -> tuple:
+        """Kind-specific parameters after ``scale`` (see ``_kernel``)."""
+        raise NotImplementedError
+
+    def _samples(self) -> np.ndarray:
+        return np.empty(0)
+
+    @property
+    def scan_step(self) -> float:
+        """A time step that resolves the motion (s): used to scan for uplift from rest."""
+        raise NotImplementedError
+
+    # ---- shared behaviour
+    def spec(self) -> tuple[int, np.ndarray, np.ndarray]:
+        """``(kind, prm, samples)`` for the compiled kernels."""
+        prm = np.zeros(K.NPRM)
+        vals = (self.scale, *self._params())
+        prm[: len(vals)] = vals
+        return self.kind, prm, np.ascontiguousarray(self._samples(), dtype=np.float64)
+
+    def acceleration(self, t) -> np.ndarray:
+        """Ground acceleration (m/s^2) at times ``t`` (s); scalar in, scalar out."""
+        kind, prm, samples = self.spec()
+        arr = np.asarray(t, dtype=np.float64)
+        out = K.acc_many(kind, prm, samples, np.atleast_1d(arr).ravel())
+        return out.reshape(arr.shape) if arr.ndim else float(out[0])
+
+    __call__ = acceleration
+
+    def scaled(self, factor: float):
+        """A copy with the acceleration multiplied by ``factor`` (a load factor)."""
+        f = as_float("factor", factor)
+        return dataclasses.replace(self, scale=self.scale * f)
+
+    def __neg__(self):
+        return self.scaled(-1.0)
+
+    def time(self, dt: float) -> np.ndarray:
+        """A uniform time grid ``0, dt, ..., duration`` (s)."""
+        dt = positive("dt", dt, "s")
+        return np.arange(int(round(self.duration / dt)) + 1) * dt
+
+    @property
+    def pga(self) -> float:
+        """Peak absolute ground acceleration (m/s^2), sampled at ``scan_step / 4``."""
+        t = self.time(min(self.scan_step / 4.0, self.duration / 100.0))
+        return float(np.max(np.abs(self.acceleration(t))))
+
+
+def validate_scale(scale) -> float:
+    return as_float("scale", scale)

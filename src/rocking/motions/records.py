@@ -1,0 +1,111 @@
+"""Sampled accelerograms.
+
+A :class:`Record` holds a ground acceleration ``acc`` (m/s^2) sampled every ``dt`` seconds
+from ``t = 0``. Between samples the acceleration is linear; after the last sample it is
+zero. ``Record.from_file`` reads PEER NGA ``.AT2`` files and plain or CSV columns (see
+:mod:`rocking.motions.io`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .._validate import as_float, positive
+from ..errors import RecordError
+from . import _kernel as K
+from .base import Motion
+
+
+@dataclass(frozen=True, eq=False)
+class Record(Motion):
+    """A sampled accelerogram: ``acc`` in m/s^2, time step ``dt`` in s."""
+
+    acc: np.ndarray
+    dt: float
+    name: str = ""
+    number: int | None = None
+    scale: float = 1.0
+    meta: dict = field(default_factory=dict, repr=False)
+    kind = K.RECORD
+
+    def __post_init__(self):
+        try:
+            acc = np.array(self.acc, dtype=np.float64)
+        except (TypeError, ValueError):
+            raise RecordError("acc must be a 1-D array of numbers (m/s^2)") from None
+        if acc.ndim != 1:
+            raise RecordError(f"acc must be a 1-D array, got shape {acc.shape}")
+        if acc.size < 2:
+            raise RecordError(f"a record needs at least 2 samples, got {acc.size}")
+        bad = np.flatnonzero(~np.isfinite(acc))
+        if bad.size:
+            raise RecordError(f"acc has a non-finite value (NaN or inf) at sample {bad[0]}")
+        acc.setflags(write=False)
+        object.__setattr__(self, "acc", acc)
+        object.__setattr__(self, "dt", positive("dt", self.dt, "s"))
+        object.__setattr__(self, "scale", as_float("scale", self.scale))
+
+    @classmethod
+    def from_file(cls, path, units: str = "g", dt: float | None = None, **kw) -> Record:
+        """Read a record from ``path``.
+
+        Formats: PEER NGA ``.AT2``; CSV or whitespace columns with either time and
+        acceleration (uniform steps) or one acceleration column plus ``dt``. ``units`` is
+        one of ``g``, ``m/s^2``, ``cm/s^2`` (``gal``) and applies to the acceleration
+        column; the record is stored in m/s^2.
+        """
+        from .io import read_record
+
+        acc, step, meta = read_record(path, units=units, dt=dt)
+        kw.setdefault("name", meta.pop("name", ""))
+        return cls(acc, step, meta=meta, **kw)
+
+    # ---- Motion interface
+    @property
+    def duration(self) -> float:
+        """Time of the last sample (s)."""
+        return (self.acc.size - 1) * self.dt
+
+    def _params(self):
+        return (self.dt, float(self.acc.size))
+
+    def _samples(self):
+        return self.acc
+
+    @property
+    def scan_step(self) -> float:
+        return self.dt
+
+    # ---- conveniences
+    @property
+    def t(self) -> np.ndarray:
+        """Sample times (s)."""
+        return np.arange(self.acc.size) * self.dt
+
+    @property
+    def values(self) -> np.ndarray:
+        """Samples with the load factor applied (m/s^2)."""
+        return self.acc * self.scale
+
+    @property
+    def pga(self) -> float:
+        """Peak ground acceleration (m/s^2)."""
+        return float(np.max(np.abs(self.values)))
+
+    def __len__(self) -> int:
+        return self.acc.size
+
+    def __repr__(self) -> str:
+        nm = f"{self.name!r}, " if self.name else ""
+        sc = f", scale={self.scale:g}" if self.scale != 1.0 else ""
+        return f"Record({nm}n={self.acc.size}, dt={self.dt:g} s, pga={self.pga:.3f} m/s^2{sc})"
+
+
+def sample(motion: Motion, dt: float, duration: float | None = None) -> Record:
+    """Sample any motion on a uniform grid of step ``dt`` into a :class:`Record`."""
+    dt = positive("dt", dt, "s")
+    dur = motion.duration if duration is None else positive("duration", duration, "s")
+    t = np.arange(int(round(dur / dt)) + 1) * dt
+    return Record(motion.acceleration(t), dt, name=type(motion).__name__)
