@@ -7,9 +7,11 @@ All accelerations are in m/s^2 and follow the sign convention of the paper's Eq 
 from .base import Motion
 from .harmonic import HanningSine, Sine
 from .pulses import HalfSine, OneCosine, OneSine, Rectangular, Ricker
+from .io import builtin_records, load_builtin, read_record, write_csv
 from .records import Record, sample
 
 __all__ = [
     "Motion", "Sine", "HanningSine", "OneSine", "OneCosine", "HalfSine", "Rectangular",
-    "Ricker", "Record", "sample",
+    "Ricker", "Record", "sample", "read_record", "write_csv", "builtin_records",
+    "load_builtin",
 ]
