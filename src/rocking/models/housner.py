@@ -48,13 +48,10 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from .._validate import as_float, in_range, positive
-from ..blocks import Block
-from ..errors import ParameterError
-from ..motions import Motion
-from ..motions._kernel import NPRM, ground_acc, next_breakpoint
+from .._validate import positive
+from ..motions._kernel import ground_acc, next_breakpoint
 from ..response import BatchResponse, Response
-from ..units import G
+from . import _common as C
 from . import _dopri as D
 
 HALF_PI = 0.5 * math.pi
@@ -304,101 +301,42 @@ def _batch(alpha, p, mu, lin, kinds, prms, samples, nsamp, t_ends, rtol, rest_to
 
 
 # ---------------------------------------------------------------------------- Python API
-def _check_common(block, rtol, rest_tol):
-    if not isinstance(block, Block):
-        raise ParameterError(f"block must be a rocking.Block, got {type(block).__name__}")
-    rtol = in_range("rtol", rtol, 1e-13, 1e-2, shown="[1e-13, 1e-2]", lo_open=False,
-                    hi_open=False)
-    rest_tol = in_range("rest_tol", rest_tol, 0.0, 1e-2, shown="(0, 1e-2]", hi_open=False)
-    return rtol, rest_tol
-
-
-def _h_max(block, motion):
-    hm = 0.05 / block.p
-    if motion is not None:
-        hm = min(hm, 8.0 * motion.scan_step)
-    return hm
-
-
 def simulate(block, motion=None, *, duration=None, theta0=0.0, omega0=0.0, linear=False,
              rtol=1e-8, rest_tol=1e-6, dt_out=0.002, max_impacts=100_000, **unknown):
-    """Classical model; see :func:`rocking.simulate` and the module docstring."""
-    if unknown:
-        raise ParameterError(f"unknown option(s) for model 'housner': {', '.join(unknown)}")
-    rtol, rest_tol = _check_common(block, rtol, rest_tol)
-    if motion is not None and not isinstance(motion, Motion):
-        raise ParameterError(f"motion must be a rocking.motions.Motion or None, "
-                             f"got {type(motion).__name__}")
-    if duration is None:
-        if motion is None:
-            raise ParameterError("duration is required for free rocking (motion=None), in s > 0")
-        duration = motion.duration
-    duration = positive("duration", duration, "s")
-    theta0 = in_range("theta0", theta0, -HALF_PI, HALF_PI, shown="(-pi/2, pi/2) rad")
-    omega0 = as_float("omega0", omega0)
-    dt_out = positive("dt_out", dt_out, "s")
-    if motion is None:
-        kind, prm, samples = 0, np.zeros(NPRM), np.empty(0)
-        h_scan = duration
-    else:
-        kind, prm, samples = motion.spec()
-        h_scan = motion.scan_step
-    n_out = int(math.floor(duration / dt_out + 1e-9)) + 1
-    out_th = np.empty(n_out)
-    out_om = np.empty(n_out)
-    imp = np.empty(min(int(max_impacts), 100_000))
-    res = integrate(block.alpha, block.p, block.mu, bool(linear), kind, prm, samples,
-                    duration, theta0, omega0, rtol, rest_tol, _h_max(block, motion), h_scan,
-                    dt_out, out_th, out_om, imp)
-    k, n_imp, peak, over, t_over, t_up, n_steps = res
-    t = np.arange(k) * dt_out
-    th, om = out_th[:k], out_om[:k]
-    if over and (k == 0 or t[-1] < t_over):
-        t = np.append(t, t_over)
-        th = np.append(th, math.copysign(HALF_PI, th[-1] if k else 1.0))
-        om = np.append(om, om[-1] if k else 0.0)
+    """Classical model; see :func:`rocking.simulate` and the module docstring.
+
+    Options: ``rtol`` (relative tolerance of the adaptive steps), ``rest_tol`` (Zeno rule,
+    fraction of alpha), ``dt_out`` (s, output sampling), ``max_impacts`` (impact times kept).
+    """
+    C.no_unknown("housner", unknown)
+    block = C.check_block(block)
+    rtol, rest_tol = C.check_rtol(rtol), C.check_rest_tol(rest_tol)
+    sp = C.prepare_single(motion, duration, theta0, omega0, dt_out)
+    out_th = np.empty(sp.n_out)
+    out_om = np.empty(sp.n_out)
+    imp = np.empty(max(1, min(int(max_impacts), 1_000_000)))
+    h_max = min(0.05 / block.p, 8.0 * sp.h_scan)
+    k, n_imp, peak, over, t_over, t_up, n_steps = integrate(
+        block.alpha, block.p, block.mu, bool(linear), sp.kind, sp.prm, sp.samples, sp.duration,
+        sp.theta0, sp.omega0, rtol, rest_tol, h_max, sp.h_scan, sp.dt_out, out_th, out_om, imp)
+    t, th, om = C.finish_history(k, out_th, out_om, sp.dt_out, over, t_over)
     return Response(
         t=t, theta=th, omega=om, impact_times=imp[: min(n_imp, imp.size)].copy(),
         max_abs_theta=float(peak), overturned=bool(over),
-        overturn_time=None if not over else float(t_over),
+        overturn_time=float(t_over) if over else None,
         uplift_time=None if math.isnan(t_up) else float(t_up),
         model="housner-linear" if linear else "housner", block=block, motion=motion,
         info={"n_steps": int(n_steps), "rtol": rtol, "n_impacts_total": int(n_imp)},
     )
 
 
-def pack_motions(motions, duration=None):
-    """Pack motions into padded arrays for the batch kernels."""
-    motions = list(motions)
-    if not motions:
-        raise ParameterError("motions must be a non-empty sequence of Motion objects")
-    for i, m in enumerate(motions):
-        if not isinstance(m, Motion):
-            raise ParameterError(f"motions[{i}] must be a rocking.motions.Motion, "
-                                 f"got {type(m).__name__}")
-    specs = [m.spec() for m in motions]
-    n = len(motions)
-    nsamp = np.array([s[2].size for s in specs], dtype=np.int64)
-    samples = np.zeros((n, max(1, int(nsamp.max()))))
-    for i, s in enumerate(specs):
-        samples[i, : s[2].size] = s[2]
-    kinds = np.array([s[0] for s in specs], dtype=np.int64)
-    prms = np.stack([s[1] for s in specs])
-    if duration is None:
-        t_ends = np.array([m.duration for m in motions], dtype=np.float64)
-    else:
-        t_ends = np.full(n, positive("duration", duration, "s"))
-    h_scans = np.array([m.scan_step for m in motions], dtype=np.float64)
-    return kinds, prms, samples, nsamp, t_ends, h_scans
-
-
 def simulate_many(block, motions, *, duration=None, linear=False, rtol=1e-8, rest_tol=1e-6,
                   return_histories=False, dt_out=0.01, **unknown):
     """Batch of simulations from rest, one per motion, in one parallel compiled call."""
-    if unknown:
-        raise ParameterError(f"unknown option(s) for model 'housner': {', '.join(unknown)}")
-    rtol, rest_tol = _check_common(block, rtol, rest_tol)
-    kinds, prms, samples, nsamp, t_ends, h_scans = pack_motions(motions, duration)
+    C.no_unknown("housner", unknown)
+    block = C.check_block(block)
+    rtol, rest_tol = C.check_rtol(rtol), C.check_rest_tol(rest_tol)
+    kinds, prms, samples, nsamp, t_ends, h_scans = C.pack_motions(motions, duration)
     dt_out = positive("dt_out", dt_out, "s")
     n = kinds.size
     if return_histories:

@@ -1,0 +1,477 @@
+r"""Plain event-driven reference implementation of the classical (Housner) model.
+
+This module integrates the same piecewise model as :mod:`rocking.models.housner`, but
+written independently, in plain Python on top of :func:`scipy.integrate.solve_ivp`, so
+that the compiled kernel can be checked against it. It is slow (one ``solve_ivp`` call
+per smooth piece of the excitation and per impact) and meant for tests and benchmarks.
+
+The model (Peña et al. 2007, Section 2.1):
+
+* Between impacts, Eq (1) on the branch ``s = sgn(theta)`` (pivot O for ``s = +1``,
+  O' for ``s = -1``):
+
+  .. math:: \theta'' = -s\,p^2 \sin(\alpha - s\theta) + p^2 \cos(\alpha - s\theta)\,a(t)/g
+
+  or, with ``linear=True``, ``theta'' = p^2 (theta - s alpha) + p^2 a/g``. A positive
+  ``a`` drives ``theta`` positive.
+* *Impact* (event ``theta = 0``, crossed from the side ``s``, terminal): the angular
+  velocity is multiplied by ``mu`` (Eq 4) and the pivot switches; a new ``solve_ivp``
+  call starts from ``theta = 0``.
+* *Rest (Zeno rule)*: after an impact with post-impact velocity ``omega``, the amplitude
+  that free motion would reach is obtained from energy conservation,
+  ``cos(alpha - r) = cos(alpha) + omega^2 / (2 p^2)`` (``(alpha - r)^2 = alpha^2 -
+  omega^2/p^2`` when linear). If ``r < rest_tol * alpha`` and ``|a| <= g tan(alpha)`` at
+  that instant, the block is put at rest (``theta = omega = 0``).
+* *Uplift*: a block at rest starts to rock, in the direction of ``sign(a)``, at the first
+  time at which ``|a| > g tan(alpha)`` (``g alpha`` when linear), including ``t = 0``.
+  The acceleration is scanned on a grid of ``motion.scan_step`` (for records the sample
+  points, where linear interpolation makes the check exact; for smooth motions each grid
+  interval close to the threshold is also searched for an interior maximum of ``|a|``)
+  and the crossing is refined with :func:`scipy.optimize.brentq`.
+* *Overturning*: ``|theta|`` reaches ``pi/2`` (event, terminal); the simulation stops.
+
+The excitation is split into smooth pieces at its kinks and jumps (every sample of a
+record, the start and end of a pulse or of a sine) and each piece is integrated by its
+own ``solve_ivp`` call, with the one-sided (smooth) expression of ``a(t)`` on that piece.
+At a jump, the point value is the one of the pulse or record (the closed-interval
+convention of :mod:`rocking.motions`); it only matters for the uplift test. The
+excitation formulas are written here from the definitions in :mod:`rocking.motions`
+rather than taken from the compiled motion kernel, so they are checked too.
+
+Peaks of ``|theta|`` are located as non-terminal events ``omega = 0`` on the solver's
+dense output (and at the ends of each piece).
+"""
+
+from __future__ import annotations
+
+import bisect
+import math
+
+import numpy as np
+from scipy.integrate import solve_ivp
+from scipy.optimize import brentq, minimize_scalar
+
+from .._validate import as_float, in_range, positive
+from ..blocks import Block
+from ..errors import ParameterError
+from ..motions import (
+    HalfSine,
+    HanningSine,
+    Motion,
+    OneCosine,
+    OneSine,
+    Record,
+    Rectangular,
+    Ricker,
+    Sine,
+)
+from ..response import Response
+from ..units import G
+
+HALF_PI = 0.5 * math.pi
+METHODS = ("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")
+
+__all__ = ["simulate_reference", "Excitation"]
+
+
+# ------------------------------------------------------------------------- excitation
+class Excitation:
+    """A motion as a list of smooth pieces ``[start, end]`` covering ``[0, inf)``.
+
+    ``fns[k]`` is the smooth expression of the acceleration (m/s^2) on piece ``k``,
+    valid on the closed piece (one-sided limits at its ends); ``linear[k]`` tells whether
+    it is linear in ``t`` (then ``|a|`` can only exceed a level at the piece's ends).
+    """
+
+    def __init__(self, motion: Motion | None):
+        self.motion = motion
+        starts: list[float] = [0.0]
+        fns: list = []
+        lin: list[bool] = []
+        zero = _const(0.0)
+        if motion is None:
+            fns, lin = [zero], [True]
+            self.scan_step = math.inf
+        elif isinstance(motion, Record):
+            a = np.asarray(motion.acc, dtype=float) * motion.scale
+            dt = motion.dt
+            n = a.size
+            starts = [i * dt for i in range(n)]  # pieces [i dt, (i+1) dt], then zero
+            for i in range(n - 1):
+                ti, ai = i * dt, float(a[i])
+                slope = (float(a[i + 1]) - ai) / dt
+                fns.append(_linear(ti, ai, slope))
+                lin.append(True)
+            fns.append(zero)
+            lin.append(True)
+            self.scan_step = dt
+        elif isinstance(motion, Sine | HanningSine):
+            starts = [0.0, motion.duration]
+            fns = [_harmonic(motion), zero]
+            lin = [False, True]
+            self.scan_step = motion.scan_step
+        elif isinstance(motion, OneSine | OneCosine | HalfSine | Rectangular):
+            t0, T = motion.t0, motion.length
+            body = _pulse(motion)
+            if t0 > 0.0:
+                starts, fns, lin = [0.0, t0, t0 + T], [zero, body, zero], [True, False, True]
+            else:
+                starts, fns, lin = [0.0, T], [body, zero], [False, True]
+            if isinstance(motion, Rectangular):
+                lin = [True] * len(fns)
+            self.scan_step = motion.scan_step
+        elif isinstance(motion, Ricker):
+            A, x0, tc = motion.amplitude * motion.scale, math.pi * motion.fp, motion.tc
+
+            def ricker(t):
+                x = x0 * (t - tc)
+                return A * (1.0 - 2.0 * x * x) * math.exp(-x * x)
+
+            fns, lin = [ricker], [False]
+            self.scan_step = motion.scan_step
+        else:  # an unknown Motion subclass: one piece, point values from the motion itself
+            fns, lin = [lambda t: float(motion.acceleration(t))], [False]
+            self.scan_step = motion.scan_step
+        self.starts = starts
+        self.fns = fns
+        self.linear = lin
+
+    def piece(self, t: float) -> int:
+        """Index of the piece containing ``t`` (the one that starts at ``t`` at a boundary)."""
+        return max(0, bisect.bisect_right(self.starts, t) - 1)
+
+    def end(self, k: int) -> float:
+        return self.starts[k + 1] if k + 1 < len(self.starts) else math.inf
+
+    def __call__(self, t: float) -> float:
+        """Point value of the acceleration (m/s^2); at a jump, the larger in magnitude of
+        the two one-sided values (the pulse or record value, never the zero outside)."""
+        k = self.piece(t)
+        v = self.fns[k](t)
+        if k > 0 and t == self.starts[k]:
+            w = self.fns[k - 1](t)
+            if abs(w) > abs(v):
+                v = w
+        return v
+
+
+def _const(c):
+    return lambda t: c
+
+
+def _linear(ti, ai, slope):
+    return lambda t: ai + (t - ti) * slope
+
+
+def _harmonic(m):
+    s, X, w = m.scale, m.amplitude, 2.0 * math.pi * m.freq
+    if isinstance(m, Sine):
+        ph = m.phase
+        return lambda t: -s * X * w * w * math.sin(w * t + ph)
+    W = 2.0 * math.pi / m.duration
+
+    def hanning(t):  # d2/dt2 of X (1 - cos W t)/2 sin(w t)
+        win = 0.5 * (1.0 - math.cos(W * t))
+        dwin = 0.5 * W * math.sin(W * t)
+        ddwin = 0.5 * W * W * math.cos(W * t)
+        sn, cs = math.sin(w * t), math.cos(w * t)
+        return s * X * (ddwin * sn + 2.0 * dwin * w * cs - win * w * w * sn)
+
+    return hanning
+
+
+def _pulse(m):
+    A, T, t0 = m.amplitude * m.scale, m.length, m.t0
+    if isinstance(m, Rectangular):
+        return _const(A)
+    if isinstance(m, OneSine):
+        return lambda t: A * math.sin(2.0 * math.pi * (t - t0) / T)
+    if isinstance(m, OneCosine):
+        return lambda t: A * math.cos(2.0 * math.pi * (t - t0) / T)
+    return lambda t: A * math.sin(math.pi * (t - t0) / T)  # HalfSine
+
+
+# ---------------------------------------------------------------------------- uplift
+def _first_exceedance(exc: Excitation, t_from: float, t_end: float, thr: float):
+    """First time in ``[t_from, t_end]`` at which ``|a| > thr``, with ``sign(a)`` there;
+    ``None`` if there is none."""
+    a0 = exc(t_from)
+    if abs(a0) > thr:
+        return t_from, math.copysign(1.0, a0)
+    k = exc.piece(t_from)
+    while exc.starts[k] <= t_end:
+        fn = exc.fns[k]
+        lo = max(exc.starts[k], t_from)
+        hi = min(exc.end(k), t_end)
+        if exc.linear[k] or not math.isfinite(exc.scan_step):
+            grid = [lo, hi] if hi > lo else [lo]
+        else:
+            step = exc.scan_step
+            inner = np.arange(math.floor(lo / step) + 1, math.ceil(hi / step)) * step
+            grid = [lo, *[x for x in inner.tolist() if lo < x < hi], hi]
+        f_prev = abs(fn(grid[0])) - thr
+        for g0, g1 in zip(grid[:-1], grid[1:], strict=True):
+            f1 = abs(fn(g1)) - thr
+            if f1 > 0.0:
+                return _refine(fn, g0, g1, thr)
+            if (not exc.linear[k]) and max(f_prev, f1) > -0.05 * thr:
+                res = minimize_scalar(lambda t, fn=fn: -abs(fn(t)), bounds=(g0, g1),
+                                      method="bounded", options={"xatol": 1e-13})
+                if -res.fun > thr:
+                    return _refine(fn, g0, float(res.x), thr)
+            f_prev = f1
+        if hi >= t_end or not math.isfinite(hi):
+            return None
+        # point value at the boundary (a jump into a pulse counts at its first instant)
+        a_b = exc(hi)
+        if abs(a_b) > thr:
+            return hi, math.copysign(1.0, a_b)
+        k += 1
+    return None
+
+
+def _refine(fn, lo, hi, thr):
+    """Crossing of ``|fn| = thr`` in ``(lo, hi]`` with ``|fn(lo)| <= thr < |fn(hi)|``: brentq,
+    then a few bisections so that the returned time is on the exceeding side."""
+
+    def f(t):
+        return abs(fn(t)) - thr
+
+    r = brentq(f, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps)
+    if f(r) > 0.0:
+        hi = r
+    else:
+        lo = r
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if not lo < mid < hi:
+            break
+        if f(mid) > 0.0:
+            hi = mid
+        else:
+            lo = mid
+    return hi, math.copysign(1.0, fn(hi))
+
+
+# ------------------------------------------------------------------------------ model
+def _free_amplitude(om, alpha, p, linear):
+    """Amplitude reached in free motion from theta = 0 with angular velocity ``om``
+    (energy conservation of Eq 1 with a = 0); inf if the block would pass alpha."""
+    if linear:
+        d = alpha * alpha - (om / p) ** 2
+        return alpha - math.sqrt(d) if d > 0.0 else math.inf
+    c = math.cos(alpha) + 0.5 * (om / p) ** 2
+    return alpha - math.acos(c) if c < 1.0 else math.inf
+
+
+def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0,
+                       linear=False, rtol=1e-8, atol=None, method="DOP853", rest_tol=1e-6,
+                       dt_out=None):
+    """Classical model integrated with :func:`scipy.integrate.solve_ivp` and events.
+
+    Parameters
+    ----------
+    block : Block
+    motion : Motion or None
+        ``None``: free rocking from ``theta0``, ``omega0`` (then ``duration`` is required).
+    duration : float, optional
+        Simulated time (s); defaults to ``motion.duration``.
+    theta0, omega0 : float
+        Initial angle (rad, in ``(-pi/2, pi/2)``) and angular velocity (rad/s).
+    linear : bool
+        Small-angle form of Eq 1.
+    rtol, atol : float
+        Tolerances of ``solve_ivp``; ``atol`` defaults to
+        ``(1e-3 rtol alpha, 1e-3 rtol alpha p)`` for ``(theta, omega)``.
+    method : str
+        ``solve_ivp`` method, ``"DOP853"`` by default.
+    rest_tol : float
+        Zeno rule: rest when the post-impact free amplitude is below ``rest_tol * alpha``.
+    dt_out : float, optional
+        If given, the history is sampled on ``k * dt_out`` from the dense output; by
+        default it holds the solver's own points (impact times appear twice, with the
+        velocities before and after the impact).
+
+    Returns
+    -------
+    Response
+        ``info`` holds ``n_solve_ivp`` (number of calls), ``nfev`` and ``n_impacts_total``.
+    """
+    if not isinstance(block, Block):
+        raise ParameterError(f"block must be a rocking.Block, got {type(block).__name__}")
+    if motion is not None and not isinstance(motion, Motion):
+        raise ParameterError(f"motion must be a rocking.motions.Motion or None, "
+                             f"got {type(motion).__name__}")
+    if duration is None:
+        if motion is None:
+            raise ParameterError("duration is required for free rocking (motion=None), in s > 0")
+        duration = motion.duration
+    t_end = positive("duration", duration, "s")
+    theta0 = in_range("theta0", theta0, -HALF_PI, HALF_PI, shown="(-pi/2, pi/2) rad")
+    omega0 = as_float("omega0", omega0)
+    rtol = in_range("rtol", rtol, 1e-13, 1e-2, shown="[1e-13, 1e-2]", lo_open=False,
+                    hi_open=False)
+    rest_tol = in_range("rest_tol", rest_tol, 0.0, 1e-2, shown="(0, 1e-2]", hi_open=False)
+    if method not in METHODS:
+        raise ParameterError(f"method must be one of {', '.join(METHODS)}; got {method!r}")
+    if dt_out is not None:
+        dt_out = positive("dt_out", dt_out, "s")
+    alpha, p, mu = block.alpha, block.p, block.mu
+    if atol is None:
+        atol = [1e-3 * rtol * alpha, 1e-3 * rtol * alpha * p]
+    else:
+        atol = [positive("atol", x) for x in np.atleast_1d(atol)]
+        if len(atol) not in (1, 2):
+            raise ParameterError("atol must be a number or a pair (theta, omega)")
+
+    linear = bool(linear)
+    p2 = p * p
+    thr = G * (alpha if linear else math.tan(alpha))
+    exc = Excitation(motion)
+
+    t, th, om = 0.0, theta0, omega0
+    resting = th == 0.0 and om == 0.0
+    uplift_time = None if resting else 0.0
+    s = 1.0 if (th > 0.0 or (th == 0.0 and om > 0.0)) else -1.0
+    peak = abs(th)
+    impacts: list[float] = []
+    pieces: list[tuple] = []  # (t_start, t_stop, OdeResult or None for rest)
+    overturned, t_over = False, None
+    n_calls = nfev = 0
+    stalls = 0
+
+    while t < t_end:
+        if resting:
+            up = _first_exceedance(exc, t, t_end, thr)
+            if up is None:
+                pieces.append((t, t_end, None))
+                t = t_end
+                break
+            tu, sgn = up
+            if tu > t:
+                pieces.append((t, tu, None))
+            t, th, om, s = tu, 0.0, 0.0, sgn
+            resting = False
+            if uplift_time is None:
+                uplift_time = tu
+        k = exc.piece(t)
+        tb = min(exc.end(k), t_end)
+        if tb <= t:  # zero-length piece (cannot happen with increasing starts)
+            t = tb
+            continue
+        fn = exc.fns[k]
+
+        def rhs(tt, y, s=s, fn=fn):
+            a = fn(tt) / G
+            if linear:
+                return (y[1], p2 * (y[0] - s * alpha) + p2 * a)
+            x = alpha - s * y[0]
+            return (y[1], -s * p2 * math.sin(x) + p2 * math.cos(x) * a)
+
+        def ev_impact(tt, y, s=s):
+            return s * y[0]
+
+        def ev_over(tt, y, s=s):
+            return s * y[0] - HALF_PI
+
+        def ev_peak(tt, y):
+            return y[1]
+
+        ev_impact.terminal, ev_impact.direction = True, -1.0
+        ev_over.terminal, ev_over.direction = True, 1.0
+        ev_peak.terminal, ev_peak.direction = False, 0.0
+
+        opts = {}
+        if th == 0.0 and om != 0.0:
+            # leaving theta = 0 against the acceleration: keep the first step within the
+            # excursion, so that the return to theta = 0 is bracketed by the solver steps
+            acc0 = rhs(t, (th, om))[1]
+            if s * acc0 < 0.0:
+                fs = 0.5 * abs(om / acc0)
+                if fs > 0.0:
+                    opts["first_step"] = min(fs, tb - t)
+        sol = solve_ivp(rhs, (t, tb), [th, om], method=method, rtol=rtol, atol=atol,
+                        events=(ev_impact, ev_over, ev_peak), dense_output=dt_out is not None,
+                        **opts)
+        n_calls += 1
+        nfev += sol.nfev
+        if sol.status < 0:
+            raise RuntimeError(f"solve_ivp failed at t = {t}: {sol.message}")
+        for ye in sol.y_events[2]:
+            peak = max(peak, abs(ye[0]))
+        pieces.append((t, float(sol.t[-1]), sol))
+        if sol.t_events[1].size:
+            overturned = True
+            t_over = float(sol.t_events[1][0])
+            peak = HALF_PI
+            t = t_over
+            break
+        if sol.t_events[0].size:
+            te = float(sol.t_events[0][0])
+            stalls = stalls + 1 if te <= t else 0
+            if stalls > 10_000:
+                raise RuntimeError(f"impacts do not advance in time at t = {t}")
+            impacts.append(te)
+            om = mu * float(sol.y_events[0][0][1])
+            th = 0.0
+            t = te
+            if om == 0.0 or (_free_amplitude(om, alpha, p, linear) < rest_tol * alpha
+                             and abs(exc(t)) <= thr):
+                resting = True  # uplift test again from here (immediate if |a| > thr)
+                om = 0.0
+            else:
+                s = 1.0 if om > 0.0 else -1.0
+            continue
+        th, om = float(sol.y[0, -1]), float(sol.y[1, -1])
+        peak = max(peak, abs(th))
+        t = tb
+
+    t_out, th_out, om_out = _history(pieces, dt_out, t_over if overturned else t_end)
+    return Response(
+        t=t_out, theta=th_out, omega=om_out, impact_times=np.asarray(impacts, dtype=float),
+        max_abs_theta=float(peak), overturned=overturned, overturn_time=t_over,
+        uplift_time=uplift_time,
+        model=("housner-linear" if linear else "housner") + "-reference", block=block,
+        motion=motion,
+        info={"rtol": rtol, "method": method, "n_solve_ivp": n_calls, "nfev": int(nfev),
+              "n_impacts_total": len(impacts)},
+    )
+
+
+def _history(pieces, dt_out, t_stop):
+    if dt_out is None:
+        ts, ths, oms = [], [], []
+        for ta, tb, sol in pieces:
+            if sol is None:
+                ts.append(np.array([ta, tb]))
+                ths.append(np.zeros(2))
+                oms.append(np.zeros(2))
+            else:
+                ts.append(sol.t)
+                ths.append(sol.y[0])
+                oms.append(sol.y[1])
+        if not ts:
+            return np.zeros(0), np.zeros(0), np.zeros(0)
+        t = np.concatenate(ts)
+        th = np.concatenate(ths)
+        om = np.concatenate(oms)
+        keep = np.ones(t.size, dtype=bool)  # drop the repeated joints of smooth pieces
+        keep[1:] = ~((t[1:] == t[:-1]) & (om[1:] == om[:-1]) & (th[1:] == th[:-1]))
+        return t[keep], th[keep], om[keep]
+    n = int(math.floor(t_stop / dt_out + 1e-9)) + 1
+    t = np.arange(n) * dt_out
+    th = np.zeros(n)
+    om = np.zeros(n)
+    for ta, tb, sol in pieces:
+        i0 = int(math.ceil(ta / dt_out - 1e-9))
+        i1 = min(int(math.floor(tb / dt_out + 1e-9)), n - 1)
+        if i1 < i0:
+            continue
+        if sol is None:
+            th[i0:i1 + 1] = 0.0
+            om[i0:i1 + 1] = 0.0
+        else:
+            y = sol.sol(np.clip(t[i0:i1 + 1], ta, tb))
+            th[i0:i1 + 1] = y[0]
+            om[i0:i1 + 1] = y[1]
+    return t, th, om
