@@ -53,6 +53,7 @@ from ..motions._kernel import ground_acc, next_breakpoint
 from ..response import BatchResponse, Response
 from . import _common as C
 from . import _dopri as D
+from . import _events as E
 
 HALF_PI = 0.5 * math.pi
 
@@ -167,33 +168,16 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
     need_a = True
     while t < t_end - 1e-12:
         if resting:
-            ag = ground_acc(kind, prm, samples, t)
-            if abs(ag) > thr:
-                resting = False
-                s = 1.0 if ag > 0.0 else -1.0
-                if math.isnan(t_up):
-                    t_up = t
-                need_a = True
-                h = min(h_max, 0.01 / p)
-                continue
-            t1 = min(t + h_scan, next_breakpoint(kind, prm, samples, t), t_end)
-            ag1 = ground_acc(kind, prm, samples, t1)
-            if abs(ag1) > thr:
-                lo, hi = t, t1  # bisection for the first exceedance
-                for _ in range(60):
-                    mid = 0.5 * (lo + hi)
-                    if abs(ground_acc(kind, prm, samples, mid)) > thr:
-                        hi = mid
-                    else:
-                        lo = mid
-                    if hi - lo < 1e-13:
-                        break
-                t1 = hi
-            while k < n_out and k * dt_out <= t1 + 1e-12:
-                out_th[k] = 0.0
-                out_om[k] = 0.0
-                k += 1
-            t = t1
+            t, k, d = E.rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out, k,
+                                     out_th, out_om)
+            if d == 0.0:
+                break
+            resting = False
+            s = d
+            if math.isnan(t_up):
+                t_up = t
+            need_a = True
+            h = min(h_max, 0.01 / p)
             continue
         if need_a:
             a_cur = _acc(th, t, s, alpha, p2, lin, kind, prm, samples)

@@ -368,7 +368,12 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             x = alpha - s * y[0]
             return (y[1], -s * p2 * math.sin(x) + p2 * math.cos(x) * a)
 
-        def ev_impact(tt, y, s=s):
+        def ev_impact(tt, y, s=s, t_start=t):
+            # At the start of a piece that begins at theta = 0 (after an impact or an
+            # uplift) the function is nudged positive, so that when one solver step spans
+            # a whole small excursion the root search finds its end, not its start.
+            if tt == t_start and y[0] == 0.0:
+                return 1e-300
             return s * y[0]
 
         def ev_over(tt, y, s=s):
