@@ -4,15 +4,16 @@
 dispatch to a registered model. Each model module keeps a compiled (numba) kernel; a plain
 reference implementation lives beside it for testing.
 
-Registered models: ``"housner"`` (the classical piecewise model, Eq 1 + Eq 4).
+Registered models: ``"housner"`` (the classical piecewise model, Eq 1 + Eq 4) and
+``"ccrr"`` (complex coupled rocking rotations, Eqs 5-10).
 """
 
 from __future__ import annotations
 
 from ..errors import ParameterError
-from . import housner
+from . import ccrr, housner
 
-MODELS = {"housner": housner}
+MODELS = {"housner": housner, "ccrr": ccrr}
 
 
 def _model(name: str):
@@ -33,7 +34,7 @@ def simulate(block, motion=None, model: str = "housner", duration: float | None 
     motion : Motion or None
         Base motion; ``None`` means free rocking from ``theta0``, ``omega0``.
     model : str
-        ``"housner"`` (classical model, Eq 1).
+        ``"housner"`` (classical model, Eq 1) or ``"ccrr"`` (Eq 10).
     duration : float, optional
         Simulated time (s). Defaults to ``motion.duration``; required for free rocking.
     theta0, omega0 : float

@@ -9,7 +9,7 @@ import numpy as np
 
 from .._validate import as_float, in_range, positive
 from ..blocks import Block
-from ..errors import ParameterError
+from ..errors import ParameterError  # noqa: F401  (re-exported for models)
 from ..motions import Motion
 from ..motions._kernel import NPRM
 
