@@ -1,0 +1,255 @@
+"""The report machinery: a registry of sections and the page writer.
+
+A *section* is a function ``build(ctx) -> str`` that computes its results, writes its own
+files (PNG figures, CSV tables) through the :class:`Context` it receives, and returns an
+HTML fragment (without its ``<h2>`` title: the page adds it). Sections are registered with
+the :func:`section` decorator and run in increasing ``order``::
+
+    from rocking.report.core import section
+    from rocking.report import html as H
+
+    @section("ccrr", "CCRR model vs classical model", order=40)
+    def build(ctx):
+        df = ...                                   # compute
+        csv = ctx.save_csv(df, "summary")          # -> "ccrr_summary.csv"
+        fig_html = ctx.save_figure(fig, "theta", caption="...")
+        return H.p("...") + H.table(...) + fig_html + ctx.files_html()
+
+and the module is added to ``SECTION_MODULES`` in :mod:`rocking.report` so that it is
+imported (hence registered) before the page is built.
+
+A section that raises does not stop the report: its place in the page shows the error in
+a red box, the other sections still run, the page is written, and only then
+:func:`reproduce` raises :class:`ReportError` listing the failed sections.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import platform
+import sys
+import time
+import traceback
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from . import html as H
+
+
+@dataclass(frozen=True)
+class Section:
+    """A registered report section."""
+
+    id: str
+    title: str
+    build: Callable[[Context], str]
+    order: float = 100.0
+
+
+SECTIONS: dict[str, Section] = {}
+"""Registered sections by id (see :func:`section`)."""
+
+
+def section(id: str, title: str, order: float = 100.0):
+    """Decorator registering ``build(ctx) -> str`` as a report section.
+
+    ``id`` is short and file-name safe (it prefixes the section's files and is the HTML
+    anchor); ``title`` is the heading; ``order`` sets the position in the page.
+    """
+    if not id.replace("_", "").replace("-", "").isalnum():
+        raise ValueError(f"section id must be alphanumeric (with - or _), got {id!r}")
+
+    def deco(fn):
+        SECTIONS[id] = Section(id=id, title=title, build=fn, order=float(order))
+        return fn
+
+    return deco
+
+
+def ordered_sections() -> list[Section]:
+    """The registered sections in page order."""
+    return sorted(SECTIONS.values(), key=lambda s: (s.order, s.id))
+
+
+@dataclass
+class Context:
+    """What a section gets: where to write, how thorough to be, and file helpers.
+
+    ``quick`` asks for a cheaper run (coarser grids, fewer panels, lower resolution) that
+    still produces every table and figure. Files are named ``<section id>_<name>`` in
+    ``out`` and collected in ``files`` (relative names) for :meth:`files_html`.
+    """
+
+    out: Path
+    quick: bool
+    section_id: str
+    files: list[str] = field(default_factory=list)
+
+    @property
+    def dpi(self) -> int:
+        return 70 if self.quick else 120
+
+    def path(self, name: str) -> Path:
+        """Absolute path of this section's file ``name`` (prefixed with the section id)."""
+        fname = f"{self.section_id}_{name}"
+        if fname not in self.files:
+            self.files.append(fname)
+        return self.out / fname
+
+    def save_csv(self, df, name: str, **kw) -> str:
+        """Write a pandas DataFrame as ``<id>_<name>.csv``; returns the relative name."""
+        kw.setdefault("index", False)
+        p = self.path(f"{name}.csv")
+        df.to_csv(p, **kw)
+        return p.name
+
+    def save_figure(self, fig, name: str, caption: str, alt: str = "") -> str:
+        """Save a matplotlib Figure as ``<id>_<name>.png``; returns the ``<figure>`` HTML."""
+        p = self.path(f"{name}.png")
+        fig.savefig(p, dpi=self.dpi)
+        return H.figure(p.name, caption, alt)
+
+    def files_html(self) -> str:
+        """Links to every file this section wrote so far."""
+        return H.files_line(self.files) if self.files else ""
+
+
+class ReportError(RuntimeError):
+    """Raised by :func:`reproduce` after writing the page when some sections failed.
+
+    ``path`` is the written ``index.html``; ``failed`` maps section ids to error messages.
+    """
+
+    def __init__(self, path: Path, failed: dict[str, str]):
+        self.path = Path(path)
+        self.failed = dict(failed)
+        lines = "; ".join(f"{k}: {v}" for k, v in failed.items())
+        super().__init__(f"{len(failed)} report section(s) failed ({lines}); "
+                         f"the page was written anyway: {path}")
+
+
+_TRANSLIT = {"—": "-", "–": "-", "α": "alpha", "μ": "mu", "θ": "theta", "×": "x", "²": "^2"}
+
+
+def _ascii(text: str) -> str:
+    """A plain-ASCII version of a title for the progress lines on stderr."""
+    for k, v in _TRANSLIT.items():
+        text = text.replace(k, v)
+    return text.encode("ascii", "replace").decode()
+
+
+def _log(progress: bool, msg: str) -> None:
+    if progress:
+        print(msg, file=sys.stderr, flush=True)
+
+
+def _versions() -> str:
+    parts = [f"Python {platform.python_version()}"]
+    for mod in ("numpy", "scipy", "numba", "matplotlib", "pandas"):
+        try:
+            m = __import__(mod)
+            parts.append(f"{mod} {m.__version__}")
+        except Exception:  # pragma: no cover - optional information only
+            pass
+    return ", ".join(parts)
+
+
+HOW_TO_READ = """
+<p>Each section reproduces one table or figure of the paper with this package and puts the
+paper's printed numbers next to ours. <em>Ours</em> are computed when this page is built
+(nothing is tuned to the paper); <em>paper</em> values are read from the package data
+(<code>rocking/data/pena2007.json</code>, Tables I&ndash;V as printed). Percent differences
+are <code>(ours &minus; paper) / paper &times; 100</code>. The discussion under each table
+is generated from the numbers of this run. Every table is also written as a CSV file and
+every figure as a PNG next to this page (links under each section). Simulations use the
+classical (Housner) model, Eq (1) with the restitution rule of Eq (4), unless a section
+says otherwise.</p>
+"""
+
+SIGN_CONVENTION = """
+<p><strong>Sign convention.</strong> The ground acceleration <code>a</code> has the sign of
+the paper's Eq (1): a positive <code>a</code> drives the rocking angle <code>&theta;</code>
+positive (the inertial force &minus;M&nbsp;a<sub>g</sub> tilts the block against the
+direction in which the table accelerates). &theta;&nbsp;&gt;&nbsp;0 means rotation about
+the pivot O, &theta;&nbsp;&lt;&nbsp;0 about O&prime;. A block at rest uplifts when
+|a|&nbsp;&gt;&nbsp;g&nbsp;tan&nbsp;&alpha;; it overturns (OVT) when |&theta;| reaches
+&pi;/2. Angles are shown in degrees, everything else in SI units. A constant sine of
+table displacement amplitude X and frequency f has the acceleration amplitude
+X&nbsp;(2&pi;f)<sup>2</sup>; the table displacement starts at zero.</p>
+"""
+
+
+def reproduce(out, quick: bool = False, progress: bool = True, only=None) -> Path:
+    """Write the reproduction report ``out/index.html`` (+ PNG and CSV files); return its path.
+
+    ``quick`` runs cheaper versions of the sections (for tests); ``progress`` prints one
+    line per section on stderr; ``only`` restricts the report to some section ids.
+    Raises :class:`ReportError` (a RuntimeError) *after* writing the page if any section
+    failed.
+    """
+    # Sections draw on matplotlib.figure.Figure objects (Agg canvas), never through pyplot,
+    # so building a report does not change the user's backend or open windows.
+    from .. import __version__
+    from ..specimens import paper_data
+
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    secs = ordered_sections()
+    if only is not None:
+        wanted = [only] if isinstance(only, str) else list(only)
+        unknown = sorted(set(wanted) - {s.id for s in secs})
+        if unknown:
+            raise ValueError(f"unknown report section(s) {unknown}; "
+                             f"known: {[s.id for s in secs]}")
+        secs = [s for s in secs if s.id in wanted]
+
+    t_all = time.perf_counter()
+    _log(progress, f"rocking report: {len(secs)} section(s) -> {out}"
+                   f"{' (quick)' if quick else ''}")
+    bodies, toc, failed = [], [], {}
+    width = max((len(s.title) for s in secs), default=0)
+    for i, sec in enumerate(secs, 1):
+        ctx = Context(out=out, quick=quick, section_id=sec.id)
+        t0 = time.perf_counter()
+        try:
+            frag = sec.build(ctx)
+            status = "ok"
+        except Exception as exc:  # a failing section must not kill the report
+            msg = f"{type(exc).__name__}: {exc}"
+            failed[sec.id] = msg
+            frag = (H.error_box(f"This section failed: {msg}",
+                                "The other sections were still computed.",
+                                traceback.format_exc()) + ctx.files_html())
+            status = "FAILED"
+        dt = time.perf_counter() - t0
+        ascii_title = _ascii(sec.title)
+        _log(progress, f"  [{i}/{len(secs)}] {ascii_title:<{width}}  {status:<6} {dt:6.1f} s")
+        cls = "status-ok" if status == "ok" else "status-failed"
+        toc.append(f'<li><a href="#{H.esc(sec.id)}">{H.esc(sec.title)}</a> '
+                   f'<span class="small {cls}">{H.esc(status)}, {dt:.1f} s</span></li>')
+        bodies.append(f'<section id="{H.esc(sec.id)}">\n<h2>{i}. {H.esc(sec.title)}</h2>\n'
+                      f"{frag}\n</section>")
+
+    total = time.perf_counter() - t_all
+    src = paper_data()["source"]
+    now = _dt.datetime.now().astimezone().strftime("%Y-%m-%d %H:%M %Z")
+    head = (
+        f'<p class="meta">Generated {H.esc(now)} by <code>rocking</code> {H.esc(__version__)}'
+        f" in {total:.1f} s{' (quick mode: shortened runs, fewer panels)' if quick else ''}."
+        f"<br>{H.esc(_versions())}</p>"
+        f'<div class="box"><strong>Reference.</strong> {H.esc(src)}</div>'
+        f"<h2>How to read this report</h2>{HOW_TO_READ}{SIGN_CONVENTION}"
+    )
+    if failed:
+        head += H.error_box(f"{len(failed)} section(s) failed",
+                            "; ".join(f"{k}: {v}" for k, v in failed.items()))
+    page = H.page("Rocking of single rigid blocks: reproduction of Peña et al. (2007)",
+                  head, "<ol>" + "".join(toc) + "</ol>", "\n".join(bodies))
+    index = out / "index.html"
+    index.write_text(page, encoding="utf-8")
+    _log(progress, f"rocking report: wrote {index} in {total:.1f} s"
+                   + (f"; FAILED: {', '.join(failed)}" if failed else ""))
+    if failed:
+        raise ReportError(index, failed)
+    return index
