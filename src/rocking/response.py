@@ -46,6 +46,36 @@ class Response:
         """True if the block ever left its rest position."""
         return self.uplift_time is not None or self.max_abs_theta > 0.0
 
+    def half_cycle_peaks(self) -> tuple[np.ndarray, np.ndarray]:
+        """Times (s) and values (rad, signed) of the largest |theta| in each half-cycle.
+
+        Half-cycles are delimited by the impacts; each peak is refined by a parabola
+        through the three output samples around it (accuracy ~ (omega dt_out)^2).
+        """
+        edges = np.concatenate(([self.t[0] if self.t.size else 0.0], self.impact_times,
+                                [self.t[-1] if self.t.size else 0.0]))
+        a = np.abs(self.theta)
+        tp, vp = [], []
+        for lo, hi in zip(edges[:-1], edges[1:], strict=True):
+            idx = np.flatnonzero((self.t >= lo) & (self.t <= hi))
+            if idx.size == 0:
+                continue
+            i = idx[np.argmax(a[idx])]
+            if a[i] == 0.0:
+                continue
+            t_i, v_i = self.t[i], self.theta[i]
+            if 0 < i < a.size - 1 and idx[0] < i < idx[-1]:
+                y0, y1, y2 = a[i - 1], a[i], a[i + 1]
+                den = y0 - 2 * y1 + y2
+                if den < 0:
+                    d = 0.5 * (y0 - y2) / den
+                    dt = self.t[i + 1] - self.t[i]
+                    t_i = t_i + d * dt
+                    v_i = np.sign(v_i) * (y1 - 0.25 * (y0 - y2) * d)
+            tp.append(t_i)
+            vp.append(v_i)
+        return np.asarray(tp), np.asarray(vp)
+
     def summary(self) -> dict:
         """JSON-ready summary (SI units; ``max_abs_theta_deg`` for convenience)."""
         d = {
