@@ -51,22 +51,36 @@ def hermite5(th0, om0, a0, th1, om1, a1, h, x):
 
 
 @njit(cache=True)
-def hermite_root(th0, om0, a0, th1, om1, a1, h, target, which):
+def hermite_root(th0, om0, a0, th1, om1, a1, h, target, which, sgn_lo):
     """Bisection for ``x`` in [0, 1] where the interpolated angle (which=0) or velocity
-    (which=1) equals ``target``; the sign must change over the step."""
+    (which=1) equals ``target``. ``sgn_lo`` (+1 or -1) is the sign of (value - target) just
+    after x = 0, so that a root *at* x = 0 (e.g. right after an impact) is not returned."""
     lo, hi = 0.0, 1.0
-    v = hermite5(th0, om0, a0, th1, om1, a1, h, 0.0)[which] - target
-    flo = v
     for _ in range(52):
         mid = 0.5 * (lo + hi)
         fm = hermite5(th0, om0, a0, th1, om1, a1, h, mid)[which] - target
-        if (fm > 0.0) == (flo > 0.0) and fm != 0.0:
-            lo, flo = mid, fm
+        if fm != 0.0 and (fm > 0.0) == (sgn_lo > 0.0):
+            lo = mid
         else:
             hi = mid
         if hi - lo < 1e-15:
             break
     return 0.5 * (lo + hi)
+
+
+@njit(cache=True)
+def sign_changes(th0, om0, a0, th1, om1, a1, h, s):
+    """Number of sign changes of ``s * theta`` over the step, seen at x = 0, 1/4, ..., 1
+    (``theta(0)`` counts as on side ``s``): 2 or more means a missed double crossing."""
+    n = 0
+    prev = True
+    for j in range(1, 5):
+        th = hermite5(th0, om0, a0, th1, om1, a1, h, 0.25 * j)[0]
+        cur = s * th >= 0.0
+        if cur != prev:
+            n += 1
+        prev = cur
+    return n
 
 
 @njit(cache=True)

@@ -117,7 +117,7 @@ def _seg_peak(th0, om0, a0, th1, om1, a1, h, peak):
     """Update the running max |theta| with the extremum inside a segment, if any."""
     peak = max(peak, abs(th1))
     if om0 * om1 < 0.0 and h > 0.0:
-        x = D.hermite_root(th0, om0, a0, th1, om1, a1, h, 0.0, 1)
+        x = D.hermite_root(th0, om0, a0, th1, om1, a1, h, 0.0, 1, om0)
         peak = max(peak, abs(D.hermite5(th0, om0, a0, th1, om1, a1, h, x)[0]))
     return peak
 
@@ -196,10 +196,13 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
             fac = 0.9 * err ** -0.2 if err == err else 0.1
             h = hh * max(0.1, fac)
             continue
-        # ---- accepted step: events
+        # ---- accepted step: events. A step that hides two crossings is retried shorter.
+        if D.sign_changes(th, om, a_cur, th1, om1, a1, hh, s) >= 2:
+            h = 0.5 * hh
+            continue
         if s * th1 < 0.0:
             # impact inside the step: safeguarded Newton on the step length
-            x = D.hermite_root(th, om, a_cur, th1, om1, a1, hh, 0.0, 0)
+            x = D.hermite_root(th, om, a_cur, th1, om1, a1, hh, 0.0, 0, s)
             lo, hi = 0.0, hh
             sig = x * hh
             thc, omc, ac = th1, om1, a1
@@ -226,16 +229,25 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
             t = tc
             th = 0.0
             om = mu * omc
-            s = 1.0 if om > 0.0 else -1.0
-            need_a = True
-            if _amplitude_from_energy(om, alpha, p2, lin) < rest_tol * alpha:
-                if abs(ground_acc(kind, prm, samples, t)) <= thr:
+            ag = ground_acc(kind, prm, samples, t)
+            if om == 0.0 or _amplitude_from_energy(om, alpha, p2, lin) < rest_tol * alpha:
+                if abs(ag) <= thr:
                     resting = True
                     om = 0.0
+                    continue
+            if om != 0.0:
+                s = 1.0 if om > 0.0 else -1.0
+            else:  # velocity underflow while the ground can uplift: go its way
+                s = 1.0 if ag > 0.0 else -1.0
+            a_cur = _acc(0.0, t, s, alpha, p2, lin, kind, prm, samples)
+            need_a = False
             h = min(h_max, max(hh, 1e-6 / p))
+            if om * a_cur < 0.0:
+                # the rebound lasts 2|om/a|: the first step must not jump over it
+                h = min(h, 0.5 * abs(om / a_cur))
             continue
         if abs(th1) >= HALF_PI:
-            x = D.hermite_root(th, om, a_cur, th1, om1, a1, hh, s * HALF_PI, 0)
+            x = D.hermite_root(th, om, a_cur, th1, om1, a1, hh, s * HALF_PI, 0, -s)
             t_over = t + x * hh
             thx, omx = D.hermite5(th, om, a_cur, th1, om1, a1, hh, x)
             if n_out > 0:

@@ -392,9 +392,8 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             # excursion, so that the return to theta = 0 is bracketed by the solver steps
             acc0 = rhs(t, (th, om))[1]
             if s * acc0 < 0.0:
-                fs = 0.5 * abs(om / acc0)
-                if fs > 0.0:
-                    opts["first_step"] = min(fs, tb - t)
+                fs = max(0.5 * abs(om / acc0), 100.0 * math.ulp(max(t, 1.0)))
+                opts["first_step"] = min(fs, tb - t)
         sol = solve_ivp(rhs, (t, tb), [th, om], method=method, rtol=rtol, atol=atol,
                         events=(ev_impact, ev_over, ev_peak), dense_output=dt_out is not None,
                         **opts)
