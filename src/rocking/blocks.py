@@ -22,6 +22,7 @@ import math
 from dataclasses import dataclass
 
 from ._validate import in_range, positive
+from .errors import ParameterError
 from .units import G
 
 
@@ -89,6 +90,11 @@ class Block:
         alpha = math.atan2(b, h)
         R = math.hypot(b, h)
         p_geo = math.sqrt(3.0 * G / (4.0 * R))
+        if mu is None and housner_mu(alpha) <= 0.0:
+            raise ParameterError(
+                f"Eq 4 gives mu = {housner_mu(alpha):.3f} <= 0 for this squat block "
+                f"(alpha = {math.degrees(alpha):.1f} deg; Housner's restitution needs alpha < "
+                "54.7 deg, i.e. width/height < 1.41); pass mu explicitly, in (0, 1]")
         return cls(
             alpha=alpha,
             p=p_geo if p is None else p,
@@ -104,11 +110,11 @@ class Block:
 
     @classmethod
     def from_params(cls, alpha: float, p: float, mu: float, *, name: str = "", **geometry) -> Block:
-        """A block given directly by its classical parameters ``alpha`` (rad), ``p`` (1/s), ``mu``."""
+        """A block given by its classical parameters ``alpha`` (rad), ``p`` (1/s), ``mu``."""
         return cls(alpha=alpha, p=p, mu=mu, name=name, **geometry)
 
     def with_params(self, **changes) -> Block:
-        """A copy with some fields replaced (validated again), e.g. ``block.with_params(mu=0.9)``."""
+        """A copy with fields replaced (validated again), e.g. ``block.with_params(mu=0.9)``."""
         return dataclasses.replace(self, **changes)
 
     # ------------------------------------------------------------------ derived values

@@ -45,7 +45,8 @@ def acceleration_factor(units: str) -> float:
     return ACCELERATION[key]
 
 
-def parse_quantity(text, kind: str, *, name: str = "value", default_unit: str | None = None) -> float:
+def parse_quantity(text, kind: str, *, name: str = "value",
+                   default_unit: str | None = None) -> float:
     """Parse ``text`` (e.g. ``"5mm"``) as a quantity of ``kind`` and return it in SI units.
 
     A bare number takes ``default_unit``; if that is None, a unit is required (a bare

@@ -6,8 +6,8 @@ All accelerations are in m/s^2 and follow the sign convention of the paper's Eq 
 
 from .base import Motion
 from .harmonic import HanningSine, Sine
-from .pulses import HalfSine, OneCosine, OneSine, Rectangular, Ricker
 from .io import builtin_records, load_builtin, read_record, write_csv
+from .pulses import HalfSine, OneCosine, OneSine, Rectangular, Ricker
 from .records import Record, sample
 
 __all__ = [
