@@ -103,8 +103,13 @@ def main(argv=None):
               f"{int(batch.n_impacts[i]):>4}/{r.n_impacts:<4} "
               f"{int(batch.overturned[i]):>4}/{int(r.overturned):<4}")
     same = sum(bool(batch.overturned[i]) == r.overturned for i, r in enumerate(tight))
-    agree_ref = max(abs(a.max_abs_theta - b.max_abs_theta) / max(b.max_abs_theta, 1e-300)
-                    for a, b in zip(ref, tight, strict=True))
+    sens = [abs(a.max_abs_theta - b.max_abs_theta) / max(b.max_abs_theta, 1e-300)
+            for a, b in zip(ref, tight, strict=True)]
+    agree_ref = max(sens)
+    # Rocking under random input can be chaotic: where the reference itself moves by more
+    # than 0.1% between rtol 1e-8 and 1e-11, no tolerance gives a converged maximum.
+    well = [e for e, d in zip(errs, sens, strict=True) if d < 1e-3]
+    n_within = sum(e <= 1e-2 for e in errs)
 
     ratio = sps_c / sps_r
     max_err = max(errs)
@@ -119,6 +124,9 @@ def main(argv=None):
           f"{'ok' if ratio >= 500 else 'MISSED'}")
     print(f"{f'max rel. error max|theta| ({ref_n} recs)':<40}{max_err:>14.2e}  <= 1e-2 "
           f"{'ok' if max_err <= 1e-2 else 'MISSED'}")
+    print(f"{'records within 1%':<40}{f'{n_within}/{ref_n}':>14}")
+    print(f"{'max rel. error, well-conditioned recs':<40}{max(well, default=0.0):>14.2e}  "
+          f"({len(well)} records whose reference moves < 0.1% with rtol)")
     print(f"{'overturn agreement':<40}{f'{same}/{ref_n}':>14}")
     print(f"{f'ref rtol {args.rtol:g} vs 1e-11: max rel. diff':<40}{agree_ref:>14.2e}")
     print(f"{'batch: overturned / rocked':<40}"
