@@ -111,6 +111,29 @@ def test_constant_step_rkf_is_fourth_order():
     assert 3.6 < order < 4.4, f"observed order {order:.2f}"
 
 
+def test_earthquake_statistics_converge_to_classical():
+    """Under random excitation single trajectories are chaotic (a 1e-4 change of mu moves
+    the maximum angle by ~2%), so compare the statistics of a set of records: overturning
+    fraction and median maximum angle of the standing blocks."""
+    from scipy.signal import butter, sosfiltfilt
+
+    rng = np.random.default_rng(11)
+    b = rocking.specimen(2, "experimental")
+    t = np.arange(1501) * 0.01
+    env = np.clip(t / 2, 0, 1) * np.clip((15 - t) / 4, 0, 1)
+    sos = butter(4, (1.0, 10.0), btype="bandpass", fs=100.0, output="sos")
+    recs = []
+    for _ in range(200):
+        x = sosfiltfilt(sos, rng.standard_normal(t.size)) * env
+        recs.append(Record(rng.uniform(2.8, 4.0) * x / np.abs(x).max(), 0.01))
+    h = rocking.simulate_many(b, recs)
+    c = rocking.simulate_many(b, recs, model="ccrr")
+    assert abs(c.overturned.mean() - h.overturned.mean()) <= 0.05
+    med_h = np.median(h.max_abs_theta[~h.overturned])
+    med_c = np.median(c.max_abs_theta[~c.overturned])
+    assert med_c == pytest.approx(med_h, rel=0.05)
+
+
 def test_batch_equals_single_runs():
     rng = np.random.default_rng(3)
     b = rocking.specimen(2, "experimental")
@@ -126,8 +149,10 @@ def test_batch_equals_single_runs():
 def test_symmetry_under_flipped_motion():
     b = rocking.specimen(2, "experimental")
     m = Sine(3.0, 0.006, 4.0)
-    r1 = ccrr.simulate(b, m)
-    r2 = ccrr.simulate(b, -m)
+    # psi and psi + pi are not bit-symmetric in floating point, so the mirror image holds
+    # to the integration tolerance: check it at a tight one
+    r1 = ccrr.simulate(b, m, rtol=1e-10)
+    r2 = ccrr.simulate(b, -m, rtol=1e-10)
     np.testing.assert_allclose(r1.theta, -r2.theta, atol=1e-9)
 
 
