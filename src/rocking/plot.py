@@ -1,0 +1,224 @@
+"""Matplotlib helpers for responses and base motions.
+
+matplotlib is imported lazily, inside the functions, so that ``import rocking`` stays
+light. When no display is available (and no backend was chosen by the user, e.g. through
+``MPLBACKEND``), the non-interactive ``Agg`` backend is selected. Library code never calls
+``plt.show()``; call it yourself, or save with :func:`save_figure`.
+
+Conventions: time in s, rocking angle in degrees by default (``deg=False`` for rad),
+ground acceleration in m/s^2.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from .errors import ParameterError
+
+#: Colours of the overlaid curves (colour-blind safe, Okabe-Ito).
+PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
+
+
+def _has_display() -> bool:
+    if sys.platform in ("darwin", "win32"):
+        return True
+    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
+
+
+def _pyplot():
+    """``matplotlib.pyplot``, on the Agg backend when there is no display."""
+    import matplotlib
+
+    if ("matplotlib.pyplot" not in sys.modules and not os.environ.get("MPLBACKEND")
+            and not _has_display()):
+        matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def new_axes(figsize=(7.0, 3.6)):
+    """A new ``(fig, ax)`` with constrained (tight) layout, through pyplot."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=figsize, layout="constrained")
+    return fig, ax
+
+
+def figure(figsize=(7.0, 3.6)):
+    """A new ``(fig, ax)`` *without* pyplot (no global state; for scripts and the CLI)."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=figsize, layout="constrained")
+    return fig, fig.add_subplot()
+
+
+def _style(ax, xlabel: str | None = None, ylabel: str | None = None):
+    """Publication-style axes: light grid, no top/right spines, labels with units."""
+    ax.grid(True, which="major", color="0.85", linewidth=0.7)
+    ax.set_axisbelow(True)
+    for side in ("top", "right"):
+        ax.spines[side].set_visible(False)
+    ax.tick_params(direction="out", length=3)
+    if xlabel:
+        ax.set_xlabel(xlabel)
+    if ylabel:
+        ax.set_ylabel(ylabel)
+    return ax
+
+
+def _angle_label(deg: bool) -> str:
+    return r"rocking angle $\theta$ (deg)" if deg else r"rocking angle $\theta$ (rad)"
+
+
+def _draw_response(ax, resp, deg: bool, label, color, annotate: bool, **kw):
+    t = np.asarray(resp.t, dtype=float)
+    th = np.asarray(resp.theta, dtype=float)
+    if deg:
+        th = np.degrees(th)
+    kw.setdefault("linewidth", 1.1)
+    (line,) = ax.plot(t, th, label=label, color=color, **kw)
+    if getattr(resp, "overturned", False):
+        t_over = resp.overturn_time if resp.overturn_time is not None else (
+            t[-1] if t.size else 0.0)
+        sign = math.copysign(1.0, th[-1]) if th.size else 1.0
+        y = sign * (90.0 if deg else math.pi / 2)
+        ax.plot([t_over], [y], marker="X", markersize=9, color="#C00000", zorder=5,
+                linestyle="none", clip_on=False)
+        if annotate:
+            ax.annotate(f"overturned\nt = {t_over:.2f} s", xy=(t_over, y),
+                        xytext=(-12, -14 * sign), textcoords="offset points",
+                        ha="right", va="top" if sign > 0 else "bottom", fontsize=8,
+                        color="#C00000")
+    return line
+
+
+def plot_response(resp, ax=None, deg: bool = True, label: str | None = None, *,
+                  show_alpha: bool = False, title: str | None = None, **kw):
+    """Plot the rocking angle ``theta(t)`` of one :class:`~rocking.Response`.
+
+    Parameters
+    ----------
+    resp : Response
+    ax : matplotlib Axes, optional
+        Drawn on a new figure (through pyplot) when omitted.
+    deg : bool
+        Angle in degrees (default) or radians.
+    label : str, optional
+        Legend entry; a legend is drawn when given.
+    show_alpha : bool
+        Draw the critical angle ``+-alpha`` of the block as dashed lines.
+    title : str, optional
+    **kw
+        Passed to ``Axes.plot`` (``color``, ``linewidth``, ...).
+
+    Overturning is marked with a red cross at ``|theta| = 90 deg`` and annotated with its
+    time. Returns the Axes.
+    """
+    if ax is None:
+        _, ax = new_axes()
+    color = kw.pop("color", PALETTE[0])
+    _draw_response(ax, resp, deg, label, color, True, **kw)
+    block = getattr(resp, "block", None)
+    if show_alpha and block is not None and getattr(block, "alpha", None):
+        a = math.degrees(block.alpha) if deg else block.alpha
+        for y in (a, -a):
+            ax.axhline(y, color="0.45", linestyle="--", linewidth=0.8)
+        ax.annotate(r"$\pm\alpha$", xy=(1.0, a), xycoords=("axes fraction", "data"),
+                    xytext=(2, 0), textcoords="offset points", va="center", fontsize=8,
+                    color="0.35")
+    ax.axhline(0.0, color="0.3", linewidth=0.6)
+    _style(ax, "time t (s)", _angle_label(deg))
+    t = np.asarray(resp.t, dtype=float)
+    if t.size > 1:
+        ax.set_xlim(0.0, float(t[-1]))
+    if label is not None:
+        ax.legend(frameon=False, fontsize=9)
+    if title:
+        ax.set_title(title, fontsize=10)
+    return ax
+
+
+def plot_responses(responses, labels=None, ax=None, deg: bool = True, *,
+                   title: str | None = None, colors=None, **kw):
+    """Overlay the ``theta(t)`` of several responses, one legend entry per ``labels`` item.
+
+    ``labels`` (optional) must have one entry per response. Returns the Axes.
+    """
+    responses = list(responses)
+    if labels is None:
+        labels = [getattr(r, "model", f"response {i + 1}") for i, r in enumerate(responses)]
+    labels = list(labels)
+    if len(labels) != len(responses):
+        raise ParameterError(f"labels must have one entry per response "
+                             f"({len(responses)}), got {len(labels)}")
+    if ax is None:
+        _, ax = new_axes()
+    colors = list(colors) if colors is not None else list(PALETTE)
+    t_end = 0.0
+    for i, (r, lab) in enumerate(zip(responses, labels, strict=True)):
+        _draw_response(ax, r, deg, lab, colors[i % len(colors)], len(responses) == 1, **kw)
+        if len(r.t):
+            t_end = max(t_end, float(r.t[-1]))
+    ax.axhline(0.0, color="0.3", linewidth=0.6)
+    _style(ax, "time t (s)", _angle_label(deg))
+    if t_end > 0:
+        ax.set_xlim(0.0, t_end)
+    if responses:
+        ax.legend(frameon=False, fontsize=9)
+    if title:
+        ax.set_title(title, fontsize=10)
+    return ax
+
+
+def plot_motion(motion, ax=None, duration: float | None = None, *, title: str | None = None,
+                **kw):
+    """Plot the ground acceleration ``a(t)`` (m/s^2) of a base motion.
+
+    A :class:`~rocking.motions.Record` is drawn through its samples; any other motion is
+    sampled finely enough to resolve it. ``duration`` (s) defaults to the motion's.
+    Returns the Axes.
+    """
+    from ._validate import positive
+    from .motions import Motion, Record
+
+    if not isinstance(motion, Motion):
+        raise ParameterError(f"motion must be a rocking.motions.Motion, "
+                             f"got {type(motion).__name__}")
+    dur = motion.duration if duration is None else positive("duration", duration, "s")
+    if isinstance(motion, Record):
+        n = min(motion.acc.size, int(math.floor(dur / motion.dt + 1e-9)) + 1)
+        t = motion.t[:n]
+        a = motion.values[:n]
+    else:
+        dt = min(motion.scan_step / 4.0, dur / 2000.0)
+        t = np.arange(int(math.ceil(dur / dt)) + 1) * dt
+        t = t[t <= dur + 1e-12]
+        a = motion.acceleration(t)
+    if ax is None:
+        _, ax = new_axes()
+    kw.setdefault("linewidth", 0.9)
+    kw.setdefault("color", "0.2")
+    ax.plot(t, a, **kw)
+    ax.axhline(0.0, color="0.3", linewidth=0.6)
+    _style(ax, "time t (s)", r"ground acceleration $a$ (m/s$^2$)")
+    ax.set_xlim(0.0, float(dur))
+    if title:
+        ax.set_title(title, fontsize=10)
+    return ax
+
+
+def save_figure(fig, path, dpi: int = 120) -> Path:
+    """Save ``fig`` (a Figure, or an Axes of one) to ``path``, creating parent folders.
+
+    Returns the path. The figure is not closed (close pyplot figures with ``plt.close``).
+    """
+    fig = getattr(fig, "figure", fig)  # accept an Axes
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=dpi, bbox_inches="tight", facecolor="white")
+    return path
