@@ -59,12 +59,12 @@ def _number(text, name: str, units: tuple[str, ...] = ()) -> float | None:
 
 def _amplitude(text, motion: str) -> tuple[str, float]:
     """``--amp`` as ``("length", m)`` or ``("acceleration", m/s^2)``, checked >= 0."""
-    from .units import _QTY, ACCELERATION, LENGTH
+    from .units import ACCELERATION, LENGTH, split_quantity
 
-    m = _QTY.match(str(text))
-    if not m:  # not a number: let parse_quantity word the error
+    parts = split_quantity(text)
+    if parts is None:  # not a number: let parse_quantity word the error
         _qty(text, "length" if motion in HARMONIC else "acceleration", "amp")
-    unit = (m.group(2) or "").strip().lower().replace(" ", "")
+    unit = parts[1]
     if motion in HARMONIC:
         hint = ("a table displacement with a length unit such as 5mm "
                 "(or an acceleration such as 0.3g)")

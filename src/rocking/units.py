@@ -45,6 +45,15 @@ def acceleration_factor(units: str) -> float:
     return ACCELERATION[key]
 
 
+def split_quantity(text) -> tuple[float, str] | None:
+    """Split ``"5 mm"`` into ``(5.0, "mm")`` (unit lower-cased, spaces removed; ``""`` for a
+    bare number); ``None`` if ``text`` does not start with a number."""
+    m = _QTY.match(str(text))
+    if not m:
+        return None
+    return float(m.group(1)), (m.group(2) or "").strip().lower().replace(" ", "")
+
+
 def parse_quantity(text, kind: str, *, name: str = "value",
                    default_unit: str | None = None) -> float:
     """Parse ``text`` (e.g. ``"5mm"``) as a quantity of ``kind`` and return it in SI units.
