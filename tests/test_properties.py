@@ -52,6 +52,6 @@ def test_ccrr_first_crossing_matches_classical(block, frac):
     """Before the first impact both models solve the same equation (Eq 1 = Eq 10 with
     l -> 0), so the first zero crossing agrees closely."""
     th0 = frac * block.alpha
-    rh = rocking.simulate(block, None, duration=2.0, theta0=th0)
-    rc = rocking.simulate(block, None, model="ccrr", duration=2.0, theta0=th0)
+    rh = rocking.simulate(block, None, duration=20.0 / block.p, theta0=th0)
+    rc = rocking.simulate(block, None, model="ccrr", duration=20.0 / block.p, theta0=th0)
     assert math.isclose(rc.impact_times[0], rh.impact_times[0], rel_tol=1e-4)
