@@ -439,6 +439,16 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, motio
         click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
 
 
+def _register_subcommands() -> None:
+    """Commands that live in their own modules (one module per concept)."""
+    from .cli_identify import identify as identify_cmd
+
+    cli.add_command(identify_cmd)
+
+
+_register_subcommands()
+
+
 def _jsonable(o):
     try:
         return float(o)
