@@ -14,18 +14,19 @@ Quick start::
 Units are SI throughout: m, s, kg, rad, m/s^2.
 """
 
-from . import motions
+from . import dem, motions
 from .blocks import Block, housner_mu
 from .errors import ParameterError, RecordError, RockingError, SpecimenError, UnitError
 from .models import simulate, simulate_many
 from .response import BatchResponse, Response
 from .specimens import specimen
+from .stack import Stack
 from .units import G
 
 __version__ = "0.1.0"
 
 __all__ = [
-    "Block", "housner_mu", "specimen", "simulate", "simulate_many", "Response",
-    "BatchResponse", "motions", "G", "RockingError", "ParameterError", "RecordError",
+    "Block", "Stack", "housner_mu", "specimen", "simulate", "simulate_many", "Response",
+    "BatchResponse", "motions", "dem", "G", "RockingError", "ParameterError", "RecordError",
     "SpecimenError", "UnitError", "__version__",
 ]

@@ -35,6 +35,21 @@ class Response:
     block: object = None
     motion: object = None
     info: dict = field(default_factory=dict)
+    # ---- discrete element model only (None for the classical and CCRR models)
+    x: np.ndarray | None = None
+    """Horizontal displacement (m) of the centroid relative to the base (DEM)."""
+    y: np.ndarray | None = None
+    """Vertical displacement (m) of the centroid from its nominal position on undeformed
+    contacts (DEM; at rest it is minus the static settlement)."""
+    theta_all: np.ndarray | None = None
+    """Rotation (rad) of every block of a stack, shape ``(n_blocks, n_t)`` (DEM)."""
+    x_all: np.ndarray | None = None
+    """``x`` of every block, shape ``(n_blocks, n_t)`` (DEM)."""
+    y_all: np.ndarray | None = None
+    """``y`` of every block, shape ``(n_blocks, n_t)`` (DEM)."""
+    contact_forces: dict | None = None
+    """Contact forces on request (DEM, ``return_forces=True``); see
+    :func:`rocking.models.dem.simulate`."""
 
     @property
     def n_impacts(self) -> int:

@@ -8,6 +8,12 @@ geometry and mass, and the classical parameters chosen by ``params``:
 * ``"geometric"``: recomputed by us from the Table I geometry with Eqs 2-4 (the report
   compares this with column T; they differ for specimen 4, whose cut base the paper does
   not fully describe, and slightly for specimen 1).
+
+``shape`` chooses the geometry kept in the block's polygon (:attr:`Block.vertices`, the
+contact geometry of the discrete element model): ``"rectangle"`` (Table I, the default) or
+``"cut"`` (Table I with the 45 degree cuts of the base corners, 5 mm for specimens 1-3 and
+40 mm for specimen 4). With ``params="geometric"`` the classical parameters are those of
+that shape (``Block.polygon``); the other parameter sets override them.
 """
 
 from __future__ import annotations
@@ -20,6 +26,7 @@ from .blocks import Block
 from .errors import SpecimenError
 
 PARAM_SETS = ("theoretical", "experimental", "geometric")
+SHAPES = ("rectangle", "cut")
 
 
 @cache
@@ -34,8 +41,8 @@ def specimen_ids() -> list[int]:
     return sorted(int(k) for k in paper_data()["specimens"])
 
 
-def specimen(n, params: str = "theoretical") -> Block:
-    """Specimen ``n`` (1-4) of the paper as a :class:`Block`."""
+def specimen(n, params: str = "theoretical", shape: str = "rectangle") -> Block:
+    """Specimen ``n`` (1-4) of the paper as a :class:`Block` (see the module docstring)."""
     ids = specimen_ids()
     try:
         key = int(n)
@@ -45,11 +52,15 @@ def specimen(n, params: str = "theoretical") -> Block:
         raise SpecimenError(f"specimen must be one of {ids}, got {n!r}")
     if params not in PARAM_SETS:
         raise SpecimenError(f"params must be one of {', '.join(PARAM_SETS)}; got {params!r}")
+    if shape not in SHAPES:
+        raise SpecimenError(f"shape must be one of {', '.join(SHAPES)}; got {shape!r}")
     d = paper_data()["specimens"][str(key)]
+    cut = float(d.get("corner_cut", 0.0)) if shape == "cut" else 0.0
     geo = Block.rectangular(d["width"], d["height"], mass=d["mass"], thickness=d["thickness"],
-                            name=f"specimen {key}")
+                            name=f"specimen {key}" + (" (cut)" if cut else ""),
+                            corner_cut=cut)
     if params == "geometric":
         return geo
     c = d[params]
     return geo.with_params(alpha=c["alpha"], p=c["p"], mu=c["mu"],
-                           name=f"specimen {key} ({params})")
+                           name=f"specimen {key} ({params}{', cut' if cut else ''})")

@@ -4,16 +4,17 @@
 dispatch to a registered model. Each model module keeps a compiled (numba) kernel; a plain
 reference implementation lives beside it for testing.
 
-Registered models: ``"housner"`` (the classical piecewise model, Eq 1 + Eq 4) and
-``"ccrr"`` (complex coupled rocking rotations, Eqs 5-10).
+Registered models: ``"housner"`` (the classical piecewise model, Eq 1 + Eq 4),
+``"ccrr"`` (complex coupled rocking rotations, Eqs 5-10) and ``"dem"`` (the discrete
+element model of Section 2.3: rigid polygons on contact springs, also for stacks).
 """
 
 from __future__ import annotations
 
 from ..errors import ParameterError
-from . import ccrr, housner
+from . import ccrr, dem, housner
 
-MODELS = {"housner": housner, "ccrr": ccrr}
+MODELS = {"housner": housner, "ccrr": ccrr, "dem": dem}
 
 
 def _model(name: str):

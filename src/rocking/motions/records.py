@@ -94,6 +94,52 @@ class Record(Motion):
         """Peak ground acceleration (m/s^2)."""
         return float(np.max(np.abs(self.values)))
 
+    # ---- processing (see rocking.motions.processing)
+    def resampled(self, dt: float, method: str = "auto") -> Record:
+        """A copy resampled to time step ``dt`` (s); see :func:`~.processing.resample`."""
+        from .processing import resample
+
+        return resample(self, dt, method=method)
+
+    def filtered(self, low: float | None = 0.1, high: float | None = None, order: int = 4,
+                 keep_pads: bool = False) -> Record:
+        """Zero-phase Butterworth filtered copy; see :func:`~.processing.bandpass`."""
+        from .processing import bandpass
+
+        return bandpass(self, low=low, high=high, order=order, keep_pads=keep_pads)
+
+    def baseline_corrected(self) -> Record:
+        """Copy with zero final velocity and displacement; see
+        :func:`~.processing.baseline_correct`."""
+        from .processing import baseline_correct
+
+        return baseline_correct(self)
+
+    def velocity(self) -> np.ndarray:
+        """Ground velocity (m/s) at the samples, from rest, load factor applied."""
+        from .processing import velocity
+
+        return velocity(self)
+
+    def displacement(self) -> np.ndarray:
+        """Ground displacement (m) at the samples, from rest, load factor applied."""
+        from .processing import displacement
+
+        return displacement(self)
+
+    def intensity_measures(self) -> dict:
+        """PGA, PGV, PGD, Arias intensity, D5-95...; see
+        :func:`~.processing.intensity_measures`."""
+        from .processing import intensity_measures
+
+        return intensity_measures(self)
+
+    def response_spectrum(self, periods, damping: float = 0.05, kind: str = "psa"):
+        """Elastic response spectrum; see :func:`~.spectra.response_spectrum`."""
+        from .spectra import response_spectrum
+
+        return response_spectrum(self, periods, damping=damping, kind=kind)
+
     def __len__(self) -> int:
         return self.acc.size
 

@@ -15,7 +15,8 @@ import importlib
 
 from .core import SECTIONS, Context, ReportError, Section, ordered_sections, reproduce, section
 
-SECTION_MODULES = ("table2", "identification", "table4", "free_rocking", "figure7")
+SECTION_MODULES = ("table2", "identification", "table4", "free_rocking", "figure7", "dem",
+                   "earthquakes")
 """Modules of this package that register sections when imported."""
 
 

@@ -1,0 +1,115 @@
+"""Benchmark: speed of the discrete element model (simulated seconds per wall second).
+
+Specimen 2 (Table I geometry, ``rocking.specimen(2, "geometric")``) under a ``--duration``
+s synthetic record (seeded Gaussian noise band-limited to 1-10 Hz under an envelope, at
+100 Hz), with the default (physical) stiffness and the damping calibrated to mu:
+
+* a single block (PGA ``--pga``, above the uplift acceleration g tan(alpha) = 1.67 m/s^2);
+* a two-block stack (specimen 2 on specimen 2, PGA ``--pga-stack``: the stack, twice as
+  slender, uplifts at 0.83 m/s^2);
+* the single block at other stiffnesses (the time step scales as 1/sqrt(K));
+* a batch of records through ``simulate_many`` (parallel over records).
+
+Wall times are the best of ``--repeat`` runs after a JIT warm-up (numba's cache and the
+damping calibration's cache are filled by the warm-up). Nothing is written to disk::
+
+    .venv/bin/python benchmarks/bench_dem.py --duration 20
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import time
+
+import numpy as np
+from scipy.signal import butter, sosfiltfilt
+
+import rocking
+from rocking.motions import Record
+
+DT = 0.01
+
+
+def make_record(duration, seed, pga, band=(1.0, 10.0)):
+    """A band-limited noise record with a build-up / strong-motion / decay envelope."""
+    rng = np.random.default_rng(seed)
+    m = int(round(duration / DT)) + 1
+    t = np.arange(m) * DT
+    sos = butter(4, band, btype="bandpass", fs=1.0 / DT, output="sos")
+    t1, t2 = 0.15 * duration, 0.55 * duration
+    env = np.where(t < t1, (t / t1) ** 2,
+                   np.where(t < t2, 1.0, np.exp(-3.0 * (t - t2) / (duration - t2))))
+    x = sosfiltfilt(sos, rng.standard_normal(m)) * env
+    return Record(x * pga / np.abs(x).max(), DT, name=f"noise-{seed}")
+
+
+def timed(fn, repeat):
+    best = math.inf
+    out = None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = fn()
+        best = min(best, time.perf_counter() - t0)
+    return best, out
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--duration", type=float, default=20.0, help="record length (s)")
+    ap.add_argument("--pga", type=float, default=2.5, help="PGA of the single block (m/s^2)")
+    ap.add_argument("--pga-stack", type=float, default=1.2, help="PGA of the stack (m/s^2)")
+    ap.add_argument("--seed", type=int, default=2007)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--batch", type=int, default=8, help="records in the batch run")
+    args = ap.parse_args(argv)
+
+    blk = rocking.specimen(2, "geometric")
+    stack = rocking.Stack([blk, blk])
+    rec = make_record(args.duration, args.seed, args.pga)
+    rec_s = make_record(args.duration, args.seed, args.pga_stack)
+
+    t0 = time.perf_counter()
+    rocking.simulate(blk, rec, model="dem", duration=1.0)  # JIT cache + damping calibration
+    rocking.simulate(stack, rec_s, model="dem", duration=1.0)
+    rocking.simulate_many(blk, [rec, rec], model="dem", duration=1.0)
+    warm = time.perf_counter() - t0
+
+    rows = []
+
+    def run(label, block, motion, **kw):
+        wall, r = timed(lambda: rocking.simulate(block, motion, model="dem", **kw), args.repeat)
+        sim = r.info["n_steps"] * r.info["dt"]
+        h = None
+        if isinstance(block, rocking.Block):
+            h = rocking.simulate(block, motion)
+        rows.append((label, r.info["stiffness"], r.info["dt"], r.info["n_steps"], sim, wall,
+                     sim / wall, 1e9 * wall / r.info["n_steps"], math.degrees(r.max_abs_theta),
+                     None if h is None else math.degrees(h.max_abs_theta), r.overturned))
+
+    run("single block (default K)", blk, rec)
+    run("two-block stack (default K)", stack, rec_s)
+    for K in (1e9, 1e11):
+        run(f"single block, K = {K:.0e} N/m", blk, rec, stiffness=K)
+
+    recs = [make_record(args.duration, args.seed + i, args.pga) for i in range(args.batch)]
+    wall_b, b = timed(lambda: rocking.simulate_many(blk, recs, model="dem"), args.repeat)
+
+    print(f"{blk!r}; {args.duration:g} s records at {1 / DT:g} Hz; warm-up {warm:.1f} s")
+    print(f"{'run':<30}{'K (N/m)':>10}{'dt (s)':>10}{'steps':>10}{'sim s':>7}{'wall s':>8}"
+          f"{'sim/wall':>9}{'ns/step':>8}{'max|th| DEM':>12}{'classical':>10}{'OVT':>5}")
+    for (lab, K, dt, n, sim, wall, sps, ns, th, thh, ovt) in rows:
+        print(f"{lab:<30}{K:>10.2e}{dt:>10.2e}{n:>10d}{sim:>7.1f}{wall:>8.3f}{sps:>9.1f}"
+              f"{ns:>8.0f}{th:>11.3f}°{'' if thh is None else f'{thh:.3f}°':>10}"
+              f"{'yes' if ovt else 'no':>5}")
+    print(f"batch of {args.batch} records (simulate_many, parallel): {wall_b:.3f} s wall, "
+          f"{args.batch * args.duration / wall_b:.1f} simulated s per wall s "
+          f"({int(b.overturned.sum())} overturned)")
+    goal = rows[0][5] <= 10.0 * args.duration / 20.0 and rows[1][5] <= 10.0 * args.duration / 20
+    print(f"goal (20 s of motion in < 10 s of wall time, single block and stack): "
+          f"{'ok' if goal else 'MISSED'}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
