@@ -183,9 +183,34 @@ def _block_lines(block) -> list[str]:
 
 
 # ----------------------------------------------------------------------------- motions
-def _make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor):
+def _make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
+                 earthquake=None):
     """``(motion or None, description dict, duration for simulate)``."""
     from . import motions as M
+
+    if earthquake is not None:
+        if motion is not None or record is not None:
+            raise ParameterError("earthquake: --earthquake cannot be combined with --motion "
+                                 "or --record")
+        for name, val in (("freq", freq), ("amp", amp), ("tp", tp), ("units", units),
+                          ("dt", dt)):
+            if val is not None:
+                raise ParameterError(f"{name} does not apply to --earthquake")
+        from .motions.synthetic import earthquake_motion
+
+        try:
+            n = int(str(earthquake))
+        except ValueError:
+            raise ParameterError(f"earthquake must be a whole number from 1 to 30, "
+                                 f"got {earthquake!r}") from None
+        lf = 1.0 if load_factor is None else as_float("load-factor", load_factor)
+        m = earthquake_motion(n, lf)
+        dur = _positive(_qty(duration, "time", "duration", default_unit="s"), "duration", "s")
+        if dur is None:  # capture the free rocking after the record ends
+            dur = m.duration + 5.0
+        desc = {"type": "earthquake", "number": n, "load_factor": lf, "dt": m.dt,
+                "pga": m.pga, "repr": repr(m)}
+        return m, desc, dur
 
     if motion is None:
         if record is None:
@@ -378,24 +403,34 @@ class _ModelChoice(click.ParamType):
               help="Accelerogram file (.AT2, CSV or columns).")
 @click.option("--units", metavar="U", help=f"Units of the record: {UNITS_HELP} (default g).")
 @click.option("--dt", metavar="DT", help="Time step of a one-column record (s).")
+@click.option("--earthquake", metavar="N",
+              help="One of the paper's 30 synthetic EC8 records (1-30), see 'rocking motion'.")
 @click.option("--load-factor", metavar="F", help="Scale the motion (default 1).")
 @click.option("--theta0", metavar="ANGLE", help="Initial angle (bare number: rad; or 2deg).")
 @click.option("--omega0", metavar="W", help="Initial angular velocity (rad/s).")
 @click.option("--linear", is_flag=True, help="Small-angle (linearised) equation of motion.")
 @click.option("--dt-out", metavar="DT", help="Output time step (s; default 0.002).")
+@click.option("--friction-angle", metavar="DEG",
+              help="dem: contact friction angle (degrees, default 30).")
+@click.option("--stiffness", metavar="K",
+              help="dem: normal contact stiffness per contact point (N/m; default physical, "
+                   "a settlement of 1e-7 of the height).")
+@click.option("--damping", metavar="B",
+              help="dem: stiffness-proportional damping b (s), or 'calibrated' (default: "
+                   "matches mu) or 'paper' (Eq 20).")
 @click.option("--out", type=click.Path(file_okay=False),
               help="Write response.csv, summary.json and theta.png to this folder.")
 def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, motion, freq, amp,
-                 tp, duration, record, units, dt, load_factor, theta0, omega0, linear,
-                 dt_out, out):
+                 tp, duration, record, units, dt, earthquake, load_factor, theta0, omega0,
+                 linear, friction_angle, stiffness, damping, dt_out, out):
     """Simulate one block under one base motion."""
     from .models import simulate
 
     block, binfo = _make_block(specimen, params_set, width, height, None, alpha, p, mu,
                                allow_classical=True)
     mot, mdesc, sim_dur = _make_motion(motion, freq, amp, tp, duration, record, units, dt,
-                                       load_factor)
-    options = {}
+                                       load_factor, earthquake)
+    options = _dem_options(model, friction_angle, stiffness, damping)
     th0 = _qty(theta0, "angle", "theta0", default_unit="rad")
     om0 = _number(omega0, "omega0", ("rad/s", "1/s"))
     if dt_out is not None:
@@ -439,11 +474,45 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, motio
         click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
 
 
+def _dem_options(model, friction_angle, stiffness, damping) -> dict:
+    """The DEM-only options of ``simulate``, validated; an error for the other models."""
+    given = {"friction-angle": friction_angle, "stiffness": stiffness, "damping": damping}
+    if model != "dem":
+        for name, val in given.items():
+            if val is not None:
+                raise ParameterError(f"{name} applies to --model dem only")
+        return {}
+    opts = {}
+    if friction_angle is not None:
+        from ._validate import in_range
+
+        opts["friction_angle"] = in_range("friction-angle", _number(friction_angle,
+                                          "friction-angle", ("deg",)), 0.0, 90.0,
+                                          shown="[0, 90) degrees", lo_open=False)
+    if stiffness is not None:
+        opts["stiffness"] = _positive(_number(stiffness, "stiffness", ("n/m",)),
+                                      "stiffness", "N/m")
+    if damping is not None:
+        d = str(damping).strip().lower()
+        if d in ("calibrated", "paper"):
+            opts["damping"] = d
+        else:
+            opts["damping"] = as_float("damping", _number(d, "damping", ("s",)))
+            if opts["damping"] < 0:
+                raise ParameterError(f"damping must be >= 0 s, 'calibrated' or 'paper'; "
+                                     f"got {damping!r}")
+    return opts
+
+
 def _register_subcommands() -> None:
     """Commands that live in their own modules (one module per concept)."""
+    from .cli_dem import dem_params
     from .cli_identify import identify as identify_cmd
+    from .cli_motion import motion as motion_group
 
     cli.add_command(identify_cmd)
+    cli.add_command(dem_params)
+    cli.add_command(motion_group)
 
 
 _register_subcommands()
