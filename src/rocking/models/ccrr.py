@@ -316,16 +316,9 @@ def _batch(alpha, p, mu, l, kinds, prms, samples, nsamp, t_ends, rtol, dt_fixed,
         kk, nimp, peak, over, tov, tup, nst, ok = integrate(
             alpha, p, mu, l, kinds[i], prms[i], samples[i, : nsamp[i]], t_ends[i], 0.0, 0.0,
             rtol, dt_fixed, rest_chi, chi_start, h_max, h_scans[i], dt_out, oth, oom, imp)
-        if n_out > 0:
-            for j in range(kk, n_out):
-                oth[j] = math.nan
-                oom[j] = math.nan
-        res_f[i, 0] = peak if ok else math.nan
-        res_f[i, 1] = tov
-        res_f[i, 2] = tup
-        res_i[i, 0] = nimp
-        res_i[i, 1] = 1 if over else 0
-        res_i[i, 2] = nst
+        oth[kk:] = math.nan
+        oom[kk:] = math.nan
+        E.store_result(res_f, res_i, i, peak, tov, tup, nimp, over, nst, ok)
 
 
 # ---------------------------------------------------------------------------- Python API

@@ -125,6 +125,7 @@ from ..response import BatchResponse, Response
 from ..stack import Stack
 from ..units import G
 from . import _common as C
+from . import _events as E
 
 HALF_PI = 0.5 * math.pi
 DEFAULT_SETTLEMENT = 1e-7
@@ -423,15 +424,8 @@ def _forces(pos, vel, t, dt, lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, c
                 if i > 0:
                     fell = True
                 pen = -py
-                fn = K * pen - cn * vpy
-                if fn < 0.0:
-                    fn = 0.0
-                fsp = fs[i, k, n] - Ks * vpx * dt
-                ft = fsp - cs * vpx
-                fmax = fn * tanphi + coh
-                if abs(ft) > fmax:
-                    ft = math.copysign(fmax, ft)
-                    fsp = ft
+                fn, ft, fsp = _contact_law(K, Ks, cn, cs, tanphi, coh, pen, vpy, vpx,
+                                           fs[i, k, n], dt)
                 fs[i, k, n] = fsp
                 sedge[i, k, n] = 0
                 F[i, 0] += ft
@@ -471,15 +465,8 @@ def _forces(pos, vel, t, dt, lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, c
                 vn = rvx * nx + rvy * ny
                 vt = rvx * ux + rvy * uy
                 pen = -d
-                fn = K * pen - cn * vn
-                if fn < 0.0:
-                    fn = 0.0
-                fsp = fs[i, k, j] - Ks * vt * dt
-                ft = fsp - cs * vt
-                fmax = fn * tanphi + coh
-                if abs(ft) > fmax:
-                    ft = math.copysign(fmax, ft)
-                    fsp = ft
+                fn, ft, fsp = _contact_law(K, Ks, cn, cs, tanphi, coh, pen, vn, vt,
+                                           fs[i, k, j], dt)
                 fs[i, k, j] = fsp
                 fx = fn * nx + ft * ux
                 fy = fn * ny + ft * uy
@@ -632,18 +619,26 @@ def _batch(lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, coh
             lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, coh, kinds[q],
             prms[q], samples[q, : nsamp[q]], t_ends[q], dt, every, pos, vel, fs, sedge,
             nominal, iout, th_tol, True, op, ov, oe, of, imp)
-        if n_out > 0:
-            for j in range(kk, n_out):
-                for i in range(n):
-                    for c in range(3):
-                        op[j, i, c] = math.nan
-                        ov[j, i, c] = math.nan
-        res_f[q, 0] = peak if ok else math.nan
-        res_f[q, 1] = tov
-        res_f[q, 2] = tup
-        res_i[q, 0] = nimp
-        res_i[q, 1] = 1 if over else 0
-        res_i[q, 2] = nst
+        op[kk:] = math.nan
+        ov[kk:] = math.nan
+        E.store_result(res_f, res_i, q, peak, tov, tup, nimp, over, nst, ok)
+
+
+@njit(cache=True)
+def _contact_law(K, Ks, cn, cs, tanphi, coh, pen, vn, vt, fs_prev, dt):
+    """One contact point: normal spring without tension plus its dashpot, and the
+    incremental shear spring (plus dashpot) capped by Coulomb friction. Returns the normal
+    and shear forces and the new shear-spring force (the spring slips at the cap)."""
+    fn = K * pen - cn * vn
+    if fn < 0.0:
+        fn = 0.0
+    fsp = fs_prev - Ks * vt * dt
+    ft = fsp - cs * vt
+    fmax = fn * tanphi + coh
+    if abs(ft) > fmax:
+        ft = math.copysign(fmax, ft)
+        fsp = ft
+    return fn, ft, fsp
 
 
 @njit(cache=True)
