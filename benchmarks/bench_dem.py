@@ -20,28 +20,21 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 import time
-
-import numpy as np
-from scipy.signal import butter, sosfiltfilt
+from pathlib import Path
 
 import rocking
-from rocking.motions import Record
+
+sys.path.insert(0, str(Path(__file__).parent))
+from bench_housner import make_records  # noqa: E402
 
 DT = 0.01
 
 
 def make_record(duration, seed, pga, band=(1.0, 10.0)):
-    """A band-limited noise record with a build-up / strong-motion / decay envelope."""
-    rng = np.random.default_rng(seed)
-    m = int(round(duration / DT)) + 1
-    t = np.arange(m) * DT
-    sos = butter(4, band, btype="bandpass", fs=1.0 / DT, output="sos")
-    t1, t2 = 0.15 * duration, 0.55 * duration
-    env = np.where(t < t1, (t / t1) ** 2,
-                   np.where(t < t2, 1.0, np.exp(-3.0 * (t - t2) / (duration - t2))))
-    x = sosfiltfilt(sos, rng.standard_normal(m)) * env
-    return Record(x * pga / np.abs(x).max(), DT, name=f"noise-{seed}")
+    """One band-limited noise record of peak ``pga`` (the generator of bench_housner.py)."""
+    return make_records(1, duration, seed, band=band, pga=(pga, pga))[0]
 
 
 def timed(fn, repeat):

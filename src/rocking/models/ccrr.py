@@ -307,12 +307,8 @@ def _batch(alpha, p, mu, l, kinds, prms, samples, nsamp, t_ends, rtol, dt_fixed,
     n = kinds.shape[0]
     for i in prange(n):
         imp = np.empty(0)
-        if n_out > 0:
-            oth = out_th[i]
-            oom = out_om[i]
-        else:
-            oth = np.empty(0)
-            oom = np.empty(0)
+        oth = out_th[i]  # shape (n, 0) when no histories are kept
+        oom = out_om[i]
         kk, nimp, peak, over, tov, tup, nst, ok = integrate(
             alpha, p, mu, l, kinds[i], prms[i], samples[i, : nsamp[i]], t_ends[i], 0.0, 0.0,
             rtol, dt_fixed, rest_chi, chi_start, h_max, h_scans[i], dt_out, oth, oom, imp)

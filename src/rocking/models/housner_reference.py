@@ -51,8 +51,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq, minimize_scalar
 
-from .._validate import as_float, in_range, positive
-from ..blocks import Block
+from .._validate import positive
 from ..errors import ParameterError
 from ..motions import (
     HalfSine,
@@ -67,6 +66,7 @@ from ..motions import (
 )
 from ..response import Response
 from ..units import G
+from . import _common as C
 
 HALF_PI = 0.5 * math.pi
 METHODS = ("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")
@@ -297,21 +297,11 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
     Response
         ``info`` holds ``n_solve_ivp`` (number of calls), ``nfev`` and ``n_impacts_total``.
     """
-    if not isinstance(block, Block):
-        raise ParameterError(f"block must be a rocking.Block, got {type(block).__name__}")
-    if motion is not None and not isinstance(motion, Motion):
-        raise ParameterError(f"motion must be a rocking.motions.Motion or None, "
-                             f"got {type(motion).__name__}")
-    if duration is None:
-        if motion is None:
-            raise ParameterError("duration is required for free rocking (motion=None), in s > 0")
-        duration = motion.duration
-    t_end = positive("duration", duration, "s")
-    theta0 = in_range("theta0", theta0, -HALF_PI, HALF_PI, shown="(-pi/2, pi/2) rad")
-    omega0 = as_float("omega0", omega0)
-    rtol = in_range("rtol", rtol, 1e-13, 1e-2, shown="[1e-13, 1e-2]", lo_open=False,
-                    hi_open=False)
-    rest_tol = in_range("rest_tol", rest_tol, 0.0, 1e-2, shown="(0, 1e-2]", hi_open=False)
+    # input validation is shared with the compiled model (the physics below is not)
+    block = C.check_block(block)
+    sp = C.prepare_single(motion, duration, theta0, omega0, 1.0)
+    t_end, theta0, omega0 = sp.duration, sp.theta0, sp.omega0
+    rtol, rest_tol = C.check_rtol(rtol), C.check_rest_tol(rest_tol)
     if method not in METHODS:
         raise ParameterError(f"method must be one of {', '.join(METHODS)}; got {method!r}")
     if dt_out is not None:
