@@ -88,31 +88,19 @@ def _peak_one(acc, dt, w, zeta, m, ntail, out):
     umax = 0.0
     vmax = 0.0
     amax = 0.0
-    if m == 1:
-        p1 = -acc[0]
-        for i in range(1, n):
+    for i in range(n - 1):
+        a0 = acc[i]
+        da = (acc[i + 1] - a0) / m
+        p1 = -a0
+        for q in range(m):
             p0 = p1
-            p1 = -acc[i]
+            p1 = -(a0 + (q + 1) * da)
             un = A * u + B * v + C * p0 + D * p1
             v = A1 * u + B1 * v + C1 * p0 + D1 * p1
             u = un
             umax = max(umax, abs(u))
             vmax = max(vmax, abs(v))
             amax = max(amax, abs(c_v * v + c_u * u))
-    else:
-        for i in range(n - 1):
-            a0 = acc[i]
-            da = (acc[i + 1] - a0) / m
-            p1 = -a0
-            for q in range(m):
-                p0 = p1
-                p1 = -(a0 + (q + 1) * da)
-                un = A * u + B * v + C * p0 + D * p1
-                v = A1 * u + B1 * v + C1 * p0 + D1 * p1
-                u = un
-                umax = max(umax, abs(u))
-                vmax = max(vmax, abs(v))
-                amax = max(amax, abs(c_v * v + c_u * u))
     # free vibration after the record (the ground is at rest after its last sample)
     for _q in range(ntail):
         un = A * u + B * v
