@@ -26,8 +26,8 @@ import numpy as np
 from scipy.signal import butter, sosfiltfilt
 
 import rocking
-from rocking.models.housner_reference import simulate_reference
 from rocking.motions import Record
+from rocking.testing.housner_reference import simulate_reference
 
 DT = 0.01
 

@@ -17,9 +17,9 @@ import rocking
 from rocking import Block, ParameterError, Stack, simulate, simulate_many
 from rocking import dem as PD
 from rocking.blocks import polygon_properties
+from rocking.blocks.specimens import paper_data
 from rocking.models import dem as D
 from rocking.motions import HalfSine, Rectangular, Sine
-from rocking.specimens import paper_data
 from rocking.units import G
 
 

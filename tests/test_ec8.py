@@ -7,10 +7,10 @@ import math
 import numpy as np
 import pytest
 
+from rocking.blocks.specimens import paper_data
 from rocking.errors import ParameterError
 from rocking.motions import DesignSpectrum, ec8_spectrum, paper_target
 from rocking.motions.ec8 import PAPER_TD, ec8_parameters, eta
-from rocking.specimens import paper_data
 
 # EN 1998-1 Table 3.2 (Type 1) and Table 3.3 (Type 2), typed from the standard
 TABLES = {

@@ -3,7 +3,7 @@
 Every expected value is a closed form (or an independent quadrature) of the model's
 equations, never a number captured from this package's own output. Most tests run both
 the compiled kernel (``rocking.simulate``) and the plain scipy reference
-(``rocking.models.housner_reference.simulate_reference``).
+(``rocking.testing.housner_reference.simulate_reference``).
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from scipy.signal import butter, sosfiltfilt
 
 import rocking
 from rocking import Block, ParameterError, simulate, simulate_many
-from rocking.models.housner_reference import Excitation, simulate_reference
+from rocking.blocks.specimens import paper_data
 from rocking.motions import (
     HalfSine,
     HanningSine,
@@ -28,7 +28,7 @@ from rocking.motions import (
     Ricker,
     Sine,
 )
-from rocking.specimens import paper_data
+from rocking.testing.housner_reference import Excitation, simulate_reference
 from rocking.units import G
 
 IMPLS = [pytest.param(simulate, id="compiled"), pytest.param(simulate_reference, id="reference")]

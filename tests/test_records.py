@@ -14,7 +14,7 @@ from rocking.motions import _kernel as K
 from rocking.motions.io import builtin_records, load_builtin, read_record, write_csv
 from rocking.units import G
 
-DATA = Path(__file__).resolve().parents[1] / "src" / "rocking" / "data" / "records"
+DATA = Path(__file__).resolve().parents[1] / "src" / "rocking" / "motions" / "data" / "records"
 
 # from the README of the PEER files: NPTS and DT (s)
 PEER = {

@@ -12,9 +12,9 @@ import pandas as pd
 import pytest
 
 import rocking
+from rocking.blocks.specimens import paper_data
 from rocking.report import SECTIONS, ReportError, reproduce, section
 from rocking.report.core import ordered_sections
-from rocking.specimens import paper_data
 
 FREQS = [0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.3, 5.0]
 AMPS = [3, 4, 5, 6, 8, 10, 12]

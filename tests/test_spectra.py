@@ -247,7 +247,7 @@ class TestSpectrumCommand:
         from pathlib import Path
 
         root = Path(__file__).resolve().parents[1]
-        return root / "src" / "rocking" / "data" / "records" / self.AT2
+        return root / "src" / "rocking" / "motions" / "data" / "records" / self.AT2
 
     def test_table_and_plot(self, tmp_path):
         from click.testing import CliRunner

@@ -15,12 +15,10 @@ Units are SI throughout: m, s, kg, rad, m/s^2.
 """
 
 from . import dem, motions
-from .blocks import Block, housner_mu
+from .blocks import Block, Stack, housner_mu, specimen
 from .errors import ParameterError, RecordError, RockingError, SpecimenError, UnitError
 from .models import simulate, simulate_many
-from .response import BatchResponse, Response
-from .specimens import specimen
-from .stack import Stack
+from .results import BatchResponse, Response
 from .units import G
 
 __version__ = "0.1.0"

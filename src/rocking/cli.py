@@ -26,8 +26,8 @@ import click
 
 from . import __version__
 from ._validate import as_float
+from .blocks import PARAM_SETS
 from .errors import ParameterError, RecordError, RockingError
-from .specimens import PARAM_SETS
 
 PULSES = ("one-sine", "one-cosine", "half-sine", "rectangular", "ricker")
 HARMONIC = ("sine", "hanning")
@@ -97,9 +97,8 @@ def _positive(value, name: str, unit: str):
 # ----------------------------------------------------------------------------- blocks
 def _make_block(specimen, params, width, height, mass, alpha, p, mu, allow_classical: bool):
     """Build the block from exactly one of: specimen, width/height, alpha/p/mu."""
-    from .blocks import Block
-    from .specimens import specimen as get_specimen
-    from .specimens import specimen_ids
+    from .blocks import Block, specimen_ids
+    from .blocks import specimen as get_specimen
 
     sources = [s for s, given in (("--specimen", specimen is not None),
                                   ("--width/--height", width is not None or height is not None),

@@ -24,7 +24,7 @@ COLUMNS = {"theoretical": "T", "experimental": "F"}
 
 
 def _specimen_number(text) -> int:
-    from .specimens import specimen_ids
+    from .blocks import specimen_ids
 
     ids = specimen_ids()
     try:
@@ -40,7 +40,7 @@ def dem_params_dict(n: int, params: str, calibrate: bool = False) -> dict:
     """Table III quantities of specimen ``n`` for a Table II parameter set, with the printed
     values (and our DEM defaults if ``calibrate``)."""
     from . import dem as PD
-    from .specimens import paper_data, specimen
+    from .blocks import paper_data, specimen
 
     blk = specimen(n, params)
     col = COLUMNS[params]

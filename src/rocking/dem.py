@@ -36,9 +36,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ._validate import as_float, positive
-from .blocks import Block
+from .blocks import Block, paper_data, specimen, specimen_ids
 from .errors import ParameterError
-from .specimens import paper_data, specimen, specimen_ids
 from .units import G
 
 if TYPE_CHECKING:

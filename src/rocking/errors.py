@@ -1,8 +1,14 @@
-"""Exceptions raised for bad input.
+"""Exceptions of the package, all exported from :mod:`rocking`.
 
-Every error that a user can cause derives from :class:`RockingError` and from
-:class:`ValueError`, and its message names the offending parameter and the allowed
-range. The command line prints such messages as one ``error: ...`` line.
+Two families:
+
+* **bad input** derives from :class:`RockingError` (and from :class:`ValueError`): the
+  message names the offending parameter and the allowed range. The command line prints it
+  as one ``error: ...`` line and exits with code 2.
+* **numerical failure** is a :class:`SimulationError` (a :class:`RuntimeError`): the input
+  was valid but an integration could not be completed (an unstable explicit step, a
+  constant step too large near a singularity). The message says what to change. The
+  command line prints it as one line and exits with code 1.
 """
 
 from __future__ import annotations
@@ -26,3 +32,19 @@ class RecordError(RockingError):
 
 class UnitError(ParameterError):
     """A quantity has a missing or unknown unit."""
+
+
+class OutputTooLargeError(ParameterError):
+    """The requested output (``duration / dt_out`` samples) would not fit in memory."""
+
+
+class IdentificationError(RockingError):
+    """The record does not allow an identification (no rocking, too few impacts, ...)."""
+
+
+class SimulationError(RuntimeError):
+    """A numerical failure of a model on valid input (not bad input)."""
+
+
+__all__ = ["RockingError", "ParameterError", "SpecimenError", "RecordError", "UnitError",
+           "OutputTooLargeError", "IdentificationError", "SimulationError"]

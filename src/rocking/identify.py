@@ -78,14 +78,10 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import ParameterError, RecordError, RockingError, UnitError
+from .errors import IdentificationError, ParameterError, RecordError, UnitError
 
 __all__ = ["free_rocking", "from_csv", "read_record_csv", "quarter_time", "sigma_surface",
            "FreeRockingFit", "IdentificationError"]
-
-
-class IdentificationError(RockingError):
-    """The record does not allow an identification (no rocking, too few impacts, ...)."""
 
 
 # ----------------------------------------------------------------------------- time model

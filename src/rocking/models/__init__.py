@@ -53,7 +53,7 @@ def simulate_many(block, motions, model: str = "housner", duration: float | None
                   **options):
     """Simulate one block under many motions in one compiled, parallel call.
 
-    Returns a :class:`~rocking.response.BatchResponse` with numpy arrays ``max_abs_theta``
+    Returns a :class:`~rocking.results.BatchResponse` with numpy arrays ``max_abs_theta``
     and ``overturned`` (one entry per motion); time histories only with
     ``return_histories=True``.
     """

@@ -83,9 +83,9 @@ from numba import njit, prange
 
 from .._validate import in_range, positive
 from ..motions._kernel import ground_acc, next_breakpoint
-from ..response import BatchResponse, Response
+from ..results import BatchResponse, Response
 from . import _common as C
-from . import _events as E
+from ._numerics import events as E
 
 HALF_PI = 0.5 * math.pi
 DEFAULT_L = 1e-8

@@ -119,13 +119,12 @@ import numpy as np
 from numba import njit, prange
 
 from .._validate import as_float, in_range, non_negative, positive
-from ..blocks import GRANITE_DENSITY, Block, polygon_properties
+from ..blocks import GRANITE_DENSITY, Block, Stack, polygon_properties
 from ..motions._kernel import ground_acc
-from ..response import BatchResponse, Response
-from ..stack import Stack
+from ..results import BatchResponse, Response
 from ..units import G
 from . import _common as C
-from . import _events as E
+from ._numerics import events as E
 
 HALF_PI = 0.5 * math.pi
 DEFAULT_SETTLEMENT = 1e-7

@@ -20,7 +20,7 @@ where it applies, the 1-based line number.
 
 :func:`write_csv` writes a record as ``t,acc`` columns in m/s^2 that :func:`read_record`
 reads back with ``units="m/s^2"``. :func:`builtin_records` and :func:`load_builtin` give
-the PEER records shipped with the package (``rocking/data/records``).
+the PEER records shipped with the package (``rocking/motions/data/records``).
 """
 
 from __future__ import annotations
@@ -167,7 +167,7 @@ def load_builtin(name: str) -> Record:
 
 # ------------------------------------------------------------------------------- internals
 def _builtin_dir():
-    return resources.files("rocking") / "data" / "records"
+    return resources.files("rocking.motions") / "data" / "records"
 
 
 def _read_text(p: Path) -> str:

@@ -159,7 +159,7 @@ HOW_TO_READ = """
 <p>Each section reproduces one table or figure of the paper with this package and puts the
 paper's printed numbers next to ours. <em>Ours</em> are computed when this page is built
 (nothing is tuned to the paper); <em>paper</em> values are read from the package data
-(<code>rocking/data/pena2007.json</code>, Tables I&ndash;V as printed). Percent differences
+(<code>rocking/blocks/data/pena2007.json</code>, Tables I&ndash;V as printed). Percent differences
 are <code>(ours &minus; paper) / paper &times; 100</code>. The discussion under each table
 is generated from the numbers of this run. Every table is also written as a CSV file and
 every figure as a PNG next to this page (links under each section). Simulations use the
@@ -191,7 +191,7 @@ def reproduce(out, quick: bool = False, progress: bool = True, only=None) -> Pat
     # Sections draw on matplotlib.figure.Figure objects (Agg canvas), never through pyplot,
     # so building a report does not change the user's backend or open windows.
     from .. import __version__
-    from ..specimens import paper_data
+    from ..blocks import paper_data
 
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)

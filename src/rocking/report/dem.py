@@ -19,11 +19,10 @@ import numpy as np
 import pandas as pd
 
 from .. import dem as PD
+from ..blocks import Stack, paper_data, specimen, specimen_ids
 from ..models import dem as D
 from ..models import simulate, simulate_many
 from ..motions import OneSine, Sine
-from ..specimens import paper_data, specimen, specimen_ids
-from ..stack import Stack
 from ..units import G
 from . import html as H
 from .core import section

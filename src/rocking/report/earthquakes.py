@@ -22,12 +22,12 @@ import time
 import numpy as np
 import pandas as pd
 
+from ..blocks import paper_data, specimen
 from ..models import MODELS, simulate, simulate_many
 from ..motions import check_compatibility, seed_earthquakes
 from ..motions.ec8 import paper_target
 from ..motions.spectra import plot_spectra
 from ..motions.synthetic import PAPER_SEED, PERIOD_RANGE
-from ..specimens import paper_data, specimen
 from ..units import G
 from . import html as H
 from .core import section

@@ -13,9 +13,9 @@ import math
 import numpy as np
 import pandas as pd
 
+from ..blocks import specimen
 from ..models import simulate, simulate_many
 from ..motions import Sine
-from ..specimens import specimen
 from . import html as H
 from .core import section
 from .table4 import measured_table

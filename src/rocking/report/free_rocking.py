@@ -14,8 +14,8 @@ import math
 import numpy as np
 import pandas as pd
 
+from ..blocks import specimen, specimen_ids
 from ..models import simulate
-from ..specimens import specimen, specimen_ids
 from . import html as H
 from .core import section
 

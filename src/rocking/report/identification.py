@@ -26,9 +26,9 @@ import math
 import numpy as np
 import pandas as pd
 
+from ..blocks import paper_data, specimen, specimen_ids
 from ..identify import free_rocking
 from ..models import MODELS, simulate
-from ..specimens import paper_data, specimen, specimen_ids
 from . import html as H
 from .core import section
 

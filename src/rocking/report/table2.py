@@ -14,8 +14,7 @@ import math
 
 import pandas as pd
 
-from ..blocks import housner_mu
-from ..specimens import paper_data, specimen, specimen_ids
+from ..blocks import housner_mu, paper_data, specimen, specimen_ids
 from ..units import G
 from . import html as H
 from .core import section

@@ -15,9 +15,9 @@ import math
 import numpy as np
 import pandas as pd
 
+from ..blocks import paper_data, specimen
 from ..models import simulate_many
 from ..motions import Sine
-from ..specimens import paper_data, specimen
 from ..units import G
 from . import html as H
 from .core import section

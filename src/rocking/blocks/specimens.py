@@ -22,8 +22,8 @@ import json
 from functools import cache
 from importlib import resources
 
-from .blocks import Block
-from .errors import SpecimenError
+from ..errors import SpecimenError
+from .block import Block
 
 PARAM_SETS = ("theoretical", "experimental", "geometric")
 SHAPES = ("rectangle", "cut")
@@ -31,8 +31,8 @@ SHAPES = ("rectangle", "cut")
 
 @cache
 def paper_data() -> dict:
-    """The paper's tables (I-V) as a dict, read from ``rocking/data/pena2007.json``."""
-    with resources.files("rocking").joinpath("data/pena2007.json").open() as f:
+    """The paper's tables (I-V) as a dict, read from ``rocking/blocks/data/pena2007.json``."""
+    with resources.files("rocking.blocks").joinpath("data/pena2007.json").open() as f:
         return json.load(f)
 
 

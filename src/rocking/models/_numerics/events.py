@@ -6,7 +6,7 @@ import math
 
 from numba import njit
 
-from ..motions._kernel import ground_acc, next_breakpoint
+from ...motions._kernel import ground_acc, next_breakpoint
 
 
 @njit(cache=True)

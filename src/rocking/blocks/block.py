@@ -33,9 +33,9 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
-from ._validate import as_float, in_range, non_negative, positive
-from .errors import ParameterError
-from .units import G
+from .._validate import as_float, in_range, non_negative, positive
+from ..errors import ParameterError
+from ..units import G
 
 GRANITE_DENSITY = 2650.0
 """Density (kg/m^3) used when a polygon is given neither a mass nor a density."""

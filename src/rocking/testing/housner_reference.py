@@ -53,6 +53,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from .._validate import positive
 from ..errors import ParameterError
+from ..models import _common as C
 from ..motions import (
     HalfSine,
     HanningSine,
@@ -64,9 +65,8 @@ from ..motions import (
     Ricker,
     Sine,
 )
-from ..response import Response
+from ..results import Response
 from ..units import G
-from . import _common as C
 
 HALF_PI = 0.5 * math.pi
 METHODS = ("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")

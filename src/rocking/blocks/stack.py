@@ -17,9 +17,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ._validate import as_float
-from .blocks import Block
-from .errors import ParameterError
+from .._validate import as_float
+from ..errors import ParameterError
+from .block import Block
 
 
 @dataclass(frozen=True, init=False)

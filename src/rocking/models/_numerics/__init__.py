@@ -1,0 +1,1 @@
+"""Compiled numerical building blocks shared by the model kernels (no physics of a model)."""
