@@ -78,7 +78,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import IdentificationError, ParameterError, RecordError, UnitError
+from ..errors import IdentificationError, ParameterError, RecordError, UnitError
 
 __all__ = ["free_rocking", "from_csv", "read_record_csv", "quarter_time", "sigma_surface",
            "FreeRockingFit", "IdentificationError"]
@@ -654,7 +654,7 @@ class FreeRockingFit:
 
     def to_block(self, name: str = "identified", **geometry):
         """A :class:`~rocking.Block` with the identified ``alpha``, ``p``, ``mu``."""
-        from .blocks import Block
+        from ..blocks import Block
 
         if not 0.0 < self.mu <= 1.0:
             raise IdentificationError(
@@ -747,7 +747,7 @@ class FreeRockingFit:
         ``theoretical`` (a Block or mapping) adds its point when it lies in the window (the
         window is widened to include it). Returns the Axes.
         """
-        from .plot import _style, figure
+        from ..plot import _style, figure
 
         if ax is None:
             _, ax = figure(figsize=(5.6, 4.4))
@@ -801,7 +801,7 @@ class FreeRockingFit:
         new figure is made with two panels (theoretical, identified) or one; ``ax`` may be
         one Axes (all curves on it) or two. Returns the Axes (a list of two for panels).
         """
-        from .plot import PALETTE, _style, figure
+        from ..plot import PALETTE, _style, figure
 
         panels = theoretical is not None
         if ax is None:
@@ -851,8 +851,8 @@ class FreeRockingFit:
         return float(min(self.t[-1], t_last + 0.15 * (t_last - self.t[0]) + 0.5))
 
     def _simulate(self, prm, t_end):
-        from .blocks import Block
-        from .models import simulate
+        from ..blocks import Block
+        from ..models import simulate
 
         b = Block.from_params(prm["alpha"], prm["p"], min(max(prm["mu"], 1e-6), 1.0))
         t0 = float(self.peak_times[0])
@@ -1039,7 +1039,7 @@ def free_rocking(t, theta, *, units: str = "rad", offset="auto", min_amplitude=N
                                               "oscillation (offset='symmetric')")
                 c, method = c0, "median"
     else:
-        from ._validate import as_float
+        from .._validate import as_float
 
         c, method = as_float("offset", offset) * factor, "given"
     z = y - c
@@ -1064,7 +1064,7 @@ def free_rocking(t, theta, *, units: str = "rad", offset="auto", min_amplitude=N
     if min_amplitude is None:
         r_min = max(15.0 * sig, 0.02 * big)
     else:
-        from ._validate import positive
+        from .._validate import positive
 
         r_min = positive("min_amplitude", min_amplitude) * factor
     dt_med = float(np.median(np.diff(t)))
