@@ -16,6 +16,7 @@ from rocking.motions import (
     baseline_correct,
     displacement,
     intensity_measures,
+    load_builtin,
     pga,
     pgd,
     pgv,
@@ -25,8 +26,15 @@ from rocking.motions import (
     velocity,
     write_csv,
 )
-from rocking.motions.io import load_builtin
-from rocking.motions.processing import husid, integrate
+from rocking.motions.processing import (
+    bandpass_acc,
+    baseline_correct_acc,
+    husid,
+    integrate,
+    intensity_measures_acc,
+    resample_acc,
+    significant_duration_acc,
+)
 from rocking.units import G
 
 
@@ -253,6 +261,45 @@ class TestBandpass:
         with pytest.raises(ParameterError) as ei:
             bandpass(noisy_record(), **kw)
         assert words in str(ei.value)
+
+
+
+# ----------------------------------------------------------------------------- array forms
+class TestArrayForms:
+    """The array functions are the work; the record functions and methods wrap them."""
+
+    def test_same_numbers_as_the_record_forms(self):
+        rec = noisy_record().scaled(1.3)
+        for arr, r in [
+            (resample_acc(rec.acc, rec.dt, 0.02), resample(rec, 0.02)),
+            (resample_acc(rec.acc, rec.dt, 0.013, method="linear"),
+             rec.resampled(0.013, method="linear")),
+            (bandpass_acc(rec.acc, rec.dt, 0.2, 20.0), bandpass(rec, 0.2, 20.0)),
+            (bandpass_acc(rec.acc, rec.dt, 0.2, keep_pads=True), rec.filtered(0.2, keep_pads=True)),
+            (baseline_correct_acc(rec.acc, rec.dt), rec.baseline_corrected()),
+        ]:
+            np.testing.assert_array_equal(arr, r.acc)
+            assert r.scale == rec.scale and r.name == rec.name
+        im = intensity_measures_acc(rec.values, rec.dt)
+        assert im == intensity_measures(rec) == rec.intensity_measures()
+        assert significant_duration_acc(rec.values, rec.dt) == significant_duration(
+            rec, return_times=True)
+
+    def test_array_errors(self):
+        with pytest.raises(RecordError, match="1-D array"):
+            resample_acc(np.zeros((3, 3)), 0.01, 0.02)
+        with pytest.raises(RecordError, match="non-finite"):
+            bandpass_acc([0.0, np.nan, 0.0], 0.01, 1.0)
+        with pytest.raises(ParameterError, match="dt must be > 0"):
+            baseline_correct_acc(np.zeros(10), 0.0)
+
+    def test_transforms_keep_the_record_class(self):
+        class Tagged(Record):
+            pass
+
+        rec = Tagged(noisy_record().acc, 0.01, name="tagged")
+        for r in (resample(rec, 0.02), rec.filtered(0.2), baseline_correct(rec)):
+            assert type(r) is Tagged and r.name == "tagged"
 
 
 # ----------------------------------------------------------------------------- file formats

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from rocking.errors import ParameterError, RecordError, UnitError
-from rocking.motions import Record, Sine, sample
+from rocking.motions import Record, Sine, load_builtin, sample
 from rocking.motions import _kernel as K
-from rocking.motions.io import builtin_records, load_builtin, read_record, write_csv
+from rocking.motions.io import builtin_records, read_record, write_csv
 from rocking.units import G
 
 DATA = Path(__file__).resolve().parents[1] / "src" / "rocking" / "motions" / "data" / "records"

@@ -19,7 +19,7 @@ Earthquake input:
 from .base import Motion
 from .ec8 import DesignSpectrum, ec8_spectrum, paper_target
 from .harmonic import HanningSine, Sine
-from .io import builtin_records, load_builtin, read_record, write_csv
+from .io import builtin_records, read_record, write_csv
 from .processing import (
     arias_intensity,
     bandpass,
@@ -34,7 +34,7 @@ from .processing import (
     velocity,
 )
 from .pulses import HalfSine, OneCosine, OneSine, Rectangular, Ricker
-from .records import Record, sample
+from .records import Record, load_builtin, sample
 from .spectra import response_spectra, response_spectrum, sdof_response
 from .synthetic import (
     Compatibility,

@@ -19,8 +19,13 @@ problem raises :class:`~rocking.errors.RecordError` with a message that names th
 where it applies, the 1-based line number.
 
 :func:`write_csv` writes a record as ``t,acc`` columns in m/s^2 that :func:`read_record`
-reads back with ``units="m/s^2"``. :func:`builtin_records` and :func:`load_builtin` give
+reads back with ``units="m/s^2"``. :func:`builtin_records` and :func:`read_builtin` give
 the PEER records shipped with the package (``rocking/motions/data/records``).
+
+This module works on arrays and metadata and does not know the
+:class:`~rocking.motions.records.Record` class: :meth:`Record.from_file
+<rocking.motions.records.Record.from_file>` and :func:`~rocking.motions.records.load_builtin`
+build records from what it reads.
 """
 
 from __future__ import annotations
@@ -36,9 +41,9 @@ import numpy as np
 from .._validate import positive
 from ..errors import RecordError, UnitError
 from ..units import G, acceleration_factor
-from .records import Record
+from .base import is_sampled
 
-__all__ = ["read_record", "write_csv", "builtin_records", "load_builtin"]
+__all__ = ["read_record", "write_csv", "builtin_records", "read_builtin"]
 
 _NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eEdD][-+]?\d+)?"
 _AT2_NPTS = re.compile(r"NPTS\s*=\s*(\d+)", re.I)
@@ -100,15 +105,16 @@ def read_record(path, units: str = "g", dt: float | None = None) -> tuple[np.nda
     return _read_columns(p, lines, units, factor, dt)
 
 
-def write_csv(record: Record, path) -> Path:
+def write_csv(record, path) -> Path:
     """Write ``record`` to ``path`` as CSV columns ``t,acc`` (s, m/s^2); returns the path.
 
-    The samples are written with the record's load factor applied (``record.values``) and
-    with full float precision. A comment header states the units and ``dt``, so the file
-    reads back with ``read_record(path, units="m/s^2")`` or
-    ``Record.from_file(path, units="m/s^2")``.
+    ``record`` is a :class:`~rocking.motions.records.Record` (or any sampled accelerogram
+    with ``values``, ``dt``, ``t`` and ``name``). The samples are written with the record's
+    load factor applied (``record.values``) and with full float precision. A comment header
+    states the units and ``dt``, so the file reads back with
+    ``read_record(path, units="m/s^2")`` or ``Record.from_file(path, units="m/s^2")``.
     """
-    if not isinstance(record, Record):
+    if not is_sampled(record):
         raise TypeError(
             f"write_csv needs a Record, got {type(record).__name__}; "
             "sample other motions first with rocking.motions.sample(motion, dt)"
@@ -119,7 +125,7 @@ def write_csv(record: Record, path) -> Path:
         f"# rocking record: {name}",
         "# units: m/s^2",
         f"# dt = {record.dt!r} s",
-        f"# npts = {len(record)}",
+        f"# npts = {len(record.values)}",
         "t,acc",
     ])
     data = np.column_stack([record.t, record.values])
@@ -140,8 +146,9 @@ def builtin_records() -> list[str]:
     return sorted(e.name[:-4] for e in entries if e.name.upper().endswith(".AT2"))
 
 
-def load_builtin(name: str) -> Record:
-    """A record shipped with the package, by name (see :func:`builtin_records`).
+def read_builtin(name: str) -> tuple[np.ndarray, float, dict]:
+    """:func:`read_record` of a record shipped with the package, by name (see
+    :func:`builtin_records`); ``meta["builtin"]`` is True.
 
     ``name`` is the file stem (``"RSN982_NORTHR_JEN292"``), optionally with ``.AT2``, or
     an unambiguous leading part of it such as ``"RSN982"``; case is ignored.
@@ -160,9 +167,9 @@ def load_builtin(name: str) -> Record:
         )
     res = _builtin_dir() / f"{matches[0]}.AT2"
     with resources.as_file(res) as fp:
-        rec = Record.from_file(fp, units="g")
-    rec.meta["builtin"] = True
-    return rec
+        acc, dt, meta = read_record(fp, units="g")
+    meta["builtin"] = True
+    return acc, dt, meta
 
 
 # ------------------------------------------------------------------------------- internals

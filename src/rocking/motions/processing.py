@@ -1,11 +1,17 @@
 r"""Processing of accelerograms and their intensity measures.
 
-Every function takes a :class:`~rocking.motions.records.Record`. The ones that transform a
-record (:func:`resample`, :func:`bandpass`, :func:`baseline_correct`) return a new Record
-with the same ``name``, ``number`` and load factor ``scale`` (they are linear, so they
-commute with the load factor) and append a description of the step to
-``meta["processing"]``. The measures (:func:`pgv`, :func:`arias_intensity`, ...) use the
-samples *with* the load factor applied (``record.values``).
+The work is done on arrays: acceleration samples ``acc`` (m/s^2) and a time step ``dt`` (s)
+(:func:`integrate`, :func:`resample_acc`, :func:`bandpass_acc`, :func:`baseline_correct_acc`,
+:func:`arias_cumulative`, :func:`significant_duration_acc`, :func:`intensity_measures_acc`).
+The :class:`~rocking.motions.records.Record` methods call them, and so do the functions of
+the same names without ``_acc``, which take a record: any sampled accelerogram with
+``acc``, ``dt`` and ``values`` (see :func:`~rocking.motions.base.is_sampled`). The ones that
+transform a record (:func:`resample`, :func:`bandpass`, :func:`baseline_correct`) return a
+new record of the same class (``dataclasses.replace``) with the same ``name``, ``number``
+and load factor ``scale`` (they are linear, so they commute with the load factor) and
+append a description of the step to ``meta["processing"]``. The measures (:func:`pgv`,
+:func:`arias_intensity`, ...) use the samples *with* the load factor applied
+(``record.values``).
 
 Integration is exact for the piecewise-linear acceleration that a Record stands for
 (linear between samples): over a step ``h``
@@ -29,25 +35,28 @@ import numpy as np
 from .._validate import in_range, positive
 from ..errors import ParameterError, RecordError
 from ..units import G
-from .records import Record
+from .base import as_samples, is_sampled
 
 __all__ = ["resample", "bandpass", "baseline_correct", "velocity", "displacement",
            "integrate", "pga", "pgv", "pgd", "arias_intensity", "husid",
-           "significant_duration", "intensity_measures"]
+           "significant_duration", "intensity_measures",
+           "resample_acc", "bandpass_acc", "baseline_correct_acc", "baseline_operator",
+           "arias_cumulative", "significant_duration_acc", "intensity_measures_acc"]
 
 _RATIO_RTOL = 1e-9  # a dt ratio closer than this to a fraction p/q counts as rational
 _MAX_UPDOWN = 1000  # largest polyphase up/down factor
 
 
-def _check_record(record) -> Record:
-    if not isinstance(record, Record):
+def _check_record(record):
+    if not is_sampled(record):
         raise ParameterError(
             f"expected a Record, got {type(record).__name__}; sample other motions first "
             "with rocking.motions.sample(motion, dt)")
     return record
 
 
-def _derived(record: Record, acc: np.ndarray, dt: float, step: str, **meta) -> Record:
+def _derived(record, acc: np.ndarray, dt: float, step: str, **meta):
+    """A record of the same class as ``record`` with new samples and the step recorded."""
     m = dict(record.meta)
     m["processing"] = [*record.meta.get("processing", []), step]
     m.update(meta)
@@ -84,8 +93,10 @@ def _end_values(acc, dt) -> np.ndarray:
     return np.array([v[-1], d[-1]])
 
 
-def _baseline_operator(n: int, dt: float):
-    """``f(acc) -> corrected acc`` for records of ``n`` samples (see :func:`baseline_correct`)."""
+def baseline_operator(n: int, dt: float):
+    """``f(acc) -> corrected acc`` for records of ``n`` samples (see :func:`baseline_correct`).
+
+    The operator is linear; building it once serves many records of the same length."""
     t = np.arange(n) * dt
     T = t[-1]
     b0 = t * (T - t) / (T * T)
@@ -99,7 +110,17 @@ def _baseline_operator(n: int, dt: float):
     return apply
 
 
-def baseline_correct(record) -> Record:
+def baseline_correct_acc(acc, dt: float) -> np.ndarray:
+    """``acc`` (m/s^2, step ``dt`` s) with zero final velocity and displacement; see
+    :func:`baseline_correct`."""
+    a = as_samples(acc)
+    dt = positive("dt", dt, "s")
+    if a.size < 4:
+        raise RecordError(f"baseline correction needs at least 4 samples, got {a.size}")
+    return baseline_operator(a.size, dt)(a)
+
+
+def baseline_correct(record):
     r"""Make the final ground velocity and displacement zero (table back at its start).
 
     Subtracts the smallest smooth correction that does it: a cubic
@@ -111,10 +132,7 @@ def baseline_correct(record) -> Record:
     through :func:`bandpass` first if it has a large low-frequency noise.
     """
     r = _check_record(record)
-    n = r.acc.size
-    if n < 4:
-        raise RecordError(f"baseline correction needs at least 4 samples, got {n}")
-    acc = _baseline_operator(n, r.dt)(r.acc)
+    acc = baseline_correct_acc(r.acc, r.dt)
     return _derived(r, acc, r.dt, "baseline correction (cubic, zero final v and d)")
 
 
@@ -128,7 +146,50 @@ def _ratio(old: float, new: float) -> Fraction | None:
     return frac
 
 
-def resample(record, dt: float, method: str = "auto") -> Record:
+def _resample(acc, dt: float, new_dt: float, method: str) -> tuple[np.ndarray, str | None]:
+    """Resampled samples and a description of the step (``None``: ``dt`` unchanged)."""
+    a = as_samples(acc)
+    dt = positive("dt", dt, "s")
+    new = positive("dt", new_dt, "s")
+    if method not in ("auto", "polyphase", "linear"):
+        raise ParameterError(f"method must be 'auto', 'polyphase' or 'linear'; got {method!r}")
+    n_new = int(math.floor((a.size - 1) * dt / new + 1e-9)) + 1
+    if n_new < 2:
+        raise ParameterError(f"dt = {new:g} s is longer than the record "
+                             f"({(a.size - 1) * dt:g} s)")
+    if math.isclose(new, dt, rel_tol=_RATIO_RTOL):
+        return a.copy(), None
+    frac = _ratio(dt, new) if method != "linear" else None
+    if method == "polyphase" and frac is None:
+        raise ParameterError(
+            f"dt ratio {dt:g}/{new:g} is not a fraction up/down with up, down <= "
+            f"{_MAX_UPDOWN}; use method='linear'")
+    from scipy import signal  # lazy: 1.4-2 s to import, more than rocking.motions
+
+    if frac is not None:
+        up, down = frac.numerator, frac.denominator
+        y = signal.resample_poly(a, up, down, padtype="constant")
+        if y.size < n_new:  # pragma: no cover - resample_poly returns ceil(n up / down)
+            y = np.concatenate([y, np.zeros(n_new - y.size)])
+        out = y[:n_new]
+        how = f"polyphase, up {up} / down {down}"
+    else:
+        x = a
+        if new > dt:
+            fc = 0.8 * 0.5 / new
+            sos = signal.butter(8, fc, btype="lowpass", fs=1.0 / dt, output="sos")
+            x = signal.sosfiltfilt(sos, x)
+        out = np.interp(np.arange(n_new) * new, np.arange(a.size) * dt, x)
+        how = "linear interpolation" + (" after an anti-alias low-pass" if new > dt else "")
+    return np.ascontiguousarray(out), f"resample {dt:g} s -> {new:g} s ({how})"
+
+
+def resample_acc(acc, dt: float, new_dt: float, method: str = "auto") -> np.ndarray:
+    """``acc`` (step ``dt`` s) resampled to the step ``new_dt`` (s); see :func:`resample`."""
+    return _resample(acc, dt, new_dt, method)[0]
+
+
+def resample(record, dt: float, method: str = "auto"):
     """The record resampled to the time step ``dt`` (s), over the same duration.
 
     ``method``:
@@ -145,42 +206,57 @@ def resample(record, dt: float, method: str = "auto") -> Record:
     The last sample is at or just before the original end.
     """
     r = _check_record(record)
-    new = positive("dt", dt, "s")
-    if method not in ("auto", "polyphase", "linear"):
-        raise ParameterError(f"method must be 'auto', 'polyphase' or 'linear'; got {method!r}")
-    n_new = int(math.floor((r.acc.size - 1) * r.dt / new + 1e-9)) + 1
-    if n_new < 2:
-        raise ParameterError(f"dt = {new:g} s is longer than the record ({r.duration:g} s)")
-    if math.isclose(new, r.dt, rel_tol=_RATIO_RTOL):
-        return _derived(r, r.acc.copy(), r.dt, "resample: unchanged")
-    frac = _ratio(r.dt, new) if method != "linear" else None
-    if method == "polyphase" and frac is None:
-        raise ParameterError(
-            f"dt ratio {r.dt:g}/{new:g} is not a fraction up/down with up, down <= "
-            f"{_MAX_UPDOWN}; use method='linear'")
-    from scipy import signal
+    acc, how = _resample(r.acc, r.dt, dt, method)
+    if how is None:
+        return _derived(r, acc, r.dt, "resample: unchanged")
+    return _derived(r, acc, float(dt), how)
 
-    if frac is not None:
-        up, down = frac.numerator, frac.denominator
-        y = signal.resample_poly(r.acc, up, down, padtype="constant")
-        if y.size < n_new:  # pragma: no cover - resample_poly returns ceil(n up / down)
-            y = np.concatenate([y, np.zeros(n_new - y.size)])
-        acc = y[:n_new]
-        how = f"polyphase, up {up} / down {down}"
+
+def _bandpass(acc, dt: float, low, high, order) -> tuple[np.ndarray, int, str]:
+    """Filtered samples with their zero pads, the pad length (samples) and a description."""
+    a = as_samples(acc)
+    dt = positive("dt", dt, "s")
+    nyq = 0.5 / dt
+    if low is None and high is None:
+        raise ParameterError("give low and/or high (Hz) for bandpass")
+    if low is not None:
+        low = in_range("low", low, 0.0, nyq, shown=f"(0, {nyq:g}) Hz (Nyquist)")
+    if high is not None:
+        high = in_range("high", high, 0.0, nyq, shown=f"(0, {nyq:g}) Hz (Nyquist)")
+    if low is not None and high is not None and not low < high:
+        raise ParameterError(f"low must be < high; got low={low:g} Hz, high={high:g} Hz")
+    if int(order) != order or not 1 <= order <= 12:
+        raise ParameterError(f"order must be an integer in 1..12, got {order!r}")
+    order = int(order)
+    from scipy import signal  # lazy: 1.4-2 s to import, more than rocking.motions
+
+    if low is not None and high is not None:
+        sos = signal.butter(order, [low, high], btype="bandpass", fs=1.0 / dt, output="sos")
+    elif low is not None:
+        sos = signal.butter(order, low, btype="highpass", fs=1.0 / dt, output="sos")
     else:
-        x = r.acc
-        if new > r.dt:
-            fc = 0.8 * 0.5 / new
-            sos = signal.butter(8, fc, btype="lowpass", fs=1.0 / r.dt, output="sos")
-            x = signal.sosfiltfilt(sos, x)
-        acc = np.interp(np.arange(n_new) * new, np.arange(r.acc.size) * r.dt, x)
-        how = "linear interpolation" + (" after an anti-alias low-pass" if new > r.dt else "")
-    return _derived(r, np.ascontiguousarray(acc), new,
-                    f"resample {r.dt:g} s -> {new:g} s ({how})")
+        sos = signal.butter(order, high, btype="lowpass", fs=1.0 / dt, output="sos")
+    fc = low if low is not None else high
+    npad = int(math.ceil(1.5 * order / fc / dt))
+    x = np.concatenate([np.zeros(npad), a, np.zeros(npad)])
+    y = signal.sosfiltfilt(sos, x, padtype=None)
+    desc = (f"Butterworth {'band' if low and high else ('high' if low else 'low')}-pass, "
+            f"order {order} x2 (zero phase), corners "
+            f"{'' if low is None else f'{low:g} Hz'}"
+            f"{' - ' if low is not None and high is not None else ''}"
+            f"{'' if high is None else f'{high:g} Hz'}, zero pads {npad * dt:g} s")
+    return y, npad, desc
+
+
+def bandpass_acc(acc, dt: float, low: float | None = 0.1, high: float | None = None,
+                 order: int = 4, keep_pads: bool = False) -> np.ndarray:
+    """Zero-phase Butterworth filtered ``acc`` (step ``dt`` s); see :func:`bandpass`."""
+    y, npad, _ = _bandpass(acc, dt, low, high, order)
+    return y if keep_pads else np.ascontiguousarray(y[npad:y.size - npad])
 
 
 def bandpass(record, low: float | None = 0.1, high: float | None = None, order: int = 4,
-             keep_pads: bool = False) -> Record:
+             keep_pads: bool = False):
     """Zero-phase Butterworth band-pass (or high-/low-pass) filter of the record.
 
     ``low`` and ``high`` are the corner frequencies (Hz; ``None`` for no high-pass or no
@@ -194,35 +270,7 @@ def bandpass(record, low: float | None = 0.1, high: float | None = None, order: 
     velocity and displacement back to zero.
     """
     r = _check_record(record)
-    nyq = 0.5 / r.dt
-    if low is None and high is None:
-        raise ParameterError("give low and/or high (Hz) for bandpass")
-    if low is not None:
-        low = in_range("low", low, 0.0, nyq, shown=f"(0, {nyq:g}) Hz (Nyquist)")
-    if high is not None:
-        high = in_range("high", high, 0.0, nyq, shown=f"(0, {nyq:g}) Hz (Nyquist)")
-    if low is not None and high is not None and not low < high:
-        raise ParameterError(f"low must be < high; got low={low:g} Hz, high={high:g} Hz")
-    if int(order) != order or not 1 <= order <= 12:
-        raise ParameterError(f"order must be an integer in 1..12, got {order!r}")
-    order = int(order)
-    from scipy import signal
-
-    if low is not None and high is not None:
-        sos = signal.butter(order, [low, high], btype="bandpass", fs=1.0 / r.dt, output="sos")
-    elif low is not None:
-        sos = signal.butter(order, low, btype="highpass", fs=1.0 / r.dt, output="sos")
-    else:
-        sos = signal.butter(order, high, btype="lowpass", fs=1.0 / r.dt, output="sos")
-    fc = low if low is not None else high
-    npad = int(math.ceil(1.5 * order / fc / r.dt))
-    x = np.concatenate([np.zeros(npad), r.acc, np.zeros(npad)])
-    y = signal.sosfiltfilt(sos, x, padtype=None)
-    desc = (f"Butterworth {'band' if low and high else ('high' if low else 'low')}-pass, "
-            f"order {order} x2 (zero phase), corners "
-            f"{'' if low is None else f'{low:g} Hz'}"
-            f"{' - ' if low is not None and high is not None else ''}"
-            f"{'' if high is None else f'{high:g} Hz'}, zero pads {npad * r.dt:g} s")
+    y, npad, desc = _bandpass(r.acc, r.dt, low, high, order)
     if keep_pads:
         return _derived(r, y, r.dt, desc + " (kept)",
                         t_shift=float(r.meta.get("t_shift", 0.0)) + npad * r.dt)
@@ -245,27 +293,51 @@ def pgd(record) -> float:
     return float(np.max(np.abs(displacement(record))))
 
 
-def _arias_cumulative(values, dt) -> np.ndarray:
-    a = np.asarray(values)
+def arias_cumulative(acc, dt: float) -> np.ndarray:
+    """Cumulative Arias intensity (m/s for ``acc`` in m/s^2) at the samples, from 0."""
+    a = np.asarray(acc)
     seg = dt * (a[:-1] ** 2 + a[:-1] * a[1:] + a[1:] ** 2) / 3.0  # exact for linear a
     out = np.zeros(a.size)
     out[1:] = np.cumsum(seg)
     return out * (math.pi / (2.0 * G))
 
 
+def _husid(acc, dt: float) -> np.ndarray:
+    c = arias_cumulative(acc, dt)
+    if c[-1] <= 0.0:
+        raise RecordError("the record is identically zero: no Arias intensity")
+    return c / c[-1]
+
+
 def arias_intensity(record) -> float:
     """Arias intensity ``pi / (2 g) * integral a^2 dt`` (m/s for a record in m/s^2)."""
     r = _check_record(record)
-    return float(_arias_cumulative(r.values, r.dt)[-1])
+    return float(arias_cumulative(r.values, r.dt)[-1])
 
 
 def husid(record) -> np.ndarray:
     """Normalised cumulative Arias intensity (0 to 1) at the samples (the Husid plot)."""
     r = _check_record(record)
-    c = _arias_cumulative(r.values, r.dt)
-    if c[-1] <= 0.0:
-        raise RecordError("the record is identically zero: no Arias intensity")
-    return c / c[-1]
+    return _husid(r.values, r.dt)
+
+
+def significant_duration_acc(acc, dt: float, start: float = 0.05, end: float = 0.95
+                             ) -> tuple[float, float, float]:
+    """``(duration, t_start, t_end)`` (s) of ``acc`` (step ``dt`` s); see
+    :func:`significant_duration`."""
+    start = in_range("start", start, 0.0, 1.0, lo_open=False)
+    end = in_range("end", end, 0.0, 1.0, hi_open=False)
+    if not start < end:
+        raise ParameterError(f"start must be < end; got {start:g}, {end:g}")
+    h = _husid(acc, dt)
+    t = np.arange(h.size) * dt
+    # h is non-decreasing: interpolate the time as a function of h on the samples that
+    # bound a rising step (flat stretches, e.g. before the first motion, are skipped, so
+    # that a level is reached where the energy starts to grow, not at t = 0)
+    rise = np.diff(h) > 0
+    keep = np.concatenate([rise, [False]]) | np.concatenate([[False], rise])
+    ta, tb = np.interp([start, end], h[keep], t[keep])
+    return float(tb - ta), float(ta), float(tb)
 
 
 def significant_duration(record, start: float = 0.05, end: float = 0.95,
@@ -276,20 +348,34 @@ def significant_duration(record, start: float = 0.05, end: float = 0.95,
     linearly between samples. ``return_times=True`` gives ``(duration, t_start, t_end)``.
     """
     r = _check_record(record)
-    start = in_range("start", start, 0.0, 1.0, lo_open=False)
-    end = in_range("end", end, 0.0, 1.0, hi_open=False)
-    if not start < end:
-        raise ParameterError(f"start must be < end; got {start:g}, {end:g}")
-    h = husid(r)
-    t = r.t
-    # h is non-decreasing: interpolate the time as a function of h on the samples that
-    # bound a rising step (flat stretches, e.g. before the first motion, are skipped, so
-    # that a level is reached where the energy starts to grow, not at t = 0)
-    rise = np.diff(h) > 0
-    keep = np.concatenate([rise, [False]]) | np.concatenate([[False], rise])
-    ta, tb = np.interp([start, end], h[keep], t[keep])
-    d = float(tb - ta)
-    return (d, float(ta), float(tb)) if return_times else d
+    res = significant_duration_acc(r.values, r.dt, start, end)
+    return res if return_times else res[0]
+
+
+def intensity_measures_acc(acc, dt: float) -> dict:
+    """:func:`intensity_measures` of the samples ``acc`` (m/s^2, step ``dt`` s)."""
+    a = np.asarray(acc, dtype=np.float64)
+    v, d = integrate(a, dt)
+    p = float(np.max(np.abs(a)))
+    if p > 0.0:
+        d595, t5, t95 = significant_duration_acc(a, dt)
+    else:
+        d595 = t5 = t95 = float("nan")
+    return {
+        "pga": p,
+        "pga_g": p / G,
+        "pgv": float(np.max(np.abs(v))),
+        "pgd": float(np.max(np.abs(d))),
+        "arias": float(arias_cumulative(a, dt)[-1]),
+        "d5_95": d595,
+        "t5": t5,
+        "t95": t95,
+        "duration": (a.size - 1) * dt,
+        "dt": dt,
+        "npts": int(a.size),
+        "v_end": float(v[-1]),
+        "d_end": float(d[-1]),
+    }
 
 
 def intensity_measures(record) -> dict:
@@ -301,24 +387,4 @@ def intensity_measures(record) -> dict:
     baseline-corrected record.
     """
     r = _check_record(record)
-    v, d = integrate(r.values, r.dt)
-    p = float(np.max(np.abs(r.values)))
-    if p > 0.0:
-        d595, t5, t95 = significant_duration(r, return_times=True)
-    else:
-        d595 = t5 = t95 = float("nan")
-    return {
-        "pga": p,
-        "pga_g": p / G,
-        "pgv": float(np.max(np.abs(v))),
-        "pgd": float(np.max(np.abs(d))),
-        "arias": arias_intensity(r),
-        "d5_95": d595,
-        "t5": t5,
-        "t95": t95,
-        "duration": r.duration,
-        "dt": r.dt,
-        "npts": int(r.acc.size),
-        "v_end": float(v[-1]),
-        "d_end": float(d[-1]),
-    }
+    return intensity_measures_acc(r.values, r.dt)

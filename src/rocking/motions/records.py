@@ -3,7 +3,11 @@
 A :class:`Record` holds a ground acceleration ``acc`` (m/s^2) sampled every ``dt`` seconds
 from ``t = 0``. Between samples the acceleration is linear; after the last sample it is
 zero. ``Record.from_file`` reads PEER NGA ``.AT2`` files and plain or CSV columns (see
-:mod:`rocking.motions.io`).
+:mod:`rocking.motions.io`) and :func:`load_builtin` the records shipped with the package.
+
+The processing and spectrum methods call the array functions of
+:mod:`rocking.motions.processing` and :mod:`rocking.motions.spectra` (which do not import
+this module: dependencies point from ``Record`` to them).
 """
 
 from __future__ import annotations
@@ -16,6 +20,17 @@ from .._validate import as_float, positive
 from ..errors import RecordError
 from . import _kernel as K
 from .base import Motion
+from .io import read_builtin, read_record
+from .processing import (
+    bandpass,
+    baseline_correct,
+    integrate,
+    intensity_measures_acc,
+    resample,
+)
+from .spectra import response_spectrum
+
+__all__ = ["Record", "sample", "load_builtin"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -56,9 +71,11 @@ class Record(Motion):
         one of ``g``, ``m/s^2``, ``cm/s^2`` (``gal``) and applies to the acceleration
         column; the record is stored in m/s^2.
         """
-        from .io import read_record
+        return cls._from_read(*read_record(path, units=units, dt=dt), **kw)
 
-        acc, step, meta = read_record(path, units=units, dt=dt)
+    @classmethod
+    def _from_read(cls, acc, step, meta: dict, **kw) -> Record:
+        """A record from what :mod:`rocking.motions.io` reads: ``(acc, dt, meta)``."""
         kw.setdefault("name", meta.pop("name", ""))
         return cls(acc, step, meta=meta, **kw)
 
@@ -97,47 +114,33 @@ class Record(Motion):
     # ---- processing (see rocking.motions.processing)
     def resampled(self, dt: float, method: str = "auto") -> Record:
         """A copy resampled to time step ``dt`` (s); see :func:`~.processing.resample`."""
-        from .processing import resample
-
         return resample(self, dt, method=method)
 
     def filtered(self, low: float | None = 0.1, high: float | None = None, order: int = 4,
                  keep_pads: bool = False) -> Record:
         """Zero-phase Butterworth filtered copy; see :func:`~.processing.bandpass`."""
-        from .processing import bandpass
-
         return bandpass(self, low=low, high=high, order=order, keep_pads=keep_pads)
 
     def baseline_corrected(self) -> Record:
         """Copy with zero final velocity and displacement; see
         :func:`~.processing.baseline_correct`."""
-        from .processing import baseline_correct
-
         return baseline_correct(self)
 
     def velocity(self) -> np.ndarray:
         """Ground velocity (m/s) at the samples, from rest, load factor applied."""
-        from .processing import velocity
-
-        return velocity(self)
+        return integrate(self.values, self.dt)[0]
 
     def displacement(self) -> np.ndarray:
         """Ground displacement (m) at the samples, from rest, load factor applied."""
-        from .processing import displacement
-
-        return displacement(self)
+        return integrate(self.values, self.dt)[1]
 
     def intensity_measures(self) -> dict:
         """PGA, PGV, PGD, Arias intensity, D5-95...; see
         :func:`~.processing.intensity_measures`."""
-        from .processing import intensity_measures
-
-        return intensity_measures(self)
+        return intensity_measures_acc(self.values, self.dt)
 
     def response_spectrum(self, periods, damping: float = 0.05, kind: str = "psa"):
         """Elastic response spectrum; see :func:`~.spectra.response_spectrum`."""
-        from .spectra import response_spectrum
-
         return response_spectrum(self, periods, damping=damping, kind=kind)
 
     def __len__(self) -> int:
@@ -155,3 +158,13 @@ def sample(motion: Motion, dt: float, duration: float | None = None) -> Record:
     dur = motion.duration if duration is None else positive("duration", duration, "s")
     t = np.arange(int(round(dur / dt)) + 1) * dt
     return Record(motion.acceleration(t), dt, name=type(motion).__name__)
+
+
+def load_builtin(name: str) -> Record:
+    """A record shipped with the package, by name (see
+    :func:`~rocking.motions.io.builtin_records`).
+
+    ``name`` is the file stem (``"RSN982_NORTHR_JEN292"``), optionally with ``.AT2``, or
+    an unambiguous leading part of it such as ``"RSN982"``; case is ignored.
+    """
+    return Record._from_read(*read_builtin(name))

@@ -39,7 +39,9 @@ import numpy as np
 from numba import njit, prange
 
 from .._validate import in_range, positive
-from ..errors import ParameterError, RecordError
+from ..errors import ParameterError
+from ..units import G
+from .base import as_samples, is_sampled
 
 __all__ = ["response_spectrum", "response_spectra", "sdof_response", "log_periods", "KINDS",
            "plot_spectra",
@@ -152,10 +154,8 @@ def _history(acc, dt, w, zeta, m, u_out, v_out):
 
 # ------------------------------------------------------------------------------ helpers
 def _signal(record, dt) -> tuple[np.ndarray, float]:
-    """(samples in the record's units with its load factor, dt) from a Record or an array."""
-    from .records import Record
-
-    if isinstance(record, Record):
+    """(samples in the record's units with its load factor, dt) from a record or an array."""
+    if is_sampled(record):
         if dt is not None and not math.isclose(float(dt), record.dt, rel_tol=1e-9):
             raise ParameterError(f"dt={dt!r} s was passed but the record has dt = "
                                  f"{record.dt:g} s; leave dt out for a Record")
@@ -167,16 +167,7 @@ def _signal(record, dt) -> tuple[np.ndarray, float]:
     if dt is None:
         raise ParameterError("dt (s) is required when the accelerogram is an array")
     dt = positive("dt", dt, "s")
-    try:
-        acc = np.asarray(record, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise RecordError("the accelerogram must be a 1-D array of numbers") from None
-    if acc.ndim != 1 or acc.size < 2:
-        raise RecordError(f"the accelerogram must be a 1-D array of at least 2 samples, got "
-                          f"shape {acc.shape}")
-    if not np.all(np.isfinite(acc)):
-        raise RecordError("the accelerogram has a non-finite value (NaN or inf)")
-    return np.ascontiguousarray(acc), dt
+    return as_samples(record), dt
 
 
 def _period_array(periods) -> np.ndarray:
@@ -207,8 +198,12 @@ def log_periods(tmin: float = 0.02, tmax: float = 4.0, n: int = 100) -> np.ndarr
     return np.geomspace(tmin, tmax, int(n))
 
 
-def _compute(acc, dt, T, zeta) -> np.ndarray:
-    """(len(T), 3) peaks of |u|, |u'|, |u''+a_g|; rows with T == 0 are left for the caller."""
+def peak_responses(acc, dt, T, zeta) -> np.ndarray:
+    """(len(T), 3) peaks of |u|, |u'|, |u''+a_g|; rows with T == 0 are left for the caller.
+
+    ``acc`` a contiguous float64 array (step ``dt`` s), ``T`` the periods (s) as an array,
+    ``zeta`` the damping ratio: no checks (the inner loop of :func:`synthetic
+    <rocking.motions.synthetic.synthetic>`)."""
     flat = T.ravel()
     pos = flat > 0.0
     out = np.zeros((flat.size, 3))
@@ -235,7 +230,7 @@ def response_spectra(record, periods, damping: float = 0.05, *, dt: float | None
     acc, dt = _signal(record, dt)
     T = _period_array(periods)
     zeta = _check_damping(damping)
-    peaks = _compute(acc, dt, T, zeta)
+    peaks = peak_responses(acc, dt, T, zeta)
     flat = T.ravel()
     w = np.where(flat > 0.0, 2.0 * np.pi / np.where(flat > 0.0, flat, 1.0), 0.0)
     pga = float(np.max(np.abs(acc)))
@@ -315,8 +310,6 @@ def plot_spectra(ax, periods, spectra, target=None, *, period_range=None, labels
     lower bound for the mean); ``period_range`` shades the periods where the match
     counts. ``units`` is ``"m/s^2"`` or ``"g"`` (values are divided by g for display).
     """
-    from ..units import G
-
     T = np.asarray(periods, dtype=np.float64)
     S = np.atleast_2d(np.asarray(spectra, dtype=np.float64))
     k = 1.0 / G if units == "g" else 1.0

@@ -61,6 +61,7 @@ import hashlib
 import math
 import os
 import tempfile
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -69,9 +70,9 @@ import numpy as np
 from .._validate import as_float, in_range, positive
 from ..errors import ParameterError
 from .ec8 import DesignSpectrum, paper_target
-from .processing import _baseline_operator
+from .processing import baseline_operator
 from .records import Record
-from .spectra import _compute, response_spectrum
+from .spectra import peak_responses, response_spectrum
 
 __all__ = ["Envelope", "synthetic", "seed_earthquakes", "paper_earthquake",
            "earthquake_motion", "check_compatibility", "Compatibility", "cache_dir",
@@ -230,7 +231,7 @@ class _Plan:
         self.amp0[self.band] = _target_values(target, 1.0 / fb) / np.sqrt(fb)
         self.logf = np.log(fb)
         self.logfc = np.log(1.0 / self.ctrl[::-1])
-        self.baseline = _baseline_operator(self.n, dt)
+        self.baseline = baseline_operator(self.n, dt)
         k = max(1, int(round(END_TAPER / dt)))
         self.taper = np.ones(self.n)
         ramp = 0.5 - 0.5 * np.cos(np.pi * np.arange(k) / k)
@@ -238,7 +239,7 @@ class _Plan:
         self.taper[self.n - k:] = ramp[::-1]
 
     def spectrum(self, a) -> np.ndarray:
-        return _compute(a, self.dt, self.ctrl, self.damping)[:, 0] * self.omega2
+        return peak_responses(a, self.dt, self.ctrl, self.damping)[:, 0] * self.omega2
 
     def correction(self, sa) -> np.ndarray:
         """Multiplier of the Fourier amplitudes (1 outside the band)."""
@@ -366,8 +367,6 @@ def synthetic(target=None, n: int = 1, duration: float | None = None, seed: int 
     numbers = range(first, first + n)
     workers = min(n, os.cpu_count() or 1)
     if workers > 1:  # records are independent (own random stream): same result as serial
-        from concurrent.futures import ThreadPoolExecutor
-
         with ThreadPoolExecutor(workers) as pool:
             res = list(pool.map(lambda k: _one(plan, seed, k, it1, it2, tol), numbers))
     else:
