@@ -3,13 +3,22 @@
 from __future__ import annotations
 
 import math
+from functools import partial
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
 import rocking
-from rocking.models import ccrr, housner
+from rocking.models import ccrr as ccrr_module
+from rocking.models import simulate, simulate_many
 from rocking.motions import OneCosine, Record, Sine
+
+# the two models under comparison, each through the one entry point
+housner = SimpleNamespace(simulate=partial(simulate, model="housner"),
+                          simulate_many=partial(simulate_many, model="housner"))
+ccrr = SimpleNamespace(DEFAULT_L=ccrr_module.DEFAULT_L, simulate=partial(simulate, model="ccrr"),
+                       simulate_many=partial(simulate_many, model="ccrr"))
 
 G = rocking.G
 BLOCKS = [  # (alpha, p, mu): a generic block, specimens 2 (E), 3 (T) and 4 (T)

@@ -14,17 +14,53 @@ Quick start::
 Units are SI throughout: m, s, kg, rad, m/s^2.
 """
 
-from . import dem, motions
+import importlib
+
 from .blocks import Block, Stack, housner_mu, specimen
-from .errors import ParameterError, RecordError, RockingError, SpecimenError, UnitError
-from .models import simulate, simulate_many
-from .results import BatchResponse, Response
+from .errors import (
+    IdentificationError,
+    OutputTooLargeError,
+    ParameterError,
+    RecordError,
+    RockingError,
+    SimulationError,
+    SpecimenError,
+    UnitError,
+)
+from .results import BatchResponse, DEMResponse, Response
 from .units import G
 
 __version__ = "0.1.0"
 
+_SUBMODULES = ("blocks", "motions", "models", "results", "identify", "report", "cli",
+               "testing", "units", "errors", "plot")
+"""Submodules loaded on first access (PEP 562): ``rocking.identify.free_rocking`` works
+after ``import rocking``, and ``import rocking`` stays cheap (no numba compilation)."""
+_LAZY = {"simulate": ("rocking.models", "simulate"),
+         "simulate_many": ("rocking.models", "simulate_many"),
+         "MODELS": ("rocking.models", "MODELS"),
+         "dem": ("rocking.models.dem", None)}
+
+
+def __getattr__(name: str):
+    if name in _SUBMODULES:
+        return importlib.import_module(f"{__name__}.{name}")
+    if name in _LAZY:
+        module, attr = _LAZY[name]
+        mod = importlib.import_module(module)
+        value = mod if attr is None else getattr(mod, attr)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_SUBMODULES) | set(_LAZY))
+
+
 __all__ = [
     "Block", "Stack", "housner_mu", "specimen", "simulate", "simulate_many", "Response",
-    "BatchResponse", "motions", "dem", "G", "RockingError", "ParameterError", "RecordError",
-    "SpecimenError", "UnitError", "__version__",
+    "BatchResponse", "DEMResponse", "MODELS", "G", "RockingError", "ParameterError",
+    "RecordError", "SpecimenError", "UnitError", "OutputTooLargeError", "IdentificationError",
+    "SimulationError", "__version__",
 ]

@@ -460,7 +460,7 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, motio
         click.echo(f"overturned  yes, at t = {resp.overturn_time:.4g} s")
     else:
         click.echo("overturned  no")
-    up = "-" if resp.uplift_time is None else f"t = {resp.uplift_time:.4g} s"
+    up = "-" if math.isnan(resp.uplift_time) else f"t = {resp.uplift_time:.4g} s"
     click.echo(f"uplift      {up}")
     click.echo(f"impacts     {resp.n_impacts}")
 

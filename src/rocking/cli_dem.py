@@ -39,7 +39,7 @@ def _specimen_number(text) -> int:
 def dem_params_dict(n: int, params: str, calibrate: bool = False) -> dict:
     """Table III quantities of specimen ``n`` for a Table II parameter set, with the printed
     values (and our DEM defaults if ``calibrate``)."""
-    from . import dem as PD
+    from .models import dem as PD
     from .blocks import paper_data, specimen
 
     blk = specimen(n, params)

@@ -83,7 +83,7 @@ def _draw_response(ax, resp, deg: bool, label, color, annotate: bool, **kw):
     kw.setdefault("linewidth", 1.1)
     (line,) = ax.plot(t, th, label=label, color=color, **kw)
     if getattr(resp, "overturned", False):
-        t_over = resp.overturn_time if resp.overturn_time is not None else (
+        t_over = resp.overturn_time if not math.isnan(resp.overturn_time) else (
             t[-1] if t.size else 0.0)
         sign = math.copysign(1.0, th[-1]) if th.size else 1.0
         y = sign * (90.0 if deg else math.pi / 2)

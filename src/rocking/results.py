@@ -1,7 +1,17 @@
 """Result objects of :func:`rocking.simulate` and :func:`rocking.simulate_many`.
 
-Angles are in rad, angular velocities in rad/s, times in s. ``theta`` follows the sign
-convention of the paper's Eq (1) (see :mod:`rocking.models.housner`).
+One convention for every model:
+
+* SI units: angles in rad, angular velocities in rad/s, times in s; ``theta`` follows the
+  sign convention of the paper's Eq (1) (see :mod:`rocking.models.housner`);
+* an event that did not happen has the time **NaN** (``overturn_time``, ``uplift_time``),
+  in single and batch results alike (``summary()`` and ``to_dict()`` write it as ``None``
+  in JSON);
+* ``n_impacts`` is the number of impacts, i.e. passages of ``theta`` through zero, over
+  the whole run (``impact_times`` keeps the first ``max_impacts`` of them);
+* the default output interval is :data:`DEFAULT_DT_OUT` everywhere;
+* every result has ``summary()`` (a small JSON-ready dict) and ``to_dict()`` (everything,
+  JSON-ready).
 """
 
 from __future__ import annotations
@@ -13,10 +23,38 @@ from pathlib import Path
 
 import numpy as np
 
+DEFAULT_DT_OUT = 0.002
+"""Default output interval (s) of the time histories, for single runs and batches."""
 
-def _none_if_nan(x) -> float | None:
-    x = float(x)
-    return None if math.isnan(x) else x
+
+def jsonable(x):
+    """``x`` as plain JSON data: NaN and inf -> None, numpy -> Python, arrays -> lists."""
+    if isinstance(x, dict):
+        return {str(k): jsonable(v) for k, v in x.items()}
+    if isinstance(x, list | tuple):
+        return [jsonable(v) for v in x]
+    if isinstance(x, np.ndarray):
+        return jsonable(x.tolist())
+    if isinstance(x, bool | np.bool_):
+        return bool(x)
+    if isinstance(x, int | np.integer):
+        return int(x)
+    if isinstance(x, float | np.floating):
+        x = float(x)
+        return x if math.isfinite(x) else None
+    if x is None or isinstance(x, str):
+        return x
+    return repr(x)
+
+
+def _block_dict(block) -> dict | None:
+    if block is None:
+        return None
+    if hasattr(block, "params"):
+        d = dict(block.params())
+        d["name"] = getattr(block, "name", "")
+        return d
+    return {"repr": repr(block)}
 
 
 @dataclass
@@ -29,37 +67,26 @@ class Response:
     impact_times: np.ndarray
     max_abs_theta: float
     overturned: bool
-    overturn_time: float | None
-    uplift_time: float | None
+    overturn_time: float
+    """Time (s) at which ``|theta|`` reached pi/2; NaN if the block did not overturn."""
+    uplift_time: float
+    """First time (s) the block left its rest position; NaN if it never did."""
+    n_impacts: int
+    """Number of impacts (passages through theta = 0) over the whole run."""
     model: str = "housner"
     block: object = None
     motion: object = None
     info: dict = field(default_factory=dict)
-    # ---- discrete element model only (None for the classical and CCRR models)
-    x: np.ndarray | None = None
-    """Horizontal displacement (m) of the centroid relative to the base (DEM)."""
-    y: np.ndarray | None = None
-    """Vertical displacement (m) of the centroid from its nominal position on undeformed
-    contacts (DEM; at rest it is minus the static settlement)."""
-    theta_all: np.ndarray | None = None
-    """Rotation (rad) of every block of a stack, shape ``(n_blocks, n_t)`` (DEM)."""
-    x_all: np.ndarray | None = None
-    """``x`` of every block, shape ``(n_blocks, n_t)`` (DEM)."""
-    y_all: np.ndarray | None = None
-    """``y`` of every block, shape ``(n_blocks, n_t)`` (DEM)."""
-    contact_forces: dict | None = None
-    """Contact forces on request (DEM, ``return_forces=True``); see
-    :func:`rocking.models.dem.simulate`."""
-
-    @property
-    def n_impacts(self) -> int:
-        """Number of impacts (passages through theta = 0)."""
-        return int(self.impact_times.size)
 
     @property
     def rocked(self) -> bool:
         """True if the block ever left its rest position."""
-        return self.uplift_time is not None or self.max_abs_theta > 0.0
+        return not math.isnan(self.uplift_time) or self.max_abs_theta > 0.0
+
+    @property
+    def duration(self) -> float:
+        """Simulated time (s): the last output time."""
+        return float(self.t[-1]) if self.t.size else 0.0
 
     def half_cycle_peaks(self) -> tuple[np.ndarray, np.ndarray]:
         """Times (s) and values (rad, signed) of the largest |theta| in each half-cycle.
@@ -92,7 +119,8 @@ class Response:
         return np.asarray(tp), np.asarray(vp)
 
     def summary(self) -> dict:
-        """JSON-ready summary (SI units; ``max_abs_theta_deg`` for convenience)."""
+        """JSON-ready summary (SI units; ``max_abs_theta_deg`` for convenience; NaN times
+        as None)."""
         d = {
             "model": self.model,
             "max_abs_theta": float(self.max_abs_theta),
@@ -100,15 +128,25 @@ class Response:
             "overturned": bool(self.overturned),
             "overturn_time": self.overturn_time,
             "uplift_time": self.uplift_time,
-            "n_impacts": self.n_impacts,
-            "duration": float(self.t[-1]) if self.t.size else 0.0,
+            "n_impacts": int(self.n_impacts),
+            "duration": self.duration,
         }
-        if self.block is not None and hasattr(self.block, "params"):
-            d["block"] = {k: v for k, v in self.block.params().items()}
-            d["block"]["name"] = getattr(self.block, "name", "")
+        blk = _block_dict(self.block)
+        if blk is not None:
+            d["block"] = blk
         if self.motion is not None:
             d["motion"] = repr(self.motion)
         d.update({k: v for k, v in self.info.items() if isinstance(v, int | float | str | bool)})
+        return jsonable(d)
+
+    def to_dict(self) -> dict:
+        """Everything, JSON-ready: the summary, ``info`` and the time histories."""
+        d = self.summary()
+        d["info"] = jsonable({k: v for k, v in self.info.items()})
+        d["impact_times"] = jsonable(self.impact_times)
+        d["t"] = jsonable(self.t)
+        d["theta"] = jsonable(self.theta)
+        d["omega"] = jsonable(self.omega)
         return d
 
     def to_dataframe(self):
@@ -137,12 +175,48 @@ class Response:
 
 
 @dataclass
+class DEMResponse(Response):
+    """A :class:`Response` of the discrete element model, with its extra fields."""
+
+    x: np.ndarray | None = None
+    """Horizontal displacement (m) of the centroid relative to the base."""
+    y: np.ndarray | None = None
+    """Vertical displacement (m) of the centroid from its nominal position on undeformed
+    contacts (at rest it is minus the static settlement)."""
+    theta_all: np.ndarray | None = None
+    """Rotation (rad) of every block of a stack, shape ``(n_blocks, n_t)``."""
+    x_all: np.ndarray | None = None
+    """``x`` of every block, shape ``(n_blocks, n_t)``."""
+    y_all: np.ndarray | None = None
+    """``y`` of every block, shape ``(n_blocks, n_t)``."""
+    contact_forces: dict | None = None
+    """Contact forces on request (``return_forces=True``); see
+    :mod:`rocking.models.dem`."""
+
+    def to_dataframe(self):
+        """``t``, ``theta``, ``omega``, ``x``, ``y`` (top block)."""
+        df = super().to_dataframe()
+        df["x"] = self.x
+        df["y"] = self.y
+        return df
+
+    def to_dict(self) -> dict:
+        d = super().to_dict()
+        for k in ("x", "y", "theta_all", "x_all", "y_all"):
+            d[k] = jsonable(getattr(self, k))
+        if self.contact_forces is not None:
+            d["contact_forces"] = jsonable(self.contact_forces)
+        return d
+
+
+@dataclass
 class BatchResponse:
     """Summaries of a batch of simulations, one entry per motion (numpy arrays).
 
     ``overturn_time`` and ``uplift_time`` are NaN where the event did not happen.
     ``theta``/``omega`` (shape ``(n_motions, n_times)``) are present only when histories
-    were requested; after an overturn they are NaN.
+    were requested; after the end of a run (an overturn) they are NaN. ``status`` is 0
+    for a successful run (see ``errors=`` of :func:`rocking.simulate_many`).
     """
 
     max_abs_theta: np.ndarray
@@ -150,13 +224,22 @@ class BatchResponse:
     overturn_time: np.ndarray
     uplift_time: np.ndarray
     n_impacts: np.ndarray
+    n_steps: np.ndarray | None = None
+    status: np.ndarray | None = None
     t: np.ndarray | None = None
     theta: np.ndarray | None = None
     omega: np.ndarray | None = None
     model: str = "housner"
+    block: object = None
+    info: dict = field(default_factory=dict)
 
     def __len__(self) -> int:
         return int(self.max_abs_theta.size)
+
+    @property
+    def rocked(self) -> np.ndarray:
+        """True where the block left its rest position."""
+        return ~np.isnan(self.uplift_time) | (self.max_abs_theta > 0.0)
 
     def to_dataframe(self):
         """One row per motion with the summary quantities."""
@@ -169,3 +252,34 @@ class BatchResponse:
             "uplift_time": self.uplift_time,
             "n_impacts": self.n_impacts,
         })
+
+    def summary(self) -> dict:
+        """JSON-ready statistics over the batch: counts, the overturned fraction, and the
+        median and largest ``max_abs_theta`` of the runs that did not overturn."""
+        n = len(self)
+        ok = ~self.overturned & np.isfinite(self.max_abs_theta)
+        surv = self.max_abs_theta[ok]
+        d = {
+            "model": self.model,
+            "n": n,
+            "n_overturned": int(np.count_nonzero(self.overturned)),
+            "overturned_fraction": float(np.mean(self.overturned)) if n else math.nan,
+            "n_rocked": int(np.count_nonzero(self.rocked)),
+            "median_max_abs_theta_survived": float(np.median(surv)) if surv.size else None,
+            "max_max_abs_theta_survived": float(np.max(surv)) if surv.size else None,
+            "n_impacts_total": int(np.sum(self.n_impacts)),
+            "n_failed": int(np.count_nonzero(self.status)) if self.status is not None else 0,
+        }
+        blk = _block_dict(self.block)
+        if blk is not None:
+            d["block"] = blk
+        d.update({k: v for k, v in self.info.items() if isinstance(v, int | float | str | bool)})
+        return jsonable(d)
+
+    def to_dict(self) -> dict:
+        """Everything, JSON-ready: the summary, the per-motion arrays and the histories."""
+        d = self.summary()
+        for k in ("max_abs_theta", "overturned", "overturn_time", "uplift_time", "n_impacts",
+                  "n_steps", "status", "t", "theta", "omega"):
+            d[k] = jsonable(getattr(self, k))
+        return d

@@ -77,15 +77,14 @@ numba; batches run in parallel.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
-import numpy as np
 from numba import njit, prange
 
-from .._validate import in_range, positive
 from ..motions._kernel import ground_acc, next_breakpoint
-from ..results import BatchResponse, Response
-from . import _common as C
+from ..units import G
 from ._numerics import events as E
+from .base import Model, ModelOptions, option, row_args, store_row
 
 HALF_PI = 0.5 * math.pi
 DEFAULT_L = 1e-8
@@ -105,7 +104,7 @@ R1, R3, R4, R5, R6 = 1 / 360, -128 / 4275, -2197 / 75240, 1 / 50, 2 / 55  # 5th 
 @njit(cache=True)
 def _f(chi, v, psi, t, p, alpha, l, c, kind, prm, samples):
     """Time derivatives (physical time) of (chi, chi_dot, psi); chi_dot is per adim. time."""
-    a = ground_acc(kind, prm, samples, t) / 9.80665
+    a = ground_acc(kind, prm, samples, t) / G
     inv = 1.0 / chi
     inv2 = inv * inv
     acc = (l * l * inv2 * inv - math.sin(alpha - alpha * chi) / alpha + c * l * inv2 * v
@@ -181,7 +180,7 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
     ``dt_fixed > 0`` selects constant steps; otherwise adaptive with ``rtol``.
     """
     c = 2.0 * math.log(mu) / math.pi
-    thr = 9.80665 * math.tan(alpha)
+    thr = G * math.tan(alpha)
     x_over = HALF_PI / alpha
     fixed = dt_fixed > 0.0
     n_out = out_th.shape[0]
@@ -301,98 +300,61 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
     return k, n_imp, peak, overturned, t_over, t_up, n_steps, ok
 
 
-@njit(cache=True, parallel=True)
-def _batch(alpha, p, mu, l, kinds, prms, samples, nsamp, t_ends, rtol, dt_fixed, rest_chi,
-           chi_start, h_max, h_scans, dt_out, n_out, out_th, out_om, res_f, res_i):
-    n = kinds.shape[0]
-    for i in prange(n):
-        imp = np.empty(0)
-        oth = out_th[i]  # shape (n, 0) when no histories are kept
-        oom = out_om[i]
-        kk, nimp, peak, over, tov, tup, nst, ok = integrate(
-            alpha, p, mu, l, kinds[i], prms[i], samples[i, : nsamp[i]], t_ends[i], 0.0, 0.0,
-            rtol, dt_fixed, rest_chi, chi_start, h_max, h_scans[i], dt_out, oth, oom, imp)
-        oth[kk:] = math.nan
-        oom[kk:] = math.nan
-        E.store_result(res_f, res_i, i, peak, tov, tup, nimp, over, nst, ok)
-
-
-# ---------------------------------------------------------------------------- Python API
-def _options(block, l, rtol, dt, rest_tol):
-    l = in_range("l", l, 0.0, 0.1, shown="(0, 0.1]", hi_open=False)
-    rtol = C.check_rtol(rtol)
-    dt_fixed = 0.0 if dt is None else positive("dt", dt, "s")
-    rest_tol = C.check_rest_tol(rest_tol)
-    chi_c = (l * l * block.alpha / math.sin(block.alpha)) ** (1.0 / 3.0)
-    return l, rtol, dt_fixed, max(rest_tol, 2.0 * chi_c), math.sqrt(l)
-
-
-def simulate(block, motion=None, *, duration=None, theta0=0.0, omega0=0.0, linear=False,
-             l=DEFAULT_L, rtol=DEFAULT_RTOL, dt=None, rest_tol=1e-6, dt_out=0.002,
-             max_impacts=100_000, **unknown):
-    """CCRR model; see :func:`rocking.simulate` and the module docstring.
-
-    Options: ``l`` (regularising angular momentum), ``rtol`` (adaptive RKF45 tolerance),
-    ``dt`` (s: constant-step RKF45 instead), ``rest_tol``, ``dt_out``, ``max_impacts``.
-    """
-    C.no_unknown("ccrr", unknown)
-    block = C.check_block(block)
-    if linear:
-        raise C.ParameterError("linear=True is not available for model 'ccrr' "
-                               "(use model='housner')")
-    l, rtol, dt_fixed, rest_chi, chi_start = _options(block, l, rtol, dt, rest_tol)
-    sp = C.prepare_single(motion, duration, theta0, omega0, dt_out)
-    out_th = np.empty(sp.n_out)
-    out_om = np.empty(sp.n_out)
-    imp = np.empty(max(1, min(int(max_impacts), 1_000_000)))
-    h_max = min(0.05 / block.p, 8.0 * sp.h_scan)
+@njit(cache=True)
+def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_om, imp,
+           extra):
+    """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
+    alpha, p, mu, l, rtol, dt_fixed, rest_chi, chi_start = mp
+    h_max = min(0.05 / p, 8.0 * h_scan)
     k, n_imp, peak, over, t_over, t_up, n_steps, ok = integrate(
-        block.alpha, block.p, block.mu, l, sp.kind, sp.prm, sp.samples, sp.duration,
-        sp.theta0, sp.omega0, rtol, dt_fixed, rest_chi, chi_start, h_max, sp.h_scan,
-        sp.dt_out, out_th, out_om, imp)
-    if not ok:
-        raise C.ParameterError(
-            f"ccrr integration failed near the origin at t = {k * sp.dt_out:.4g} s: "
-            f"the constant step dt = {dt} s is too large for l = {l:g}; use a smaller dt "
-            "or the adaptive mode (dt=None)")
-    t, th, om = C.finish_history(k, out_th, out_om, sp.dt_out, over, t_over)
-    return Response(
-        t=t, theta=th, omega=om, impact_times=imp[: min(n_imp, imp.size)].copy(),
-        max_abs_theta=float(peak), overturned=bool(over),
-        overturn_time=float(t_over) if over else None,
-        uplift_time=None if math.isnan(t_up) else float(t_up),
-        model="ccrr", block=block, motion=motion,
-        info={"n_steps": int(n_steps), "rtol": rtol, "l": l, "dt": dt_fixed or None,
-              "n_impacts_total": int(n_imp)},
-    )
+        alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fixed, rest_chi,
+        chi_start, h_max, h_scan, dt_out, out_th, out_om, imp)
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1
 
 
-def simulate_many(block, motions, *, duration=None, linear=False, l=DEFAULT_L,
-                  rtol=DEFAULT_RTOL, dt=None, rest_tol=1e-6, return_histories=False,
-                  dt_out=0.01, **unknown):
-    """Batch of CCRR simulations from rest, one per motion, in one parallel compiled call."""
-    C.no_unknown("ccrr", unknown)
-    block = C.check_block(block)
-    if linear:
-        raise C.ParameterError("linear=True is not available for model 'ccrr'")
-    l, rtol, dt_fixed, rest_chi, chi_start = _options(block, l, rtol, dt, rest_tol)
-    kinds, prms, samples, nsamp, t_ends, h_scans = C.pack_motions(motions, duration)
-    dt_out = positive("dt_out", dt_out, "s")
-    n = kinds.size
-    n_out = int(math.floor(t_ends.max() / dt_out + 1e-9)) + 1 if return_histories else 0
-    out_th = np.empty((n, n_out))
-    out_om = np.empty((n, n_out))
-    res_f = np.empty((n, 3))
-    res_i = np.empty((n, 3), dtype=np.int64)
-    h_max = min(0.05 / block.p, 8.0 * float(h_scans.min()))
-    _batch(block.alpha, block.p, block.mu, l, kinds, prms, samples, nsamp, t_ends, rtol,
-           dt_fixed, rest_chi, chi_start, h_max, h_scans, dt_out, n_out, out_th, out_om,
-           res_f, res_i)
-    return BatchResponse(
-        max_abs_theta=res_f[:, 0].copy(), overturned=res_i[:, 1].astype(bool),
-        overturn_time=res_f[:, 1].copy(), uplift_time=res_f[:, 2].copy(),
-        n_impacts=res_i[:, 0].copy(),
-        t=np.arange(n_out) * dt_out if return_histories else None,
-        theta=out_th if return_histories else None,
-        omega=out_om if return_histories else None, model="ccrr",
-    )
+@njit(cache=True, parallel=True)
+def batch_kernel(mp, extra0, rows):
+    """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
+    for i in prange(rows[0].shape[0]):
+        store_row(i, kernel(mp, *row_args(i, rows, extra0)), rows)
+
+
+# ------------------------------------------------------------------------------- the model
+DEFAULT_REST_TOL = 1e-6
+
+
+@dataclass(frozen=True)
+class CCRROptions(ModelOptions):
+    """Options of the CCRR model."""
+
+    l: float = option(DEFAULT_L, lo=0.0, hi=0.1,
+                      help="regularising angular momentum (adimensional)")
+    rtol: float = option(DEFAULT_RTOL, lo=1e-13, hi=1e-2, lo_open=False,
+                         help="relative tolerance of the adaptive RKF45 steps")
+    dt: float | None = option(None, unit="s", lo=0.0,
+                              help="constant RKF45 step instead of adaptive steps")
+    rest_tol: float = option(DEFAULT_REST_TOL, lo=0.0, hi=1e-2,
+                             help="rest threshold (fraction of alpha); at least twice the "
+                                  "radius of the orbit that l sustains")
+
+
+class CCRR(Model):
+    """Complex coupled rocking rotations, Eq 10 (module docstring)."""
+
+    name = "ccrr"
+    label = "CCRR"
+    Options = CCRROptions
+    kernel = kernel
+    batch_kernel = batch_kernel
+
+    def kernel_params(self, dt_out, theta0, omega0) -> tuple:
+        b, o = self.block, self.options
+        chi_c = (o.l * o.l * b.alpha / math.sin(b.alpha)) ** (1.0 / 3.0)
+        return (b.alpha, b.p, b.mu, o.l, o.rtol, o.dt or 0.0, max(o.rest_tol, 2.0 * chi_c),
+                math.sqrt(o.l))
+
+    def failure(self, status, t) -> str:
+        at = f" at t = {t:.4g} s" if t == t else ""
+        return (f"ccrr integration failed near the origin{at}: the constant step dt = "
+                f"{self.options.dt} s is too large for l = {self.options.l:g}; use a smaller "
+                "dt or the adaptive mode (dt=None)")

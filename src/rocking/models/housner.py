@@ -44,16 +44,15 @@ parallel with no Python per time step.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
-import numpy as np
 from numba import njit, prange
 
-from .._validate import positive
 from ..motions._kernel import ground_acc, next_breakpoint
-from ..results import BatchResponse, Response
-from . import _common as C
+from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
+from .base import Model, ModelOptions, option, row_args, store_row
 
 HALF_PI = 0.5 * math.pi
 
@@ -61,7 +60,7 @@ HALF_PI = 0.5 * math.pi
 @njit(cache=True)
 def _acc(th, t, s, alpha, p2, lin, kind, prm, samples):
     """Angular acceleration of Eq 1 on branch ``s`` (+1 pivot O, -1 pivot O')."""
-    a = ground_acc(kind, prm, samples, t) / 9.80665
+    a = ground_acc(kind, prm, samples, t) / G
     if lin:
         return p2 * (th - s * alpha) + p2 * a
     return -s * p2 * math.sin(alpha - s * th) + p2 * math.cos(alpha - s * th) * a
@@ -142,7 +141,7 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
     ``imp`` receives impact times up to its length (impacts are counted beyond it).
     """
     p2 = p * p
-    thr = 9.80665 * (alpha if lin else math.tan(alpha))
+    thr = G * (alpha if lin else math.tan(alpha))
     atol_th = rtol * alpha * 1e-3
     atol_om = atol_th * p
     n_out = out_th.shape[0]
@@ -269,80 +268,57 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
     return k, n_imp, peak, overturned, t_over, t_up, n_steps
 
 
-@njit(cache=True, parallel=True)
-def _batch(alpha, p, mu, lin, kinds, prms, samples, nsamp, t_ends, rtol, rest_tol, h_max,
-           h_scans, dt_out, n_out, out_th, out_om, res_f, res_i):
-    n = kinds.shape[0]
-    for i in prange(n):
-        imp = np.empty(0)
-        oth = out_th[i]  # shape (n, 0) when no histories are kept
-        oom = out_om[i]
-        kk, nimp, peak, over, tov, tup, nst = integrate(
-            alpha, p, mu, lin, kinds[i], prms[i], samples[i, : nsamp[i]], t_ends[i], 0.0,
-            0.0, rtol, rest_tol, h_max, h_scans[i], dt_out, oth, oom, imp)
-        oth[kk:] = math.nan
-        oom[kk:] = math.nan
-        E.store_result(res_f, res_i, i, peak, tov, tup, nimp, over, nst, True)
-
-
-# ---------------------------------------------------------------------------- Python API
-def simulate(block, motion=None, *, duration=None, theta0=0.0, omega0=0.0, linear=False,
-             rtol=1e-8, rest_tol=1e-6, dt_out=0.002, max_impacts=100_000, **unknown):
-    """Classical model; see :func:`rocking.simulate` and the module docstring.
-
-    Options: ``rtol`` (relative tolerance of the adaptive steps), ``rest_tol`` (Zeno rule,
-    fraction of alpha), ``dt_out`` (s, output sampling), ``max_impacts`` (impact times kept).
-    """
-    C.no_unknown("housner", unknown)
-    block = C.check_block(block)
-    rtol, rest_tol = C.check_rtol(rtol), C.check_rest_tol(rest_tol)
-    sp = C.prepare_single(motion, duration, theta0, omega0, dt_out)
-    out_th = np.empty(sp.n_out)
-    out_om = np.empty(sp.n_out)
-    imp = np.empty(max(1, min(int(max_impacts), 1_000_000)))
-    h_max = min(0.05 / block.p, 8.0 * sp.h_scan)
+@njit(cache=True)
+def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_om, imp,
+           extra):
+    """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
+    alpha, p, mu, lin, rtol, rest_tol = mp
+    h_max = min(0.05 / p, 8.0 * h_scan)
     k, n_imp, peak, over, t_over, t_up, n_steps = integrate(
-        block.alpha, block.p, block.mu, bool(linear), sp.kind, sp.prm, sp.samples, sp.duration,
-        sp.theta0, sp.omega0, rtol, rest_tol, h_max, sp.h_scan, sp.dt_out, out_th, out_om, imp)
-    t, th, om = C.finish_history(k, out_th, out_om, sp.dt_out, over, t_over)
-    return Response(
-        t=t, theta=th, omega=om, impact_times=imp[: min(n_imp, imp.size)].copy(),
-        max_abs_theta=float(peak), overturned=bool(over),
-        overturn_time=float(t_over) if over else None,
-        uplift_time=None if math.isnan(t_up) else float(t_up),
-        model="housner-linear" if linear else "housner", block=block, motion=motion,
-        info={"n_steps": int(n_steps), "rtol": rtol, "n_impacts_total": int(n_imp)},
-    )
+        alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest_tol, h_max,
+        h_scan, dt_out, out_th, out_om, imp)
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0
 
 
-def simulate_many(block, motions, *, duration=None, linear=False, rtol=1e-8, rest_tol=1e-6,
-                  return_histories=False, dt_out=0.01, **unknown):
-    """Batch of simulations from rest, one per motion, in one parallel compiled call."""
-    C.no_unknown("housner", unknown)
-    block = C.check_block(block)
-    rtol, rest_tol = C.check_rtol(rtol), C.check_rest_tol(rest_tol)
-    kinds, prms, samples, nsamp, t_ends, h_scans = C.pack_motions(motions, duration)
-    dt_out = positive("dt_out", dt_out, "s")
-    n = kinds.size
-    if return_histories:
-        n_out = int(math.floor(t_ends.max() / dt_out + 1e-9)) + 1
-        out_th = np.empty((n, n_out))
-        out_om = np.empty((n, n_out))
-    else:
-        n_out = 0
-        out_th = np.empty((n, 0))
-        out_om = np.empty((n, 0))
-    res_f = np.empty((n, 3))
-    res_i = np.empty((n, 3), dtype=np.int64)
-    h_max = min(0.05 / block.p, 8.0 * float(h_scans.min()))
-    _batch(block.alpha, block.p, block.mu, bool(linear), kinds, prms, samples, nsamp, t_ends,
-           rtol, rest_tol, h_max, h_scans, dt_out, n_out, out_th, out_om, res_f, res_i)
-    return BatchResponse(
-        max_abs_theta=res_f[:, 0].copy(), overturned=res_i[:, 1].astype(bool),
-        overturn_time=res_f[:, 1].copy(), uplift_time=res_f[:, 2].copy(),
-        n_impacts=res_i[:, 0].copy(),
-        t=np.arange(n_out) * dt_out if return_histories else None,
-        theta=out_th if return_histories else None,
-        omega=out_om if return_histories else None,
-        model="housner-linear" if linear else "housner",
-    )
+@njit(cache=True, parallel=True)
+def batch_kernel(mp, extra0, rows):
+    """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
+    for i in prange(rows[0].shape[0]):
+        store_row(i, kernel(mp, *row_args(i, rows, extra0)), rows)
+
+
+# ------------------------------------------------------------------------------- the model
+DEFAULT_RTOL = 1e-8
+DEFAULT_REST_TOL = 1e-6
+"""Default Zeno threshold (fraction of alpha), from the convergence study kept in
+``tests/test_rest_rule.py``."""
+
+
+@dataclass(frozen=True)
+class HousnerOptions(ModelOptions):
+    """Options of the classical model."""
+
+    rtol: float = option(DEFAULT_RTOL, lo=1e-13, hi=1e-2, lo_open=False,
+                         help="relative tolerance of the adaptive Dormand-Prince steps")
+    rest_tol: float = option(DEFAULT_REST_TOL, lo=0.0, hi=1e-2,
+                             help="Zeno rule: free amplitude (fraction of alpha) below "
+                                  "which the block is put to rest after an impact")
+    linear: bool = option(False, help="small-angle form of Eq 1")
+
+
+class Housner(Model):
+    """The classical model: Eq 1 between impacts, Eq 4 at impacts (module docstring)."""
+
+    name = "housner"
+    label = "classical (Housner)"
+    Options = HousnerOptions
+    kernel = kernel
+    batch_kernel = batch_kernel
+
+    @property
+    def result_name(self) -> str:
+        return "housner-linear" if self.options.linear else "housner"
+
+    def kernel_params(self, dt_out, theta0, omega0) -> tuple:
+        b, o = self.block, self.options
+        return (b.alpha, b.p, b.mu, o.linear, o.rtol, o.rest_tol)

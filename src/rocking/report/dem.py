@@ -18,7 +18,7 @@ import warnings
 import numpy as np
 import pandas as pd
 
-from .. import dem as PD
+from ..models import dem as PD
 from ..blocks import Stack, paper_data, specimen, specimen_ids
 from ..models import dem as D
 from ..models import simulate, simulate_many

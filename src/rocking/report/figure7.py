@@ -45,7 +45,7 @@ def summarize(r, window=STEADY) -> dict:
     return {
         "max_abs_theta_deg": math.degrees(r.max_abs_theta),
         "time_of_max_s": float(t[i_max]) if t.size else float("nan"),
-        "uplift_time_s": float("nan") if r.uplift_time is None else float(r.uplift_time),
+        "uplift_time_s": float(r.uplift_time),
         "overturned": bool(r.overturned),
         "n_impacts": int(r.n_impacts),
         f"steady_max_abs_theta_deg_{w0:g}_{w1:g}s": (float(np.max(np.abs(th[inw])))

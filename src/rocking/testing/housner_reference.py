@@ -53,7 +53,8 @@ from scipy.optimize import brentq, minimize_scalar
 
 from .._validate import positive
 from ..errors import ParameterError
-from ..models import _common as C
+from ..models.housner import Housner
+from ..models.run import check_run
 from ..motions import (
     HalfSine,
     HanningSine,
@@ -298,10 +299,9 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         ``info`` holds ``n_solve_ivp`` (number of calls), ``nfev`` and ``n_impacts_total``.
     """
     # input validation is shared with the compiled model (the physics below is not)
-    block = C.check_block(block)
-    sp = C.prepare_single(motion, duration, theta0, omega0, 1.0)
-    t_end, theta0, omega0 = sp.duration, sp.theta0, sp.omega0
-    rtol, rest_tol = C.check_rtol(rtol), C.check_rest_tol(rest_tol)
+    opts = Housner.from_kwargs(block, rtol=rtol, rest_tol=rest_tol).options
+    rtol, rest_tol = opts.rtol, opts.rest_tol
+    t_end, theta0, omega0 = check_run(motion, duration, theta0, omega0)
     if method not in METHODS:
         raise ParameterError(f"method must be one of {', '.join(METHODS)}; got {method!r}")
     if dt_out is not None:
@@ -321,7 +321,7 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
 
     t, th, om = 0.0, theta0, omega0
     resting = th == 0.0 and om == 0.0
-    uplift_time = None if resting else 0.0
+    uplift_time = math.nan if resting else 0.0
     s = 1.0 if (th > 0.0 or (th == 0.0 and om > 0.0)) else -1.0
     peak = abs(th)
     impacts: list[float] = []
@@ -342,7 +342,7 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
                 pieces.append((t, tu, None))
             t, th, om, s = tu, 0.0, 0.0, sgn
             resting = False
-            if uplift_time is None:
+            if math.isnan(uplift_time):
                 uplift_time = tu
         k = exc.piece(t)
         tb = min(exc.end(k), t_end)
@@ -423,8 +423,9 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
     t_out, th_out, om_out = _history(pieces, dt_out, t_over if overturned else t_end)
     return Response(
         t=t_out, theta=th_out, omega=om_out, impact_times=np.asarray(impacts, dtype=float),
-        max_abs_theta=float(peak), overturned=overturned, overturn_time=t_over,
-        uplift_time=uplift_time,
+        max_abs_theta=float(peak), overturned=overturned,
+        overturn_time=math.nan if t_over is None else t_over, uplift_time=uplift_time,
+        n_impacts=len(impacts),
         model=("housner-linear" if linear else "housner") + "-reference", block=block,
         motion=motion,
         info={"rtol": rtol, "method": method, "n_solve_ivp": n_calls, "nfev": int(nfev),

@@ -19,37 +19,31 @@ block sink by ``M g / (2 K) = 0.34 m`` under its own weight (two contact points)
 not rocking; the number makes sense only as a joint stiffness of UDEC (stress per unit
 displacement) in MPa/m (settlement 8 µm over the base of specimen 2) or as a point
 stiffness in MN/m (0.3 µm). :func:`settlement_table` lists every reading;
-:func:`rocking.models.dem` uses a physical default (settlement 1e-7 of the height).
+:mod:`rocking.models.dem` uses a physical default (settlement 1e-7 of the height).
 
-**Beyond Eq 20** (:func:`calibrate_damping`): the damping factor ``b`` that makes the
-DEM's apparent coefficient of restitution of one impact equal to ``mu`` (Eq 12 with n = 1
-on the amplitudes before and after the impact of a free-rocking run), found by a root
-search (Brent) and cached.
+The calibration of the damping that replaces Eq 20 is in
+:mod:`rocking.models.dem.calibration`.
 """
 
 from __future__ import annotations
 
-import functools
 import math
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._validate import as_float, positive
-from .blocks import Block, paper_data, specimen, specimen_ids
-from .errors import ParameterError
-from .units import G
+from ..._validate import as_float, positive
+from ...blocks import Block, paper_data, specimen, specimen_ids
+from ...errors import ParameterError
+from ...units import G
 
 if TYPE_CHECKING:
     import pandas as pd
 
 EQ20 = (0.0057, -0.0336)
 """Coefficients of Eq 20: ``sqrt(b) = c1 ln(Gamma / mu^2) + c0``."""
-XI_CAP = 4.0
-"""Largest damping ratio of the stiffest contact mode that the calibration will use."""
 
 
-# ======================================================================= the paper's Eqs
 def _block_and_geometry(block_or_specimen):
     if isinstance(block_or_specimen, Block):
         return block_or_specimen
@@ -59,7 +53,6 @@ def _block_and_geometry(block_or_specimen):
         raise ParameterError("block_or_specimen must be a rocking.Block or a specimen "
                              f"number, got {block_or_specimen!r}") from None
     return specimen(n, "theoretical")
-
 
 def paper_parameters(block_or_specimen, alpha=None, p=None, mu=None, *,
                      inertia: str = "rectangle") -> dict:
@@ -107,7 +100,6 @@ def paper_parameters(block_or_specimen, alpha=None, p=None, mu=None, *,
             "width_eq": 2.0 * h * math.tan(alpha), "settlement": M * G / (2.0 * K),
             "alpha": alpha, "p": p, "mu": mu, "M": M, "R": R, "h": h}
 
-
 def table3(variant: str = "eq17") -> pd.DataFrame:
     """Table III recomputed from Table I/II, side by side with the printed T and F columns.
 
@@ -145,7 +137,6 @@ def table3(variant: str = "eq17") -> pd.DataFrame:
             rows.append(row)
     return pd.DataFrame(rows)
 
-
 def refit_eq20() -> dict:
     """Least-squares refit of Eq 20 on the printed Table III F column (the four points the
     paper fitted): ``sqrt(b)`` from the printed zeta (Eq 22) against ``ln(Gamma / mu^2)``
@@ -165,7 +156,6 @@ def refit_eq20() -> dict:
     return {"slope": float(slope), "intercept": float(icpt), "x": xs, "sqrt_b": ys}
 
 
-# ============================================================================ settlement
 READINGS = (
     # label, factor to N/m (or to Pa/m for joint stiffnesses), per point (True) or joint
     ("N/m per contact point (literal)", 1.0, "point"),
@@ -195,7 +185,6 @@ def settlement(M: float, K: float, reading: str = "point", area: float | None = 
         return M * G / (K * area)
     raise ParameterError(f"reading must be 'point', 'joint' or 'area', got {reading!r}")
 
-
 def settlement_table() -> pd.DataFrame:
     """The printed Table III K (column T) of each specimen under every unit reading, with
     the static settlement it implies (``M g / (n K)``, n = 2) and the settlement relative
@@ -216,126 +205,3 @@ def settlement_table() -> pd.DataFrame:
                          "settlement_over_height": s / d["height"],
                          "physical": 1e-9 <= s / d["height"] <= 1e-4})
     return pd.DataFrame(rows)
-
-
-# ============================================================ calibration of the damping
-def free_rocking_restitution(block, b: float, K: float | None = None, *,
-                             theta0_frac: float = 0.5, geometry: str = "auto",
-                             friction_angle: float = 30.0,
-                             shear_stiffness: float | None = None) -> float:
-    """Apparent coefficient of restitution of the DEM: release ``block`` from
-    ``theta0 = theta0_frac * alpha`` with damping ``b`` (s) and stiffness ``K`` and
-    compare the amplitude ``r1`` after the first impact with ``r0 = theta0`` through the
-    energy (Eq 12 with n = 1): ``sqrt((cos(alpha - r1) - cos alpha) / (cos(alpha - r0) -
-    cos alpha))``, with the DEM body's alpha."""
-    from .models import dem as D
-
-    md = D.build_model(block, geometry)
-    bd = md.bodies[0]
-    al, p = bd.alpha, bd.p
-    r0 = theta0_frac * al
-    # time to the first impact of the classical model (energy: theta'^2 / 2 =
-    # p^2 (cos(alpha - r0) - cos(alpha - theta))), with theta = r0 - u^2 (no singularity)
-    u = np.linspace(0.0, math.sqrt(r0), 2001)[1:]
-    g = 2.0 * u / np.sqrt(math.cos(al - r0) - np.cos(al - r0 + u * u))
-    g = np.concatenate(([2.0 / math.sqrt(math.sin(al - r0))], g))
-    u = np.concatenate(([0.0], u))
-    t1 = float(np.trapezoid(g, u)) / (p * math.sqrt(2.0))
-    dt_out = min(2e-4, t1 / 400.0)
-    r = D.simulate(block, None, duration=2.4 * t1, theta0=r0, damping=b, stiffness=K,
-                   dt_out=dt_out, geometry=geometry, friction_angle=friction_angle,
-                   shear_stiffness=shear_stiffness)
-    if r.overturned or r.impact_times.size == 0:
-        return math.nan
-    t_i = r.impact_times[0]
-    t_end = r.impact_times[1] if r.impact_times.size > 1 else r.t[-1]
-    m = (r.t > t_i) & (r.t <= t_end)
-    th = np.abs(r.theta)
-    i = int(np.flatnonzero(m)[np.argmax(th[m])])
-    r1 = th[i]
-    if 0 < i < th.size - 1:  # parabola through the three samples around the peak
-        y0, y1, y2 = th[i - 1], th[i], th[i + 1]
-        den = y0 - 2 * y1 + y2
-        if den < 0:
-            r1 = y1 - 0.125 * (y0 - y2) ** 2 / den
-    e0 = math.cos(al - r0) - math.cos(al)
-    e1 = math.cos(al - r1) - math.cos(al)
-    return math.sqrt(max(e1, 0.0) / e0)
-
-
-def damping_cap(block, K: float | None = None, geometry: str = "auto",
-                shear_stiffness: float | None = None) -> float:
-    """Largest damping factor the calibration uses (s): ``xi = XI_CAP`` in the stiffest
-    contact mode (beyond it the apparent restitution no longer changes: it has reached the
-    plastic-impact value of Housner, Eq 4, and the time step only shrinks)."""
-    from .models import dem as D
-
-    md = D.build_model(block, geometry)
-    K = D.default_stiffness(md) if K is None else float(K)
-    Ks = K if shear_stiffness is None else float(shear_stiffness)
-    return 2.0 * XI_CAP / D.omega_max(md, K, Ks)
-
-
-@functools.lru_cache(maxsize=256)
-def _calibrate(block, mu, K, geometry, friction_angle, Ks):
-    from scipy.optimize import brentq
-
-    def f(b):
-        return free_rocking_restitution(block, b, K, geometry=geometry,
-                                        friction_angle=friction_angle,
-                                        shear_stiffness=Ks) - mu
-
-    b_cap = damping_cap(block, K, geometry, Ks)
-    f0 = f(0.0)
-    if not f0 > 0.0:
-        return 0.0, mu + f0, b_cap, (
-            f"mu = {mu:.5f} is above the restitution of the undamped DEM ({mu + f0:.5f}: "
-            "energy goes into bouncing); no damping")
-    fc = f(b_cap)
-    if not fc < 0.0:
-        if fc < 2e-3:
-            note = (f"mu = {mu:.5f} is the plastic-impact (Housner) restitution of the DEM "
-                    f"body ({mu + fc:.5f} at the cap xi = {XI_CAP:g})")
-        else:
-            note = (f"mu = {mu:.5f} is below the DEM body's plastic-impact restitution "
-                    f"{mu + fc:.5f}; damping capped at xi = {XI_CAP:g}")
-        return b_cap, mu + fc, b_cap, note
-    b = float(brentq(f, 0.0, b_cap, xtol=1e-6 * b_cap, rtol=1e-6))
-    return b, mu + f(b), b_cap, "root of the apparent restitution"
-
-
-def calibrate_damping(block, mu: float | None = None, K: float | None = None, *,
-                      geometry: str = "auto", friction_angle: float = 30.0,
-                      shear_stiffness: float | None = None, full: bool = False):
-    """Damping factor ``b`` (s, ``C = b K`` at every closed contact) for which the DEM's
-    apparent coefficient of restitution (:func:`free_rocking_restitution`) equals ``mu``
-    (default: the block's). ``K`` defaults to the DEM's default stiffness.
-
-    Brent's method on ``b`` in ``[0, b_cap]`` (:func:`damping_cap`). The apparent
-    restitution falls monotonically as ``b`` grows, from its undamped value (the landing
-    corner bounces and part of the energy goes into the bounce: 0.93-0.99 for the
-    specimens) to the plastic-impact value of Housner (angular momentum conservation,
-    Eq 4 for a rectangle) of the DEM body. A ``mu`` above the first gives ``b = 0``, a
-    ``mu`` at or below the second gives ``b_cap`` (the default ``"classical"`` body of a
-    block given by its classical parameters is built so that its plastic-impact
-    restitution *is* ``mu``). Results are cached (inputs rounded to 9 significant digits).
-
-    ``full=True`` returns a dict: ``b``, ``mu_dem`` (the DEM's apparent restitution with
-    that ``b``), ``b_cap`` and ``note``.
-    """
-    from .models import dem as D
-
-    if not isinstance(block, Block):
-        raise ParameterError(f"block must be a rocking.Block, got {type(block).__name__}")
-    mu = block.mu if mu is None else as_float("mu", mu)
-    if not 0.0 < mu <= 1.0:
-        raise ParameterError(f"mu must be in (0, 1], got {mu!r}")
-    if K is None:
-        K = D.default_stiffness(D.build_model(block, geometry))
-    K = float(f"{positive('K', K, 'N/m'):.9g}")
-    Ks = None if shear_stiffness is None else float(f"{shear_stiffness:.9g}")
-    b, mu_dem, b_cap, note = _calibrate(block, float(f"{mu:.9g}"), K, geometry,
-                                        float(friction_angle), Ks)
-    if full:
-        return {"b": b, "mu_dem": mu_dem, "b_cap": b_cap, "note": note}
-    return b

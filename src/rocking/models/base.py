@@ -1,0 +1,271 @@
+r"""What a rocking model is: the interface every model implements.
+
+A model is one class, in one file, registered by one line in :mod:`rocking.models`
+(``MODELS``). Everything else -- validation of the block, the motion, the window and the
+initial state, packing motions for compiled code, output buffers, the memory guard, the
+parallel batch and the result objects -- is shared code (:mod:`rocking.models.run`), written
+once. This mirrors ``scipy.integrate.OdeSolver``: a documented base class, a registry of
+implementations, one entry point (:func:`rocking.simulate`, :func:`rocking.simulate_many`)
+and one result convention (:mod:`rocking.results`).
+
+A subclass of :class:`Model` provides
+-------------------------------------
+
+``name`` : str
+    The registry name (``model="housner"``).
+``label`` : str
+    A human-readable name for tables and plots.
+``Options`` : a frozen dataclass deriving from :class:`ModelOptions`
+    The model's options with documented defaults, units and ranges (declare each field
+    with :func:`option`). They are validated at the edge, when the dataclass is built:
+    bad values raise :class:`~rocking.errors.ParameterError` naming the option and the
+    allowed range; unknown options are rejected too.
+``kernel`` : a compiled (numba) function, the single-run kernel
+    ``kernel(mp, kind, prm, samples, t_end, theta0, omega0, h_scan, dt_out, out_th,
+    out_om, imp, extra) -> (n_out, n_impacts, max_abs_theta, overturned, overturn_time,
+    uplift_time, n_steps, status)``.
+
+    * ``mp`` is the model's own parameter tuple (:meth:`Model.kernel_params`);
+    * ``(kind, prm, samples)`` is the motion spec (:mod:`rocking.motions._kernel`; evaluate
+      it with ``ground_acc`` and step onto ``next_breakpoint``), ``h_scan`` a time step
+      that resolves it (s), ``t_end`` the simulated time (s);
+    * ``theta0``, ``omega0``: the initial state (rad, rad/s; both 0: at rest);
+    * the kernel writes ``theta`` and ``omega`` at ``k * dt_out`` into ``out_th``,
+      ``out_om`` (length 0: no history), impact times into ``imp`` up to its length
+      (counting the impacts beyond it), and the model's extra outputs into the tuple
+      ``extra`` (:meth:`Model.extra_buffers`);
+    * it returns the number of samples written, the number of impacts (zero crossings of
+      ``theta``), ``max |theta|`` (rad), whether the block overturned (``|theta|`` reached
+      pi/2), the overturning and uplift times (s, NaN if none), the number of steps, and a
+      ``status`` (0: success; otherwise a code that :meth:`Model.failure` explains).
+      Times with no event are NaN, the one convention of the package.
+``batch_kernel`` : a compiled parallel function over many motions
+    ``batch_kernel(mp, extra0, rows)``: always the same two lines, a ``prange`` loop that
+    calls the model's kernel on :func:`row_args` and stores the result with
+    :func:`store_row`::
+
+        @njit(cache=True, parallel=True)
+        def batch_kernel(mp, extra0, rows):
+            for i in prange(rows[0].shape[0]):
+                store_row(i, kernel(mp, *row_args(i, rows, extra0)), rows)
+
+    Each model file keeps its own copy (rather than passing the kernel to a shared
+    function) so that numba can cache it and invalidates that cache with the model's file.
+:meth:`Model.kernel_params`
+    Builds ``mp`` from the block and the validated options.
+
+And optionally: ``accepts_stack`` (the model simulates :class:`~rocking.Stack` objects),
+``response_class`` with :meth:`Model.extra_buffers` and :meth:`Model.extra_fields` for
+outputs beyond ``theta`` and ``omega`` (the DEM's), :meth:`Model.info` and
+:meth:`Model.failure`.
+
+Sign convention (all models): Eq (1) of Peña et al. (2007): a positive ground acceleration
+drives ``theta`` positive (see :mod:`rocking.models.housner`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+import numpy as np
+from numba import njit
+
+from .._validate import as_float, in_range
+from ..blocks import Block, Stack
+from ..errors import ParameterError
+from ..results import Response
+
+
+# ================================================================================= options
+def option(default, *, help: str, unit: str = "", lo: float | None = None,
+           hi: float | None = None, lo_open: bool = True, hi_open: bool = False,
+           choices: tuple | None = None, kind: type | None = None):
+    """A documented model option: a dataclass field with its default, unit and range.
+
+    ``lo``/``hi`` bound a number (open or closed ends); ``choices`` lists allowed strings;
+    ``kind`` is ``bool``, ``int``, ``float`` (default for numbers) or ``str``. ``None`` is
+    accepted when it is the default (meaning "automatic").
+    """
+    meta = {"help": help, "unit": unit, "lo": lo, "hi": hi, "lo_open": lo_open,
+            "hi_open": hi_open, "choices": choices,
+            "kind": kind or (type(default) if default is not None else float)}
+    return dataclasses.field(default=default, metadata=meta)
+
+
+def _range_text(m: dict) -> str:
+    lo = "-inf" if m["lo"] is None else f"{m['lo']:g}"
+    hi = "inf" if m["hi"] is None else f"{m['hi']:g}"
+    a = "(" if m["lo_open"] or m["lo"] is None else "["
+    b = ")" if m["hi_open"] or m["hi"] is None else "]"
+    return f"{a}{lo}, {hi}{b}"
+
+
+@dataclass(frozen=True)
+class ModelOptions:
+    """Base of the option dataclasses of the models (validated when built)."""
+
+    def __post_init__(self):
+        for f in dataclasses.fields(self):
+            value = getattr(self, f.name)
+            m = f.metadata
+            if not m or (value is None and f.default is None):
+                continue
+            object.__setattr__(self, f.name, _check_option(f.name, value, m))
+        self.check()
+
+    def check(self) -> None:
+        """Checks that involve several options (override)."""
+
+    @classmethod
+    def build(cls, model_name: str, **values) -> ModelOptions:
+        """The options from keyword values, refusing unknown names."""
+        names = {f.name for f in dataclasses.fields(cls)}
+        unknown = [k for k in values if k not in names]
+        if unknown:
+            allowed = ", ".join(sorted(names)) or "none"
+            raise ParameterError(f"unknown option(s) for model {model_name!r}: "
+                                 f"{', '.join(unknown)} (allowed: {allowed})")
+        return cls(**values)
+
+    @classmethod
+    def describe(cls) -> list[dict]:
+        """One dict per option: ``name``, ``default``, ``unit``, ``range``, ``help``."""
+        out = []
+        for f in dataclasses.fields(cls):
+            m = f.metadata
+            rng = ", ".join(m["choices"]) if m.get("choices") else (
+                _range_text(m) if m.get("kind") in (int, float) else "")
+            out.append({"name": f.name, "default": f.default, "unit": m.get("unit", ""),
+                        "range": rng, "help": m.get("help", ""), "kind": m.get("kind")})
+        return out
+
+    def to_dict(self) -> dict:
+        return dataclasses.asdict(self)
+
+
+def _check_option(name: str, value, m: dict):
+    kind = m["kind"]
+    if kind is bool:
+        if not isinstance(value, bool | np.bool_):
+            raise ParameterError(f"{name} must be True or False, got {value!r}")
+        return bool(value)
+    if kind is str or m.get("choices"):
+        if m.get("choices") and value not in m["choices"]:
+            raise ParameterError(f"{name} must be one of {', '.join(m['choices'])}; "
+                                 f"got {value!r}")
+        return value
+    x = as_float(name, value)
+    if m["lo"] is not None or m["hi"] is not None:
+        lo = -math.inf if m["lo"] is None else m["lo"]
+        hi = math.inf if m["hi"] is None else m["hi"]
+        unit = f" {m['unit']}" if m.get("unit") else ""
+        x = in_range(name, x, lo, hi, lo_open=m["lo_open"] or m["lo"] is None,
+                     hi_open=m["hi_open"] or m["hi"] is None,
+                     shown=_range_text(m) + unit)
+    if kind is int:
+        if x != int(x):
+            raise ParameterError(f"{name} must be a whole number, got {value!r}")
+        return int(x)
+    return x
+
+
+# =================================================================================== model
+class Model:
+    """Base class of the rocking models (see the module docstring for the contract)."""
+
+    name: ClassVar[str] = ""
+    label: ClassVar[str] = ""
+    Options: ClassVar[type[ModelOptions]] = ModelOptions
+    kernel: ClassVar[Any] = None
+    batch_kernel: ClassVar[Any] = None
+    accepts_stack: ClassVar[bool] = False
+    append_overturn: ClassVar[bool] = True
+    """End the history of a single run on the exact overturning point (pi/2)."""
+    response_class: ClassVar[type] = Response
+
+    def __init__(self, block, options: ModelOptions | None = None):
+        self.block = self.check_block(block)
+        self.options = options if options is not None else self.Options()
+
+    @classmethod
+    def from_kwargs(cls, block, **options) -> Model:
+        """The model for ``block`` with options given as keywords (validated)."""
+        return cls(block, cls.Options.build(cls.name, **options))
+
+    @classmethod
+    def check_block(cls, block):
+        allowed = (Block, Stack) if cls.accepts_stack else (Block,)
+        if isinstance(block, Stack) and not cls.accepts_stack:
+            raise ParameterError(f"model {cls.name!r} simulates a single rocking.Block; "
+                                 "stacks need model='dem'")
+        if not isinstance(block, allowed):
+            what = "rocking.Block or rocking.Stack" if cls.accepts_stack else "rocking.Block"
+            raise ParameterError(f"block must be a {what}, got {type(block).__name__}")
+        return block
+
+    # ---- to be provided by subclasses
+    def kernel_params(self, dt_out: float, theta0: float, omega0: float) -> tuple:
+        """The parameter tuple ``mp`` handed to the kernels."""
+        raise NotImplementedError
+
+    # ---- optional hooks
+    @property
+    def result_name(self) -> str:
+        """The ``model`` field of the results."""
+        return self.name
+
+    def extra_buffers(self, n_out: int) -> tuple:
+        """Extra output arrays of the kernel for ``n_out`` samples (default: none)."""
+        return ()
+
+    def extra_bytes(self, n_out: int) -> int:
+        """Memory of :meth:`extra_buffers` for ``n_out`` samples (bytes)."""
+        return 0
+
+    def extra_fields(self, n_out: int, extra: tuple) -> dict:
+        """Fields of :attr:`response_class` beyond those of :class:`Response` (an ``"info"``
+        entry is merged into ``Response.info``)."""
+        return {}
+
+    def info(self) -> dict:
+        """Options and derived settings recorded in ``Response.info``."""
+        return {k: v for k, v in self.options.to_dict().items()
+                if isinstance(v, int | float | str | bool) or v is None}
+
+    def failure(self, status: int, t: float) -> str:
+        """Message of a numerical failure with code ``status`` near time ``t`` (s)."""
+        return f"model {self.name!r} failed (status {status}) near t = {t:.4g} s"
+
+
+# ====================================================================== shared batch rows
+@njit(cache=True)
+def row_args(i, rows, extra0):
+    """The kernel arguments (after ``mp``) of row ``i`` of a batch, from rest.
+
+    ``rows = (kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, res_f,
+    res_i)`` as built by :func:`rocking.models.run.simulate_many`."""
+    kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, _f, _i = rows
+    return (kinds[i], prms[i], samples[i, : nsamp[i]], t_ends[i], 0.0, 0.0, h_scans[i],
+            dt_out, out_th[i], out_om[i], np.empty(0), extra0)
+
+
+@njit(cache=True)
+def store_row(i, res, rows):
+    """Store the kernel result ``res`` of row ``i``:
+    ``res_f[i] = (max_abs_theta, overturn_time, uplift_time)``,
+    ``res_i[i] = (n_impacts, overturned, n_steps, status)``; the history past the written
+    samples is NaN."""
+    k, n_imp, peak, over, t_over, t_up, n_steps, status = res
+    out_th, out_om, res_f, res_i = rows[7], rows[8], rows[9], rows[10]
+    out_th[i, k:] = math.nan
+    out_om[i, k:] = math.nan
+    res_f[i, 0] = peak
+    res_f[i, 1] = t_over
+    res_f[i, 2] = t_up
+    res_i[i, 0] = n_imp
+    res_i[i, 1] = 1 if over else 0
+    res_i[i, 2] = n_steps
+    res_i[i, 3] = status

@@ -1,0 +1,168 @@
+"""The DEM as a model of the common interface (:mod:`rocking.models.base`): its options,
+the resolution of the default stiffness and damping, and its extra outputs."""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...blocks import Stack
+from ...errors import ParameterError
+from ...results import DEMResponse
+from ...units import G
+from ..base import Model, ModelOptions, option
+from . import geometry as GEO
+from . import statics as ST
+from .calibration import calibrate_damping
+from .kernel import batch_kernel, kernel
+from .parameters import paper_parameters
+
+
+@dataclass(frozen=True)
+class DEMOptions(ModelOptions):
+    """Options of the discrete element model."""
+
+    friction_angle: float = option(30.0, unit="deg", lo=0.0, hi=90.0, lo_open=False,
+                                   hi_open=True, help="friction angle phi of every contact")
+    stiffness: float | None = option(None, unit="N/m", lo=0.0,
+                                     help="normal stiffness K of one contact point "
+                                          "(default: settlement 1e-7 of the height)")
+    shear_stiffness: float | None = option(None, unit="N/m", lo=0.0,
+                                           help="shear stiffness Ks (default K)")
+    damping: float | str | None = option(
+        None, kind=object, help="stiffness-proportional damping b (s, C = b K), "
+                                "'calibrated' (default: matches mu) or 'paper' (Eq 20)")
+    cohesion: float = option(0.0, unit="N", lo=0.0, lo_open=False,
+                             help="cohesive shear strength of one contact point")
+    geometry: str = option("auto", choices=GEO.GEOMETRIES,
+                           help="body of a Block: auto, polygon, equivalent (Eq 18), "
+                                "classical")
+    dt: float | None = option(None, unit="s", lo=0.0,
+                              help="time step (default: from the stability limit)")
+    settled: bool = option(True, help="start at static equilibrium on the contacts")
+    impact_tol: float = option(1e-3, lo=0.0, lo_open=False,
+                               help="|theta| (fraction of alpha) to exceed between two "
+                                    "counted zero crossings")
+    return_forces: bool = option(False, help="record the contact forces (single runs)")
+    return_energy: bool = option(False, help="record kinetic, potential and spring "
+                                             "energies (single runs)")
+
+    def check(self):
+        d = self.damping
+        if d is None or (isinstance(d, str) and d in ("calibrated", "paper")):
+            return
+        try:
+            x = float(d)
+        except (TypeError, ValueError):
+            x = math.nan
+        if isinstance(d, str) or not (math.isfinite(x) and x >= 0.0):
+            raise ParameterError(f"damping must be a number >= 0 s, 'calibrated' or "
+                                 f"'paper'; got {d!r}")
+        object.__setattr__(self, "damping", x)
+
+
+def _slot_labels(model: GEO.Assembly) -> list[str]:
+    n, vmax = model.n, model.lv.shape[1]
+    return [f"block {i} vertex {k} / {'base' if j == n else f'block {j}'}"
+            for i in range(n) for k in range(vmax) for j in range(n + 1)]
+
+
+class DEM(Model):
+    """Discrete elements: rigid polygons on contact springs (:mod:`rocking.models.dem`)."""
+
+    name = "dem"
+    label = "DEM"
+    Options = DEMOptions
+    kernel = kernel
+    batch_kernel = batch_kernel
+    accepts_stack = True
+    append_overturn = False
+    response_class = DEMResponse
+
+    def __init__(self, block, options=None):
+        super().__init__(block, options)
+        o = self.options
+        self.assembly = md = GEO.build_model(block, o.geometry)
+        self.K = GEO.default_stiffness(md) if o.stiffness is None else o.stiffness
+        self.Ks = self.K if o.shear_stiffness is None else o.shear_stiffness
+        top = block.blocks[-1] if isinstance(block, Stack) else block
+        if o.damping is None or o.damping == "calibrated":
+            cal = calibrate_damping(top, top.mu, self.K, geometry=o.geometry,
+                                    friction_angle=o.friction_angle,
+                                    shear_stiffness=self.Ks, full=True)
+            self.b, self.damping_source = cal["b"], "calibrated"
+            if abs(cal["mu_dem"] - top.mu) > 5e-3:
+                warnings.warn(f"DEM damping: {cal['note']}; the DEM's restitution is "
+                              f"{cal['mu_dem']:.4f}", RuntimeWarning, stacklevel=5)
+        elif o.damping == "paper":
+            self.b, self.damping_source = paper_parameters(top)["b"], "paper (Eq 20)"
+        else:
+            self.b, self.damping_source = float(o.damping), "given"
+        self.th_tol = o.impact_tol * min(bd.alpha for bd in md.bodies)
+
+    def kernel_params(self, dt_out, theta0, omega0) -> tuple:
+        o = self.options
+        self.dt, every = ST.time_step(self.assembly, self.K, self.Ks, self.b, o.dt, dt_out)
+        self.dt_out = dt_out
+        return ST.kernel_params(self.assembly, self.K, self.Ks, self.b,
+                                math.tan(math.radians(o.friction_angle)), o.cohesion,
+                                self.dt, every, self.th_tol, theta0, omega0, o.settled)
+
+    def extra_buffers(self, n_out: int) -> tuple:
+        md = self.assembly
+        n, vmax = md.n, md.lv.shape[1]
+        n_e = n_out if self.options.return_energy else 0
+        n_f = n_out if self.options.return_forces else 0
+        return (np.empty((n_out, n, 3)), np.empty((n_out, n, 3)), np.empty((n_e, 3)),
+                np.empty((n_f, n * vmax * (n + 1), 4)))
+
+    def extra_bytes(self, n_out: int) -> int:
+        md = self.assembly
+        n, vmax = md.n, md.lv.shape[1]
+        per = 6 * n + (3 if self.options.return_energy else 0)
+        per += 4 * n * vmax * (n + 1) if self.options.return_forces else 0
+        return 8 * per * n_out
+
+    def extra_fields(self, k: int, extra: tuple) -> dict:
+        md = self.assembly
+        out_pos, out_vel, out_e, out_f = extra
+        rel = out_pos[:k] - md.nominal[None, :, :]
+        th_all = out_pos[:k, :, 2].T.copy()
+        x_all = rel[:, :, 0].T.copy()
+        y_all = rel[:, :, 1].T.copy()
+        info = {"max_abs_theta_all": [float(np.max(np.abs(th_all[i]))) if k else 0.0
+                                      for i in range(md.n)]}
+        t = np.arange(k) * self.dt_out
+        forces = None
+        if self.options.return_energy or self.options.return_forces:
+            if self.options.return_energy:
+                info["energy"] = {"t": t, "kinetic": out_e[:k, 0].copy(),
+                                  "potential": out_e[:k, 1].copy(),
+                                  "spring": out_e[:k, 2].copy()}
+            if self.options.return_forces:
+                used = (np.flatnonzero(np.any(out_f[:k, :, 0] > 0.0, axis=0)) if k
+                        else np.empty(0, int))
+                labels = _slot_labels(md)
+                forces = {"t": t, "normal": out_f[:k, used, 0].copy(),
+                          "shear": out_f[:k, used, 1].copy(), "x": out_f[:k, used, 2].copy(),
+                          "y": out_f[:k, used, 3].copy(), "labels": [labels[s] for s in used]}
+        return {"x": x_all[-1].copy(), "y": y_all[-1].copy(), "theta_all": th_all,
+                "x_all": x_all, "y_all": y_all, "contact_forces": forces, "info": info}
+
+    def info(self) -> dict:
+        md = self.assembly
+        return {"dt": getattr(self, "dt", math.nan), "stiffness": self.K,
+                "shear_stiffness": self.Ks, "damping": self.b,
+                "damping_source": self.damping_source,
+                "friction_angle": float(self.options.friction_angle), "n_blocks": md.n,
+                "geometry": ",".join(bd.mode for bd in md.bodies),
+                "xi_max": 0.5 * self.b * ST.omega_max(md, self.K, self.Ks),
+                "settlement": md.total_mass * G / (2.0 * self.K)}
+
+    def failure(self, status, t) -> str:
+        at = f" at t = {t:.4g} s" if t == t else ""
+        return (f"the DEM integration became unstable{at} (dt = {self.dt:.3g} s); "
+                "use a smaller dt")

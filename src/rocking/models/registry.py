@@ -1,0 +1,16 @@
+"""The registry of models: one line per model (see :mod:`rocking.models.base`)."""
+
+from __future__ import annotations
+
+from .base import Model
+from .ccrr import CCRR
+from .dem import DEM
+from .housner import Housner
+
+MODELS: dict[str, type[Model]] = {cls.name: cls for cls in (Housner, CCRR, DEM)}
+"""Registered models by name, in the order the CLI and the report list them."""
+
+
+def available() -> tuple[str, ...]:
+    """Names of the registered models."""
+    return tuple(MODELS)

@@ -1,0 +1,232 @@
+"""The one entry point of every model: :func:`simulate` and :func:`simulate_many`.
+
+Shared code, written once for all models (see :mod:`rocking.models.base` for what a model
+provides): validation of the arguments, packing the motions for the compiled kernels, the
+output buffers and the memory guard, the parallel batch, and building
+:class:`~rocking.results.Response` / :class:`~rocking.results.BatchResponse`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .._validate import as_float, in_range, positive
+from ..errors import OutputTooLargeError, ParameterError, SimulationError
+from ..motions import Motion
+from ..motions._kernel import NPRM
+from ..results import DEFAULT_DT_OUT, BatchResponse
+from .base import Model
+from .registry import MODELS
+
+HALF_PI = 0.5 * math.pi
+MAX_OUTPUT_BYTES = 2 * 1024 ** 3
+"""Largest memory (bytes) the output buffers of one call may take (the memory guard)."""
+MAX_IMPACTS = 100_000
+"""Default number of impact times kept by a single run (all impacts are counted)."""
+
+
+def get_model(model) -> type[Model]:
+    """The model class of a registered name (case-insensitive) or a :class:`Model` class."""
+    if isinstance(model, type) and issubclass(model, Model):
+        if model.kernel is None or model.batch_kernel is None:
+            raise ParameterError(f"model class {model.__name__} must define kernel and "
+                                 "batch_kernel (see rocking.models.base)")
+        return model
+    try:
+        return MODELS[str(model).lower()]
+    except KeyError:
+        raise ParameterError(f"model must be one of {', '.join(MODELS)} or a "
+                             f"rocking.models.Model subclass; got {model!r}") from None
+
+
+def _make(model, block, linear: bool, options: dict) -> Model:
+    cls = get_model(model)
+    if linear:
+        if "linear" not in {f for f in cls.Options.__dataclass_fields__}:
+            raise ParameterError(f"linear=True is not available for model {cls.name!r} "
+                                 "(use model='housner')")
+        options = {**options, "linear": True}
+    return cls.from_kwargs(block, **options)
+
+
+def _guard(n_values: int, extra: int, dt_out: float, duration: float) -> None:
+    """Refuse output buffers larger than :data:`MAX_OUTPUT_BYTES`."""
+    need = 8 * n_values + extra
+    if need > MAX_OUTPUT_BYTES:
+        raise OutputTooLargeError(
+            f"dt_out = {dt_out:g} s over a duration of {duration:g} s needs "
+            f"{need / 1e9:.3g} GB of output (limit {MAX_OUTPUT_BYTES / 1e9:.3g} GB): "
+            "increase dt_out or shorten the duration")
+
+
+def _n_out(duration: float, dt_out: float) -> int:
+    n = duration / dt_out
+    if not n < 2 ** 53:
+        return 2 ** 62
+    return int(math.floor(n + 1e-9)) + 1
+
+
+# ================================================================================ single
+def check_run(motion, duration, theta0, omega0) -> tuple[float, float, float]:
+    """Validated ``(duration, theta0, omega0)`` of a single run (``duration`` defaults to
+    the motion's; it is required for free rocking)."""
+    if motion is not None and not isinstance(motion, Motion):
+        raise ParameterError(f"motion must be a rocking.motions.Motion or None, "
+                             f"got {type(motion).__name__}")
+    if duration is None:
+        if motion is None:
+            raise ParameterError("duration is required for free rocking (motion=None), in s > 0")
+        duration = motion.duration
+    duration = positive("duration", duration, "s")
+    theta0 = in_range("theta0", theta0, -HALF_PI, HALF_PI, shown="(-pi/2, pi/2) rad")
+    omega0 = as_float("omega0", omega0)
+    return duration, theta0, omega0
+
+
+def simulate(block, motion=None, model="housner", duration: float | None = None,
+             theta0: float = 0.0, omega0: float = 0.0, linear: bool = False, *,
+             dt_out: float = DEFAULT_DT_OUT, max_impacts: int = MAX_IMPACTS, **options):
+    """Simulate one block under one base motion and return a :class:`~rocking.Response`.
+
+    Parameters
+    ----------
+    block : Block (or Stack for ``model="dem"``)
+    motion : Motion or None
+        Base motion; ``None`` means free rocking from ``theta0``, ``omega0``.
+    model : str or Model class
+        A registered name (``"housner"``: classical model, Eq 1; ``"ccrr"``: Eq 10;
+        ``"dem"``: discrete elements) or a :class:`rocking.models.Model` subclass.
+    duration : float, optional
+        Simulated time (s). Defaults to ``motion.duration``; required for free rocking.
+    theta0, omega0 : float
+        Initial angle (rad, in (-pi/2, pi/2)) and angular velocity (rad/s).
+    linear : bool
+        The small-angle form of Eq 1 (models with a ``linear`` option).
+    dt_out : float
+        Output interval of the time history (s).
+    max_impacts : int
+        Impact times kept in ``Response.impact_times`` (all are counted in ``n_impacts``).
+    **options
+        The model's options (``rocking.models.MODELS[name].Options``), e.g. ``rtol`` and
+        ``rest_tol`` for ``"housner"``. Unknown options are an error.
+    """
+    m = _make(model, block, linear, options)
+    duration, theta0, omega0 = check_run(motion, duration, theta0, omega0)
+    dt_out = positive("dt_out", dt_out, "s")
+    cap = in_range("max_impacts", max_impacts, 0, 1e7, lo_open=False, hi_open=False,
+                   shown="[0, 1e7]")
+    if motion is None:
+        kind, prm, samples, h_scan = 0, np.zeros(NPRM), np.empty(0), duration
+    else:
+        (kind, prm, samples), h_scan = motion.spec(), motion.scan_step
+    n_out = _n_out(duration, dt_out)
+    _guard(2 * n_out, m.extra_bytes(n_out), dt_out, duration)
+    out_th = np.empty(n_out)
+    out_om = np.empty(n_out)
+    imp = np.empty(max(1, int(cap)))
+    extra = m.extra_buffers(n_out)
+    mp = m.kernel_params(dt_out, theta0, omega0)
+    k, n_imp, peak, over, t_over, t_up, n_steps, status = type(m).kernel(
+        mp, kind, prm, samples, duration, theta0, omega0, h_scan, dt_out, out_th, out_om,
+        imp, extra)
+    if status != 0:
+        raise SimulationError(m.failure(int(status), k * dt_out))
+    t = np.arange(k) * dt_out
+    th, om = out_th[:k], out_om[:k]
+    if over and m.append_overturn and (k == 0 or t[-1] < t_over):  # end on the overturn
+        t = np.append(t, t_over)
+        th = np.append(th, math.copysign(HALF_PI, th[-1] if k else 1.0))
+        om = np.append(om, om[-1] if k else 0.0)
+    fields = m.extra_fields(k, extra)
+    info = {**m.info(), "n_steps": int(n_steps), **fields.pop("info", {})}
+    return m.response_class(
+        t=t, theta=th.copy(), omega=om.copy(), impact_times=imp[: min(n_imp, int(cap))].copy(),
+        max_abs_theta=float(peak), overturned=bool(over),
+        overturn_time=float(t_over) if over else math.nan, uplift_time=float(t_up),
+        n_impacts=int(n_imp), model=m.result_name, block=block, motion=motion, info=info,
+        **fields)
+
+
+# ================================================================================= batch
+def pack_motions(motions, duration=None):
+    """Pack motions into padded arrays for the batch kernels.
+
+    Returns ``kinds, prms, samples, nsamp, t_ends, h_scans``.
+    """
+    if isinstance(motions, Motion):
+        motions = [motions]
+    try:
+        motions = list(motions)
+    except TypeError:
+        raise ParameterError("motions must be a sequence of Motion objects") from None
+    if not motions:
+        raise ParameterError("motions must be a non-empty sequence of Motion objects")
+    for i, mo in enumerate(motions):
+        if not isinstance(mo, Motion):
+            raise ParameterError(f"motions[{i}] must be a rocking.motions.Motion, "
+                                 f"got {type(mo).__name__}")
+    specs = [mo.spec() for mo in motions]
+    n = len(motions)
+    nsamp = np.array([s[2].size for s in specs], dtype=np.int64)
+    samples = np.zeros((n, max(1, int(nsamp.max()))))
+    for i, s in enumerate(specs):
+        samples[i, : s[2].size] = s[2]
+    kinds = np.array([s[0] for s in specs], dtype=np.int64)
+    prms = np.stack([s[1] for s in specs])
+    if duration is None:
+        t_ends = np.array([mo.duration for mo in motions], dtype=np.float64)
+    else:
+        t_ends = np.full(n, positive("duration", duration, "s"))
+    h_scans = np.array([mo.scan_step for mo in motions], dtype=np.float64)
+    return kinds, prms, samples, nsamp, t_ends, h_scans
+
+
+def simulate_many(block, motions, model="housner", duration: float | None = None,
+                  linear: bool = False, *, return_histories: bool = False,
+                  dt_out: float = DEFAULT_DT_OUT, errors: str = "raise", **options):
+    """Simulate one block from rest under many motions in one compiled, parallel call.
+
+    Row ``i`` of the result is bit-identical to ``simulate(block, motions[i], ...)``: each
+    run depends on its own motion only, never on the rest of the batch.
+
+    Returns a :class:`~rocking.results.BatchResponse` with numpy arrays ``max_abs_theta``,
+    ``overturned``, ``overturn_time``, ``uplift_time`` and ``n_impacts`` (one entry per
+    motion); the time histories ``theta``, ``omega`` (at ``dt_out``) only with
+    ``return_histories=True``. ``errors="raise"`` (default) raises
+    :class:`~rocking.errors.SimulationError` if a run fails numerically;
+    ``errors="nan"`` marks it with NaN and a non-zero ``status`` instead. ``duration``
+    defaults to each motion's own duration. Other arguments as in :func:`simulate`.
+    """
+    m = _make(model, block, linear, options)
+    if errors not in ("raise", "nan"):
+        raise ParameterError(f"errors must be 'raise' or 'nan', got {errors!r}")
+    kinds, prms, samples, nsamp, t_ends, h_scans = pack_motions(motions, duration)
+    dt_out = positive("dt_out", dt_out, "s")
+    n = kinds.size
+    n_out = _n_out(float(t_ends.max()), dt_out) if return_histories else 0
+    _guard(2 * n * n_out, 0, dt_out, float(t_ends.max()))
+    out_th = np.empty((n, n_out))
+    out_om = np.empty((n, n_out))
+    res_f = np.empty((n, 3))
+    res_i = np.zeros((n, 4), dtype=np.int64)
+    rows = (kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, res_f, res_i)
+    type(m).batch_kernel(m.kernel_params(dt_out, 0.0, 0.0), m.extra_buffers(0), rows)
+    status = res_i[:, 3].copy()
+    bad = np.flatnonzero(status)
+    if bad.size:
+        if errors == "raise":
+            i = int(bad[0])
+            raise SimulationError(f"{bad.size} of {n} runs failed; motions[{i}]: "
+                                  + m.failure(int(status[i]), math.nan))
+        res_f[bad, 0] = math.nan
+    return BatchResponse(
+        max_abs_theta=res_f[:, 0].copy(), overturned=res_i[:, 1].astype(bool),
+        overturn_time=res_f[:, 1].copy(), uplift_time=res_f[:, 2].copy(),
+        n_impacts=res_i[:, 0].copy(), n_steps=res_i[:, 2].copy(), status=status,
+        t=np.arange(n_out) * dt_out if return_histories else None,
+        theta=out_th if return_histories else None,
+        omega=out_om if return_histories else None,
+        model=m.result_name, block=block, info=m.info(),
+    )
