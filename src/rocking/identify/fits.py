@@ -33,7 +33,7 @@ _NOT_IDENTIFIABLE = (
 
 
 def _fit_alpha_p(r, d, v, loss: str, x0=None):
-    """Weighted (robust) least squares of durations ``d`` against ``G(r, alpha)/p``.
+    """Eq 13: weighted (robust) least squares of durations ``d`` against ``G(r, alpha)/p``.
 
     Without a start ``x0`` the error surface is first profiled over a grid of ``alpha``
     (``p`` in closed form) for a global start.
@@ -127,9 +127,9 @@ def covariance(times: HalfCycleTimes, alpha: float, p: float) -> np.ndarray:
 
 def uncertainties(times: HalfCycleTimes, alpha: float, p: float, n_boot: int,
                   seed) -> tuple[np.ndarray, str]:
-    """``(cov, how)``: the covariance of ``(alpha, p)``, from the Jacobian of the half-cycle
-    durations ``D_k = 2 T(r_k)`` (fall ``T(r_0)`` for the release), or from ``n_boot``
-    bootstrap resamples of the half-cycles (Eq 13 refitted on each)."""
+    """``(cov, how)``: the covariance of ``(alpha, p)`` from the Jacobian
+    (:func:`covariance`) or, if ``n_boot > 0``, from bootstrap resamples of the half-cycles
+    (Eq 13 refitted on each)."""
     if n_boot > 0 and (boot := _bootstrap(times, n_boot, seed)) is not None:
         return boot
     return covariance(times, alpha, p), "jacobian"

@@ -46,6 +46,8 @@ class Record:
 
 
 def _as_record(t, theta, units: str):
+    """``(t, theta in rad)`` as checked float arrays: 1-D, of the same length (at least 20
+    samples), finite, ``t`` strictly increasing."""
     factor = _angle_factor(units)
     try:
         t = np.asarray(t, dtype=float)

@@ -37,6 +37,7 @@ class FreeRockingFit:
     ``offset`` (rad) was removed from the record, ``noise`` (rad) is its estimated noise
     std, ``t`` and ``theta`` keep the record (s; rad, offset removed) for the plots.
     ``weights`` (1/s) weight the rise and fall residuals of each half-cycle in Eq 13.
+    :meth:`summary` (the main numbers) and :meth:`to_dict` (all fields) are JSON-ready.
     """
 
     alpha: float
