@@ -15,10 +15,10 @@ import pytest
 
 import rocking
 from rocking import Block, ParameterError, Stack, simulate, simulate_many
-from rocking.models import dem as PD
 from rocking.blocks import polygon_properties
 from rocking.blocks.specimens import paper_data
 from rocking.models import dem as D
+from rocking.models import dem as PD
 from rocking.motions import HalfSine, Rectangular, Sine
 from rocking.units import G
 
@@ -359,7 +359,7 @@ def test_stack_geometry_and_outputs():
 def test_cli_dem_params():
     from click.testing import CliRunner
 
-    from rocking.cli_dem import dem_params
+    from rocking.cli.dem import dem_params
 
     r = CliRunner().invoke(dem_params, ["--specimen", "2"])
     assert r.exit_code == 0, r.output

@@ -425,7 +425,7 @@ def test_from_csv(csv_deg, tmp_path):
 def test_cli_identify(csv_deg, tmp_path):
     from click.testing import CliRunner
 
-    from rocking.cli_identify import identify
+    from rocking.cli.identify import identify
 
     path, _, _ = csv_deg
     out = tmp_path / "out"
