@@ -6,9 +6,9 @@
     rocking dem-params --specimen 3 --params experimental --json
     rocking dem-params --specimen 2 --calibrate     # + our DEM defaults (runs the DEM)
 
-The command is registered in :mod:`rocking.cli` (``cli.add_command(dem_params)``). Bad
-input raises :class:`~rocking.errors.RockingError`; the main entry point prints it as one
-line ``error: ...``.
+The command is registered in :mod:`rocking.cli`. Bad input raises
+:class:`~rocking.errors.RockingError`; the main entry point prints it as one line
+``error: ...``.
 """
 
 from __future__ import annotations
@@ -17,30 +17,17 @@ import json
 
 import click
 
-from .errors import ParameterError
+from ..blocks import paper_data, specimen
+from ..units import G
+from .common import CONTEXT, specimen_number
 
-CONTEXT = {"help_option_names": ["-h", "--help"]}
 COLUMNS = {"theoretical": "T", "experimental": "F"}
-
-
-def _specimen_number(text) -> int:
-    from .blocks import specimen_ids
-
-    ids = specimen_ids()
-    try:
-        n = int(str(text).strip())
-    except ValueError:
-        n = None
-    if n not in ids:
-        raise ParameterError(f"specimen must be one of {ids}, got {text!r}")
-    return n
 
 
 def dem_params_dict(n: int, params: str, calibrate: bool = False) -> dict:
     """Table III quantities of specimen ``n`` for a Table II parameter set, with the printed
     values (and our DEM defaults if ``calibrate``)."""
-    from .models import dem as PD
-    from .blocks import paper_data, specimen
+    from ..models import dem as PD  # lazy: the models import numba
 
     blk = specimen(n, params)
     col = COLUMNS[params]
@@ -54,16 +41,14 @@ def dem_params_dict(n: int, params: str, calibrate: bool = False) -> dict:
          "paper": {"K": float(t3["K"][col]), "xi_min": 1e-3 * float(t3["zeta_e3"][col]),
                    "f_min": float(t3["f_min"][col]), "width_eq": float(t3["width_eq"][col])}}
     if calibrate:
-        from .models import dem as D
-
-        md = D.build_model(blk)
-        K = D.default_stiffness(md)
+        md = PD.build_model(blk)
+        K = PD.default_stiffness(md)
         cal = PD.calibrate_damping(blk, full=True)
         d["dem_default"] = {
             "body": md.bodies[0].mode, "stiffness": K,
-            "settlement": md.total_mass * 9.80665 / (2.0 * K),
+            "settlement": md.total_mass * G / (2.0 * K),
             "damping_b": cal["b"], "restitution": cal["mu_dem"], "note": cal["note"],
-            "time_step": D.stable_dt(md, K, K, cal["b"])}
+            "time_step": PD.stable_dt(md, K, K, cal["b"])}
     return d
 
 
@@ -110,10 +95,13 @@ def _lines(d: dict) -> list[str]:
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (SI units).")
 def dem_params(specimen, params_set, calibrate, as_json):
     """Table III: the DEM parameters from the classical ones (Eqs 14-22), ours vs printed."""
-    n = _specimen_number(specimen)
+    n = specimen_number(specimen)
     sets = ["theoretical", "experimental"] if params_set == "both" else [params_set]
     ds = [dem_params_dict(n, s, calibrate) for s in sets]
     if as_json:
         click.echo(json.dumps(ds if len(ds) > 1 else ds[0], indent=2))
         return
     click.echo("\n\n".join("\n".join(_lines(d)) for d in ds))
+
+
+__all__ = ["dem_params", "dem_params_dict"]

@@ -21,16 +21,10 @@ from pathlib import Path
 
 import click
 
-from .errors import ParameterError
-
-
-def _length(text, name: str) -> float | None:
-    if text is None:
-        return None
-    from ._validate import positive
-    from .units import parse_quantity
-
-    return positive(name, parse_quantity(text, "length", name=name, default_unit="m"), "m")
+from .._validate import as_float
+from ..blocks import Block, housner_mu
+from ..errors import ParameterError
+from .common import CONTEXT, jsonable, positive_quantity
 
 
 def _theoretical(width, height):
@@ -40,8 +34,6 @@ def _theoretical(width, height):
     if width is None or height is None:
         raise ParameterError("give both --block-width and --block-height (the full width 2b "
                              "and height 2h of the block) for the theoretical parameters")
-    from .blocks import Block, housner_mu
-
     try:
         block = Block.rectangular(width, height, name="theoretical")
         mu = block.mu
@@ -57,8 +49,6 @@ def _offset(text, units):
     key = str(text).strip().lower()
     if key in ("auto", "rest", "symmetric"):
         return key
-    from ._validate import as_float
-
     return as_float("offset", text)
 
 
@@ -84,7 +74,7 @@ def table_lines(fit, theo: dict | None) -> list[str]:
     return out
 
 
-@click.command("identify")
+@click.command("identify", context_settings=CONTEXT)
 @click.argument("record", type=click.Path(dir_okay=False))
 @click.option("--units", type=click.Choice(["rad", "deg"], case_sensitive=False),
               default="rad", show_default=True, help="Units of the angle column.")
@@ -110,10 +100,10 @@ def identify(record, units, block_width, block_height, time_col, angle_col, offs
     The paper's method (Section 4.1): alpha and p minimise the error of the times between
     peaks and zero crossings (Eq 13, exact time model), mu follows Eq 12.
     """
-    from . import identify as ri
+    from .. import identify as ri  # lazy: numpy fits, pandas, the models
 
-    width = _length(block_width, "block-width")
-    height = _length(block_height, "block-height")
+    width = positive_quantity(block_width, "length", "block-width", "m", "m")
+    height = positive_quantity(block_height, "length", "block-height", "m", "m")
     block, theo = _theoretical(width, height)
     fit = ri.from_csv(record, units=units.lower(), time_col=time_col, angle_col=angle_col,
                       offset=_offset(offset, units))
@@ -129,12 +119,12 @@ def identify(record, units, block_width, block_height, time_col, angle_col, offs
                                      for k in ("alpha", "p", "mu") if math.isfinite(theo[k])}
     summary = ri._json_safe(summary)  # NaN (e.g. mu of a squat block) -> null
     (folder / "fit.json").write_text(json.dumps(summary, indent=2, allow_nan=False,
-                                                default=_jsonable))
+                                                default=jsonable))
     fit.table().to_csv(folder / "half_cycles.csv", index=False, float_format="%.10g")
     _plots(fit, block, folder)
 
     if as_json:
-        click.echo(json.dumps(summary, indent=2, default=_jsonable))
+        click.echo(json.dumps(summary, indent=2, default=jsonable))
         return
     k = 180.0 / math.pi
     t = fit.t
@@ -160,7 +150,7 @@ def identify(record, units, block_width, block_height, time_col, angle_col, offs
 
 
 def _plots(fit, block, folder: Path) -> None:
-    from .plot import save_figure
+    from ..plot import save_figure  # lazy: matplotlib
 
     ax = fit.plot_error_surface(theoretical=block)
     save_figure(ax.figure, folder / "error_surface.png")
@@ -169,9 +159,4 @@ def _plots(fit, block, folder: Path) -> None:
     save_figure(fig, folder / "fit.png")
 
 
-def _jsonable(o):
-    try:
-        x = float(o)
-    except (TypeError, ValueError):
-        return str(o)
-    return None if math.isnan(x) or math.isinf(x) else x
+__all__ = ["identify", "table_lines"]

@@ -7,7 +7,7 @@
     rocking motion spectrum quake.AT2                       # PEER file, in g
     rocking motion spectrum quake.csv --units m/s^2 --damping 5% --plot spec.png
 
-The group is registered in :mod:`rocking.cli` (``cli.add_command(motion)``). Bad input
+The group is registered in :mod:`rocking.cli`. Bad input
 raises :class:`~rocking.errors.RockingError`; the main entry point prints it as one line
 ``error: ...``.
 """
@@ -20,26 +20,22 @@ from pathlib import Path
 import click
 import numpy as np
 
-from .errors import ParameterError
+from .._validate import as_float, in_range
+from ..errors import ParameterError
+from ..units import G, parse_quantity
+from .common import CONTEXT, integer, positive_quantity
 
-CONTEXT = {"help_option_names": ["-h", "--help"]}
+# matplotlib, pandas and rocking.motions (numba) are imported inside the functions: lazy,
+# so that `rocking --help` and the other commands start fast.
 
 
 # ----------------------------------------------------------------------------- parsing
-def _time(text, name: str, default_unit: str = "s") -> float | None:
-    if text is None:
-        return None
-    from ._validate import positive
-    from .units import parse_quantity
-
-    return positive(name, parse_quantity(text, "time", name=name, default_unit=default_unit),
-                    "s")
+def _time(text, name: str) -> float | None:
+    return positive_quantity(text, "time", name, "s", "s")
 
 
 def _damping(text) -> float:
     """``5%`` or ``0.05`` as a fraction in [0, 1)."""
-    from ._validate import as_float, in_range
-
     s = str(text).strip()
     if s.endswith("%"):
         x = as_float("damping", s[:-1].strip()) / 100.0
@@ -51,21 +47,9 @@ def _damping(text) -> float:
     return in_range("damping", x, 0.0, 1.0, lo_open=False, shown="[0, 100) %")
 
 
-def _count(text, name: str, lo: int = 1, hi: int | None = None) -> int:
-    try:
-        n = int(str(text).strip())
-    except ValueError:
-        raise ParameterError(f"{name} must be an integer, got {text!r}") from None
-    if n < lo or (hi is not None and n > hi):
-        rng = f">= {lo}" if hi is None else f"in {lo}..{hi}"
-        raise ParameterError(f"{name} must be {rng}, got {text!r}")
-    return n
-
-
 def _target(ag, ground, stype, damping: float):
     """The paper's target, or an EC8 spectrum when ``--ag`` is given."""
-    from .motions.ec8 import DesignSpectrum, paper_target
-    from .units import parse_quantity
+    from ..motions.ec8 import DesignSpectrum, paper_target  # lazy: numba
 
     if ag is None:
         if ground is not None or stype is not None:
@@ -88,8 +72,8 @@ def _save(fig, path: Path, dpi: int = 110) -> None:
 def _record_figure(rec, periods, sa, target, prange, damping):
     from matplotlib.figure import Figure
 
-    from .motions.processing import displacement
-    from .motions.spectra import plot_spectra
+    from ..motions.processing import displacement
+    from ..motions.spectra import plot_spectra
 
     d = 1000.0 * displacement(rec)
     fig = Figure(figsize=(10.0, 4.2), layout="constrained")
@@ -148,9 +132,9 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
     import pandas as pd
     from matplotlib.figure import Figure
 
-    from .motions.io import write_csv
-    from .motions.spectra import plot_spectra
-    from .motions.synthetic import (
+    from ..motions.io import write_csv
+    from ..motions.spectra import plot_spectra
+    from ..motions.synthetic import (
         PAPER_COUNT,
         PAPER_SEED,
         PERIOD_RANGE,
@@ -160,9 +144,9 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
         synthetic,
     )
 
-    n = _count(count, "count", 1, 1000)
-    k0 = _count(first, "first", 0)
-    sd = PAPER_SEED if seed is None else _count(seed, "seed", 0)
+    n = integer(count, "count", 1, 1000)
+    k0 = integer(first, "first", 0)
+    sd = PAPER_SEED if seed is None else integer(seed, "seed", 0)
     dur = _time(duration, "duration")
     step = _time(dt, "dt")
     target, is_paper = _target(ag, ground, stype, 0.05)
@@ -253,14 +237,13 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
     """
     from matplotlib.figure import Figure
 
-    from .motions.ec8 import paper_target
-    from .motions.records import Record
-    from .motions.spectra import log_periods, plot_spectra, response_spectra
-    from .units import G
+    from ..motions.ec8 import paper_target
+    from ..motions.records import Record
+    from ..motions.spectra import log_periods, plot_spectra, response_spectra
 
     zeta = _damping(damping)
     t_lo, t_hi = _time(tmin, "tmin"), _time(tmax, "tmax")
-    n = _count(npts, "n", 2, 10000)
+    n = integer(npts, "n", 2, 10000)
     step = _time(dt, "dt")
     p = Path(file)
     rec = Record.from_file(p, units=units, dt=step)  # (.AT2 files are in g: the default)

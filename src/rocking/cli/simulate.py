@@ -1,33 +1,44 @@
-"""The ``rocking`` command line.
+"""``rocking simulate``: one block under one base motion, with any registered model.
 
 ::
 
-    rocking params --specimen 2 [--params theoretical|experimental|geometric] [--json]
-    rocking params --width 0.17 --height 1.0 [--mass 228] [--json]
     rocking simulate --specimen 2 --params experimental --motion sine --freq 5 --amp 5mm \\
         --duration 25 --out out/
     rocking simulate --specimen 2 --record quake.AT2 --units g --load-factor 1.2 --out out/
-    rocking reproduce --out results [--quick]
+    rocking simulate --specimen 2 --model ccrr --option rtol=1e-9 --motion free \\
+        --theta0 0.05 --duration 5
 
-Quantities accept units at the edge (``170mm``, ``0.3g``, ``5Hz``, ``9.6deg``); see
-:func:`rocking.units.parse_quantity`. Bad input -- a :class:`~rocking.errors.RockingError`
-from the library or a usage error from click -- is reported by :func:`main` as one line
-``error: <message>`` on stderr with exit code 2, never as a traceback.
+``--model`` is a name of :data:`rocking.models.MODELS` and ``--option KEY=VALUE``
+(repeatable) passes an option of that model's ``Options`` (``rocking models`` lists them);
+the model validates the options. The DEM flags ``--friction-angle``, ``--stiffness`` and
+``--damping`` are the options of the same names, for the models that have them.
 """
 
 from __future__ import annotations
 
 import json
 import math
-import sys
 from pathlib import Path
 
 import click
 
-from . import __version__
-from ._validate import as_float
-from .blocks import PARAM_SETS
-from .errors import ParameterError, RecordError, RockingError
+from .._validate import as_float, in_range
+from ..errors import ParameterError, RecordError, RockingError
+from ..units import ACCELERATION, LENGTH, G, split_quantity
+from .common import (
+    CONTEXT,
+    ModelChoice,
+    block_options,
+    check_positive,
+    jsonable,
+    make_block,
+    models_with_option,
+    number,
+    parse_options,
+    positive_quantity,
+    quantity,
+    validate_options,
+)
 
 PULSES = ("one-sine", "one-cosine", "half-sine", "rectangular", "ricker")
 HARMONIC = ("sine", "hanning")
@@ -35,35 +46,12 @@ MOTION_CHOICES = (*HARMONIC, *PULSES, "free", "record")
 UNITS_HELP = "g, m/s^2 or cm/s^2"
 
 
-# ----------------------------------------------------------------------------- parsing
-def _qty(text, kind: str, name: str, default_unit: str | None = None) -> float | None:
-    """``text`` as an SI float (None stays None)."""
-    if text is None:
-        return None
-    from .units import parse_quantity
-
-    return parse_quantity(text, kind, name=name, default_unit=default_unit)
-
-
-def _number(text, name: str, units: tuple[str, ...] = ()) -> float | None:
-    """A plain finite number, optionally followed by one of ``units`` (e.g. ``1/s``)."""
-    if text is None:
-        return None
-    s = str(text).strip()
-    for u in units:
-        if s.lower().endswith(u):
-            s = s[: -len(u)].strip()
-            break
-    return as_float(name, s)
-
-
-def _amplitude(text, motion: str) -> tuple[str, float]:
+# ----------------------------------------------------------------------------- motions
+def amplitude(text, motion: str) -> tuple[str, float]:
     """``--amp`` as ``("length", m)`` or ``("acceleration", m/s^2)``, checked >= 0."""
-    from .units import ACCELERATION, LENGTH, split_quantity
-
     parts = split_quantity(text)
     if parts is None:  # not a number: let parse_quantity word the error
-        _qty(text, "length" if motion in HARMONIC else "acceleration", "amp")
+        quantity(text, "length" if motion in HARMONIC else "acceleration", "amp")
     unit = parts[1]
     if motion in HARMONIC:
         hint = ("a table displacement with a length unit such as 5mm "
@@ -82,110 +70,16 @@ def _amplitude(text, motion: str) -> tuple[str, float]:
         if not unit:
             raise ParameterError(f"amp needs a unit for --motion {motion}: {hint}; got {text!r}")
         kind = "acceleration"
-    value = _qty(text, kind, "amp")
+    value = quantity(text, kind, "amp")
     if value < 0:
         raise ParameterError(f"amp must be >= 0: {hint}; got {text!r}")
     return kind, value
 
 
-def _positive(value, name: str, unit: str):
-    if value is not None and not value > 0:
-        raise ParameterError(f"{name} must be > 0 {unit}; got {value:g}")
-    return value
-
-
-# ----------------------------------------------------------------------------- blocks
-def _make_block(specimen, params, width, height, mass, alpha, p, mu, allow_classical: bool):
-    """Build the block from exactly one of: specimen, width/height, alpha/p/mu."""
-    from .blocks import Block, specimen_ids
-    from .blocks import specimen as get_specimen
-
-    sources = [s for s, given in (("--specimen", specimen is not None),
-                                  ("--width/--height", width is not None or height is not None),
-                                  ("--alpha", alpha is not None)) if given]
-    if len(sources) > 1:
-        raise ParameterError(f"block: give only one of {' or '.join(sources)}")
-    if not sources:
-        what = ("--specimen N, --width W --height H, or --alpha A --p P --mu M"
-                if allow_classical else "--specimen N or --width W --height H")
-        raise ParameterError(f"block: give {what}")
-    if params is not None and specimen is None:
-        raise ParameterError("params applies to --specimen only")
-    if mass is not None and specimen is not None:
-        raise ParameterError("mass applies to --width/--height only (the specimens "
-                             "have their Table I mass)")
-
-    info: dict = {}
-    if specimen is not None:
-        ids = specimen_ids()
-        try:
-            n = int(str(specimen).strip())
-        except ValueError:
-            raise ParameterError(f"specimen must be one of {ids}, got {specimen!r}") from None
-        ps = params or "theoretical"
-        block = get_specimen(n, params=ps)
-        info.update(specimen=n, params=ps)
-    elif width is not None or height is not None:
-        if width is None or height is None:
-            missing = "width" if width is None else "height"
-            raise ParameterError(f"{missing} is required with --width/--height "
-                                 f"(full size, e.g. 0.17 or 170mm)")
-        w = _qty(width, "length", "width", default_unit="m")
-        h = _qty(height, "length", "height", default_unit="m")
-        mval = _number(mass, "mass", ("kg",))
-        block = Block.rectangular(w, h, mass=mval, name="rectangular block")
-        info.update(width=block.width, height=block.height, mass=block.mass)
-    else:
-        if p is None or mu is None:
-            missing = [n for n, v in (("p", p), ("mu", mu)) if v is None]
-            raise ParameterError(f"{' and '.join(missing)} required with --alpha "
-                                 f"(give --alpha A --p P --mu M)")
-        a = _qty(alpha, "angle", "alpha", default_unit="rad")
-        block = Block.from_params(a, _number(p, "p", ("1/s", "rad/s")), _number(mu, "mu"),
-                                  name="block")
-        info.update(alpha=block.alpha, p=block.p, mu=block.mu)
-        return block, info
-    # overrides on a specimen or a rectangle
-    changes = {}
-    if p is not None:
-        changes["p"] = _number(p, "p", ("1/s", "rad/s"))
-    if mu is not None:
-        changes["mu"] = _number(mu, "mu")
-    if changes:
-        block = block.with_params(**changes)
-        info.update({f"{k}_override": v for k, v in changes.items()})
-    return block, info
-
-
-def _block_lines(block) -> list[str]:
-    from .units import G
-
-    lines = []
-    if block.name:
-        lines.append(f"block           {block.name}")
-    lines += [
-        f"alpha           {block.alpha:.6g} rad = {math.degrees(block.alpha):.4g} deg",
-        f"p               {block.p:.6g} 1/s",
-        f"mu              {block.mu:.6g}",
-    ]
-    if block.R is not None:
-        lines.append(f"R               {block.R:.6g} m")
-    if block.width is not None:
-        lines.append(f"width x height  {block.width:g} m x {block.height:g} m")
-    if block.mass is not None:
-        lines.append(f"mass            {block.mass:g} kg")
-    if block.I_O is not None:
-        lines.append(f"I_O             {block.I_O:.6g} kg m^2")
-    ua = block.uplift_acceleration
-    lines.append(f"uplift g tan(a)  {ua:.6g} m/s^2 = {ua / G:.4g} g")
-    return lines
-
-
-# ----------------------------------------------------------------------------- motions
-def _make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
+def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
                  earthquake=None):
     """``(motion or None, description dict, duration for simulate)``."""
-    from . import motions as M
+    from .. import motions as M  # lazy: the motions import numba
 
     if earthquake is not None:
         if motion is not None or record is not None:
@@ -195,7 +89,7 @@ def _make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor
                           ("dt", dt)):
             if val is not None:
                 raise ParameterError(f"{name} does not apply to --earthquake")
-        from .motions.synthetic import earthquake_motion
+        from ..motions.synthetic import earthquake_motion
 
         try:
             n = int(str(earthquake))
@@ -204,7 +98,7 @@ def _make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor
                                  f"got {earthquake!r}") from None
         lf = 1.0 if load_factor is None else as_float("load-factor", load_factor)
         m = earthquake_motion(n, lf)
-        dur = _positive(_qty(duration, "time", "duration", default_unit="s"), "duration", "s")
+        dur = positive_quantity(duration, "time", "duration", "s", "s")
         if dur is None:  # capture the free rocking after the record ends
             dur = m.duration + 5.0
         desc = {"type": "earthquake", "number": n, "load_factor": lf, "dt": m.dt,
@@ -225,9 +119,9 @@ def _make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor
             if val is not None:
                 raise ParameterError(f"{name} applies to --record only")
 
-    f = _positive(_qty(freq, "frequency", "freq", default_unit="hz"), "freq", "Hz")
-    tpv = _positive(_qty(tp, "time", "tp", default_unit="s"), "tp", "s")
-    dur = _positive(_qty(duration, "time", "duration", default_unit="s"), "duration", "s")
+    f = positive_quantity(freq, "frequency", "freq", "hz", "Hz")
+    tpv = positive_quantity(tp, "time", "tp", "s", "s")
+    dur = positive_quantity(duration, "time", "duration", "s", "s")
     lf = 1.0 if load_factor is None else as_float("load-factor", load_factor)
 
     def unused(*names):
@@ -251,7 +145,7 @@ def _make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor
 
     if motion == "record":
         unused("freq", "amp", "tp")
-        dtv = _positive(_qty(dt, "time", "dt", default_unit="s"), "dt", "s")
+        dtv = positive_quantity(dt, "time", "dt", "s", "s")
         u = "g" if units is None else units
         try:
             rec = M.Record.from_file(record, units=u, dt=dtv)
@@ -268,7 +162,7 @@ def _make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor
         if dur is None:
             raise ParameterError(f"duration is required for --motion {motion} (s > 0), "
                                  f"e.g. --duration 25")
-        kind, a = _amplitude(amp, motion)
+        kind, a = amplitude(amp, motion)
         cls = M.Sine if motion == "sine" else M.HanningSine
         if kind == "acceleration":
             X = a / (2.0 * math.pi * f) ** 2
@@ -280,7 +174,7 @@ def _make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor
         dur = None
     else:
         need("amp", amp, "--amp 0.3g")
-        _, a = _amplitude(amp, motion)
+        _, a = amplitude(amp, motion)
         if motion == "ricker":
             if f is not None and tpv is not None:
                 raise ParameterError("ricker: give --freq (peak frequency) or --tp (= 1/freq), "
@@ -306,88 +200,57 @@ def _make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor
     return m, desc, dur
 
 
-# ----------------------------------------------------------------------------- commands
-def _block_options(f):
-    opts = [
-        click.option("--specimen", metavar="N",
-                     help="Specimen of Pena et al. (2007), Table I (1-4)."),
-        click.option("--params", "params_set", type=click.Choice(PARAM_SETS),
-                     help="Parameter set of a specimen (default theoretical)."),
-        click.option("--width", metavar="W", help="Full width 2b (bare number: m; or 170mm)."),
-        click.option("--height", metavar="H", help="Full height 2h (bare number: m)."),
-    ]
-    for o in reversed(opts):
-        f = o(f)
-    return f
+# ----------------------------------------------------------------------------- model options
+def flag_options(model: str, friction_angle, stiffness, damping) -> dict:
+    """The options given by their own flags, parsed; an error for a model without them."""
+    given = {"friction_angle": friction_angle, "stiffness": stiffness, "damping": damping}
+    opts = {}
+    for key, val in given.items():
+        if val is None:
+            continue
+        flag = key.replace("_", "-")
+        owners = models_with_option(key)
+        if model not in owners:
+            raise ParameterError(f"{flag} applies to --model {' or '.join(owners)} only")
+        if key == "friction_angle":
+            opts[key] = in_range(flag, number(val, flag, ("deg",)), 0.0, 90.0,
+                                 shown="[0, 90) degrees", lo_open=False)
+        elif key == "stiffness":
+            opts[key] = check_positive(number(val, flag, ("n/m",)), flag, "N/m")
+        else:
+            d = str(val).strip().lower()
+            if d in ("calibrated", "paper"):
+                opts[key] = d
+            else:
+                opts[key] = as_float(flag, number(d, flag, ("s",)))
+                if opts[key] < 0:
+                    raise ParameterError(f"damping must be >= 0 s, 'calibrated' or 'paper'; "
+                                         f"got {val!r}")
+    return opts
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
-@click.version_option(__version__, "--version", prog_name="rocking")
-def cli():
-    """Dynamics of rocking rigid blocks (Pena et al. 2007).
-
-    SI units inside; units are explicit at the edges (--amp 5mm, 0.3g; --freq 5Hz).
-    """
-
-
-@cli.command("params")
-@_block_options
-@click.option("--mass", metavar="M", help="Mass (kg), with --width/--height.")
-@click.option("--json", "as_json", is_flag=True, help="Print a JSON object (SI units).")
-def params_cmd(specimen, params_set, width, height, mass, as_json):
-    """Classical parameters alpha, p, mu, R of a block (Eqs 2-4)."""
-    block, info = _make_block(specimen, params_set, width, height, mass, None, None, None,
-                              allow_classical=False)
-    if as_json:
-        d = {k: (None if v is None else float(v)) for k, v in block.params().items()}
-        d.update(
-            alpha_deg=math.degrees(block.alpha),
-            uplift_acceleration=block.uplift_acceleration,
-            uplift_acceleration_g=block.uplift_acceleration / _g(),
-            width=block.width, height=block.height, mass=block.mass, I_O=block.I_O,
-            name=block.name,
-        )
-        d.update({k: v for k, v in info.items() if k in ("specimen", "params")})
-        click.echo(json.dumps(d, indent=2))
-    else:
-        click.echo("\n".join(_block_lines(block)))
+def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict:
+    """``--option KEY=VALUE`` pairs and the DEM flags as one options dict, checked by the
+    model (unknown names, ranges)."""
+    opts = parse_options(pairs)
+    flags = flag_options(model, friction_angle, stiffness, damping)
+    both = sorted(set(opts) & set(flags))
+    if both:
+        raise ParameterError(f"option {both[0]} given twice (--{both[0].replace('_', '-')} "
+                             f"and --option {both[0]}=...)")
+    opts.update(flags)
+    validate_options(model, opts)
+    return opts
 
 
-def _g():
-    from .units import G
-
-    return G
-
-
-def _model_names():
-    from .models import MODELS
-
-    return list(MODELS)
-
-
-class _ModelChoice(click.ParamType):
-    """A choice among :data:`rocking.models.MODELS`, read at run time."""
-
-    name = "model"
-
-    def get_metavar(self, param, ctx=None):  # click >= 8.2 passes ctx
-        return "[" + "|".join(_model_names()) + "]"
-
-    def convert(self, value, param, ctx):
-        names = _model_names()
-        key = str(value).strip().lower()
-        if key not in names:
-            self.fail(f"{value!r} is not one of {', '.join(names)}", param, ctx)
-        return key
-
-
-@cli.command("simulate")
-@_block_options
-@click.option("--alpha", metavar="A", help="Critical angle (bare number: rad; or 9.6deg).")
-@click.option("--p", metavar="P", help="Frequency parameter p (1/s); overrides a specimen's.")
-@click.option("--mu", metavar="MU", help="Coefficient of restitution in (0, 1]; overrides.")
-@click.option("--model", type=_ModelChoice(), default="housner", show_default=True,
-              help="Rocking model.")
+# ----------------------------------------------------------------------------- command
+@click.command("simulate", context_settings=CONTEXT)
+@block_options(classical=True)
+@click.option("--model", type=ModelChoice(), default="housner", show_default=True,
+              help="Rocking model (see 'rocking models').")
+@click.option("--option", "model_opts", multiple=True, metavar="KEY=VALUE",
+              help="A model option, repeatable (e.g. --option rtol=1e-9); "
+                   "'rocking models' lists them.")
 @click.option("--motion", type=click.Choice(MOTION_CHOICES),
               help="Base motion (--record FILE implies record).")
 @click.option("--freq", metavar="F", help="Frequency (Hz): sine/hanning; ricker peak frequency.")
@@ -419,33 +282,34 @@ class _ModelChoice(click.ParamType):
                    "matches mu) or 'paper' (Eq 20).")
 @click.option("--out", type=click.Path(file_okay=False),
               help="Write response.csv, summary.json and theta.png to this folder.")
-def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, motion, freq, amp,
-                 tp, duration, record, units, dt, earthquake, load_factor, theta0, omega0,
-                 linear, friction_angle, stiffness, damping, dt_out, out):
+def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model_opts, motion,
+                 freq, amp, tp, duration, record, units, dt, earthquake, load_factor, theta0,
+                 omega0, linear, friction_angle, stiffness, damping, dt_out, out):
     """Simulate one block under one base motion."""
-    from .models import simulate
+    from ..models import simulate  # lazy: the models import numba
 
-    block, binfo = _make_block(specimen, params_set, width, height, None, alpha, p, mu,
-                               allow_classical=True)
-    mot, mdesc, sim_dur = _make_motion(motion, freq, amp, tp, duration, record, units, dt,
-                                       load_factor, earthquake)
-    options = _dem_options(model, friction_angle, stiffness, damping)
-    th0 = _qty(theta0, "angle", "theta0", default_unit="rad")
-    om0 = _number(omega0, "omega0", ("rad/s", "1/s"))
+    block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
+                              allow_classical=True)
+    mot, mdesc, sim_dur = make_motion(motion, freq, amp, tp, duration, record, units, dt,
+                                      load_factor, earthquake)
+    options = model_options(model, model_opts, friction_angle, stiffness, damping)
+    th0 = quantity(theta0, "angle", "theta0", default_unit="rad")
+    om0 = number(omega0, "omega0", ("rad/s", "1/s"))
+    run = {}
     if dt_out is not None:
-        options["dt_out"] = _positive(_qty(dt_out, "time", "dt_out", default_unit="s"),
-                                      "dt_out", "s")
+        run["dt_out"] = positive_quantity(dt_out, "time", "dt_out", "s", "s")
     resp = simulate(block, mot, model=model, duration=sim_dur,
                     theta0=0.0 if th0 is None else th0, omega0=0.0 if om0 is None else om0,
-                    linear=linear, **options)
+                    linear=linear, **run, **options)
 
     summary = resp.summary()
     inputs = {"block": {**binfo, "alpha": block.alpha, "p": block.p, "mu": block.mu,
                         "R": block.R, "name": block.name},
               "model": model, "linear": bool(linear), "motion": mdesc,
               "theta0": th0 or 0.0, "omega0": om0 or 0.0}
-    if "dt_out" in options:
-        inputs["dt_out"] = options["dt_out"]
+    if options:
+        inputs["options"] = options
+    inputs.update(run)
     summary["specimen"] = binfo.get("specimen")
     summary["params"] = binfo.get("params")
     summary["inputs"] = inputs
@@ -468,66 +332,14 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, motio
         folder = Path(out)
         folder.mkdir(parents=True, exist_ok=True)
         resp.to_csv(folder / "response.csv")
-        (folder / "summary.json").write_text(json.dumps(summary, indent=2, default=_jsonable))
+        (folder / "summary.json").write_text(json.dumps(summary, indent=2, default=jsonable))
         _theta_png(resp, block, mdesc, folder / "theta.png")
         click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
 
 
-def _dem_options(model, friction_angle, stiffness, damping) -> dict:
-    """The DEM-only options of ``simulate``, validated; an error for the other models."""
-    given = {"friction-angle": friction_angle, "stiffness": stiffness, "damping": damping}
-    if model != "dem":
-        for name, val in given.items():
-            if val is not None:
-                raise ParameterError(f"{name} applies to --model dem only")
-        return {}
-    opts = {}
-    if friction_angle is not None:
-        from ._validate import in_range
-
-        opts["friction_angle"] = in_range("friction-angle", _number(friction_angle,
-                                          "friction-angle", ("deg",)), 0.0, 90.0,
-                                          shown="[0, 90) degrees", lo_open=False)
-    if stiffness is not None:
-        opts["stiffness"] = _positive(_number(stiffness, "stiffness", ("n/m",)),
-                                      "stiffness", "N/m")
-    if damping is not None:
-        d = str(damping).strip().lower()
-        if d in ("calibrated", "paper"):
-            opts["damping"] = d
-        else:
-            opts["damping"] = as_float("damping", _number(d, "damping", ("s",)))
-            if opts["damping"] < 0:
-                raise ParameterError(f"damping must be >= 0 s, 'calibrated' or 'paper'; "
-                                     f"got {damping!r}")
-    return opts
-
-
-def _register_subcommands() -> None:
-    """Commands that live in their own modules (one module per concept)."""
-    from .cli_dem import dem_params
-    from .cli_identify import identify as identify_cmd
-    from .cli_motion import motion as motion_group
-
-    cli.add_command(identify_cmd)
-    cli.add_command(dem_params)
-    cli.add_command(motion_group)
-
-
-_register_subcommands()
-
-
-def _jsonable(o):
-    try:
-        return float(o)
-    except (TypeError, ValueError):
-        return str(o)
-
-
+# ----------------------------------------------------------------------------- figure
 def _motion_title(d: dict) -> str:
     """A short description of the motion for plot titles."""
-    from .units import G
-
     kind = d.get("type")
     lf = d.get("load_factor", 1.0)
     tail = f", load factor {lf:g}" if lf != 1.0 else ""
@@ -544,7 +356,7 @@ def _motion_title(d: dict) -> str:
 
 
 def _theta_png(resp, block, mdesc, path):
-    from .plot import figure, plot_response, save_figure
+    from ..plot import figure, plot_response, save_figure  # lazy: matplotlib
 
     fig, ax = figure()
     title = f"{block.name or 'block'}: {_motion_title(mdesc)}"
@@ -552,62 +364,4 @@ def _theta_png(resp, block, mdesc, path):
     save_figure(fig, path)
 
 
-@cli.command("reproduce")
-@click.option("--out", default="results", show_default=True, type=click.Path(file_okay=False),
-              help="Output folder of the report.")
-@click.option("--quick", is_flag=True, help="Fewer, shorter simulations (for a smoke test).")
-def reproduce_cmd(out, quick):
-    """Reproduce the paper's tables and figures into OUT/index.html."""
-    try:
-        from . import report
-    except ImportError as e:
-        raise click.ClickException(f"the report module is not available ({e})") from None
-
-    report_error = getattr(report, "ReportError", ())
-    try:
-        index = report.reproduce(Path(out), quick=quick)
-    except report_error as e:  # some sections failed; the page was still written
-        click.echo(str(e.path))
-        raise click.ClickException(str(e)) from None  # exit code 1
-    click.echo(str(index))
-
-
-# ----------------------------------------------------------------------------- entry
-def _one_line(msg: str) -> str:
-    return " ".join(str(msg).split())
-
-
-_NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())
-
-
-def main(argv=None) -> None:
-    """Console entry point: run :func:`cli`, turning bad input into ``error: ...`` (exit 2).
-
-    Exits with ``sys.exit(code)``; ``argv`` defaults to ``sys.argv[1:]``.
-    """
-    try:
-        rv = cli.main(args=argv, prog_name="rocking", standalone_mode=False)
-        code = rv if isinstance(rv, int) else 0
-    except click.exceptions.UsageError as e:
-        if isinstance(e, _NO_ARGS_IS_HELP):  # bare `rocking` (click >= 8.2): show help
-            click.echo(e.ctx.get_help() if e.ctx else cli.get_help(click.Context(cli)))
-            sys.exit(0)
-        click.echo(f"error: {_one_line(e.format_message())}", err=True)
-        code = 2
-    except RockingError as e:
-        click.echo(f"error: {_one_line(e)}", err=True)
-        code = 2
-    except click.exceptions.Abort:
-        click.echo("error: aborted", err=True)
-        code = 1
-    except click.ClickException as e:
-        click.echo(f"error: {_one_line(e.format_message())}", err=True)
-        code = e.exit_code if e.exit_code else 1
-    except OSError as e:
-        click.echo(f"error: {_one_line(e)}", err=True)
-        code = 1
-    sys.exit(code)
-
-
-if __name__ == "__main__":
-    main()
+__all__ = ["simulate_cmd", "make_motion", "amplitude", "model_options", "MOTION_CHOICES"]

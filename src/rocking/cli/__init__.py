@@ -1,0 +1,96 @@
+"""The ``rocking`` command line: one module per command group, shared parsing in
+:mod:`rocking.cli.common`.
+
+::
+
+    rocking params --specimen 2 [--params theoretical|experimental|geometric] [--json]
+    rocking simulate --specimen 2 --params experimental --motion sine --freq 5 --amp 5mm \\
+        --duration 25 [--model ccrr --option rtol=1e-9] --out out/
+    rocking models [--json]
+    rocking motion synth|spectrum ...
+    rocking dem-params --specimen 2
+    rocking identify RECORD.csv
+    rocking reproduce --out results [--quick] [--full]
+
+Modules: :mod:`~rocking.cli.params`, :mod:`~rocking.cli.simulate`,
+:mod:`~rocking.cli.models`, :mod:`~rocking.cli.motion`, :mod:`~rocking.cli.dem`,
+:mod:`~rocking.cli.identify`, :mod:`~rocking.cli.reproduce`; each imports only
+:mod:`~rocking.cli.common` (and the library), and this module registers them.
+
+Errors: :func:`main` prints bad input -- a :class:`~rocking.errors.RockingError` from the
+library or a usage error from click -- as one line ``error: <message>`` on stderr with exit
+code 2 (the output guard, :class:`~rocking.errors.OutputTooLargeError`, names
+``--dt-out``/``--duration``); a numerical failure on valid input
+(:class:`~rocking.errors.SimulationError`) as one line with exit code 1. Never a traceback.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import click
+
+from .. import __version__
+from .common import CONTEXT, error_report, one_line
+from .dem import dem_params
+from .identify import identify
+from .models import models_cmd
+from .motion import motion
+from .params import params_cmd
+from .reproduce import reproduce_cmd
+from .simulate import simulate_cmd
+
+
+@click.group(context_settings=CONTEXT)
+@click.version_option(__version__, "--version", prog_name="rocking")
+def cli():
+    """Dynamics of rocking rigid blocks (Pena et al. 2007).
+
+    SI units inside; units are explicit at the edges (--amp 5mm, 0.3g; --freq 5Hz).
+    """
+
+
+for _command in (params_cmd, simulate_cmd, reproduce_cmd, identify, dem_params, motion,
+                 models_cmd):
+    cli.add_command(_command)
+
+_NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())
+
+
+def main(argv=None) -> None:
+    """Console entry point: run :func:`cli`, turning errors into one ``error: ...`` line.
+
+    Exit codes: 0 success, 2 bad input, 1 a numerical failure or another runtime error.
+    Exits with ``sys.exit(code)``; ``argv`` defaults to ``sys.argv[1:]``.
+    """
+    try:
+        rv = cli.main(args=argv, prog_name="rocking", standalone_mode=False)
+        code = rv if isinstance(rv, int) else 0
+    except click.exceptions.UsageError as e:
+        if isinstance(e, _NO_ARGS_IS_HELP):  # bare `rocking` (click >= 8.2): show help
+            click.echo(e.ctx.get_help() if e.ctx else cli.get_help(click.Context(cli)))
+            sys.exit(0)
+        click.echo(f"error: {one_line(e.format_message())}", err=True)
+        code = 2
+    except click.exceptions.Abort:
+        click.echo("error: aborted", err=True)
+        code = 1
+    except click.ClickException as e:
+        click.echo(f"error: {one_line(e.format_message())}", err=True)
+        code = e.exit_code if e.exit_code else 1
+    except MemoryError:
+        click.echo("error: out of memory (for simulate: increase --dt-out or shorten "
+                   "--duration)", err=True)
+        code = 1
+    except Exception as e:  # ours (bad input, numerical failure) or an OS error: one line
+        report = error_report(e)
+        if report is None:
+            if not isinstance(e, OSError):
+                raise
+            report = (one_line(e), 1)
+        msg, code = report
+        click.echo(f"error: {msg}", err=True)
+    sys.exit(code)
+
+
+__all__ = ["cli", "main"]

@@ -1,0 +1,5 @@
+"""``python -m rocking.cli``: the ``rocking`` command."""
+
+from . import main
+
+main()
