@@ -296,8 +296,6 @@ def test_dem_flags_are_model_options():
         "cohesion": 5, "damping": 0.001}
 
 
-@pytest.mark.xfail(reason="library: DEMOptions.damping has kind=object, which "
-                          "models.base._check_option converts with as_float", strict=False)
 def test_dem_damping_words_validate():
     from rocking.cli.simulate import model_options
 

@@ -148,6 +148,8 @@ class ModelOptions:
 
 def _check_option(name: str, value, m: dict):
     kind = m["kind"]
+    if kind is object:  # free-form: the options' check() validates it
+        return value
     if kind is bool:
         if not isinstance(value, bool | np.bool_):
             raise ParameterError(f"{name} must be True or False, got {value!r}")
