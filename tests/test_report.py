@@ -13,8 +13,17 @@ import pytest
 
 import rocking
 from rocking.blocks.specimens import paper_data
+from rocking.models import MODELS
 from rocking.report import SECTIONS, ReportError, reproduce, section
-from rocking.report.core import ordered_sections
+from rocking.report.core import (
+    MODEL_COLOURS,
+    Context,
+    model_style,
+    ordered_sections,
+    report_models,
+)
+from rocking.report.sections import earthquakes
+from rocking.report.sections.earthquakes import FULL_ONLY_BATCH, batch_models
 
 FREQS = [0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.3, 5.0]
 AMPS = [3, 4, 5, 6, 8, 10, 12]
@@ -195,3 +204,100 @@ def test_progress_lines_on_stderr(tmp_path, capsys):
 def test_unknown_section_rejected(tmp_path):
     with pytest.raises(ValueError, match="unknown report section"):
         reproduce(tmp_path, only=["nope"], progress=False)
+
+
+# ------------------------------------------------------------------ reproducibility
+CHEAP = ["table2", "table4", "free", "figure7", "table5"]
+"""Sections rebuilt in the reproducibility test (a whole quick report takes ~45 s)."""
+
+
+def _sections(text: str) -> dict[str, tuple[str, list[str]]]:
+    """{section id: (title without its number, [every <table> of the section])}."""
+    out = {}
+    for sid, body in re.findall(r'<section id="([^"]+)">(.*?)</section>', text, flags=re.S):
+        title = re.search(r"<h2>(?:\d+\. )?(.*?)</h2>", body).group(1)
+        out[sid] = (title, re.findall(r"<table.*?</table>", body, flags=re.S))
+    return out
+
+
+def test_models_come_from_the_registry(report):
+    out, _, _ = report
+    names = list(MODELS)
+    assert report_models() == names
+    # single runs and the full report's batches use every registered model, in order
+    assert batch_models(full=True) == names
+    notes: dict[str, str] = {}
+    default = batch_models(full=False, notes=notes)
+    assert default == [m for m in names if m not in FULL_ONLY_BATCH]
+    assert set(notes) == set(names) - set(default)
+    assert all("--full" in v for v in notes.values())
+    # the sections that show every model show exactly the registry's models
+    free = pd.read_csv(out / "free_comparison.csv")
+    assert list(dict.fromkeys(free["model"])) == names
+    fig7 = pd.read_csv(out / "figure7_summary.csv")
+    assert [c for c in fig7.columns if c.startswith("ours_") and c.endswith("_params")] == (
+        ["ours_experimental_params", "ours_theoretical_params"]
+        + [f"ours_{m}_experimental_params" for m in names if m != "housner"])
+    t5 = pd.read_csv(out / "table5_critical_angle.csv")
+    assert list(dict.fromkeys(t5["model"])) == default
+    assert "seconds" not in t5.columns
+
+
+def test_model_styles_fixed_by_registry_position():
+    styles = [model_style(m) for m in MODELS]
+    assert [s.label for s in styles] == [cls.label for cls in MODELS.values()]
+    assert [s.colour for s in styles] == list(MODEL_COLOURS[:len(styles)])
+    assert len({(s.colour, s.linestyle) for s in styles}) == len(styles)
+    assert styles == [model_style(m) for m in MODELS]
+    with pytest.raises(KeyError):
+        model_style("no such model")
+
+
+def test_no_decision_on_measured_time():
+    for name in ("BATCH_BUDGET", "_affordable", "_seconds_per_run", "SLOW_SINGLE", "_COST",
+                 "STYLE"):
+        assert not hasattr(earthquakes, name), name
+    src = Path(earthquakes.__file__).read_text(encoding="utf-8")
+    assert "perf_counter" not in src and "import time" not in src
+    for mod in ("table2", "table4", "figure7", "free_rocking", "dem", "identification"):
+        path = Path(earthquakes.__file__).with_name(f"{mod}.py")
+        assert "perf_counter" not in path.read_text(encoding="utf-8"), mod
+
+
+def test_context_and_reproduce_take_full():
+    import inspect
+
+    ctx = Context(out=Path("."), quick=True, section_id="x")
+    assert ctx.full is False
+    assert Context(out=Path("."), quick=False, section_id="x", full=True).full is True
+    sig = inspect.signature(reproduce)
+    assert sig.parameters["full"].default is False
+    assert list(sig.parameters)[:3] == ["out", "quick", "full"]
+
+
+def test_sections_live_in_sections_package():
+    for sec in ordered_sections():
+        mod = sec.build.__module__
+        if sec.id.startswith("zz_"):
+            continue
+        assert mod.startswith("rocking.report.sections."), (sec.id, mod)
+
+
+def test_same_titles_and_numbers_twice(report, tmp_path):
+    """A second build (quick mode) gives the same section titles, tables and CSV files."""
+    out, index, _ = report
+    second = reproduce(tmp_path, quick=True, progress=False, only=CHEAP)
+    first_secs = _sections(index.read_text(encoding="utf-8"))
+    again = _sections(second.read_text(encoding="utf-8"))
+    assert list(again) == [s for s in first_secs if s in CHEAP]
+    for sid in CHEAP:
+        assert again[sid][0] == first_secs[sid][0], sid
+        assert again[sid][1], f"{sid}: no table"
+        assert again[sid][1] == first_secs[sid][1], sid
+    csvs = sorted(p.name for p in tmp_path.glob("*.csv"))
+    assert csvs
+    for name in csvs:
+        assert (tmp_path / name).read_bytes() == (out / name).read_bytes(), name
+    # every section title of the full quick report is fixed by the registry of sections
+    assert [t for t, _ in first_secs.values() if t != "Provenance"] == [
+        s.title for s in ordered_sections()]

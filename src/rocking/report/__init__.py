@@ -3,8 +3,8 @@
 The page puts the paper's numbers (Peña et al. 2007) and ours side by side, one section
 per table or figure, each with its PNG figures and CSV tables next to the page.
 
-Adding a section: write a module in this package with a function decorated by
-:func:`rocking.report.core.section` (``build(ctx) -> HTML fragment``; see
+Adding a section: write a module in :mod:`rocking.report.sections` with a function
+decorated by :func:`rocking.report.core.section` (``build(ctx) -> HTML fragment``; see
 :mod:`rocking.report.core` for the :class:`~rocking.report.core.Context` helpers) and add
 the module name to :data:`SECTION_MODULES` below. Sections run in increasing ``order``.
 """
@@ -12,24 +12,43 @@ the module name to :data:`SECTION_MODULES` below. Sections run in increasing ``o
 from __future__ import annotations
 
 import importlib
+import sys
 
-from .core import SECTIONS, Context, ReportError, Section, ordered_sections, reproduce, section
+from .core import (
+    SECTIONS,
+    Context,
+    ModelStyle,
+    ReportError,
+    Section,
+    model_style,
+    ordered_sections,
+    report_models,
+    reproduce,
+    section,
+)
 
+SECTION_PACKAGE = f"{__name__}.sections"
+"""The package holding the section modules."""
 SECTION_MODULES = ("table2", "identification", "table4", "free_rocking", "figure7", "dem",
                    "earthquakes")
-"""Modules of this package that register sections when imported."""
+"""Modules of :data:`SECTION_PACKAGE` that register sections when imported."""
 
 
 def _import_sections() -> None:
-    """Import the section modules; a module that fails to import becomes a failed section."""
+    """Import the section modules; a module that fails to import becomes a failed section.
+
+    Each module is also reachable under its former name ``rocking.report.<name>`` (an alias
+    in ``sys.modules``, for code written before the move to :mod:`rocking.report.sections`).
+    """
     for i, name in enumerate(SECTION_MODULES):
         try:
-            importlib.import_module(f"{__name__}.{name}")
+            mod = importlib.import_module(f"{SECTION_PACKAGE}.{name}")
+            sys.modules.setdefault(f"{__name__}.{name}", mod)
         except Exception as exc:  # keep the rest of the report alive
             err = f"{type(exc).__name__}: {exc}"
 
             def _failed(ctx, _err=err, _name=name):
-                raise RuntimeError(f"module rocking.report.{_name} failed to import: {_err}")
+                raise RuntimeError(f"module {SECTION_PACKAGE}.{_name} failed to import: {_err}")
 
             section(name, f"{name} (module failed to import)", order=1000 + i)(_failed)
 
@@ -37,4 +56,5 @@ def _import_sections() -> None:
 _import_sections()
 
 __all__ = ["reproduce", "section", "Section", "SECTIONS", "Context", "ReportError",
-           "ordered_sections", "SECTION_MODULES"]
+           "ordered_sections", "SECTION_MODULES", "SECTION_PACKAGE", "ModelStyle",
+           "model_style", "report_models"]

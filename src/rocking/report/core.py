@@ -15,8 +15,16 @@ the :func:`section` decorator and run in increasing ``order``::
         fig_html = ctx.save_figure(fig, "theta", caption="...")
         return H.p("...") + H.table(...) + fig_html + ctx.files_html()
 
-and the module is added to ``SECTION_MODULES`` in :mod:`rocking.report` so that it is
-imported (hence registered) before the page is built.
+and the module (in :mod:`rocking.report.sections`) is added to ``SECTION_MODULES`` in
+:mod:`rocking.report` so that it is imported (hence registered) before the page is built.
+
+**Reproducibility.** What a section computes and shows depends only on ``ctx.quick``,
+``ctx.full`` and fixed lists, never on measured time: the same command gives the same
+sections and numbers on any machine. A part too slow for the default run goes behind
+``full`` (``rocking reproduce --full``). Wall-clock times appear only in the provenance
+footer of the page and in the progress log. The models a section runs when it means
+"every model" come from :data:`rocking.models.MODELS` (:func:`report_models`), drawn
+with :func:`model_style` (colours and line styles fixed by registry position).
 
 A section that raises does not stop the report: its place in the page shows the error in
 a red box, the other sections still run, the page is written, and only then
@@ -72,19 +80,60 @@ def ordered_sections() -> list[Section]:
     return sorted(SECTIONS.values(), key=lambda s: (s.order, s.id))
 
 
+MODEL_COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
+"""Colours of the models in figures, by position in the registry (colour-blind safe)."""
+MODEL_LINESTYLES = ("-", "--", "-.", ":")
+"""Line styles of the models in figures, by position in the registry."""
+
+
+@dataclass(frozen=True)
+class ModelStyle:
+    """How the report names and draws a registered model."""
+
+    name: str
+    label: str
+    colour: str
+    linestyle: str
+
+
+def report_models() -> list[str]:
+    """Names of every registered model, in registry order (:data:`rocking.models.MODELS`)."""
+    from ..models import MODELS
+
+    return list(MODELS)
+
+
+def model_style(name: str) -> ModelStyle:
+    """Label (the class's ``label``), colour and line style of the registered model
+    ``name``; fixed by its position in the registry, hence the same on every run."""
+    from ..models import MODELS
+
+    names = list(MODELS)
+    if name not in MODELS:
+        raise KeyError(f"unknown model {name!r}; registered: {names}")
+    i = names.index(name)
+    return ModelStyle(name=name, label=str(getattr(MODELS[name], "label", name)),
+                      colour=MODEL_COLOURS[i % len(MODEL_COLOURS)],
+                      linestyle=MODEL_LINESTYLES[i % len(MODEL_LINESTYLES)])
+
+
 @dataclass
 class Context:
     """What a section gets: where to write, how thorough to be, and file helpers.
 
     ``quick`` asks for a cheaper run (coarser grids, fewer panels, lower resolution) that
-    still produces every table and figure. Files are named ``<section id>_<name>`` in
-    ``out`` and collected in ``files`` (relative names) for :meth:`files_html`.
+    still produces every table and figure; ``full`` adds the parts too slow for the
+    default run (for example the DEM in the batches of Table V). Neither depends on the
+    machine: a section decides what to run from these flags and fixed lists only. Files
+    are named ``<section id>_<name>`` in ``out`` and collected in ``files`` (relative
+    names) for :meth:`files_html`.
     """
 
     out: Path
     quick: bool
     section_id: str
     files: list[str] = field(default_factory=list)
+    full: bool = False
 
     @property
     def dpi(self) -> int:
@@ -180,11 +229,24 @@ X&nbsp;(2&pi;f)<sup>2</sup>; the table displacement starts at zero.</p>
 """
 
 
-def reproduce(out, quick: bool = False, progress: bool = True, only=None) -> Path:
+def _provenance(now: str, total: float, timings) -> str:
+    """The footer: when and with what the page was built, and how long each section took
+    here. The only place of the page that depends on the machine."""
+    rows = "".join(f"<li>{H.esc(t)}: {H.esc(st)}, {dt:.1f} s</li>" for t, st, dt in timings)
+    return (f'<section id="provenance" class="small">\n<h2>Provenance</h2>\n'
+            f"<p>Generated {H.esc(now)} in {total:.1f} s; {H.esc(_versions())}. Times are "
+            f"wall-clock on this machine and do not change the content above.</p>"
+            f"<ul>{rows}</ul>\n</section>")
+
+
+def reproduce(out, quick: bool = False, full: bool = False, progress: bool = True,
+              only=None) -> Path:
     """Write the reproduction report ``out/index.html`` (+ PNG and CSV files); return its path.
 
-    ``quick`` runs cheaper versions of the sections (for tests); ``progress`` prints one
-    line per section on stderr; ``only`` restricts the report to some section ids.
+    ``quick`` runs cheaper versions of the sections (for tests); ``full`` adds the parts
+    too slow for the default run (``rocking reproduce --full``); the content depends on
+    these flags only, never on how fast the machine is. ``progress`` prints one line per
+    section on stderr; ``only`` restricts the report to some section ids.
     Raises :class:`ReportError` (a RuntimeError) *after* writing the page if any section
     failed.
     """
@@ -205,12 +267,13 @@ def reproduce(out, quick: bool = False, progress: bool = True, only=None) -> Pat
         secs = [s for s in secs if s.id in wanted]
 
     t_all = time.perf_counter()
+    mode = ", ".join(m for m, on in (("quick", quick), ("full", full)) if on)
     _log(progress, f"rocking report: {len(secs)} section(s) -> {out}"
-                   f"{' (quick)' if quick else ''}")
-    bodies, toc, failed = [], [], {}
+                   f"{f' ({mode})' if mode else ''}")
+    bodies, toc, failed, timings = [], [], {}, []
     width = max((len(s.title) for s in secs), default=0)
     for i, sec in enumerate(secs, 1):
-        ctx = Context(out=out, quick=quick, section_id=sec.id)
+        ctx = Context(out=out, quick=quick, section_id=sec.id, full=full)
         t0 = time.perf_counter()
         try:
             frag = sec.build(ctx)
@@ -227,17 +290,22 @@ def reproduce(out, quick: bool = False, progress: bool = True, only=None) -> Pat
         _log(progress, f"  [{i}/{len(secs)}] {ascii_title:<{width}}  {status:<6} {dt:6.1f} s")
         cls = "status-ok" if status == "ok" else "status-failed"
         toc.append(f'<li><a href="#{H.esc(sec.id)}">{H.esc(sec.title)}</a> '
-                   f'<span class="small {cls}">{H.esc(status)}, {dt:.1f} s</span></li>')
+                   f'<span class="small {cls}">{H.esc(status)}</span></li>')
+        timings.append((sec.title, status, dt))
         bodies.append(f'<section id="{H.esc(sec.id)}">\n<h2>{i}. {H.esc(sec.title)}</h2>\n'
                       f"{frag}\n</section>")
 
     total = time.perf_counter() - t_all
     src = paper_data()["source"]
     now = _dt.datetime.now().astimezone().strftime("%Y-%m-%d %H:%M %Z")
+    modes = []
+    if quick:
+        modes.append("quick mode: shortened runs, fewer panels")
+    if full:
+        modes.append("full mode: includes the parts too slow for the default run")
     head = (
-        f'<p class="meta">Generated {H.esc(now)} by <code>rocking</code> {H.esc(__version__)}'
-        f" in {total:.1f} s{' (quick mode: shortened runs, fewer panels)' if quick else ''}."
-        f"<br>{H.esc(_versions())}</p>"
+        f'<p class="meta">Built by <code>rocking</code> {H.esc(__version__)}'
+        f"{' (' + '; '.join(modes) + ')' if modes else ''}.</p>"
         f'<div class="box"><strong>Reference.</strong> {H.esc(src)}</div>'
         f"<h2>How to read this report</h2>{HOW_TO_READ}{SIGN_CONVENTION}"
     )
@@ -245,7 +313,8 @@ def reproduce(out, quick: bool = False, progress: bool = True, only=None) -> Pat
         head += H.error_box(f"{len(failed)} section(s) failed",
                             "; ".join(f"{k}: {v}" for k, v in failed.items()))
     page = H.page("Rocking of single rigid blocks: reproduction of Peña et al. (2007)",
-                  head, "<ol>" + "".join(toc) + "</ol>", "\n".join(bodies))
+                  head, "<ol>" + "".join(toc) + "</ol>",
+                  "\n".join(bodies) + _provenance(now, total, timings))
     index = out / "index.html"
     index.write_text(page, encoding="utf-8")
     _log(progress, f"rocking report: wrote {index} in {total:.1f} s"

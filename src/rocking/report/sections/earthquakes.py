@@ -8,8 +8,12 @@
 * ``table5``: analogue of Table V, the dynamic critical angle (largest angle survived
   without overturning over the 30 records and a ladder of load factors) against alpha.
 
-Every model registered in :data:`rocking.models.MODELS` is run; a model that fails or is
-too slow is skipped with a note. Our records are not the paper's (its shaking-table
+Every model registered in :data:`rocking.models.MODELS` is run on single records; the
+batches (set statistics, Table V) run every model except those of
+:data:`FULL_ONLY_BATCH` (the DEM), which join them only in the full report
+(``reproduce(..., full=True)``, ``rocking reproduce --full``). What is run depends on
+``quick``, ``full`` and these fixed lists only, never on measured time; a model that
+fails is skipped with a note. Our records are not the paper's (its shaking-table
 records are not published, and its record numbers 20 and 18 refer to its own generation),
 so only statistics can be compared; the text says so with the numbers.
 """
@@ -17,32 +21,26 @@ so only statistics can be compared; the text says so with the numbers.
 from __future__ import annotations
 
 import math
-import time
 
 import numpy as np
 import pandas as pd
 
-from ..blocks import paper_data, specimen
-from ..models import MODELS, simulate, simulate_many
-from ..motions import check_compatibility, seed_earthquakes
-from ..motions.ec8 import paper_target
-from ..motions.spectra import plot_spectra
-from ..motions.synthetic import PAPER_SEED, PERIOD_RANGE
-from ..units import G
-from . import html as H
-from .core import section
+from ...blocks import paper_data, specimen
+from ...models import simulate, simulate_many
+from ...motions import check_compatibility, seed_earthquakes
+from ...motions.ec8 import paper_target
+from ...motions.spectra import plot_spectra
+from ...motions.synthetic import PAPER_SEED, PERIOD_RANGE
+from ...units import G
+from .. import html as H
+from ..core import model_style, report_models, section
 
 DURATION = 25.0  # s: the 20 s record and 5 s of free rocking after it
-SLOW_SINGLE = 10.0  # s: a model slower than this on one record is left out of the batches
 ROCK_TOL_DEG = 0.05  # deg: a smaller max |theta| counts as "does not rock" (contact
 # springs of the DEM tilt a block at rest by tiny angles)
-BATCH_BUDGET = {False: 8.0, True: 2.0}  # s per batch call (full, quick mode): estimated
-# from one timed run (x 1.5 for safety); a model whose batch would take longer is left out
-# with a note (the report's time stays bounded whatever models get registered)
-STYLE = {"housner": ("classical (Housner)", "#0072B2", "-"),
-         "ccrr": ("CCRR", "#D55E00", "--"),
-         "dem": ("DEM", "#009E73", "-.")}
-EXTRA = ("#CC79A7", "#E69F00", "#56B4E9", "#000000")
+FULL_ONLY_BATCH = ("dem",)
+"""Models run in the batches (hundreds of records) only with ``full=True``: the DEM costs
+about 400 s over the Table V batches, against seconds for the classical models."""
 
 CAVEAT = (
     "<strong>What can be compared.</strong> The paper's 30 synthetic earthquakes, and the "
@@ -57,10 +55,28 @@ CAVEAT = (
 
 
 # ----------------------------------------------------------------------------- helpers
-def _style(name: str, i: int):
-    if name in STYLE:
-        return STYLE[name]
-    return (name, EXTRA[i % len(EXTRA)], "-")
+def _style(name: str):
+    """(label, colour, line style) of a registered model (fixed by the registry)."""
+    st = model_style(name)
+    return st.label, st.colour, st.linestyle
+
+
+def batch_models(models=None, full: bool = False, notes: dict | None = None) -> list[str]:
+    """The models run in the batches: ``models`` (default: every registered model, in
+    registry order) without :data:`FULL_ONLY_BATCH` unless ``full``; the models left out
+    (and those already in ``notes``, e.g. failed) get a note."""
+    models = report_models() if models is None else list(models)
+    notes = {} if notes is None else notes
+    out = []
+    for name in models:
+        if name in notes:
+            continue
+        if name in FULL_ONLY_BATCH and not full:
+            notes[name] = ("left out of the batches of the default report (too slow for "
+                           "hundreds of runs); included with rocking reproduce --full")
+            continue
+        out.append(name)
+    return out
 
 
 def _lf_up(block, pga: float) -> float:
@@ -68,17 +84,12 @@ def _lf_up(block, pga: float) -> float:
     return G * math.tan(block.alpha) / pga
 
 
-_COST: dict[str, float] = {}
-"""Estimated seconds per full-length run of each model (measured in this process)."""
-
-
 def _run_single(block, rec, lf, models, notes, dt_out):
-    """{model: Response}; failures and slow models go to ``notes`` (model -> text)."""
-    runs, timing = {}, {}
+    """{model: Response}; failures go to ``notes`` (model -> text)."""
+    runs = {}
     for name in models:
         if name in notes:
             continue
-        t0 = time.perf_counter()
         try:
             runs[name] = simulate(block, rec.scaled(lf) if lf != 1.0 else rec, model=name,
                                   duration=DURATION, dt_out=dt_out)
@@ -86,58 +97,7 @@ def _run_single(block, rec, lf, models, notes, dt_out):
             notes[name] = f"not implemented ({exc})"
         except Exception as exc:  # keep the section alive; say why the model is missing
             notes[name] = f"failed: {type(exc).__name__}: {exc}"
-        timing[name] = time.perf_counter() - t0
-        if name in runs and runs[name].t.size:
-            # cost of a full-length run, for the batch budget (the smallest estimate wins:
-            # the first call of a model may include its JIT compilation)
-            est = timing[name] * DURATION / max(float(runs[name].t[-1]), 1.0)
-            _COST[name] = min(_COST.get(name, math.inf), est)
-        if name in runs and timing[name] > SLOW_SINGLE:
-            notes[name] = (f"too slow for the batches ({timing[name]:.1f} s for one "
-                           "record); shown in single runs only")
     return runs
-
-
-def _seconds_per_run(block, rec, lf, name) -> float:
-    """Wall time of one run (the second of two, so that JIT compilation is not counted)."""
-    m = rec.scaled(lf)
-    simulate(block, m, model=name, duration=DURATION, dt_out=0.05)
-    t0 = time.perf_counter()
-    simulate(block, m, model=name, duration=DURATION, dt_out=0.05)
-    return time.perf_counter() - t0
-
-
-def _affordable(block, motions, models, notes, quick: bool) -> list[str]:
-    """The models whose batch over ``motions`` fits :data:`BATCH_BUDGET`; notes the others.
-
-    The cost is estimated from one run of the first motion scaled to 1.1 x its uplift load
-    factor (rocking, mostly without overturning: a full-length run), times 1.5, divided
-    by the number of cores.
-    """
-    import os
-
-    ncpu = os.cpu_count() or 1
-    rec = motions[0]
-    lf = 1.1 * G * math.tan(block.alpha) / rec.pga
-    ok = []
-    for name in models:
-        if name in notes:
-            continue
-        if name not in _COST:  # measured once per process (per model), then reused
-            try:
-                _COST[name] = _seconds_per_run(block, rec, lf, name)
-            except Exception as exc:
-                notes[name] = f"failed: {type(exc).__name__}: {exc}"
-                continue
-        t1 = _COST[name]
-        est = 1.5 * t1 * len(motions) / ncpu
-        if est > BATCH_BUDGET[quick]:
-            notes[name] = (f"left out of the {len(motions)}-run batches: about {t1:.2f} s "
-                           f"per run here, i.e. ~{est:.0f} s per batch on {ncpu} core(s) "
-                           f"(budget {BATCH_BUDGET[quick]:g} s)")
-            continue
-        ok.append(name)
-    return ok
 
 
 def _batch(block, motions, models, notes):
@@ -173,8 +133,8 @@ def _theta_axes(ax, runs, block, title, extra_lines=()):
     a = math.degrees(block.alpha)
     surv = [math.degrees(r.max_abs_theta) for r in runs.values() if not r.overturned]
     lim = max([2.5 * a] + [1.15 * x for x in surv] + [1.15 * v for v, _ in extra_lines])
-    for i, (name, r) in enumerate(runs.items()):
-        lab, col, ls = _style(name, i)
+    for name, r in runs.items():
+        lab, col, ls = _style(name)
         th = np.degrees(r.theta)
         ax.plot(r.t, th, color=col, ls=ls, lw=0.9,
                 label=f"{lab}: " + (f"overturns at {r.overturn_time:.2f} s" if r.overturned
@@ -210,10 +170,10 @@ def _acc_axes(ax, rec, lf, block):
                  fontsize=9.5)
 
 
-def _set_stats(block, recs, lfs, models, notes, quick):
+def _set_stats(block, recs, lfs, models, notes, full):
     """Per model and load factor: overturned fraction and survivors' max angle (deg)."""
     motions = [r.scaled(lf) for lf in lfs for r in recs]
-    res = _batch(block, motions, _affordable(block, motions, models, notes, quick), notes)
+    res = _batch(block, motions, batch_models(models, full, notes), notes)
     rows = []
     for name, b in res.items():
         ov = b.overturned.reshape(len(lfs), len(recs))
@@ -233,7 +193,7 @@ def _set_stats(block, recs, lfs, models, notes, quick):
 def _stats_table(df: pd.DataFrame, caption: str) -> str:
     rows = []
     for x in df.itertuples():
-        rows.append([H.Cell(_style(x.model, 0)[0], "l"), f"{x.load_factor:g}",
+        rows.append([H.Cell(_style(x.model)[0], "l"), f"{x.load_factor:g}",
                      f"{x.overturned} / {x.n_records}", f"{100 * x.overturned_fraction:.0f} %",
                      f"{x.rocked}", H.fmt(x.median_max_deg_survivors, 2),
                      H.fmt(x.max_deg_survivors, 2)])
@@ -253,9 +213,7 @@ def _first_overturn_lf(block, rec, lfs, model):
 # ----------------------------------------------------------------------------- spectra
 @section("earthquakes", "Synthetic earthquakes — 30 records against the EC8 target", order=40)
 def build_spectra(ctx) -> str:
-    t0 = time.perf_counter()
     recs = seed_earthquakes()
-    t_gen = time.perf_counter() - t0
     target = paper_target()
     cfg = paper_data()["ec8_target"]
     periods = np.unique(np.concatenate([np.geomspace(0.02, 4.0, 120 if ctx.quick else 240),
@@ -380,8 +338,7 @@ def build_spectra(ctx) -> str:
         f"The table would have to move by up to {pgd_max:.0f} mm (median "
         f"{1000 * ims['pgd'].median():.0f} mm) and returns to its start: the records are "
         "baseline-corrected so that the table velocity and displacement end at zero. "
-        + ("The set was read from the cache." if t_gen < 0.5 else
-         f"Generating the set took {t_gen:.1f} s here (it is cached afterwards)."),
+        f"The set is generated once (seed {PAPER_SEED}) and cached.",
     ]
     return (H.p(text[0]) + H.p(text[1]) + f1 + tbl1 + H.p(text[2]) + tbl2 + H.p(text[3])
             + f2 + H.box(CAVEAT.format(seed=PAPER_SEED)) + ctx.files_html())
@@ -396,12 +353,12 @@ def build_figure8(ctx) -> str:
     block = specimen(2, "experimental")
     rec = recs[19]
     lfs = (1.1, 1.3)
-    models = list(MODELS)
+    models = report_models()
     notes: dict[str, str] = {}
     dt_out = 0.02 if ctx.quick else 0.01
     runs = {lf: _run_single(block, rec, lf, models, notes, dt_out) for lf in lfs}
     stat_recs = recs[:10] if ctx.quick else recs
-    stats = _set_stats(block, stat_recs, lfs, models, notes, ctx.quick)
+    stats = _set_stats(block, stat_recs, lfs, models, notes, ctx.full)
     ctx.save_csv(stats, "set_statistics", float_format="%.6g")
     hist = {"t_s": np.arange(int(round(DURATION / dt_out)) + 1) * dt_out}
     for lf, rr in runs.items():
@@ -434,20 +391,20 @@ def build_figure8(ctx) -> str:
         return [H.Cell(f"{lf:g}", "c")] + [
             H.Cell(_outcome(runs[lf][m]) if m in runs[lf] else "—", "l") for m in models]
 
-    tbl = H.table(["load factor"] + [_style(m, i)[0] for i, m in enumerate(models)],
+    tbl = H.table(["load factor"] + [_style(m)[0] for m in models],
                   [row(lf) for lf in lfs], caption="Our earthquake 20, specimen 2")
     tbl2 = _stats_table(stats, f"All {len(stat_recs)} records at the same load factors "
                                "(specimen 2, Table II E)")
     up = _lf_up(block, rec.pga)
     text = []
     for lf in lfs:
-        parts = ", ".join(f"{_style(m, 0)[0]} {_outcome(r)}" for m, r in runs[lf].items())
+        parts = ", ".join(f"{_style(m)[0]} {_outcome(r)}" for m, r in runs[lf].items())
         text.append(f"At load factor {lf:g} our record 20 (PGA {lf * rec.pga:.2f} m/s², "
                     f"{lf / up:.2f} × the uplift threshold g tan α = "
                     f"{G * math.tan(block.alpha):.2f} m/s²) gives: {parts}.")
     for name in stats["model"].unique():
         s = stats[stats["model"] == name]
-        text.append(f"Over the {len(stat_recs)} records the {_style(name, 0)[0]} model "
+        text.append(f"Over the {len(stat_recs)} records the {_style(name)[0]} model "
                     "overturns specimen 2 in " + " and ".join(
                         f"{x.overturned} ({100 * x.overturned_fraction:.0f} %) at load factor "
                         f"{x.load_factor:g}" for x in s.itertuples()) + ".")
@@ -473,7 +430,7 @@ def build_figure9(ctx) -> str:
     lf = 0.5
     bE = specimen(3, "experimental")
     bT = specimen(3, "theoretical")
-    models = list(MODELS)
+    models = report_models()
     notes: dict[str, str] = {}
     dt_out = 0.02 if ctx.quick else 0.01
     runsE = _run_single(bE, rec, lf, models, notes, dt_out)
@@ -486,8 +443,8 @@ def build_figure9(ctx) -> str:
     runsO = (_run_single(bE, rec, lf_ovt, models, notes, dt_out) if lf_ovt is not None
              else {})
     stat_recs = recs[:10] if ctx.quick else recs
-    stats = _set_stats(bE, stat_recs, (lf,), models, notes, ctx.quick)
-    statsT = _set_stats(bT, stat_recs, (lf,), models, notes, ctx.quick)
+    stats = _set_stats(bE, stat_recs, (lf,), models, notes, ctx.full)
+    statsT = _set_stats(bT, stat_recs, (lf,), models, notes, ctx.full)
     stats["params"], statsT["params"] = "experimental", "theoretical"
     ctx.save_csv(pd.concat([stats, statsT]), "set_statistics", float_format="%.6g")
 
@@ -506,7 +463,7 @@ def build_figure9(ctx) -> str:
                 f"{lf:g}")
     if runsO:
         _theta_axes(axs[3], runsO, bE, f"(c) Table II E, load factor {lf_ovt:g}: the smallest "
-                    f"that overturns the block ({_style(ref_model, 0)[0]} model)")
+                    f"that overturns the block ({_style(ref_model)[0]} model)")
     axs[-1].set_xlabel("time (s)")
     fig.suptitle(f"Specimen 3 (p = {bE.p:.2f} 1/s, μ = {bE.mu:.3f}) under our earthquake 18",
                  fontsize=10)
@@ -515,7 +472,7 @@ def build_figure9(ctx) -> str:
         caption=("Analogue of Figure 9: specimen 3 under our earthquake 18 at load factor "
                  f"{lf:g} with both parameter sets of Table II, every model on one plot"
                  + (f", and at load factor {lf_ovt:g}, the smallest at which the "
-                    f"{_style(ref_model, 0)[0]} model overturns it" if runsO else "")
+                    f"{_style(ref_model)[0]} model overturns it" if runsO else "")
                  + ". Top: the ground acceleration at load factor "
                  f"{lf:g} with the uplift thresholds of the two values of α."))
 
@@ -525,7 +482,7 @@ def build_figure9(ctx) -> str:
     rows = [[H.Cell(f"E, {lf:g}", "l")] + cells(runsE), [H.Cell(f"T, {lf:g}", "l")] + cells(runsT)]
     if runsO:
         rows.append([H.Cell(f"E, {lf_ovt:g}", "l")] + cells(runsO))
-    tbl = H.table(["parameters, load factor"] + [_style(m, i)[0] for i, m in enumerate(models)],
+    tbl = H.table(["parameters, load factor"] + [_style(m)[0] for m in models],
                   rows, caption="Our earthquake 18, specimen 3")
     tbl2 = (_stats_table(stats, f"All {len(stat_recs)} records at load factor {lf:g}, "
                                 "Table II E")
@@ -539,11 +496,11 @@ def build_figure9(ctx) -> str:
         f"= {uE:.2f} m/s², i.e. from a load factor of {need_E:.2f} for this record, so "
         + (f"it does not rock (max |θ| < {ROCK_TOL_DEG:g}° in every model)"
            if not any(math.degrees(r.max_abs_theta) > ROCK_TOL_DEG for r in runsE.values())
-           else "it rocks: " + ", ".join(f"{_style(m, 0)[0]} {_outcome(r)}"
+           else "it rocks: " + ", ".join(f"{_style(m)[0]} {_outcome(r)}"
                                          for m, r in runsE.items()))
         + f". With the theoretical α = {bT.alpha:.3f} rad (g tan α = {uT:.2f} m/s²; the "
         f"static critical angle of the paper's Table V, {math.degrees(bT.alpha):.1f}°): "
-        + ", ".join(f"{_style(m, 0)[0]} {_outcome(r)}" for m, r in runsT.items()) + ".",
+        + ", ".join(f"{_style(m)[0]} {_outcome(r)}" for m, r in runsT.items()) + ".",
         ("In the paper the specimen overturned at load factor 0.5 and both models predicted "
          "it. A nominal PGA of 0.5 × 2.8 = 1.4 m/s² is only "
          f"{1.4 / uT:.2f} × g tan α_T and below g tan α_E, which suggests that the table's "
@@ -553,7 +510,7 @@ def build_figure9(ctx) -> str:
     ]
     if runsO:
         text.append(f"Our record 18 first overturns the block (Table II E, "
-                    f"{_style(ref_model, 0)[0]} model, load factors {ladder[0]:g}–"
+                    f"{_style(ref_model)[0]} model, load factors {ladder[0]:g}–"
                     f"{ladder[-1]:g} in steps of {ladder[1] - ladder[0]:.2f}) at load factor "
                     f"{lf_ovt:g}, i.e. at a PGA of {lf_ovt * rec.pga:.2f} m/s² = "
                     f"{lf_ovt * rec.pga / uE:.2f} × g tan α_E.")
@@ -561,7 +518,7 @@ def build_figure9(ctx) -> str:
         s = stats[stats["model"] == name].iloc[0]
         sT = statsT[statsT["model"] == name]
         txt = (f"Over the {len(stat_recs)} records at load factor {lf:g} the "
-               f"{_style(name, 0)[0]} model rocks the block (E) with {s['rocked']} and "
+               f"{_style(name)[0]} model rocks the block (E) with {s['rocked']} and "
                f"overturns it with {s['overturned']} records")
         if len(sT):
             txt += (f"; with Table II T it rocks with {sT.iloc[0]['rocked']} and "
@@ -572,15 +529,18 @@ def build_figure9(ctx) -> str:
 
 
 # ----------------------------------------------------------------------------- Table V
-def table5_compute(quick: bool = False, models=None) -> dict:
+def table5_compute(quick: bool = False, models=None, full: bool = False) -> dict:
     """Dynamic critical angles of specimens 2-4 (Table II E) over records x load factors.
+
+    ``models`` defaults to every registered model; those of :data:`FULL_ONLY_BATCH` run
+    only with ``full`` (see :func:`batch_models`).
 
     Returns ``{"rows": DataFrame (one per specimen and model), "runs": DataFrame (every
     run), "notes": {...}, "ladder": multiples of the uplift load factor}``.
     """
     recs = seed_earthquakes()
     recs = recs[:8] if quick else recs
-    models = list(MODELS) if models is None else list(models)
+    models = report_models() if models is None else list(models)
     ladder = np.round(np.arange(0.9, 3.001, 0.3 if quick else 0.1), 3)
     mean_pga = float(np.mean([r.pga for r in recs]))
     t5 = paper_data()["table5"]["rows"]
@@ -592,8 +552,7 @@ def table5_compute(quick: bool = False, models=None) -> dict:
         up = _lf_up(block, mean_pga)
         lfs = np.round(ladder * up, 3)
         motions = [r.scaled(lf) for lf in lfs for r in recs]
-        for name in _affordable(block, motions, models, notes, quick):
-            t0 = time.perf_counter()
+        for name in batch_models(models, full, notes):
             try:
                 b = simulate_many(block, motions, model=name, duration=DURATION)
             except NotImplementedError as exc:
@@ -602,7 +561,6 @@ def table5_compute(quick: bool = False, models=None) -> dict:
             except Exception as exc:
                 notes[name] = f"batch failed: {type(exc).__name__}: {exc}"
                 continue
-            el = time.perf_counter() - t0
             ov = b.overturned.reshape(lfs.size, len(recs))
             mx = np.degrees(b.max_abs_theta).reshape(lfs.size, len(recs))
             for i, lf in enumerate(lfs):
@@ -637,7 +595,7 @@ def table5_compute(quick: bool = False, models=None) -> dict:
                 "runs_beyond_alpha_survived": int(np.sum((surv > math.degrees(block.alpha))
                                                          & np.isfinite(surv))),
                 "load_factors": f"{lfs[0]:g}-{lfs[-1]:g}",
-                "uplift_load_factor": up, "seconds": el,
+                "uplift_load_factor": up,
             })
     return {"rows": pd.DataFrame(rows), "runs": pd.DataFrame(runs), "notes": notes,
             "ladder": ladder, "n_records": len(recs)}
@@ -658,7 +616,7 @@ def _table5_figure(res):
         r0 = rs.iloc[0]
         width = float(rr["load_factor"].max() - rr["load_factor"].min())
         for i, name in enumerate(models):
-            lab, col, ls = _style(name, i)
+            lab, col, ls = _style(name)
             d = rr[rr["model"] == name]
             jit = (i - (len(models) - 1) / 2) * 0.008 * width
             sv = d[~d["overturned"] & (d["max_abs_theta_deg"] > ROCK_TOL_DEG)]
@@ -696,7 +654,7 @@ def _table5_figure(res):
 @section("table5", "Table V — dynamic and static critical angle", order=46)
 def build_table5(ctx) -> str:
     quick = ctx.quick
-    res = table5_compute(quick)
+    res = table5_compute(quick, full=ctx.full)
     rows, notes = res["rows"], res["notes"]
     if rows.empty:
         raise RuntimeError("no model could run the batches: " + "; ".join(
@@ -724,7 +682,7 @@ def build_table5(ctx) -> str:
             first = False
             cls = "ok" if x.dynamic_deg > x.alpha_E_deg else "warn"
             body.append(lead + [
-                H.Cell(_style(x.model, 0)[0], "l"),
+                H.Cell(_style(x.model)[0], "l"),
                 H.Cell(H.fmt(x.dynamic_deg, 2), cls),
                 H.pct(x.dynamic_vs_alpha_E_percent),
                 H.fmt(x.mean_per_record_deg, 2),
@@ -763,7 +721,7 @@ def build_table5(ctx) -> str:
     for spec in (2, 3, 4):
         p = t5[str(spec)]
         parts = "; ".join(
-            f"{_style(m, 0)[0]} {ratio(spec, m, 'dynamic_deg'):.1f}° "
+            f"{_style(m)[0]} {ratio(spec, m, 'dynamic_deg'):.1f}° "
             f"({ratio(spec, m, 'dynamic_vs_alpha_E_percent'):+.1f} % over α_E = "
             f"{ratio(spec, m, 'alpha_E_deg'):.1f}°; per-record mean "
             f"{ratio(spec, m, 'mean_per_record_deg'):.1f}°)" for m in models)
@@ -802,7 +760,7 @@ def build_table5(ctx) -> str:
                "of α.")
     margins = "; ".join(
         f"specimen {sp}: " + ", ".join(
-            f"{_style(m, 0)[0]} {ratio(sp, m, 'dynamic_vs_alpha_E_percent'):+.1f} %"
+            f"{_style(m)[0]} {ratio(sp, m, 'dynamic_vs_alpha_E_percent'):+.1f} %"
             for m in models) + f" against the paper's +{t5[str(sp)]['difference_percent']:g} %"
         for sp in (2, 4))
     s1 += (f" For the two specimens where the paper found a clear margin ({margins}) the "

@@ -13,11 +13,11 @@ import math
 import numpy as np
 import pandas as pd
 
-from ..blocks import specimen
-from ..models import simulate, simulate_many
-from ..motions import Sine
-from . import html as H
-from .core import section
+from ...blocks import specimen
+from ...models import simulate, simulate_many
+from ...motions import Sine
+from .. import html as H
+from ..core import model_style, report_models, section
 from .table4 import measured_table
 
 FREQ = 5.0  # Hz
@@ -68,16 +68,16 @@ LABELS = {
 }
 
 
-MODEL_STYLE = {"housner": ("classical model", "tab:blue", "-"),
-               "ccrr": ("CCRR model", "tab:orange", "--"),
-               "dem": ("DEM", "tab:green", ":")}
+REFERENCE = "housner"
+"""The model of the main columns (with both parameter sets); every registered model
+(:data:`rocking.models.MODELS`) is run with the Table II E parameters next to it."""
 
 
 def _figure(runs, measured: float | None, full_panel: bool):
     """``runs``: {model name: Response}, all for the same block and motion."""
     from matplotlib.figure import Figure
 
-    r = runs["housner"]
+    r = runs[REFERENCE]
     th = np.concatenate([np.degrees(rr.theta) for rr in runs.values()])
     fig = Figure(figsize=(10.0, 6.4 if full_panel else 3.6), layout="constrained")
     gs = fig.add_gridspec(2 if full_panel else 1, 2,
@@ -88,7 +88,8 @@ def _figure(runs, measured: float | None, full_panel: bool):
     lim = max(1.1 * float(np.nanmax(np.abs(th))), 1.2 * (measured or 0.0), 0.1)
     for ax, (w0, w1) in zip((ax1, ax2), WINDOWS, strict=True):
         for name, rr in runs.items():
-            lab_, col, ls = MODEL_STYLE[name]
+            st = model_style(name)
+            lab_, col, ls = st.label, st.colour, st.linestyle
             m = (rr.t >= w0 - 1e-9) & (rr.t <= w1 + 1e-9)
             ax.plot(rr.t[m], np.degrees(rr.theta[m]), color=col, ls=ls, lw=0.9,
                     label=f"ours ({lab_})")
@@ -119,8 +120,8 @@ def _figure(runs, measured: float | None, full_panel: bool):
     if full_panel:
         ax3 = fig.add_subplot(gs[1, :])
         for name, rr in runs.items():
-            ax3.plot(rr.t, np.degrees(rr.theta), color=MODEL_STYLE[name][1], lw=0.5,
-                     ls=MODEL_STYLE[name][2])
+            st = model_style(name)
+            ax3.plot(rr.t, np.degrees(rr.theta), color=st.colour, lw=0.5, ls=st.linestyle)
         if measured is not None:
             for sgn in (1, -1):
                 ax3.axhline(sgn * measured, color="tab:red", ls="--", lw=1.0)
@@ -144,11 +145,12 @@ def build(ctx) -> str:
     block_E = specimen(2, "experimental")
     block_T = specimen(2, "theoretical")
     dt = 0.005 if ctx.quick else 0.002
-    rE = simulate(block_E, motion, dt_out=dt)
-    rT = simulate(block_T, motion, dt_out=dt)
-    rC = simulate(block_E, motion, model="ccrr", dt_out=dt)
-    rD = simulate(block_E, motion, model="dem", dt_out=dt)
-    sE, sT, sC, sD = summarize(rE), summarize(rT), summarize(rC), summarize(rD)
+    runs = {m: simulate(block_E, motion, model=m, dt_out=dt) for m in report_models()}
+    rE = runs[REFERENCE]
+    rT = simulate(block_T, motion, model=REFERENCE, dt_out=dt)
+    summ = {m: summarize(r) for m, r in runs.items()}
+    others = [m for m in runs if m != REFERENCE]
+    sE, sT = summ[REFERENCE], summarize(rT)
     factors = (0.98, 0.99, 1.01, 1.02)
     ens = simulate_many(block_E, [Sine(FREQ, fac * AMP, DURATION) for fac in factors])
     meas = measured_table().get((FREQ, round(1000 * AMP)))
@@ -161,8 +163,8 @@ def build(ctx) -> str:
         "quantity": keys,
         "ours_experimental_params": [float(sE[k]) for k in keys],  # booleans as 0/1
         "ours_theoretical_params": [float(sT[k]) for k in keys],
-        "ours_ccrr_experimental_params": [float(sC[k]) for k in keys],
-        "ours_dem_experimental_params": [float(sD[k]) for k in keys],
+        **{f"ours_{m}_experimental_params": [float(summ[m][k]) for k in keys]
+           for m in others},
         "paper_measured": [measured if k == "max_abs_theta_deg" else float("nan")
                            for k in keys],
     })
@@ -177,14 +179,15 @@ def build(ctx) -> str:
             return str(v)
         return H.fmt(v, 3)
 
-    rows = [[H.Cell(lab[k], "l"), f(sE[k]), f(sT[k]), f(sC[k]), f(sD[k]),
-             f(measured) if k == "max_abs_theta_deg" and measured is not None else "—"]
+    rows = [[H.Cell(lab[k], "l"), f(sE[k]), f(sT[k])] + [f(summ[m][k]) for m in others]
+            + [f(measured) if k == "max_abs_theta_deg" and measured is not None else "—"]
             for k in keys]
-    tbl = H.table(["quantity", "classical, Table II E", "classical, Table II T",
-                   "CCRR, Table II E", "DEM, Table II E", "paper (Table IV)"],
-                  rows, caption="Summary of the response")
+    ref_label = model_style(REFERENCE).label
+    tbl = H.table(["quantity", f"{ref_label}, Table II E", f"{ref_label}, Table II T"]
+                  + [f"{model_style(m).label}, Table II E" for m in others]
+                  + ["paper (Table IV)"], rows, caption="Summary of the response")
 
-    fig = _figure({"housner": rE, "ccrr": rC, "dem": rD}, measured, full_panel=not ctx.quick)
+    fig = _figure(runs, measured, full_panel=not ctx.quick)
     fig_html = ctx.save_figure(
         fig, "theta",
         caption=(f"Rocking angle of specimen 2 (Table II E parameters) under a nominal "
@@ -224,11 +227,29 @@ def build(ctx) -> str:
         + " The paper reports that both of its models match the measured record closely "
           "when driven by the recorded table motion; here the model is driven by the "
           "nominal sine, whose start and amplitude differ from the real table's.")
-    n = min(rE.t.size, rC.t.size)
-    gap = float(np.max(np.abs(rE.theta[:n] - rC.theta[:n])))
-    i6 = rE.t[:n] <= 6.0
-    gap6 = float(np.max(np.abs(rE.theta[:n][i6] - rC.theta[:n][i6])))
-    text.append(
+    if "ccrr" in runs:
+        text.append(_ccrr_text(rE, runs["ccrr"], sE, summ["ccrr"], steady_key))
+    if "dem" in runs:
+        text.append(_dem_text(rE, runs["dem"], sE, summ["dem"], steady_key))
+    for m in others:
+        if m not in ("ccrr", "dem"):
+            text.append(
+                f"The {model_style(m).label} model gives a maximum of "
+                f"{summ[m]['max_abs_theta_deg']:.2f}° and a steady state of "
+                f"{summ[m][steady_key]:.2f}°.")
+    return H.p(" ".join(text)) + fig_html + tbl + ctx.files_html()
+
+
+def _gap(ref, r, until: float = math.inf) -> float:
+    """Largest |theta difference| (rad) between two histories up to time ``until``."""
+    n = min(ref.t.size, r.t.size)
+    m = ref.t[:n] <= until
+    return float(np.max(np.abs(ref.theta[:n][m] - r.theta[:n][m])))
+
+
+def _ccrr_text(rE, rC, sE, sC, steady_key) -> str:
+    gap, gap6 = _gap(rE, rC), _gap(rE, rC, 6.0)
+    return (
         f"The CCRR model (Eq 10, l = {rC.info['l']:g}) gives a maximum of "
         f"{sC['max_abs_theta_deg']:.2f}° against the classical model's "
         f"{sE['max_abs_theta_deg']:.2f}° "
@@ -236,10 +257,11 @@ def build(ctx) -> str:
         f"histories differ by at most {math.degrees(gap6):.3f}° over the first 6 s and "
         f"{math.degrees(gap):.3f}° over the whole record (the steady state is "
         f"{sC[steady_key]:.2f}° against {sE[steady_key]:.2f}°).")
-    nD = min(rE.t.size, rD.t.size)
-    i6 = rE.t[:nD] <= 6.0
-    gapD6 = float(np.max(np.abs(rE.theta[:nD][i6] - rD.theta[:nD][i6])))
-    text.append(
+
+
+def _dem_text(rE, rD, sE, sD, steady_key) -> str:
+    gapD6 = _gap(rE, rD, 6.0)
+    return (
         f"The DEM (rigid block on contact springs, {rD.info['stiffness']:.2g} N/m per contact "
         f"point, damping calibrated to μ, time step {rD.info['dt']:.1e} s) gives a maximum of "
         f"{sD['max_abs_theta_deg']:.2f}° "
@@ -247,4 +269,3 @@ def build(ctx) -> str:
         f"classical model), uplifts at t = {sD['uplift_time_s']:.3f} s and differs from the "
         f"classical history by at most {math.degrees(gapD6):.3f}° over the first 6 s; its "
         f"steady state is {sD[steady_key]:.2f}°.")
-    return H.p(" ".join(text)) + fig_html + tbl + ctx.files_html()

@@ -14,19 +14,16 @@ import math
 import numpy as np
 import pandas as pd
 
-from ..blocks import specimen, specimen_ids
-from ..models import simulate
-from . import html as H
-from .core import section
+from ...blocks import specimen, specimen_ids
+from ...models import simulate
+from .. import html as H
+from ..core import model_style, report_models, section
 
 DURATION = 8.0  # s
 N_HALF = 6  # half-cycles compared
-MODELS = {  # model name -> (label, colour, line style)
-    "housner": ("classical", "tab:blue", "-"),
-    "ccrr": ("CCRR", "tab:orange", "--"),
-    "dem": ("DEM", "tab:green", ":"),
-}
 REFERENCE = "housner"
+"""The model the others are compared with; every registered model is run
+(:func:`rocking.report.core.report_models`)."""
 
 
 def theta0_for(n: int) -> float:
@@ -41,7 +38,7 @@ def runs(dt_out: float) -> dict:
         th0 = theta0_for(n)
         for params in ("theoretical", "experimental"):
             b = specimen(n, params)
-            for m in MODELS:
+            for m in report_models():
                 out[n, params, m] = simulate(b, None, model=m, duration=DURATION, theta0=th0,
                                              dt_out=dt_out)
     return out
@@ -81,7 +78,9 @@ def _figure(res: dict):
     for i, n in enumerate(ids):
         for j, params in enumerate(("theoretical", "experimental")):
             ax = axs[i, j]
-            for m, (lab, col, ls) in MODELS.items():
+            for m in report_models():
+                st = model_style(m)
+                lab, col, ls = st.label, st.colour, st.linestyle
                 r = res[n, params, m]
                 ax.plot(r.t, np.degrees(r.theta), color=col, ls=ls, lw=0.9, label=lab)
             b = res[n, params, REFERENCE].block
@@ -106,13 +105,14 @@ def build(ctx) -> str:
     ctx.save_csv(df, "comparison", float_format="%.6g")
     fig_html = ctx.save_figure(
         _figure(res), "theta",
-        caption="Free rocking of each specimen with the classical, CCRR and DEM models. "
-                "Left: Table II T parameters; right: Table II E parameters.")
+        caption="Free rocking of each specimen with every model ("
+                + ", ".join(model_style(m).label for m in report_models())
+                + "). Left: Table II T parameters; right: Table II E parameters.")
     others = df[df.model == "ccrr"]
     dem = df[df.model == "dem"]
     rows = []
     for _, r in df.iterrows():
-        rows.append([r.specimen, H.Cell(r.params, "l"), H.Cell(MODELS[r.model][0], "l"),
+        rows.append([r.specimen, H.Cell(r.params, "l"), H.Cell(model_style(r.model).label, "l"),
                      H.fmt(r.theta0_deg, 2), H.fmt(r.first_zero_crossing_s, 4),
                      H.fmt(r.amplitude_6_deg, 3), r.n_impacts,
                      H.fmt(r.time_of_last_impact_s, 2),

@@ -26,11 +26,11 @@ import math
 import numpy as np
 import pandas as pd
 
-from ..blocks import paper_data, specimen, specimen_ids
-from ..identify import free_rocking
-from ..models import MODELS, simulate
-from . import html as H
-from .core import section
+from ...blocks import paper_data, specimen, specimen_ids
+from ...identify import free_rocking
+from ...models import MODELS, simulate
+from .. import html as H
+from ..core import section
 
 DURATION = 30.0  # s of free rocking after the release
 QUICK_DURATION = 12.0  # s, quick mode
@@ -100,7 +100,7 @@ def stiffness_study(quick: bool) -> pd.DataFrame | None:
     """Identified parameters of DEM records of the specimen 2 rectangle, softer contacts."""
     if not dem_available():
         return None
-    from ..models import dem as D
+    from ...models import dem as D
 
     block = specimen(2, "geometric")
     try:  # the DEM's own default stiffness (API of rocking.models.dem)

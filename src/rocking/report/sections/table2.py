@@ -14,10 +14,10 @@ import math
 
 import pandas as pd
 
-from ..blocks import housner_mu, paper_data, specimen, specimen_ids
-from ..units import G
-from . import html as H
-from .core import section
+from ...blocks import housner_mu, paper_data, specimen, specimen_ids
+from ...units import G
+from .. import html as H
+from ..core import section
 
 PARAMS = ("alpha", "mu", "p")
 DECIMALS = {"alpha": 3, "mu": 3, "p": 2}  # as printed in Table II

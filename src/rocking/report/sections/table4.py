@@ -15,12 +15,12 @@ import math
 import numpy as np
 import pandas as pd
 
-from ..blocks import paper_data, specimen
-from ..models import simulate_many
-from ..motions import Sine
-from ..units import G
-from . import html as H
-from .core import section
+from ...blocks import paper_data, specimen
+from ...models import simulate_many
+from ...motions import Sine
+from ...units import G
+from .. import html as H
+from ..core import section
 
 FREQS = (0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.3, 5.0)  # Hz, Table IV rows
 AMPS_MM = (3, 4, 5, 6, 8, 10, 12)  # mm, Table IV columns
