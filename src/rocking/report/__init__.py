@@ -12,7 +12,6 @@ the module name to :data:`SECTION_MODULES` below. Sections run in increasing ``o
 from __future__ import annotations
 
 import importlib
-import sys
 
 from .core import (
     SECTIONS,
@@ -35,15 +34,10 @@ SECTION_MODULES = ("table2", "identification", "table4", "free_rocking", "figure
 
 
 def _import_sections() -> None:
-    """Import the section modules; a module that fails to import becomes a failed section.
-
-    Each module is also reachable under its former name ``rocking.report.<name>`` (an alias
-    in ``sys.modules``, for code written before the move to :mod:`rocking.report.sections`).
-    """
+    """Import the section modules; a module that fails to import becomes a failed section."""
     for i, name in enumerate(SECTION_MODULES):
         try:
-            mod = importlib.import_module(f"{SECTION_PACKAGE}.{name}")
-            sys.modules.setdefault(f"{__name__}.{name}", mod)
+            importlib.import_module(f"{SECTION_PACKAGE}.{name}")
         except Exception as exc:  # keep the rest of the report alive
             err = f"{type(exc).__name__}: {exc}"
 
