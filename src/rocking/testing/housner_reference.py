@@ -53,7 +53,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from .._validate import positive
 from ..errors import ParameterError
-from ..models.housner import Housner
+from ..models.housner import DEFAULT_REST_TOL, Housner
 from ..models.run import check_run
 from ..motions import (
     HalfSine,
@@ -266,7 +266,8 @@ def _free_amplitude(om, alpha, p, linear):
 
 
 def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0,
-                       linear=False, rtol=1e-8, atol=None, method="DOP853", rest_tol=1e-6,
+                       linear=False, rtol=1e-8, atol=None, method="DOP853",
+                       rest_tol=DEFAULT_REST_TOL,
                        dt_out=None):
     """Classical model integrated with :func:`scipy.integrate.solve_ivp` and events.
 
