@@ -1,0 +1,54 @@
+"""Benchmark: start-up cost of ``import rocking`` and of the lazy submodules.
+
+Each figure is the median wall time of ``--repeat`` fresh interpreters (subprocesses), minus
+the median of a bare interpreter start, so it is the cost of the import alone. With
+``--src DIR`` it times another checkout (e.g. an older commit) for comparison.
+
+    .venv/bin/python benchmarks/bench_import.py --repeat 15
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+CASES = {
+    "python (baseline)": "pass",
+    "import rocking": "import rocking",
+    "import rocking; rocking.identify.free_rocking":
+        "import rocking; rocking.identify.free_rocking",
+    "import rocking; rocking.simulate": "import rocking; rocking.simulate",
+}
+
+
+def wall(code: str, env: dict) -> float:
+    t0 = time.perf_counter()
+    subprocess.run([sys.executable, "-c", code], check=True, env=env)
+    return time.perf_counter() - t0
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=11)
+    ap.add_argument("--src", help="time the package found in this src folder instead")
+    args = ap.parse_args()
+    env = dict(os.environ)
+    if args.src:
+        env["PYTHONPATH"] = args.src
+    res = {}
+    for _ in range(args.repeat):  # round-robin, fair to a machine shared with other jobs
+        for name, code in CASES.items():
+            res.setdefault(name, []).append(wall(code, env))
+    base = statistics.median(res["python (baseline)"])
+    for name, ts in res.items():
+        med = statistics.median(ts)
+        extra = "" if name.startswith("python") else f"  (import cost {med - base:.3f} s)"
+        print(f"{name:48s} median {med:.3f} s{extra}")
+
+
+if __name__ == "__main__":
+    main()
