@@ -13,7 +13,6 @@ import math
 import numpy as np
 import pytest
 from scipy.integrate import quad
-from scipy.signal import butter, sosfiltfilt
 
 import rocking
 from rocking import Block, ParameterError, simulate, simulate_many
@@ -23,26 +22,17 @@ from rocking.motions import (
     HanningSine,
     OneCosine,
     OneSine,
-    Record,
     Rectangular,
     Ricker,
     Sine,
 )
 from rocking.testing.housner_reference import Excitation, simulate_reference
+from rocking.testing.records import random_record
 from rocking.units import G
 
 IMPLS = [pytest.param(simulate, id="compiled"), pytest.param(simulate_reference, id="reference")]
 
 # ---------------------------------------------------------------------------- helpers
-def random_record(seed, pga, duration=10.0, dt=0.01, band=(0.3, 8.0)):
-    """Band-limited Gaussian noise under a trapezoidal envelope, scaled to ``pga``."""
-    rng = np.random.default_rng(seed)
-    n = int(round(duration / dt)) + 1
-    sos = butter(4, band, btype="bandpass", fs=1.0 / dt, output="sos")
-    x = sosfiltfilt(sos, rng.standard_normal(n))
-    t = np.arange(n) * dt
-    x *= np.clip(t / 1.5, 0.0, 1.0) * np.clip((duration - t) / 3.0, 0.0, 1.0)
-    return Record(x * pga / np.abs(x).max(), dt, name=f"noise-{seed}")
 
 
 def energy_level(theta, omega, alpha, p):

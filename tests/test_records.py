@@ -14,8 +14,6 @@ from rocking.motions import _kernel as K
 from rocking.motions.io import builtin_records, read_record, write_csv
 from rocking.units import G
 
-DATA = Path(__file__).resolve().parents[1] / "src" / "rocking" / "motions" / "data" / "records"
-
 # from the README of the PEER files: NPTS and DT (s)
 PEER = {
     "RSN126_GAZLI_GAZ000": (2048, 0.0066),
@@ -111,9 +109,9 @@ class TestPeerFiles:
         assert builtin_records() == sorted(PEER)
 
     @pytest.mark.parametrize("name", sorted(PEER))
-    def test_npts_dt_and_pga(self, name):
+    def test_npts_dt_and_pga(self, records_dir, name):
         npts, dt = PEER[name]
-        rec = Record.from_file(DATA / f"{name}.AT2")
+        rec = Record.from_file(records_dir / f"{name}.AT2")
         assert len(rec) == npts
         assert rec.dt == pytest.approx(dt, rel=1e-12)
         assert rec.name == name
@@ -123,30 +121,30 @@ class TestPeerFiles:
         assert np.std(rec.acc) > 0.005 * G
         assert rec.duration == pytest.approx((npts - 1) * dt)
 
-    def test_values_are_g_times_standard_gravity(self):
-        rec = Record.from_file(DATA / "RSN126_GAZLI_GAZ000.AT2")
+    def test_values_are_g_times_standard_gravity(self, records_dir):
+        rec = Record.from_file(records_dir / "RSN126_GAZLI_GAZ000.AT2")
         # the first and last data lines of the file, in g
         first = [.1717907E-01, .1723899E-01, .1729868E-01, .1735789E-01, .1741676E-01]
         last = [.2690760E-01, .2684498E-01, .2675242E-01]  # a short last line
         np.testing.assert_allclose(rec.acc[:5], np.array(first) * 9.80665, rtol=1e-12)
         np.testing.assert_allclose(rec.acc[-3:], np.array(last) * 9.80665, rtol=1e-12)
 
-    def test_header_with_filter_text_and_description(self):
-        rec = Record.from_file(DATA / "RSN982_NORTHR_JEN292.AT2")  # "4 POLE @ 20 HZ ..."
+    def test_header_with_filter_text_and_description(self, records_dir):
+        rec = Record.from_file(records_dir / "RSN982_NORTHR_JEN292.AT2")  # "4 POLE @ 20 HZ ..."
         assert len(rec) == 5720
         assert "Northridge-01" in rec.meta["description"]
         assert "Jensen" in rec.meta["station"]
         assert rec.meta["event"] == "Northridge-01"
         assert rec.meta["t_start"] == 0.0
 
-    def test_load_builtin_by_name_prefix_and_extension(self):
+    def test_load_builtin_by_name_prefix_and_extension(self, records_dir):
         a = load_builtin("RSN982_NORTHR_JEN292")
         b = load_builtin("rsn982")
         c = load_builtin("RSN982_NORTHR_JEN292.AT2")
         np.testing.assert_array_equal(a.acc, b.acc)
         np.testing.assert_array_equal(a.acc, c.acc)
         assert a.dt == 0.005 and a.name == "RSN982_NORTHR_JEN292"
-        ref = Record.from_file(DATA / "RSN982_NORTHR_JEN292.AT2")
+        ref = Record.from_file(records_dir / "RSN982_NORTHR_JEN292.AT2")
         np.testing.assert_array_equal(a.acc, ref.acc)
 
     def test_load_builtin_unknown(self):
@@ -155,15 +153,15 @@ class TestPeerFiles:
         with pytest.raises(RecordError, match="unknown built-in record ''"):
             load_builtin("")
 
-    def test_at2_is_always_in_g(self):
+    def test_at2_is_always_in_g(self, records_dir):
         with pytest.raises(RecordError, match=r"RSN126_GAZLI_GAZ000\.AT2.*in g"):
-            Record.from_file(DATA / "RSN126_GAZLI_GAZ000.AT2", units="m/s^2")
-        assert len(Record.from_file(DATA / "RSN126_GAZLI_GAZ000.AT2", units="G")) == 2048
+            Record.from_file(records_dir / "RSN126_GAZLI_GAZ000.AT2", units="m/s^2")
+        assert len(Record.from_file(records_dir / "RSN126_GAZLI_GAZ000.AT2", units="G")) == 2048
 
-    def test_at2_dt_must_agree(self):
-        Record.from_file(DATA / "RSN948_NORTHR_CAM009.AT2", dt=0.01)
+    def test_at2_dt_must_agree(self, records_dir):
+        Record.from_file(records_dir / "RSN948_NORTHR_CAM009.AT2", dt=0.01)
         with pytest.raises(RecordError, match="RSN948_NORTHR_CAM009.*DT=0.01"):
-            Record.from_file(DATA / "RSN948_NORTHR_CAM009.AT2", dt=0.02)
+            Record.from_file(records_dir / "RSN948_NORTHR_CAM009.AT2", dt=0.02)
 
 
 AT2_HEAD = ("PEER NGA STRONG MOTION DATABASE RECORD\n"

@@ -235,20 +235,18 @@ class TestProperties:
 class TestSpectrumCommand:
     AT2 = "RSN948_NORTHR_CAM009.AT2"
 
-    def _path(self):
-        from pathlib import Path
+    @pytest.fixture()
+    def at2(self, records_dir):
+        return records_dir / self.AT2
 
-        root = Path(__file__).resolve().parents[1]
-        return root / "src" / "rocking" / "motions" / "data" / "records" / self.AT2
-
-    def test_table_and_plot(self, tmp_path):
+    def test_table_and_plot(self, at2, tmp_path):
         from click.testing import CliRunner
 
         from rocking.cli.motion import motion
         from rocking.motions import Record
 
         png = tmp_path / "s.png"
-        res = CliRunner().invoke(motion, ["spectrum", str(self._path()), "--n", "5",
+        res = CliRunner().invoke(motion, ["spectrum", str(at2), "--n", "5",
                                           "--tmin", "0.1", "--tmax", "2", "--plot", str(png),
                                           "--target", "paper"])
         assert res.exit_code == 0, res.output
@@ -257,19 +255,19 @@ class TestSpectrumCommand:
         assert len(rows) == 5
         T = np.array([float(r[0]) for r in rows])
         psa = np.array([float(r[1]) for r in rows])
-        rec = Record.from_file(self._path())
+        rec = Record.from_file(at2)
         np.testing.assert_allclose(psa, response_spectrum(rec, T), rtol=1e-3)
         assert png.stat().st_size > 10_000
         assert "PGA" in res.output and "D5-95" in res.output
 
-    def test_json_no_plot_and_damping(self, tmp_path):
+    def test_json_no_plot_and_damping(self, at2, tmp_path):
         import json
 
         from click.testing import CliRunner
 
         from rocking.cli.motion import motion
 
-        res = CliRunner().invoke(motion, ["spectrum", str(self._path()), "--json",
+        res = CliRunner().invoke(motion, ["spectrum", str(at2), "--json",
                                           "--no-plot", "--damping", "2%", "--n", "4"])
         assert res.exit_code == 0, res.output
         d = json.loads(res.output)

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import importlib
-import os
 
 import numpy as np
 import pytest
@@ -24,26 +23,6 @@ from rocking.motions.processing import integrate
 
 # (``import rocking.motions.synthetic as S`` would give the function of that name)
 S = importlib.import_module("rocking.motions.synthetic")
-
-
-@pytest.fixture(scope="module")
-def cache(tmp_path_factory):
-    """A private cache directory for this module (the user's cache is left alone)."""
-    d = tmp_path_factory.mktemp("rocking-cache")
-    old = os.environ.get("ROCKING_CACHE_DIR")
-    os.environ["ROCKING_CACHE_DIR"] = str(d)
-    S.clear_cache()
-    yield d
-    S.clear_cache()
-    if old is None:
-        del os.environ["ROCKING_CACHE_DIR"]
-    else:
-        os.environ["ROCKING_CACHE_DIR"] = old
-
-
-@pytest.fixture(scope="module")
-def paper_set(cache):
-    return seed_earthquakes()
 
 
 class TestPaperSet:
@@ -82,9 +61,9 @@ class TestPaperSet:
         pgd = [r.intensity_measures()["pgd"] for r in paper_set]
         assert np.mean(pgd) < 0.06
 
-    def test_memory_and_disk_cache(self, paper_set, cache, monkeypatch):
+    def test_memory_and_disk_cache(self, paper_set, paper_cache, monkeypatch):
         assert seed_earthquakes()[5] is paper_set[5]  # the in-memory cache
-        files = list(cache.glob("paper_earthquakes_*.npz"))
+        files = list(paper_cache.glob("paper_earthquakes_*.npz"))
         assert len(files) == 1
         S.clear_cache()
 
@@ -107,7 +86,7 @@ class TestPaperSet:
         other = synthetic(paper_target(), n=1, seed=S.PAPER_SEED + 1, first_number=20)[0]
         assert np.max(np.abs(other.acc - one.acc)) > 0.5
 
-    def test_corrupt_or_unwritable_cache(self, paper_set, cache, monkeypatch):
+    def test_corrupt_or_unwritable_cache(self, paper_set, paper_cache, monkeypatch):
         calls = []
 
         def fake():
@@ -122,7 +101,7 @@ class TestPaperSet:
         S.clear_cache()
         seed_earthquakes()
         assert calls == [1]  # the rewritten file was good
-        blocker = cache / "a-file"
+        blocker = paper_cache / "a-file"
         blocker.write_text("")
         monkeypatch.setenv("ROCKING_CACHE_DIR", str(blocker / "sub"))  # cannot be created
         S.clear_cache()

@@ -212,14 +212,11 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
     h = dt_fixed if fixed else min(h_max, 1e-3 / p)
     while t < t_end - 1e-12:
         if resting:
-            t, k, d = E.rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out, k,
-                                     out_th, out_om)
+            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out,
+                                           k, out_th, out_om, t_up)
             if d == 0.0:
                 break
-            resting = False
-            if math.isnan(t_up):
-                t_up = t
-            x, v = chi_start, 0.0
+            resting, x, v = False, chi_start, 0.0
             s = 0.0 if d > 0.0 else math.pi
             h = dt_fixed if fixed else min(h_max, 1e-3 / p)
             continue
