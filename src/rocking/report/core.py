@@ -42,6 +42,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .. import __version__
+from ..blocks import paper_data
+from ..models import MODELS
 from . import html as H
 
 
@@ -98,16 +101,12 @@ class ModelStyle:
 
 def report_models() -> list[str]:
     """Names of every registered model, in registry order (:data:`rocking.models.MODELS`)."""
-    from ..models import MODELS
-
     return list(MODELS)
 
 
 def model_style(name: str) -> ModelStyle:
     """Label (the class's ``label``), colour and line style of the registered model
     ``name``; fixed by its position in the registry, hence the same on every run."""
-    from ..models import MODELS
-
     names = list(MODELS)
     if name not in MODELS:
         raise KeyError(f"unknown model {name!r}; registered: {names}")
@@ -252,9 +251,6 @@ def reproduce(out, quick: bool = False, full: bool = False, progress: bool = Tru
     """
     # Sections draw on matplotlib.figure.Figure objects (Agg canvas), never through pyplot,
     # so building a report does not change the user's backend or open windows.
-    from .. import __version__
-    from ..blocks import paper_data
-
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     secs = ordered_sections()

@@ -29,6 +29,8 @@ import pandas as pd
 from ...blocks import paper_data, specimen, specimen_ids
 from ...identify import free_rocking
 from ...models import MODELS, simulate
+from ...models import dem as D
+from ...units import G
 from .. import html as H
 from ..core import section
 
@@ -100,8 +102,6 @@ def stiffness_study(quick: bool) -> pd.DataFrame | None:
     """Identified parameters of DEM records of the specimen 2 rectangle, softer contacts."""
     if not dem_available():
         return None
-    from ...models import dem as D
-
     block = specimen(2, "geometric")
     try:  # the DEM's own default stiffness (API of rocking.models.dem)
         k0 = D.default_stiffness(D.build_model(block))
@@ -113,7 +113,7 @@ def stiffness_study(quick: bool) -> pd.DataFrame | None:
                             QUICK_DURATION if quick else DURATION, stiffness=k0 * f)
         fit = free_rocking(t, th)
         rows.append({"stiffness_factor": f, "K_N_per_m": k0 * f,
-                     "settlement_m": block.mass * 9.80665 / (2.0 * k0 * f),
+                     "settlement_m": block.mass * G / (2.0 * k0 * f),
                      "alpha": fit.alpha, "alpha_std": fit.alpha_std,
                      "alpha_diff_pct": 100 * (fit.alpha / block.alpha - 1),
                      "p": fit.p, "p_diff_pct": 100 * (fit.p / block.p - 1),
