@@ -26,9 +26,11 @@ CASES = {
 
 
 def wall(code: str, env: dict) -> float:
+    """Wall time of a fresh interpreter running ``code`` (NaN if it fails)."""
     t0 = time.perf_counter()
-    subprocess.run([sys.executable, "-c", code], check=True, env=env)
-    return time.perf_counter() - t0
+    ok = subprocess.run([sys.executable, "-c", code], env=env,
+                        stderr=subprocess.DEVNULL).returncode == 0
+    return time.perf_counter() - t0 if ok else float("nan")
 
 
 def main() -> None:
@@ -46,6 +48,9 @@ def main() -> None:
     base = statistics.median(res["python (baseline)"])
     for name, ts in res.items():
         med = statistics.median(ts)
+        if med != med:
+            print(f"{name:48s} fails")
+            continue
         extra = "" if name.startswith("python") else f"  (import cost {med - base:.3f} s)"
         print(f"{name:48s} median {med:.3f} s{extra}")
 
