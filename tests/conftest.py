@@ -26,9 +26,10 @@ def records_dir() -> Path:
         yield Path(p)
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="session", autouse=True)
 def paper_cache(tmp_path_factory):
-    """A private cache directory for the 30 seed earthquakes (the user's is left alone)."""
+    """A private cache directory for the 30 seed earthquakes, for the whole session (the
+    user's is left alone, and every test sees the same cache whatever the order)."""
     d = tmp_path_factory.mktemp("rocking-cache")
     old = os.environ.get("ROCKING_CACHE_DIR")
     os.environ["ROCKING_CACHE_DIR"] = str(d)
@@ -45,9 +46,3 @@ def paper_cache(tmp_path_factory):
 def paper_set(paper_cache):
     """The paper's 30 synthetic earthquakes (generated once per test session)."""
     return rocking.motions.seed_earthquakes()
-
-
-@pytest.fixture(scope="session")
-def specimen2():
-    """Specimen 2 with the Table II T parameters."""
-    return rocking.specimen(2)

@@ -273,6 +273,18 @@ def test_option_ccrr_matches_library():
     assert f"impacts     {ref.n_impacts}" in res.output
 
 
+def test_option_linear_is_the_linear_flag(tmp_path):
+    """``--option linear=true`` (listed by ``rocking models``) is the small-angle model."""
+    a, b = tmp_path / "a", tmp_path / "b"
+    for out, extra in ((a, ["--option", "linear=true"]), (b, ["--linear"])):
+        invoke("simulate", "--specimen", 2, "--motion", "free", "--theta0", "0.05",
+               "--duration", 2, *extra, "--out", out)
+    sa = json.loads((a / "summary.json").read_text())
+    sb = json.loads((b / "summary.json").read_text())
+    assert sa["model"] == sb["model"] == "housner-linear"
+    assert sa["max_abs_theta"] == sb["max_abs_theta"] and sa["n_impacts"] == sb["n_impacts"]
+
+
 def test_option_value_parsing():
     from rocking.cli.common import option_value, parse_options
 

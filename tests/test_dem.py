@@ -203,7 +203,7 @@ def test_energy_conserved_without_damping():
     quarter of the default cap (omega_max dt = 0.05): closing contacts are resolved to
     first order, and the error falls with dt (asserted too)."""
     blk = rocking.specimen(2, "geometric")
-    md = D.build_model(blk)
+    md = D.build_assembly(blk)
     K = D.default_stiffness(md)
     w = D.omega_max(md, K, K)
     errs = []
@@ -222,7 +222,7 @@ def test_energy_conserved_without_damping():
 def test_stack_conserves_energy_without_damping():
     blk = rocking.specimen(2, "geometric")
     st = Stack([blk, blk])
-    md = D.build_model(st)
+    md = D.build_assembly(st)
     K = D.default_stiffness(md)
     w = D.omega_max(md, K, K)
     r = simulate(st, None, model="dem", duration=2.5, theta0=0.3 * blk.alpha, damping=0.0,
@@ -340,7 +340,7 @@ def test_stack_geometry_and_outputs():
     plinth = Block.rectangular(1.0, 0.25, mass=500.0, mu=0.5)
     blk = rocking.specimen(2, "geometric")
     st = Stack([plinth, blk], offsets=[0.0, 0.1])
-    md = D.build_model(st)
+    md = D.build_assembly(st)
     # block 2 stands on the plinth's top face, 0.1 m right of its middle
     assert md.nominal[1, 0] == pytest.approx(0.1)
     assert md.nominal[1, 1] == pytest.approx(0.25 + 0.5)

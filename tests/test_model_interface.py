@@ -13,70 +13,98 @@ from numba import njit, prange
 import rocking
 from rocking import G, ParameterError, SimulationError
 from rocking.errors import OutputTooLargeError
-from rocking.models import MODELS, Model, ModelOptions, row_args, store_row
-from rocking.motions import HalfSine, Record, Sine
+from rocking.models import MODELS, Model, ModelOptions, option, row_args, store_row
+from rocking.models._numerics.events import rest_advance
+from rocking.motions import HalfSine, Sine
+from rocking.motions._kernel import ground_acc, next_breakpoint
+from rocking.testing.records import random_record
 
 
 # ------------------------------------------------------------- a fourth model in one class
 @njit(cache=True)
+def _lin_acc(th, t, s, alpha, p2, kind, prm, samples):
+    """Linearised Eq 1 on pivot ``s``: theta'' = p^2 (theta - s alpha) + p^2 a / g."""
+    return p2 * (th - s * alpha) + p2 * ground_acc(kind, prm, samples, t) / G
+
+
+@njit(cache=True)
+def _lin_rk4(th, om, t, h, s, alpha, p2, kind, prm, samples):
+    k1t, k1o = om, _lin_acc(th, t, s, alpha, p2, kind, prm, samples)
+    k2t = om + 0.5 * h * k1o
+    k2o = _lin_acc(th + 0.5 * h * k1t, t + 0.5 * h, s, alpha, p2, kind, prm, samples)
+    k3t = om + 0.5 * h * k2o
+    k3o = _lin_acc(th + 0.5 * h * k2t, t + 0.5 * h, s, alpha, p2, kind, prm, samples)
+    k4t = om + h * k3o
+    k4o = _lin_acc(th + h * k3t, t + h, s, alpha, p2, kind, prm, samples)
+    return (th + h * (k1t + 2 * k2t + 2 * k3t + k4t) / 6.0,
+            om + h * (k1o + 2 * k2o + 2 * k3o + k4o) / 6.0)
+
+
+@njit(cache=True)
 def _linear_kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_om,
                    imp, extra):
-    """Free rocking of the linearised classical model, ``theta'' = p^2 (theta - sgn alpha)``,
-    solved exactly between impacts (cosh/sinh), with Eq 4 at each impact. No ground motion
-    (a minimal model for the interface test)."""
-    alpha, p, mu = mp
-    th, om = th0, om0
-    t = 0.0
-    k = 0
-    n_imp = 0
-    peak = abs(th)
-    s = 1.0 if (th > 0.0 or (th == 0.0 and om > 0.0)) else -1.0
+    """The linearised classical model with ground motion, written independently of
+    rocking.models.housner: constant-step RK4 that steps onto the kinks of the motion,
+    impacts by bisection on a cubic Hermite interpolant, Eq 4 at impacts, rest and uplift
+    with the shared helper ``rest_advance`` (uplift when |a| > g alpha)."""
+    alpha, p, mu, rest_tol = mp
+    p2 = p * p
+    thr = G * alpha
+    h0 = min(2e-3 / p, 0.25 * h_scan)
+    t, th, om, k, n_imp, n_steps = 0.0, th0, om0, 0, 0, 0
+    peak = abs(th0)
+    resting = th0 == 0.0 and om0 == 0.0
+    t_up = math.nan if resting else 0.0
+    s = 1.0 if (th0 > 0.0 or (th0 == 0.0 and om0 > 0.0)) else -1.0
+    over, t_over = False, math.nan
     n_out = out_th.shape[0]
-    over = False
-    t_over = math.nan
-    h = min(dt_out, 1e-3 / p)
-    steps = 0
-    while t < t_end - 1e-12 and (th != 0.0 or om != 0.0):
-        hh = min(h, t_end - t)
-        u = th - s * alpha  # u'' = p^2 u: exact propagation
-        c, sh = math.cosh(p * hh), math.sinh(p * hh)
-        u1 = u * c + om / p * sh
-        om1 = u * p * sh + om * c
-        th1 = u1 + s * alpha
-        steps += 1
-        if s * th1 < 0.0:  # impact: bisection for the crossing inside the step
-            lo, hi = 0.0, hh
+    while t < t_end - 1e-12:
+        if resting:
+            t, k, d, t_up = rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out, k,
+                                         out_th, out_om, t_up)
+            if d == 0.0:
+                break
+            resting, s = False, d
+            continue
+        h = min(h0, t_end - t, next_breakpoint(kind, prm, samples, t) - t)
+        th1, om1 = _lin_rk4(th, om, t, h, s, alpha, p2, kind, prm, samples)
+        n_steps += 1
+        a0 = _lin_acc(th, t, s, alpha, p2, kind, prm, samples)
+        if s * th1 < 0.0:  # impact inside the step: bisection on the exact RK4 sub-step
+            lo, hi = 0.0, h
             for _ in range(60):
                 mid = 0.5 * (lo + hi)
-                if s * (u * math.cosh(p * mid) + om / p * math.sinh(p * mid) + s * alpha) > 0:
+                if s * _lin_rk4(th, om, t, mid, s, alpha, p2, kind, prm, samples)[0] > 0.0:
                     lo = mid
                 else:
                     hi = mid
-            hh = 0.5 * (lo + hi)
-            om1 = u * p * math.sinh(p * hh) + om * math.cosh(p * hh)
-            th1 = 0.0
-            if n_imp < imp.shape[0]:
-                imp[n_imp] = t + hh
-            n_imp += 1
-            om1 *= mu
-            s = -s
-        while k < n_out and k * dt_out <= t + hh + 1e-12:
-            out_th[k] = th1
-            out_om[k] = om1
+            h = 0.5 * (lo + hi)
+            th1, om1 = 0.0, _lin_rk4(th, om, t, h, s, alpha, p2, kind, prm, samples)[1]
+        while k < n_out and k * dt_out <= t + h + 1e-12:  # cubic Hermite output
+            x = (k * dt_out - t) / h
+            a1 = _lin_acc(th1, t + h, s, alpha, p2, kind, prm, samples)
+            out_th[k] = ((2 * x**3 - 3 * x**2 + 1) * th + (x**3 - 2 * x**2 + x) * h * om
+                         + (3 * x**2 - 2 * x**3) * th1 + (x**3 - x**2) * h * om1)
+            out_om[k] = om + x * h * (a0 + 0.5 * x * (a1 - a0))
             k += 1
-        t += hh
-        th, om = th1, om1
+        th_prev = th
+        t, th, om = t + h, th1, om1
         peak = max(peak, abs(th))
-        if abs(th) >= 0.5 * math.pi:
-            over = True
-            t_over = t
+        if th == 0.0:  # Eq 4, the pivot switches; the Zeno rule
+            if n_imp < imp.shape[0]:
+                imp[n_imp] = t
+            n_imp += 1
+            om *= mu
+            amp = alpha - math.sqrt(max(alpha * alpha - om * om / p2, 0.0))
+            if amp < rest_tol * alpha and abs(ground_acc(kind, prm, samples, t)) <= thr:
+                resting, om = True, 0.0
+            else:
+                s = 1.0 if om > 0.0 else -1.0
+        if abs(th) >= 0.5 * math.pi:  # overturned: locate |theta| = pi/2 in the step
+            over, peak = True, 0.5 * math.pi
+            t_over = t - h * (abs(th) - 0.5 * math.pi) / max(abs(th) - abs(th_prev), 1e-300)
             break
-    while k < n_out and k * dt_out <= t_end + 1e-12:
-        out_th[k] = th
-        out_om[k] = om
-        k += 1
-    return k, n_imp, peak, over, t_over, 0.0 if (th0 != 0.0 or om0 != 0.0) else math.nan, \
-        steps, 0
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0
 
 
 @njit(cache=True, parallel=True)
@@ -86,40 +114,56 @@ def _linear_batch(mp, extra0, rows):
 
 
 @dataclass(frozen=True)
-class _NoOptions(ModelOptions):
-    pass
+class LinearOptions(ModelOptions):
+    rest_tol: float = option(1e-12, lo=0.0, hi=1e-2, help="Zeno threshold (fraction of alpha)")
 
 
-class LinearFree(Model):
-    """A minimal fourth model: linear free rocking solved exactly between impacts."""
+class LinearHousner(Model):
+    """A fourth model in one class: the linearised classical model with ground motion."""
 
-    name = "linear-free"
-    label = "linear free rocking (test)"
-    Options = _NoOptions
+    name = "linear-housner"
+    label = "linear classical (test)"
+    Options = LinearOptions
     kernel = _linear_kernel
     batch_kernel = _linear_batch
 
     def kernel_params(self, dt_out, theta0, omega0):
-        return (self.block.alpha, self.block.p, self.block.mu)
+        b = self.block
+        return (b.alpha, b.p, b.mu, self.options.rest_tol)
 
 
 def test_a_fourth_model_runs_through_simulate_and_simulate_many():
-    blk = rocking.Block.from_params(0.2, 2.0, 0.9)
+    blk = rocking.specimen(3)
     th0 = 0.5 * blk.alpha
-    r = rocking.simulate(blk, None, model=LinearFree, duration=4.0, theta0=th0, dt_out=1e-3)
-    ref = rocking.simulate(blk, None, model="housner", linear=True, duration=4.0, theta0=th0,
-                           dt_out=1e-3, rtol=1e-11)
-    assert isinstance(r, rocking.Response) and r.model == "linear-free"
-    # the same physics as the compiled classical model with linear=True
-    assert r.n_impacts >= 4
-    np.testing.assert_allclose(r.impact_times[:4], ref.impact_times[:4], rtol=0, atol=1e-9)
-    assert r.max_abs_theta == pytest.approx(th0, rel=1e-12)
-    # first quarter period of the linear model, closed form: cosh(p t) = alpha/(alpha-th0)
+    # free rocking: the first quarter period in closed form, cosh(p t) = alpha/(alpha-th0)
+    r = rocking.simulate(blk, None, model=LinearHousner, duration=3.0, theta0=th0)
+    assert isinstance(r, rocking.Response) and r.model == "linear-housner"
     t1 = math.acosh(blk.alpha / (blk.alpha - th0)) / blk.p
     assert r.impact_times[0] == pytest.approx(t1, abs=1e-9)
-    b = rocking.simulate_many(blk, [Sine(1.0, 0.0, 2.0)] * 3, model=LinearFree)
-    assert len(b) == 3 and not b.overturned.any() and b.model == "linear-free"
-    assert np.all(b.max_abs_theta == 0.0) and np.all(np.isnan(b.uplift_time))
+    # under ground motion: the same physics as the compiled classical model, linear=True
+    ms = _mixed_motions()
+    for m in ms[:3]:
+        a = rocking.simulate(blk, m, model=LinearHousner)
+        b = rocking.simulate(blk, m, model="housner", linear=True, rtol=1e-10)
+        assert a.overturned == b.overturned
+        assert a.uplift_time == pytest.approx(b.uplift_time, abs=1e-9)
+        assert a.max_abs_theta == pytest.approx(b.max_abs_theta, rel=1e-5)
+        assert a.max_abs_theta > 0.2 * blk.alpha
+        if a.overturned:
+            assert a.overturn_time == pytest.approx(b.overturn_time, abs=1e-4)
+        k = min(5, a.n_impacts)
+        np.testing.assert_allclose(a.impact_times[:k], b.impact_times[:k], rtol=0, atol=1e-6)
+    # a batch of the fourth model: rows bit-identical to single runs, chunking irrelevant
+    whole = rocking.simulate_many(blk, ms, model=LinearHousner)
+    parts = np.concatenate([rocking.simulate_many(blk, ms[:2], model=LinearHousner).max_abs_theta,
+                            rocking.simulate_many(blk, ms[2:], model=LinearHousner).max_abs_theta])
+    np.testing.assert_array_equal(whole.max_abs_theta, parts)
+    for i, m in enumerate(ms):
+        one = rocking.simulate(blk, m, model=LinearHousner)
+        assert whole.max_abs_theta[i] == one.max_abs_theta
+        assert whole.n_impacts[i] == one.n_impacts and whole.overturned[i] == one.overturned
+    with pytest.raises(ParameterError, match="rest_tol"):
+        rocking.simulate(blk, ms[0], model=LinearHousner, rest_tol=1.0)
 
 
 def test_a_model_class_without_kernels_is_refused():
@@ -161,8 +205,8 @@ def test_n_impacts_counts_all_impacts_beyond_the_kept_times():
 
 # --------------------------------------------------- batch rows are the single runs, exactly
 def _mixed_motions():
-    rng = np.random.default_rng(7)
-    rec = Record(rng.normal(0.0, 0.35 * G, 801), 0.01, name="noise")
+    """Motions of different time scales: two sines, noise records (dt 0.01 s), a pulse."""
+    rec = random_record(7, 0.5 * G, duration=8.0)
     return [Sine(2.0, 0.02, 3.0), Sine(5.0, 0.008, 3.0), rec.scaled(1.2),
             HalfSine(3.0, 0.3, duration=3.0), rec.scaled(-0.9)]
 
@@ -246,5 +290,7 @@ def test_lazy_submodules():
     import sys
 
     code = ("import rocking, sys; assert 'rocking.identify' not in sys.modules; "
-            "rocking.identify.free_rocking; rocking.models.MODELS; rocking.dem.paper_parameters")
+            "rocking.identify.free_rocking; rocking.models.MODELS; rocking.dem.paper_parameters;"
+            "from rocking.dem import paper_parameters; import rocking.dem as d;"
+            "assert d is rocking.models.dem and d.__spec__.name == 'rocking.models.dem'")
     subprocess.run([sys.executable, "-c", code], check=True)

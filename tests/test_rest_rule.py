@@ -34,7 +34,7 @@ from rocking.motions import builtin_records, load_builtin
 
 DEFAULT = housner.DEFAULT_REST_TOL  # the package default (1e-12 from the study)
 TOL = 1e-3  # 0.1% on the maximum angle
-G = 9.80665
+G = rocking.G
 GAZLI = "RSN126_GAZLI_GAZ000"
 
 

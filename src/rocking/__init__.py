@@ -15,6 +15,9 @@ Units are SI throughout: m, s, kg, rad, m/s^2.
 """
 
 import importlib
+import importlib.abc
+import importlib.util
+import sys
 
 from .blocks import Block, Stack, housner_mu, specimen
 from .errors import (
@@ -52,6 +55,30 @@ def __getattr__(name: str):
         globals()[name] = value
         return value
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+class _Alias(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    """Former module names still importable (``import rocking.dem``, ``from rocking.dem
+    import paper_parameters``): each is the module it moved to, imported on first use."""
+
+    MOVED = {"rocking.dem": "rocking.models.dem"}
+
+    def find_spec(self, name, path=None, target=None):
+        if name in self.MOVED:
+            return importlib.util.spec_from_loader(name, self)
+        return None
+
+    def create_module(self, spec):
+        module = importlib.import_module(self.MOVED[spec.name])
+        self._spec = module.__spec__
+        return module
+
+    def exec_module(self, module):
+        module.__spec__ = self._spec  # the import system set the alias's spec: restore it
+
+
+if not any(isinstance(f, _Alias) for f in sys.meta_path):
+    sys.meta_path.append(_Alias())
 
 
 def __dir__():

@@ -18,7 +18,9 @@ from pathlib import Path
 
 import numpy as np
 
+from ._validate import positive
 from .errors import ParameterError
+from .motions import Motion, Record
 
 #: Colours of the overlaid curves (colour-blind safe, Okabe-Ito).
 PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
@@ -183,9 +185,6 @@ def plot_motion(motion, ax=None, duration: float | None = None, *, title: str | 
     sampled finely enough to resolve it. ``duration`` (s) defaults to the motion's.
     Returns the Axes.
     """
-    from ._validate import positive
-    from .motions import Motion, Record
-
     if not isinstance(motion, Motion):
         raise ParameterError(f"motion must be a rocking.motions.Motion, "
                              f"got {type(motion).__name__}")

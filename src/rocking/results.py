@@ -8,7 +8,9 @@ One convention for every model:
   in single and batch results alike (``summary()`` and ``to_dict()`` write it as ``None``
   in JSON);
 * ``n_impacts`` is the number of impacts, i.e. passages of ``theta`` through zero, over
-  the whole run (``impact_times`` keeps the first ``max_impacts`` of them);
+  the whole run (``impact_times`` keeps the first ``max_impacts`` of them); the DEM counts
+  a zero crossing once ``|theta|`` has exceeded its ``impact_tol`` since the previous one
+  (contact springs make tiny oscillations at rest);
 * the default output interval is :data:`DEFAULT_DT_OUT` everywhere;
 * every result has ``summary()`` (a small JSON-ready dict) and ``to_dict()`` (everything,
   JSON-ready).
@@ -72,7 +74,8 @@ class Response:
     uplift_time: float
     """First time (s) the block left its rest position; NaN if it never did."""
     n_impacts: int
-    """Number of impacts (passages through theta = 0) over the whole run."""
+    """Number of impacts (passages through theta = 0) over the whole run (see the module
+    docstring for the DEM)."""
     model: str = "housner"
     block: object = None
     motion: object = None
@@ -151,7 +154,7 @@ class Response:
 
     def to_dataframe(self):
         """``pandas.DataFrame`` with columns ``t``, ``theta``, ``omega``."""
-        import pandas as pd
+        import pandas as pd  # lazy: keeps `import rocking` at 0.2 s (pandas: 0.45 s)
 
         return pd.DataFrame({"t": self.t, "theta": self.theta, "omega": self.omega})
 
@@ -169,7 +172,7 @@ class Response:
 
     def plot(self, ax=None, **kw):
         """Plot theta(t) in degrees; returns the matplotlib Axes."""
-        from .plot import plot_response
+        from .plot import plot_response  # lazy: plot imports the motions (numba)
 
         return plot_response(self, ax=ax, **kw)
 
@@ -243,7 +246,7 @@ class BatchResponse:
 
     def to_dataframe(self):
         """One row per motion with the summary quantities."""
-        import pandas as pd
+        import pandas as pd  # lazy: keeps `import rocking` at 0.2 s (pandas: 0.45 s)
 
         return pd.DataFrame({
             "max_abs_theta": self.max_abs_theta,
@@ -267,7 +270,7 @@ class BatchResponse:
             "n_rocked": int(np.count_nonzero(self.rocked)),
             "median_max_abs_theta_survived": float(np.median(surv)) if surv.size else None,
             "max_max_abs_theta_survived": float(np.max(surv)) if surv.size else None,
-            "n_impacts_total": int(np.sum(self.n_impacts)),
+            "n_impacts_sum": int(np.sum(self.n_impacts)),
             "n_failed": int(np.count_nonzero(self.status)) if self.status is not None else 0,
         }
         blk = _block_dict(self.block)

@@ -82,7 +82,7 @@ def specimen_number(text) -> int:
     return n
 
 
-def jsonable(o):
+def json_default(o):
     """``json.dumps(default=...)``: numbers as floats (non-finite as null), others as text."""
     try:
         x = float(o)
@@ -305,7 +305,7 @@ def error_report(e: BaseException) -> tuple[str, int] | None:
 
 
 __all__ = ["CONTEXT", "quantity", "number", "check_positive", "positive_quantity", "integer",
-           "specimen_number", "jsonable", "block_options", "make_block", "model_classes",
+           "specimen_number", "json_default", "block_options", "make_block", "model_classes",
            "ModelChoice", "option_value", "parse_options", "validate_options",
            "models_with_option", "options_table", "one_line", "output_too_large_message",
            "error_report"]

@@ -41,7 +41,7 @@ def dem_params_dict(n: int, params: str, calibrate: bool = False) -> dict:
          "paper": {"K": float(t3["K"][col]), "xi_min": 1e-3 * float(t3["zeta_e3"][col]),
                    "f_min": float(t3["f_min"][col]), "width_eq": float(t3["width_eq"][col])}}
     if calibrate:
-        md = PD.build_model(blk)
+        md = PD.build_assembly(blk)
         K = PD.default_stiffness(md)
         cal = PD.calibrate_damping(blk, full=True)
         d["dem_default"] = {

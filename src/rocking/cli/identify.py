@@ -24,7 +24,8 @@ import click
 from .._validate import as_float
 from ..blocks import Block, housner_mu
 from ..errors import ParameterError
-from .common import CONTEXT, jsonable, positive_quantity
+from ..results import jsonable
+from .common import CONTEXT, json_default, positive_quantity
 
 
 def _theoretical(width, height):
@@ -117,14 +118,14 @@ def identify(record, units, block_width, block_height, time_col, angle_col, offs
         summary["theoretical"] = {**theo, "width": width, "height": height}
         summary["difference_pct"] = {k: (summary[k] - theo[k]) / theo[k] * 100.0
                                      for k in ("alpha", "p", "mu") if math.isfinite(theo[k])}
-    summary = ri._json_safe(summary)  # NaN (e.g. mu of a squat block) -> null
+    summary = jsonable(summary)  # NaN (e.g. mu of a squat block) -> null
     (folder / "fit.json").write_text(json.dumps(summary, indent=2, allow_nan=False,
-                                                default=jsonable))
+                                                default=json_default))
     fit.table().to_csv(folder / "half_cycles.csv", index=False, float_format="%.10g")
     _plots(fit, block, folder)
 
     if as_json:
-        click.echo(json.dumps(summary, indent=2, default=jsonable))
+        click.echo(json.dumps(summary, indent=2, default=json_default))
         return
     k = 180.0 / math.pi
     t = fit.t

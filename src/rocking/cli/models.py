@@ -12,7 +12,7 @@ import json
 
 import click
 
-from .common import CONTEXT, jsonable, model_classes, options_table
+from .common import CONTEXT, json_default, model_classes, options_table
 
 
 def models_dict() -> list[dict]:
@@ -30,7 +30,7 @@ def models_dict() -> list[dict]:
 def models_cmd(as_json):
     """List the rocking models and their options (for simulate --model/--option)."""
     if as_json:
-        click.echo(json.dumps(models_dict(), indent=2, default=jsonable))
+        click.echo(json.dumps(models_dict(), indent=2, default=json_default))
         return
     blocks = []
     for name, cls in model_classes().items():

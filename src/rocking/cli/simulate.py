@@ -30,7 +30,7 @@ from .common import (
     ModelChoice,
     block_options,
     check_positive,
-    jsonable,
+    json_default,
     make_block,
     models_with_option,
     number,
@@ -293,6 +293,7 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
     mot, mdesc, sim_dur = make_motion(motion, freq, amp, tp, duration, record, units, dt,
                                       load_factor, earthquake)
     options = model_options(model, model_opts, friction_angle, stiffness, damping)
+    linear = bool(linear) or bool(options.pop("linear", False))  # --linear = --option linear=1
     th0 = quantity(theta0, "angle", "theta0", default_unit="rad")
     om0 = number(omega0, "omega0", ("rad/s", "1/s"))
     run = {}
@@ -332,7 +333,7 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
         folder = Path(out)
         folder.mkdir(parents=True, exist_ok=True)
         resp.to_csv(folder / "response.csv")
-        (folder / "summary.json").write_text(json.dumps(summary, indent=2, default=jsonable))
+        (folder / "summary.json").write_text(json.dumps(summary, indent=2, default=json_default))
         _theta_png(resp, block, mdesc, folder / "theta.png")
         click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
 

@@ -42,7 +42,6 @@ from ..errors import IdentificationError
 from .io import from_csv, read_record_csv
 from .pipeline import free_rocking
 from .result import FreeRockingFit
-from .result import _json_safe as _json_safe  # used by the command line
 from .time_model import quarter_time, sigma_surface
 
 __all__ = ["free_rocking", "from_csv", "read_record_csv", "quarter_time", "sigma_surface",

@@ -17,6 +17,7 @@ from ..blocks import Block
 from ..errors import IdentificationError, ParameterError
 from ..models import simulate
 from ..plot import PALETTE, _style, figure
+from ..results import jsonable
 from .time_model import _abc, quarter_time, sigma_surface
 from .timing import _intervals
 
@@ -138,7 +139,7 @@ class FreeRockingFit:
     def summary(self) -> dict:
         """JSON-ready summary (SI units; NaN as None)."""
         res = self.residuals
-        return _json_safe({
+        return jsonable({
             "alpha": self.alpha, "alpha_std": self.alpha_std,
             "alpha_deg": math.degrees(self.alpha),
             "p": self.p, "p_std": self.p_std,
@@ -162,7 +163,7 @@ class FreeRockingFit:
 
     def to_dict(self) -> dict:
         """All fields, JSON-ready (arrays as nested lists; NaN and inf as None)."""
-        return _json_safe({f.name: _plain(getattr(self, f.name)) for f in fields(self)})
+        return jsonable({f.name: _plain(getattr(self, f.name)) for f in fields(self)})
 
     def compare(self, theoretical):
         """Table II-style ``pandas.DataFrame``: theoretical, identified, std and % per parameter.
@@ -309,21 +310,6 @@ class FreeRockingFit:
             return np.array([t0]), np.array([th0])
         r = simulate(b, None, duration=max(t_end - t0, dt), theta0=th0, dt_out=dt)
         return r.t + t0, r.theta
-
-
-def _json_safe(x):
-    """``x`` with numpy scalars as Python numbers and NaN/inf as None (recursively)."""
-    if isinstance(x, dict):
-        return {k: _json_safe(v) for k, v in x.items()}
-    if isinstance(x, list | tuple):
-        return [_json_safe(v) for v in x]
-    if isinstance(x, bool | np.bool_):
-        return bool(x)
-    if isinstance(x, int | np.integer):
-        return int(x)
-    if isinstance(x, float | np.floating):
-        return float(x) if math.isfinite(x) else None
-    return x
 
 
 def _plain(x):

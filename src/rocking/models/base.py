@@ -184,6 +184,9 @@ class Model:
     kernel: ClassVar[Any] = None
     batch_kernel: ClassVar[Any] = None
     accepts_stack: ClassVar[bool] = False
+    slow: ClassVar[bool] = False
+    """A simulation costs seconds, not milliseconds: reports run the model's large batches
+    only on request (``rocking reproduce --full``)."""
     append_overturn: ClassVar[bool] = True
     """End the history of a single run on the exact overturning point (pi/2)."""
     response_class: ClassVar[type] = Response

@@ -37,8 +37,8 @@ with ``theta = 0``.
 control, ``rtol``), which steps exactly onto the kinks of the excitation (the samples of a
 record, the start and end of a pulse). The branch (pivot) is frozen within a step so that
 the right-hand side is smooth; impacts are then located inside the step. Everything runs
-in one compiled numba function per simulation; :func:`simulate_many` runs a batch in
-parallel with no Python per time step.
+in one compiled numba function per simulation; :func:`rocking.simulate_many` runs a
+batch in parallel with no Python per time step.
 """
 
 from __future__ import annotations

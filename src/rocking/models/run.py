@@ -196,7 +196,9 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     motion); the time histories ``theta``, ``omega`` (at ``dt_out``) only with
     ``return_histories=True``. ``errors="raise"`` (default) raises
     :class:`~rocking.errors.SimulationError` if a run fails numerically;
-    ``errors="nan"`` marks it with NaN and a non-zero ``status`` instead. ``duration``
+    ``errors="nan"`` marks it with a non-zero ``status`` and NaN ``max_abs_theta`` and
+    times instead (its ``overturned`` and ``n_impacts`` are those reached before the
+    failure). ``duration``
     defaults to each motion's own duration. Other arguments as in :func:`simulate`.
     """
     m = _make(model, block, linear, options)
@@ -220,7 +222,7 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
             i = int(bad[0])
             raise SimulationError(f"{bad.size} of {n} runs failed; motions[{i}]: "
                                   + m.failure(int(status[i]), math.nan))
-        res_f[bad, 0] = math.nan
+        res_f[bad, :] = math.nan  # max_abs_theta and the event times of the failed runs
     return BatchResponse(
         max_abs_theta=res_f[:, 0].copy(), overturned=res_i[:, 1].astype(bool),
         overturn_time=res_f[:, 1].copy(), uplift_time=res_f[:, 2].copy(),

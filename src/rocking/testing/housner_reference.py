@@ -297,7 +297,7 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
     Returns
     -------
     Response
-        ``info`` holds ``n_solve_ivp`` (number of calls), ``nfev`` and ``n_impacts_total``.
+        ``info`` holds ``n_solve_ivp`` (number of calls) and ``nfev``.
     """
     # input validation is shared with the compiled model (the physics below is not)
     opts = Housner.from_kwargs(block, rtol=rtol, rest_tol=rest_tol).options
@@ -429,8 +429,7 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         n_impacts=len(impacts),
         model=("housner-linear" if linear else "housner") + "-reference", block=block,
         motion=motion,
-        info={"rtol": rtol, "method": method, "n_solve_ivp": n_calls, "nfev": int(nfev),
-              "n_impacts_total": len(impacts)},
+        info={"rtol": rtol, "method": method, "n_solve_ivp": n_calls, "nfev": int(nfev)},
     )
 
 

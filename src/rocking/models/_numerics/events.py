@@ -51,15 +51,3 @@ def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out, k, out_th, o
             out_om[k] = 0.0
             k += 1
         t = t1
-
-
-@njit(cache=True)
-def store_result(res_f, res_i, i, peak, t_over, t_up, n_imp, overturned, n_steps, ok):
-    """Write one batch row: ``res_f[i] = (peak, t_over, t_up)`` (peak NaN if the run
-    failed), ``res_i[i] = (n_impacts, overturned, n_steps)``."""
-    res_f[i, 0] = peak if ok else math.nan
-    res_f[i, 1] = t_over
-    res_f[i, 2] = t_up
-    res_i[i, 0] = n_imp
-    res_i[i, 1] = 1 if overturned else 0
-    res_i[i, 2] = n_steps

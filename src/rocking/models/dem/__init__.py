@@ -94,7 +94,8 @@ opens between steps, which central differences resolve to first order only, and 
 stability limit an undamped bouncing block gains or loses percents of its energy at each
 impact (with the default, calibrated damping the stability limit is already below the
 cap). The step is then rounded down to divide the output interval. Everything per step
-runs in one compiled numba function; :func:`simulate_many` runs a batch in parallel.
+runs in one compiled numba function; :func:`rocking.simulate_many` runs a batch in
+parallel.
 
 **Response.** ``theta`` is the rotation of the block (for a stack: of the top block; all
 blocks in ``theta_all``, ``x_all``, ``y_all``, shape ``(n_blocks, n_t)``); ``x``, ``y``
@@ -123,7 +124,7 @@ from .geometry import (
     Assembly,
     Body,
     body_of,
-    build_model,
+    build_assembly,
     default_stiffness,
 )
 from .model import DEM, DEMOptions
@@ -148,7 +149,7 @@ from .statics import (
 )
 
 __all__ = [
-    "DEM", "DEMOptions", "Assembly", "Body", "body_of", "build_model", "default_stiffness",
+    "DEM", "DEMOptions", "Assembly", "Body", "body_of", "build_assembly", "default_stiffness",
     "calibrate_damping", "damping_cap", "free_rocking_restitution", "paper_parameters",
     "refit_eq20", "settlement", "settlement_table", "table3", "contacts_at", "initial_state",
     "omega_max", "stable_dt", "static_state", "stiffness_matrix", "DEFAULT_SETTLEMENT",

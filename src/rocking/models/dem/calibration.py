@@ -12,6 +12,7 @@ import functools
 import math
 
 import numpy as np
+from scipy.optimize import brentq
 
 from ..._validate import as_float, positive
 from ...blocks import Block
@@ -34,7 +35,7 @@ def free_rocking_restitution(block, b: float, K: float | None = None, *,
     compare the amplitude ``r1`` after the first impact with ``r0 = theta0`` through the
     energy (Eq 12 with n = 1): ``sqrt((cos(alpha - r1) - cos alpha) / (cos(alpha - r0) -
     cos alpha))``, with the DEM body's alpha."""
-    md = GEO.build_model(block, geometry)
+    md = GEO.build_assembly(block, geometry)
     bd = md.bodies[0]
     al, p = bd.alpha, bd.p
     r0 = theta0_frac * al
@@ -65,6 +66,7 @@ def free_rocking_restitution(block, b: float, K: float | None = None, *,
     e1 = math.cos(al - r1) - math.cos(al)
     return math.sqrt(max(e1, 0.0) / e0)
 
+
 def _free_run(md, b, K, Ks, friction_angle, theta0, duration, dt_out):
     """Free rocking of the assembly ``md`` from ``theta0`` (settled on its pivot):
     ``(t, theta, impact_times, overturned)`` at the output interval ``dt_out``."""
@@ -90,15 +92,14 @@ def damping_cap(block, K: float | None = None, geometry: str = "auto",
     """Largest damping factor the calibration uses (s): ``xi = XI_CAP`` in the stiffest
     contact mode (beyond it the apparent restitution no longer changes: it has reached the
     plastic-impact value of Housner, Eq 4, and the time step only shrinks)."""
-    md = GEO.build_model(block, geometry)
+    md = GEO.build_assembly(block, geometry)
     K = GEO.default_stiffness(md) if K is None else float(K)
     Ks = K if shear_stiffness is None else float(shear_stiffness)
     return 2.0 * XI_CAP / ST.omega_max(md, K, Ks)
 
+
 @functools.lru_cache(maxsize=256)
 def _calibrate(block, mu, K, geometry, friction_angle, Ks):
-    from scipy.optimize import brentq
-
     def f(b):
         return free_rocking_restitution(block, b, K, geometry=geometry,
                                         friction_angle=friction_angle,
@@ -121,6 +122,7 @@ def _calibrate(block, mu, K, geometry, friction_angle, Ks):
         return b_cap, mu + fc, b_cap, note
     b = float(brentq(f, 0.0, b_cap, xtol=1e-6 * b_cap, rtol=1e-6))
     return b, mu + f(b), b_cap, "root of the apparent restitution"
+
 
 def calibrate_damping(block, mu: float | None = None, K: float | None = None, *,
                       geometry: str = "auto", friction_angle: float = 30.0,
@@ -147,7 +149,7 @@ def calibrate_damping(block, mu: float | None = None, K: float | None = None, *,
     if not 0.0 < mu <= 1.0:
         raise ParameterError(f"mu must be in (0, 1], got {mu!r}")
     if K is None:
-        K = GEO.default_stiffness(GEO.build_model(block, geometry))
+        K = GEO.default_stiffness(GEO.build_assembly(block, geometry))
     K = float(f"{positive('K', K, 'N/m'):.9g}")
     Ks = None if shear_stiffness is None else float(f"{shear_stiffness:.9g}")
     b, mu_dem, b_cap, note = _calibrate(block, float(f"{mu:.9g}"), K, geometry,

@@ -55,6 +55,7 @@ class Body:
     def width(self) -> float:
         return float(self.verts[:, 0].max() - self.verts[:, 0].min())
 
+
 def _polygon_alpha_p(block: Block) -> tuple[float, float]:
     pr = polygon_properties(block.vertices)
     cx, cy = pr["centroid"]
@@ -64,10 +65,12 @@ def _polygon_alpha_p(block: Block) -> tuple[float, float]:
     R = math.hypot(cx - xo, cy)
     return min(al, ar), math.sqrt(G * R / (pr["j_c"] + R * R))
 
+
 def _default_mass(block: Block, area: float) -> float:
     if block.mass is not None:
         return float(block.mass)
     return GRANITE_DENSITY * area * (block.thickness or 1.0)
+
 
 def body_of(block: Block, geometry: str = "auto") -> Body:
     """The DEM body of ``block`` (see the module docstring for ``geometry``)."""
@@ -122,6 +125,7 @@ def body_of(block: Block, geometry: str = "auto") -> Body:
     v = np.array([(-b, -h), (b, -h), (b, h), (-b, h)], dtype=np.float64)
     return Body(v, m, i_c, "equivalent", block.alpha, block.p)
 
+
 @dataclass
 class Assembly:
     """Everything the kernel needs about the blocks, packed in arrays."""
@@ -151,7 +155,8 @@ class Assembly:
         top = self.nominal[-1, 1] + self.lv[-1, : self.nv[-1], 1].max()
         return float(top)
 
-def build_model(block, geometry: str = "auto") -> Assembly:
+
+def build_assembly(block, geometry: str = "auto") -> Assembly:
     """Pack a Block or a Stack into an :class:`Assembly`."""
     if isinstance(block, Stack):
         blocks, offsets = list(block.blocks), list(block.offsets)
@@ -190,6 +195,7 @@ def build_model(block, geometry: str = "auto") -> Assembly:
                  np.array([b.inertia for b in bodies]),
                  np.array([float(np.sqrt((b.verts ** 2).sum(axis=1)).max()) for b in bodies]),
                  nominal, ROUNDING * size, block)
+
 
 def default_stiffness(model: Assembly) -> float:
     """Default contact stiffness (N/m): settlement ``DEFAULT_SETTLEMENT`` x height on two

@@ -33,6 +33,7 @@ def _world(pos, lv, lvn, len_, nv, wv, wn, en):
                 en[i, k, 0] = c * x - s * y
                 en[i, k, 1] = s * x + c * y
 
+
 @njit(cache=True)
 def _find_edge(px, py, nvx, nvy, i, j, pos, wv, en, nv, rad, rr, tol):
     """Edge of block ``j`` touched by vertex (px, py) of block ``i`` (outward vertex normal
@@ -76,6 +77,7 @@ def _find_edge(px, py, nvx, nvy, i, j, pos, wv, en, nv, rad, rr, tol):
         return -1, 0.0
     return best, bestd
 
+
 @njit(cache=True)
 def _contact_law(K, Ks, cn, cs, tanphi, coh, pen, vn, vt, fs_prev, dt):
     """One contact point: normal spring without tension plus its dashpot, and the
@@ -91,6 +93,7 @@ def _contact_law(K, Ks, cn, cs, tanphi, coh, pen, vn, vt, fs_prev, dt):
         ft = math.copysign(fmax, ft)
         fsp = ft
     return fn, ft, fsp
+
 
 @njit(cache=True)
 def _forces(pos, vel, t, dt, lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs,
@@ -186,6 +189,7 @@ def _forces(pos, vel, t, dt, lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, c
                     cf[i, k, j, 2] = px
                     cf[i, k, j, 3] = py
     return energy, opened, fell
+
 
 @njit(cache=True)
 def integrate(lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, coh, kind,
@@ -296,6 +300,7 @@ def integrate(lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, 
             break
     return k, n_imp, peak, overturned, t_over, t_up, step, ok
 
+
 @njit(cache=True)
 def _row(out, c, i, k, j, e, px, py, nx, ny):
     out[c, 0] = i
@@ -306,6 +311,7 @@ def _row(out, c, i, k, j, e, px, py, nx, ny):
     out[c, 5] = py
     out[c, 6] = nx
     out[c, 7] = ny
+
 
 @njit(cache=True)
 def _probe(pos, lv, lvn, len_, nv, rad, rr, tol, out):

@@ -79,13 +79,14 @@ class DEM(Model):
     kernel = kernel
     batch_kernel = batch_kernel
     accepts_stack = True
+    slow = True
     append_overturn = False
     response_class = DEMResponse
 
     def __init__(self, block, options=None):
         super().__init__(block, options)
         o = self.options
-        self.assembly = md = GEO.build_model(block, o.geometry)
+        self.assembly = md = GEO.build_assembly(block, o.geometry)
         self.K = GEO.default_stiffness(md) if o.stiffness is None else o.stiffness
         self.Ks = self.K if o.shear_stiffness is None else o.shear_stiffness
         top = block.blocks[-1] if isinstance(block, Stack) else block

@@ -54,6 +54,7 @@ def _block_and_geometry(block_or_specimen):
                              f"number, got {block_or_specimen!r}") from None
     return specimen(n, "theoretical")
 
+
 def paper_parameters(block_or_specimen, alpha=None, p=None, mu=None, *,
                      inertia: str = "rectangle") -> dict:
     """The DEM parameters of the paper's Section 4.2-4.4 (Eqs 14-22).
@@ -100,6 +101,7 @@ def paper_parameters(block_or_specimen, alpha=None, p=None, mu=None, *,
             "width_eq": 2.0 * h * math.tan(alpha), "settlement": M * G / (2.0 * K),
             "alpha": alpha, "p": p, "mu": mu, "M": M, "R": R, "h": h}
 
+
 def table3(variant: str = "eq17") -> pd.DataFrame:
     """Table III recomputed from Table I/II, side by side with the printed T and F columns.
 
@@ -108,7 +110,7 @@ def table3(variant: str = "eq17") -> pd.DataFrame:
     "eq17"``) or Eq 16 with Table I's ``I_O`` (``"eq16"``); ``K_Mp2`` is Eq 14 alone. The
     damping ``zeta`` is Eq 22 with ``b`` of Eq 20 (the paper fitted the printed values).
     """
-    import pandas as pd
+    import pandas as pd  # lazy: 0.45 s at import, needed only for these tables
 
     data = paper_data()["specimens"]
     rows = []
@@ -136,6 +138,7 @@ def table3(variant: str = "eq17") -> pd.DataFrame:
             row["settlement_if_N_per_m"] = pp["settlement"]
             rows.append(row)
     return pd.DataFrame(rows)
+
 
 def refit_eq20() -> dict:
     """Least-squares refit of Eq 20 on the printed Table III F column (the four points the
@@ -185,11 +188,12 @@ def settlement(M: float, K: float, reading: str = "point", area: float | None = 
         return M * G / (K * area)
     raise ParameterError(f"reading must be 'point', 'joint' or 'area', got {reading!r}")
 
+
 def settlement_table() -> pd.DataFrame:
     """The printed Table III K (column T) of each specimen under every unit reading, with
     the static settlement it implies (``M g / (n K)``, n = 2) and the settlement relative
     to the block's height. The base area is width x thickness (Table I)."""
-    import pandas as pd
+    import pandas as pd  # lazy: 0.45 s at import, needed only for these tables
 
     data = paper_data()["specimens"]
     rows = []

@@ -27,6 +27,7 @@ def contacts_at(model: Assembly, pos: np.ndarray, tol: float) -> np.ndarray:
                model.nv, model.rad, model.rr, tol, out)
     return out[:c]
 
+
 def stiffness_matrix(model: Assembly, pos, K: float, Ks: float, contacts=None):
     """Stiffness matrix (3N x 3N) of the blocks on their closed contacts at ``pos``, and
     the constraint rows (normal, tangential) of each contact."""
@@ -50,6 +51,7 @@ def stiffness_matrix(model: Assembly, pos, K: float, Ks: float, contacts=None):
         rows.append((gn, gt))
     return Kmat, rows
 
+
 def omega_max(model: Assembly, K: float, Ks: float) -> float:
     """Highest natural frequency (rad/s) of the blocks resting on closed contacts."""
     Kmat, _ = stiffness_matrix(model, model.nominal, K, Ks)
@@ -58,6 +60,7 @@ def omega_max(model: Assembly, K: float, Ks: float) -> float:
     lam = np.linalg.eigvalsh(Kmat * s[:, None] * s[None, :])
     return float(math.sqrt(max(lam.max(), 0.0)))
 
+
 def stable_dt(model: Assembly, K: float, Ks: float, b: float, safety: float = SAFETY) -> float:
     """Time step (s): ``safety`` x the stability limit of central differences with the
     lagged stiffness-proportional damping ``b``, and at most ``ACCURACY / omega_max``
@@ -65,6 +68,7 @@ def stable_dt(model: Assembly, K: float, Ks: float, b: float, safety: float = SA
     w = omega_max(model, K, Ks)
     xi = 0.5 * b * w
     return min(safety * 2.0 * (math.sqrt(1.0 + xi * xi) - xi), ACCURACY) / w
+
 
 def static_state(model: Assembly, K: float, Ks: float):
     """Static equilibrium under gravity on the contacts closed at the nominal positions:
@@ -90,6 +94,7 @@ def static_state(model: Assembly, K: float, Ks: float):
         fs[i, k, j] = -Ks * float(gt @ u)
         sedge[i, k, j] = int(e)
     return pos, fs, sedge
+
 
 def initial_state(model: Assembly, K: float, Ks: float, theta0: float, omega0: float,
                   settled: bool):

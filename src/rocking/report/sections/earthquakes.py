@@ -10,10 +10,10 @@
 
 Every model registered in :data:`rocking.models.MODELS` is run on single records; the
 batches (set statistics, Table V) run every model except those of
-:data:`FULL_ONLY_BATCH` (the DEM), which join them only in the full report
-(``reproduce(..., full=True)``, ``rocking reproduce --full``). What is run depends on
-``quick``, ``full`` and these fixed lists only, never on measured time; a model that
-fails is skipped with a note. Our records are not the paper's (its shaking-table
+:data:`FULL_ONLY_BATCH` (the registered models marked ``slow``: the DEM), which join them
+only in the full report (``reproduce(..., full=True)``, ``rocking reproduce --full``).
+What is run depends on ``quick``, ``full`` and the registry only, never on measured
+time; a model that fails is skipped with a note. Our records are not the paper's (its shaking-table
 records are not published, and its record numbers 20 and 18 refer to its own generation),
 so only statistics can be compared; the text says so with the numbers.
 """
@@ -26,7 +26,7 @@ import numpy as np
 import pandas as pd
 
 from ...blocks import paper_data, specimen
-from ...models import simulate, simulate_many
+from ...models import MODELS, simulate, simulate_many
 from ...motions import check_compatibility, seed_earthquakes
 from ...motions.ec8 import paper_target
 from ...motions.spectra import plot_spectra
@@ -38,7 +38,7 @@ from ..core import model_style, report_models, section
 DURATION = 25.0  # s: the 20 s record and 5 s of free rocking after it
 ROCK_TOL_DEG = 0.05  # deg: a smaller max |theta| counts as "does not rock" (contact
 # springs of the DEM tilt a block at rest by tiny angles)
-FULL_ONLY_BATCH = ("dem",)
+FULL_ONLY_BATCH = tuple(name for name, cls in MODELS.items() if cls.slow)
 """Models run in the batches (hundreds of records) only with ``full=True``: the DEM costs
 about 400 s over the Table V batches, against seconds for the classical models."""
 

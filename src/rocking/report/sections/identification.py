@@ -104,7 +104,7 @@ def stiffness_study(quick: bool) -> pd.DataFrame | None:
         return None
     block = specimen(2, "geometric")
     try:  # the DEM's own default stiffness (API of rocking.models.dem)
-        k0 = D.default_stiffness(D.build_model(block))
+        k0 = D.default_stiffness(D.build_assembly(block))
     except (AttributeError, TypeError):
         return None
     rows = []
