@@ -51,12 +51,14 @@ def report(tmp_path_factory):
     return out, index, None
 
 
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
 def test_index_written(report):
     out, index, _ = report
     assert index == out / "index.html"
     assert index.is_file()
 
 
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
 def test_page_references_only_existing_local_files(report):
     out, index, _ = report
     text = index.read_text(encoding="utf-8")
@@ -73,6 +75,7 @@ def test_page_references_only_existing_local_files(report):
     assert "<script" not in text.lower()
 
 
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
 def test_page_header_and_sections(report):
     _, index, _ = report
     text = index.read_text(encoding="utf-8")
@@ -89,6 +92,7 @@ def test_page_header_and_sections(report):
     assert 'class="error"' not in text
 
 
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
 def test_every_figure_is_a_png(report):
     out, _, _ = report
     pngs = sorted(out.glob("*.png"))
@@ -98,6 +102,7 @@ def test_every_figure_is_a_png(report):
         assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
 def test_table2_csv(report):
     out, _, _ = report
     df = pd.read_csv(out / "table2_parameters.csv")
@@ -119,6 +124,7 @@ def test_table2_csv(report):
             assert row[f"{k}_diff_pct"] == pytest.approx((ours - paper) / paper * 100, abs=1e-3)
 
 
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
 def test_table2_known_values(report):
     """Independent arithmetic: specimen 1 alpha = atan(0.125/0.5); specimen 4 from Table I."""
     out, _, _ = report
@@ -137,6 +143,7 @@ def test_table2_known_values(report):
                                                          rel=1e-5)
 
 
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
 def test_table4_csv(report):
     out, _, _ = report
     grid = pd.read_csv(out / "table4_grid.csv", keep_default_na=False)
@@ -165,6 +172,7 @@ def test_table4_csv(report):
     assert len(cells) == n_tested
 
 
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
 def test_figure7_csv(report):
     out, _, _ = report
     df = pd.read_csv(out / "figure7_summary.csv").set_index("quantity")
@@ -223,6 +231,7 @@ def _sections(text: str) -> dict[str, tuple[str, list[str]]]:
     return out
 
 
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
 def test_models_come_from_the_registry(report):
     out, _, _ = report
     names = list(MODELS)
@@ -286,6 +295,7 @@ def test_sections_live_in_sections_package():
         assert mod.startswith("rocking.report.sections."), (sec.id, mod)
 
 
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
 def test_same_titles_and_numbers_twice(report, tmp_path):
     """A second build (quick mode) gives the same section titles, tables and CSV files."""
     out, index, _ = report
