@@ -249,6 +249,8 @@ def test_options_are_validated_at_the_edge():
         rocking.simulate(blk, m, model="dem", damping="lots")
     with pytest.raises(ParameterError, match="model must be one of housner, ccrr, dem"):
         rocking.simulate(blk, m, model="udec")
+    with pytest.raises(ParameterError, match="return_forces=True is for single runs"):
+        rocking.simulate_many(blk, [m], model="dem", return_forces=True)
     with pytest.raises(ParameterError, match="stacks need model='dem'"):
         rocking.simulate(rocking.Stack([blk, blk]), m)
     for cls in MODELS.values():  # every option is documented

@@ -235,6 +235,9 @@ class Model:
         entry is merged into ``Response.info``)."""
         return {}
 
+    def check_batch(self) -> None:
+        """Refuse options that a batch cannot honour (raise ParameterError); default: none."""
+
     def info(self) -> dict:
         """Options and derived settings recorded in ``Response.info``."""
         return {k: v for k, v in self.options.to_dict().items()

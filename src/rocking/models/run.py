@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 
+import numba
 import numpy as np
 
 from .._validate import as_float, in_range, positive
@@ -122,7 +123,7 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     else:
         (kind, prm, samples), h_scan = motion.spec(), motion.scan_step
     n_out = _n_out(duration, dt_out)
-    _guard(2 * n_out, m.extra_bytes(n_out), dt_out, duration)
+    _guard(2 * n_out + int(cap), m.extra_bytes(n_out), dt_out, duration)
     out_th = np.empty(n_out)
     out_om = np.empty(n_out)
     imp = np.empty(max(1, int(cap)))
@@ -202,13 +203,16 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     defaults to each motion's own duration. Other arguments as in :func:`simulate`.
     """
     m = _make(model, block, linear, options)
+    m.check_batch()
     if errors not in ("raise", "nan"):
         raise ParameterError(f"errors must be 'raise' or 'nan', got {errors!r}")
     kinds, prms, samples, nsamp, t_ends, h_scans = pack_motions(motions, duration)
     dt_out = positive("dt_out", dt_out, "s")
     n = kinds.size
     n_out = _n_out(float(t_ends.max()), dt_out) if return_histories else 0
-    _guard(2 * n * n_out, 0, dt_out, float(t_ends.max()))
+    # the rows in flight (one per thread) may hold the model's extra buffers too
+    _guard(2 * n * n_out, numba.get_num_threads() * m.extra_bytes(n_out), dt_out,
+           float(t_ends.max()))
     out_th = np.empty((n, n_out))
     out_om = np.empty((n, n_out))
     res_f = np.empty((n, 3))

@@ -112,6 +112,12 @@ class DEM(Model):
                                 math.tan(math.radians(o.friction_angle)), o.cohesion,
                                 self.dt, every, self.th_tol, theta0, omega0, o.settled)
 
+    def check_batch(self) -> None:
+        for name in ("return_forces", "return_energy"):
+            if getattr(self.options, name):
+                raise ParameterError(f"{name}=True is for single runs (rocking.simulate); "
+                                     "simulate_many keeps theta and omega only")
+
     def extra_buffers(self, n_out: int) -> tuple:
         md = self.assembly
         n, vmax = md.n, md.lv.shape[1]
