@@ -214,9 +214,10 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
         if resting:
             t, k, d, t_up = E.rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out,
                                            k, out_th, out_om, t_up)
-            if d == 0.0:
+            resting = d == 0.0
+            if resting:  # still at rest at t_end
                 break
-            resting, x, v = False, chi_start, 0.0
+            x, v = chi_start, 0.0  # uplift from the small modulus, towards sign(a)
             s = 0.0 if d > 0.0 else math.pi
             h = dt_fixed if fixed else min(h_max, 1e-3 / p)
             continue
