@@ -58,3 +58,17 @@ def in_range(
         rng = shown or f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
         raise ParameterError(f"{name} must be in {rng}, got {value!r}")
     return x
+
+
+def sequence_of(name: str, value, cls, what: str) -> tuple:
+    """``value`` as a non-empty tuple of ``cls`` instances (``what`` names them)."""
+    try:
+        items = tuple(value)
+    except TypeError:
+        raise ParameterError(f"{name} must be a sequence of {what} objects") from None
+    if not items:
+        raise ParameterError(f"{name} must be a non-empty sequence of {what} objects")
+    for i, x in enumerate(items):
+        if not isinstance(x, cls):
+            raise ParameterError(f"{name}[{i}] must be a {what}, got {type(x).__name__}")
+    return items

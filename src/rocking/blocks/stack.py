@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .._validate import as_float
+from .._validate import as_float, sequence_of
 from ..errors import ParameterError
 from .block import Block
 
@@ -31,16 +31,7 @@ class Stack:
     name: str
 
     def __init__(self, blocks, offsets=None, name: str = ""):
-        try:
-            blocks = tuple(blocks)
-        except TypeError:
-            raise ParameterError("Stack needs a sequence of rocking.Block objects") from None
-        if not blocks:
-            raise ParameterError("Stack needs at least one block")
-        for i, b in enumerate(blocks):
-            if not isinstance(b, Block):
-                raise ParameterError(f"Stack blocks[{i}] must be a rocking.Block, "
-                                     f"got {type(b).__name__}")
+        blocks = sequence_of("Stack blocks", blocks, Block, "rocking.Block")
         if offsets is None:
             offsets = (0.0,) * len(blocks)
         else:

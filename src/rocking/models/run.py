@@ -13,7 +13,7 @@ import math
 import numba
 import numpy as np
 
-from .._validate import as_float, in_range, positive
+from .._validate import as_float, in_range, positive, sequence_of
 from ..errors import OutputTooLargeError, ParameterError, SimulationError
 from ..motions import Motion
 from ..motions._kernel import NPRM
@@ -158,16 +158,7 @@ def pack_motions(motions, duration=None):
     """
     if isinstance(motions, Motion):
         motions = [motions]
-    try:
-        motions = list(motions)
-    except TypeError:
-        raise ParameterError("motions must be a sequence of Motion objects") from None
-    if not motions:
-        raise ParameterError("motions must be a non-empty sequence of Motion objects")
-    for i, mo in enumerate(motions):
-        if not isinstance(mo, Motion):
-            raise ParameterError(f"motions[{i}] must be a rocking.motions.Motion, "
-                                 f"got {type(mo).__name__}")
+    motions = sequence_of("motions", motions, Motion, "rocking.motions.Motion")
     specs = [mo.spec() for mo in motions]
     n = len(motions)
     nsamp = np.array([s[2].size for s in specs], dtype=np.int64)
