@@ -40,14 +40,21 @@ A subclass of :class:`Model` provides
       ``status`` (0: success; otherwise a code that :meth:`Model.failure` explains).
       Times with no event are NaN, the one convention of the package.
 ``batch_kernel`` : a compiled parallel function over many motions
-    ``batch_kernel(mp, extra0, rows)``: always the same two lines, a ``prange`` loop that
-    calls the model's kernel on :func:`row_args` and stores the result with
+    ``batch_kernel(mp, extra0, rows, blocks)``: always the same two lines, a ``prange`` loop
+    that calls the model's kernel on :func:`row_args` and stores the result with
     :func:`store_row`::
 
         @njit(cache=True, parallel=True)
-        def batch_kernel(mp, extra0, rows):
+        def batch_kernel(mp, extra0, rows, blocks):
             for i in prange(rows[0].shape[0]):
-                store_row(i, kernel(mp, *row_args(i, rows, extra0)), rows)
+                store_row(i, kernel(with_block(mp, blocks[i]), *row_args(i, rows, extra0)),
+                          rows)
+
+    ``blocks[i]`` holds the block parameters of row ``i`` (:meth:`Model.block_row`) and
+    ``with_block(mp, b)`` (compiled) returns ``mp`` with them: one batch may then hold a
+    different block per row (Monte Carlo, campaigns). A model whose parameters cannot
+    change per row uses :func:`same_block` and an empty :meth:`Model.block_row`; the
+    driver then runs one batch per distinct block.
 
     Each model file keeps its own copy (rather than passing the kernel to a shared
     function) so that numba can cache it and invalidates that cache with the model's file.
@@ -184,6 +191,8 @@ class Model:
     kernel: ClassVar[Any] = None
     batch_kernel: ClassVar[Any] = None
     accepts_stack: ClassVar[bool] = False
+    batch_initial_state: ClassVar[bool] = True
+    """Batches may start each row from its own ``theta0``, ``omega0``."""
     slow: ClassVar[bool] = False
     """A simulation costs seconds, not milliseconds: reports run the model's large batches
     only on request (``rocking reproduce --full``)."""
@@ -217,6 +226,12 @@ class Model:
         raise NotImplementedError
 
     # ---- optional hooks
+    @classmethod
+    def block_row(cls, block) -> tuple:
+        """The block parameters a batch row may change (``with_block`` puts them into ``mp``);
+        empty: one block per batch."""
+        return ()
+
     @property
     def result_name(self) -> str:
         """The ``model`` field of the results."""
@@ -251,13 +266,20 @@ class Model:
 # ====================================================================== shared batch rows
 @njit(cache=True)
 def row_args(i, rows, extra0):
-    """The kernel arguments (after ``mp``) of row ``i`` of a batch, from rest.
+    """The kernel arguments (after ``mp``) of row ``i`` of a batch.
 
     ``rows = (kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, res_f,
-    res_i)`` as built by :func:`rocking.models.run.simulate_many`."""
-    kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, _f, _i = rows
-    return (kinds[i], prms[i], samples[i, : nsamp[i]], t_ends[i], 0.0, 0.0, h_scans[i],
+    res_i, theta0, omega0)`` as built by :func:`rocking.models.run.simulate_many`."""
+    kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om = rows[:9]
+    th0, om0 = rows[11], rows[12]
+    return (kinds[i], prms[i], samples[i, : nsamp[i]], t_ends[i], th0[i], om0[i], h_scans[i],
             dt_out, out_th[i], out_om[i], np.empty(0), extra0)
+
+
+@njit(cache=True)
+def same_block(mp, b):
+    """``with_block`` of a model whose batches take one block: ``mp`` unchanged."""
+    return mp
 
 
 @njit(cache=True)

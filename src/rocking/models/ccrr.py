@@ -302,7 +302,10 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
 def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_om, imp,
            extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
-    alpha, p, mu, l, rtol, dt_fixed, rest_chi, chi_start = mp
+    alpha, p, mu, l, rtol, dt_fixed, rest_tol = mp
+    chi_c = (l * l * alpha / math.sin(alpha)) ** (1.0 / 3.0)  # orbit that l sustains
+    rest_chi = max(rest_tol, 2.0 * chi_c)
+    chi_start = math.sqrt(l)
     h_max = min(0.05 / p, 8.0 * h_scan)
     k, n_imp, peak, over, t_over, t_up, n_steps, ok = integrate(
         alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fixed, rest_chi,
@@ -310,11 +313,17 @@ def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_
     return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1
 
 
+@njit(cache=True)
+def with_block(mp, b):
+    """``mp`` with the block parameters ``b = (alpha, p, mu)`` of a batch row."""
+    return (b[0], b[1], b[2], mp[3], mp[4], mp[5], mp[6])
+
+
 @njit(cache=True, parallel=True)
-def batch_kernel(mp, extra0, rows):
+def batch_kernel(mp, extra0, rows, blocks):
     """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
     for i in prange(rows[0].shape[0]):
-        store_row(i, kernel(mp, *row_args(i, rows, extra0)), rows)
+        store_row(i, kernel(with_block(mp, blocks[i]), *row_args(i, rows, extra0)), rows)
 
 
 # ------------------------------------------------------------------------------- the model
@@ -345,11 +354,13 @@ class CCRR(Model):
     kernel = kernel
     batch_kernel = batch_kernel
 
+    @classmethod
+    def block_row(cls, block) -> tuple:
+        return (block.alpha, block.p, block.mu)
+
     def kernel_params(self, dt_out, theta0, omega0) -> tuple:
         b, o = self.block, self.options
-        chi_c = (o.l * o.l * b.alpha / math.sin(b.alpha)) ** (1.0 / 3.0)
-        return (b.alpha, b.p, b.mu, o.l, o.rtol, o.dt or 0.0, max(o.rest_tol, 2.0 * chi_c),
-                math.sqrt(o.l))
+        return (b.alpha, b.p, b.mu, o.l, o.rtol, o.dt or 0.0, o.rest_tol)
 
     def failure(self, status, t) -> str:
         at = f" at t = {t:.4g} s" if t == t else ""

@@ -276,11 +276,17 @@ def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_
     return k, n_imp, peak, over, t_over, t_up, n_steps, 0
 
 
+@njit(cache=True)
+def with_block(mp, b):
+    """``mp`` with the block parameters ``b = (alpha, p, mu)`` of a batch row."""
+    return (b[0], b[1], b[2], mp[3], mp[4], mp[5])
+
+
 @njit(cache=True, parallel=True)
-def batch_kernel(mp, extra0, rows):
+def batch_kernel(mp, extra0, rows, blocks):
     """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
     for i in prange(rows[0].shape[0]):
-        store_row(i, kernel(mp, *row_args(i, rows, extra0)), rows)
+        store_row(i, kernel(with_block(mp, blocks[i]), *row_args(i, rows, extra0)), rows)
 
 
 # ------------------------------------------------------------------------------- the model
@@ -314,6 +320,10 @@ class Housner(Model):
     Options = HousnerOptions
     kernel = kernel
     batch_kernel = batch_kernel
+
+    @classmethod
+    def block_row(cls, block) -> tuple:
+        return (block.alpha, block.p, block.mu)
 
     @property
     def result_name(self) -> str:

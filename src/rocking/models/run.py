@@ -14,6 +14,7 @@ import numba
 import numpy as np
 
 from .._validate import as_float, in_range, positive, sequence_of
+from ..blocks import Block, Stack
 from ..errors import OutputTooLargeError, ParameterError, SimulationError
 from ..motions import Motion
 from ..motions._kernel import NPRM
@@ -175,13 +176,44 @@ def pack_motions(motions, duration=None):
     return kinds, prms, samples, nsamp, t_ends, h_scans
 
 
-def simulate_many(block, motions, model="housner", duration: float | None = None,
-                  linear: bool = False, *, return_histories: bool = False,
-                  dt_out: float = DEFAULT_DT_OUT, errors: str = "raise", **options):
-    """Simulate one block from rest under many motions in one compiled, parallel call.
+def _per_row(name: str, value, n: int, lo: float = -math.inf, hi: float = math.inf,
+             shown: str = "") -> np.ndarray:
+    """A scalar or one value per motion, as a float array of length ``n``."""
+    arr = np.atleast_1d(np.asarray(value, dtype=object))
+    if arr.ndim != 1 or arr.size not in (1, n):
+        raise ParameterError(f"{name} must be a number or one value per motion ({n}), "
+                             f"got {arr.size} values")
+    out = np.array([in_range(name, v, lo, hi, shown=shown) if (lo, hi) != (-math.inf, math.inf)
+                    else as_float(name, v) for v in arr], dtype=np.float64)
+    return np.broadcast_to(out, (n,)).copy()
 
-    Row ``i`` of the result is bit-identical to ``simulate(block, motions[i], ...)``: each
-    run depends on its own motion only, never on the rest of the batch.
+
+def _blocks(cls: type[Model], block, n: int) -> list:
+    """One block per row (``block`` is a block or one block per motion), each checked."""
+    if isinstance(block, Block | Stack) or not isinstance(block, list | tuple | np.ndarray):
+        return [block] * n
+    blocks = list(block)
+    if len(blocks) != n:
+        raise ParameterError(f"block must be one block or one block per motion ({n}), "
+                             f"got {len(blocks)}")
+    for b in blocks:
+        cls.check_block(b)
+    return blocks
+
+
+def simulate_many(block, motions, model="housner", duration: float | None = None,
+                  linear: bool = False, *, theta0=0.0, omega0=0.0,
+                  return_histories: bool = False, dt_out: float = DEFAULT_DT_OUT,
+                  errors: str = "raise", **options):
+    """Simulate blocks under many motions in one compiled, parallel call.
+
+    ``block`` is one block for every motion, or one block per motion (Monte Carlo over the
+    block's parameters; the classical and CCRR models still run a single compiled call, the
+    DEM one call per distinct block). ``theta0``, ``omega0`` (rad, rad/s): the initial
+    state, one value or one per motion (default: at rest). Row ``i`` of the result is
+    bit-identical to ``simulate(block_i, motions[i], theta0=theta0_i, ...)``: each run
+    depends on its own inputs only, never on the rest of the batch, so chunking a study
+    never changes its numbers.
 
     Returns a :class:`~rocking.results.BatchResponse` with numpy arrays ``max_abs_theta``,
     ``overturned``, ``overturn_time``, ``uplift_time`` and ``n_impacts`` (one entry per
@@ -190,16 +222,23 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     :class:`~rocking.errors.SimulationError` if a run fails numerically;
     ``errors="nan"`` marks it with a non-zero ``status`` and NaN ``max_abs_theta`` and
     times instead (its ``overturned`` and ``n_impacts`` are those reached before the
-    failure). ``duration``
-    defaults to each motion's own duration. Other arguments as in :func:`simulate`.
+    failure). ``duration`` defaults to each motion's own duration. Other arguments as in
+    :func:`simulate`.
     """
-    m = _make(model, block, linear, options)
-    m.check_batch()
     if errors not in ("raise", "nan"):
         raise ParameterError(f"errors must be 'raise' or 'nan', got {errors!r}")
     kinds, prms, samples, nsamp, t_ends, h_scans = pack_motions(motions, duration)
-    dt_out = positive("dt_out", dt_out, "s")
     n = kinds.size
+    cls = get_model(model)
+    blocks = _blocks(cls, block, n)
+    m = _make(model, blocks[0], linear, options)
+    m.check_batch()
+    dt_out = positive("dt_out", dt_out, "s")
+    th0 = _per_row("theta0", theta0, n, -HALF_PI, HALF_PI, "(-pi/2, pi/2) rad")
+    om0 = _per_row("omega0", omega0, n)
+    if (th0.any() or om0.any()) and not cls.batch_initial_state:
+        raise ParameterError(f"theta0 and omega0 must be 0 in batches of model {cls.name!r} "
+                             "(use rocking.simulate for other initial states)")
     n_out = _n_out(float(t_ends.max()), dt_out) if return_histories else 0
     # the rows in flight (one per thread) may hold the model's extra buffers too
     _guard(2 * n * n_out, numba.get_num_threads() * m.extra_bytes(n_out), dt_out,
@@ -208,8 +247,21 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     out_om = np.empty((n, n_out))
     res_f = np.empty((n, 3))
     res_i = np.zeros((n, 4), dtype=np.int64)
-    rows = (kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, res_f, res_i)
-    type(m).batch_kernel(m.kernel_params(dt_out, 0.0, 0.0), m.extra_buffers(0), rows)
+    rows = (kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, res_f, res_i,
+            th0, om0)
+    nb = len(cls.block_row(blocks[0]))
+    if nb or len({id(b) for b in blocks}) == 1:
+        bp = np.array([cls.block_row(b) for b in blocks], dtype=np.float64).reshape(n, nb)
+        type(m).batch_kernel(m.kernel_params(dt_out, 0.0, 0.0), m.extra_buffers(0), rows, bp)
+    else:  # one assembly per distinct block (DEM): one batch each, results in place
+        for b in dict.fromkeys(blocks):
+            idx = np.array([i for i, x in enumerate(blocks) if x is b or x == b])
+            sub = tuple(a[idx] if isinstance(a, np.ndarray) else a for a in rows)
+            mb = m if b is blocks[0] else type(m)(b, m.options)
+            type(mb).batch_kernel(mb.kernel_params(dt_out, 0.0, 0.0), mb.extra_buffers(0), sub,
+                                  np.empty((idx.size, 0)))
+            for full, part in zip(rows[7:11], sub[7:11], strict=True):
+                full[idx] = part
     status = res_i[:, 3].copy()
     bad = np.flatnonzero(status)
     if bad.size:

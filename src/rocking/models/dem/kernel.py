@@ -10,7 +10,7 @@ from numba import njit, prange
 
 from ...motions._kernel import ground_acc
 from ...units import G
-from ..base import row_args, store_row
+from ..base import row_args, same_block, store_row
 
 HALF_PI = 0.5 * math.pi
 
@@ -373,7 +373,8 @@ def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_
 
 
 @njit(cache=True, parallel=True)
-def batch_kernel(mp, extra0, rows):
-    """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
+def batch_kernel(mp, extra0, rows, blocks):
+    """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`
+    (one assembly per batch: ``same_block``)."""
     for i in prange(rows[0].shape[0]):
-        store_row(i, kernel(mp, *row_args(i, rows, extra0)), rows)
+        store_row(i, kernel(same_block(mp, blocks[i]), *row_args(i, rows, extra0)), rows)

@@ -80,6 +80,7 @@ class DEM(Model):
     batch_kernel = batch_kernel
     accepts_stack = True
     slow = True
+    batch_initial_state = False  # the initial state of the contacts is built per batch
     append_overturn = False
     response_class = DEMResponse
 
