@@ -1,0 +1,619 @@
+"""Lognormal fragility curves: stripes (MSA) and incremental dynamic analysis (IDA).
+
+A fragility curve is ``P(failure | IM = im) = Phi(ln(im / median) / beta)``.
+
+* :func:`fragility` fits it by maximum likelihood to binary outcomes. Repeated IM values
+  are stripes, so one binomial likelihood covers multiple-stripe analysis (Baker 2015,
+  Eq. 11). The fit is a statsmodels binomial GLM with a probit link on ``ln im``:
+  ``P = Phi(b0 + b1 ln im)``, hence ``median = exp(-b0 / b1)`` and ``beta = 1 / b1``;
+  standard errors by the delta method from the GLM covariance.
+* :func:`fragility_ida` fits the IM capacities of an IDA, right-censored for the records
+  that never failed (scipy's ``CensoredData`` and ``lognorm.fit(..., floc=0)``).
+* :func:`annual_frequency` integrates a fit over a hazard curve (Cornell et al. 2002).
+
+IMs are in SI units (PGA in m/s^2) or dimensionless; :meth:`FragilityFit.to_pelicun`
+converts the median at the edge, to the units of a pelicun fragility table.
+
+References: J. W. Baker (2015), Efficient analytical fragility function fitting using
+dynamic structural analysis, Earthquake Spectra 31(1). C. A. Cornell et al. (2002),
+Probabilistic basis for the 2000 SAC/FEMA steel moment frame guidelines, J. Struct. Eng.
+128(4). pelicun (NHERI SimCenter), damage model CSV format.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .._validate import in_range
+from ..errors import ParameterError, SimulationError
+from ..results import jsonable
+from ..units import G
+
+#: How the bootstrap band is drawn: ``"normal"`` draws the curve's coefficients from
+#: the asymptotic normal distribution of the MLE (vectorised, cheap); ``"resample"``
+#: resamples the records (within each stripe when every IM value is a stripe) and
+#: refits each replicate.
+BOOTSTRAP_METHODS = ("normal", "resample")
+
+#: SI value of one unit, for the units of pelicun's ``default_units.json`` that an IM
+#: may have (``Theta_0`` is written in the ``Demand-Unit``).
+PELICUN_UNITS = {
+    "mps2": ("acceleration", 1.0), "g": ("acceleration", G),
+    "inps2": ("acceleration", 0.0254), "inchps2": ("acceleration", 0.0254),
+    "ftps2": ("acceleration", 0.3048),
+    "mps": ("velocity", 1.0), "cmps": ("velocity", 0.01), "inps": ("velocity", 0.0254),
+    "inchps": ("velocity", 0.0254), "ftps": ("velocity", 0.3048),
+    "m": ("length", 1.0), "mm": ("length", 0.001), "cm": ("length", 0.01),
+    "in": ("length", 0.0254), "inch": ("length", 0.0254), "ft": ("length", 0.3048),
+    "unitless": ("unitless", 1.0), "ea": ("unitless", 1.0), "rad": ("unitless", 1.0),
+}
+_SI_UNIT = {"acceleration": "mps2", "velocity": "mps", "length": "m", "unitless": "unitless"}
+
+#: Columns of a pelicun fragility (damage model) table, before the limit-state columns.
+PELICUN_COLUMNS = ("Incomplete", "Demand-Type", "Demand-Unit", "Demand-Offset",
+                   "Demand-Directional")
+
+
+# --------------------------------------------------------------------------- validation
+
+def _as_im(name: str, value) -> np.ndarray:
+    """A non-empty 1-D array of finite IM values > 0."""
+    try:
+        x = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} must be an array of numbers > 0, got {value!r}") from None
+    x = np.atleast_1d(x)
+    if x.ndim != 1:
+        raise ParameterError(f"{name} must be one-dimensional, got shape {x.shape}")
+    if x.size == 0:
+        raise ParameterError(f"{name} must not be empty")
+    bad = np.flatnonzero(~np.isfinite(x))
+    if bad.size:
+        raise ParameterError(f"{name} must be finite, got {name}[{bad[0]}] = {x[bad[0]]}")
+    bad = np.flatnonzero(x <= 0.0)
+    if bad.size:
+        raise ParameterError(f"{name} must be > 0 (an intensity measure), got "
+                             f"{name}[{bad[0]}] = {x[bad[0]]:g}")
+    return x
+
+
+def _as_bool(name: str, value) -> np.ndarray:
+    """A 1-D boolean array from booleans or 0/1 numbers (NaN and strings refused)."""
+    arr = np.atleast_1d(np.asarray(value))
+    if arr.ndim != 1:
+        raise ParameterError(f"{name} must be one-dimensional, got shape {arr.shape}")
+    if arr.dtype == bool:
+        return arr
+    if arr.dtype.kind in "iuf":
+        ok = (arr == 0) | (arr == 1)
+        if ok.all():
+            return arr.astype(bool)
+        i = int(np.flatnonzero(~ok)[0])
+        raise ParameterError(f"{name} must be boolean (True/False or 0/1), got "
+                             f"{name}[{i}] = {arr[i]!r}")
+    for i, v in enumerate(arr.tolist()):
+        if not (isinstance(v, bool | np.bool_) or (isinstance(v, int | float)
+                                                  and v in (0, 1))):
+            raise ParameterError(f"{name} must be boolean (True/False or 0/1), got "
+                                 f"{name}[{i}] = {v!r}")
+    return arr.astype(bool)
+
+
+def _is_ragged(value) -> bool:
+    if isinstance(value, np.ndarray):
+        return value.ndim == 2 or value.dtype == object
+    if isinstance(value, list | tuple):
+        return any(isinstance(v, list | tuple | np.ndarray) for v in value)
+    return False
+
+
+def records(im, failed, *, names=("im", "failed")) -> tuple[np.ndarray, np.ndarray]:
+    """``(im, failed)`` per record, validated.
+
+    ``failed`` is either one boolean per record (``im`` the same length) or one sequence
+    of booleans per stripe (``im`` the stripe levels); an empty stripe is refused.
+    """
+    n_im, n_f = names
+    x = _as_im(n_im, im)
+    if _is_ragged(failed):
+        stripes = list(failed)
+        if len(stripes) != x.size:
+            raise ParameterError(f"{n_f} has {len(stripes)} stripes but {n_im} has {x.size} "
+                                 "levels: give one sequence of outcomes per IM level")
+        ims, fs = [], []
+        for j, s in enumerate(stripes):
+            f = _as_bool(f"{n_f}[{j}]", s)
+            if f.size == 0:
+                raise ParameterError(f"{n_f}[{j}] (the stripe at {n_im} = {x[j]:g}) is "
+                                     "empty: every stripe needs at least one record")
+            ims.append(np.full(f.size, x[j]))
+            fs.append(f)
+        return np.concatenate(ims), np.concatenate(fs)
+    f = _as_bool(n_f, failed)
+    if f.size != x.size:
+        raise ParameterError(f"{n_im} and {n_f} must have the same length, got {x.size} "
+                             f"and {f.size}")
+    return x, f
+
+
+def _check_separation(x: np.ndarray, y: np.ndarray, what: str = "failed") -> None:
+    """Refuse outcomes for which the probit MLE does not exist."""
+    n1 = int(y.sum())
+    if n1 == 0:
+        raise ParameterError(f"{what}: no record failed, so no fragility curve can be "
+                             "fitted; add stronger IM levels")
+    if n1 == y.size:
+        raise ParameterError(f"{what}: every record failed, so no fragility curve can be "
+                             "fitted; add weaker IM levels")
+    lo_fail, hi_safe = x[y].min(), x[~y].max()
+    if lo_fail >= hi_safe:
+        raise ParameterError(
+            f"{what} is perfectly separated by the IM (every record failed at im >= "
+            f"{lo_fail:g} and none above im = {hi_safe:g}): the likelihood has no maximum "
+            "(beta -> 0); add records or levels between them")
+    if x[y].max() <= x[~y].min():
+        raise ParameterError(f"{what}: failures happen only at lower IM than the survivals; "
+                             "a fragility curve must increase with the IM")
+
+
+def _rng(seed):
+    if seed is not None and not isinstance(seed, int | np.integer | np.random.SeedSequence):
+        raise ParameterError(f"seed must be an int, a numpy SeedSequence or None, got "
+                             f"{seed!r}")
+    return np.random.default_rng(seed)
+
+
+def _n_boot(n_boot) -> int:
+    if isinstance(n_boot, bool) or not isinstance(n_boot, int | np.integer) or n_boot < 0:
+        raise ParameterError(f"n_boot must be an integer >= 0, got {n_boot!r}")
+    return int(n_boot)
+
+
+def _bootstrap(method) -> str:
+    if method not in BOOTSTRAP_METHODS:
+        raise ParameterError(f"bootstrap must be one of {BOOTSTRAP_METHODS}, got {method!r}")
+    return method
+
+
+# --------------------------------------------------------------------------- the fit
+
+def _delta(coef: np.ndarray, cov: np.ndarray) -> np.ndarray:
+    """Covariance of ``(median, beta)`` from that of ``(b0, b1)`` (delta method)."""
+    b0, b1 = coef
+    median = math.exp(-b0 / b1)
+    jac = np.array([[-median / b1, median * b0 / b1**2],   # d median / d(b0, b1)
+                    [0.0, -1.0 / b1**2]])                    # d beta / d(b0, b1)
+    return jac @ cov @ jac.T
+
+
+@dataclass
+class FragilityFit:
+    """A lognormal fragility curve ``P = Phi(ln(im / median) / beta)`` and its uncertainty.
+
+    ``coef = (b0, b1)`` are the probit coefficients on ``ln im`` (``median = exp(-b0/b1)``,
+    ``beta = 1/b1``) and ``coef_cov`` their covariance; ``cov`` is the covariance of
+    ``(median, beta)`` by the delta method. ``boot_coef`` holds the ``n_boot`` bootstrap
+    coefficient pairs behind :meth:`band`.
+    """
+
+    median: float
+    beta: float
+    median_se: float
+    beta_se: float
+    cov: np.ndarray
+    coef: np.ndarray
+    coef_cov: np.ndarray
+    method: str
+    data: object = None
+    """The data: a DataFrame of stripes (``im``, ``n``, ``n_failed``) for :func:`fragility`,
+    of records (``capacity``, ``censored``) for :func:`fragility_ida`."""
+    boot_coef: np.ndarray = field(default_factory=lambda: np.empty((0, 2)))
+    bootstrap: str = "normal"
+    seed: int | None = None
+    n_boot_failed: int = 0
+    loglike: float = math.nan
+    label: str = "failure"
+
+    @property
+    def n_boot(self) -> int:
+        return int(self.boot_coef.shape[0])
+
+    @property
+    def im_range(self) -> tuple[float, float]:
+        """The smallest and largest IM of the data."""
+        col = "im" if "im" in self.data else "capacity"
+        v = np.asarray(self.data[col], dtype=float)
+        return float(v.min()), float(v.max())
+
+    def probability(self, im):
+        """P(failure | im) (an array like ``im``; scalar in, float out)."""
+        from scipy.stats import norm
+
+        x = _as_im("im", im)
+        p = norm.cdf(np.log(x / self.median) / self.beta)
+        return float(p[0]) if np.ndim(im) == 0 else p
+
+    def band(self, im, level: float = 0.95):
+        """The pointwise bootstrap band at ``im``: a DataFrame with ``im``,
+        ``probability``, ``lower``, ``upper`` (equal-tailed percentiles at ``level``)."""
+        import pandas as pd
+        from scipy.stats import norm
+
+        x = _as_im("im", im)
+        level = in_range("level", level, 0.0, 1.0)
+        if self.n_boot == 0:
+            raise ParameterError("n_boot: this fit has no bootstrap sample (n_boot=0); "
+                                 "refit with n_boot > 0")
+        b = self.boot_coef
+        p = norm.cdf(b[:, :1] + b[:, 1:] * np.log(x)[None, :])
+        q = 100.0 * (1.0 - level) / 2.0
+        lo, hi = np.percentile(p, [q, 100.0 - q], axis=0)
+        return pd.DataFrame({"im": x, "probability": self.probability(x),
+                             "lower": lo, "upper": hi})
+
+    def ci(self, level: float = 0.95) -> dict:
+        """Bootstrap percentile intervals of ``median`` and ``beta`` (draws with
+        ``b1 <= 0`` count as an infinite median and beta)."""
+        level = in_range("level", level, 0.0, 1.0)
+        if self.n_boot == 0:
+            raise ParameterError("n_boot: this fit has no bootstrap sample (n_boot=0)")
+        b0, b1 = self.boot_coef.T
+        with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
+            med = np.where(b1 > 0, np.exp(-b0 / b1), np.inf)
+            beta = np.where(b1 > 0, 1.0 / b1, np.inf)
+        q = 100.0 * (1.0 - level) / 2.0
+        return {"median": tuple(np.percentile(med, [q, 100 - q]).tolist()),
+                "beta": tuple(np.percentile(beta, [q, 100 - q]).tolist()), "level": level}
+
+    def summary(self) -> dict:
+        """JSON-ready summary: the parameters, their standard errors and 95% bootstrap
+        intervals, the data counts."""
+        d = {"label": self.label, "method": self.method, "median": self.median,
+             "beta": self.beta, "median_se": self.median_se, "beta_se": self.beta_se,
+             "cov": self.cov, "loglike": self.loglike, "bootstrap": self.bootstrap,
+             "n_boot": self.n_boot, "n_boot_failed": self.n_boot_failed, "seed": self.seed,
+             "im_range": self.im_range}
+        if "n" in self.data:
+            d.update(n=int(self.data["n"].sum()), n_failed=int(self.data["n_failed"].sum()),
+                     n_stripes=len(self.data))
+        else:
+            d.update(n=len(self.data), n_censored=int(self.data["censored"].sum()))
+        if self.n_boot:
+            ci = self.ci(0.95)
+            d.update(median_ci95=ci["median"], beta_ci95=ci["beta"])
+        return jsonable(d)
+
+    def to_dict(self) -> dict:
+        """Everything, JSON-ready: the summary, the coefficients, the data and the
+        bootstrap sample."""
+        d = self.summary()
+        d["coef"] = jsonable(self.coef)
+        d["coef_cov"] = jsonable(self.coef_cov)
+        d["data"] = jsonable({k: np.asarray(v) for k, v in self.data.items()})
+        d["boot_coef"] = jsonable(self.boot_coef)
+        return d
+
+    def to_pelicun(self, id: str = "rocking.overturning", *,
+                   demand_type: str = "Peak Ground Acceleration", demand_unit: str = "g",
+                   im_unit: str | None = None, directional: bool = True, path=None):
+        """This curve as a one-row pelicun fragility table (a DataFrame indexed by ``ID``).
+
+        Columns: ``Incomplete``, ``Demand-Type``, ``Demand-Unit``, ``Demand-Offset``,
+        ``Demand-Directional``, ``LS1-Family`` (``lognormal``), ``LS1-Theta_0`` (the median,
+        in ``Demand-Unit``) and ``LS1-Theta_1`` (beta, dimensionless). ``im_unit`` is the
+        unit of the fitted IM: by default the SI unit of ``demand_unit``'s kind (m/s^2 for
+        ``g``). ``path`` also writes the CSV.
+        """
+        return pelicun_table([self], id=id, demand_type=demand_type,
+                             demand_unit=demand_unit, im_unit=im_unit,
+                             directional=directional, path=path)
+
+    def plot(self, ax=None, *, level: float = 0.95, band: bool = True, data: bool = True,
+             im=None, label: str | None = None, color=None):
+        """The curve, its bootstrap band and the data (the failed fraction of each stripe,
+        or the Kaplan-Meier estimate of the IDA capacities); returns the Axes."""
+        from ..plot import PALETTE, _style, figure
+
+        if ax is None:
+            _, ax = figure()
+        color = color or PALETTE[0]
+        lo, hi = self.im_range
+        x = (_as_im("im", im) if im is not None else
+             np.geomspace(min(lo, self.median * math.exp(-2.5 * self.beta)),
+                          max(hi, self.median * math.exp(2.5 * self.beta)), 200))
+        ax.plot(x, self.probability(x), color=color,
+                label=label or f"{self.label}: median {self.median:.3g}, beta {self.beta:.2f}")
+        if band and self.n_boot:
+            b = self.band(x, level)
+            ax.fill_between(x, b["lower"], b["upper"], color=color, alpha=0.2, lw=0,
+                            label=f"{100 * level:g}% bootstrap band")
+        if data:
+            self._plot_data(ax, color)
+        _style(ax, "intensity measure", "probability of exceedance")
+        ax.set_ylim(-0.02, 1.02)
+        ax.legend(frameon=False, fontsize="small")
+        return ax
+
+    def _plot_data(self, ax, color):
+        if "n" in self.data:
+            d = self.data
+            ax.plot(d["im"], d["n_failed"] / d["n"], "o", ms=4, color=color, mfc="none")
+            return
+        from statsmodels.duration.survfunc import SurvfuncRight
+
+        d = self.data
+        sf = SurvfuncRight(np.asarray(d["capacity"]), (~np.asarray(d["censored"])).astype(int))
+        ax.step(sf.surv_times, 1.0 - sf.surv_prob, where="post", color=color, lw=0.8,
+                ls="--", label="Kaplan-Meier")
+
+
+def pelicun_table(fits, *, id: str, demand_type: str, demand_unit: str,
+                  im_unit: str | None = None, directional: bool = True, path=None):
+    """A one-row pelicun fragility table with one limit state per fit (``LS1``,
+    ``LS2``, ...); see :meth:`FragilityFit.to_pelicun`."""
+    import pandas as pd
+
+    if demand_unit not in PELICUN_UNITS:
+        raise ParameterError(f"demand_unit must be one of pelicun's units "
+                             f"{sorted(PELICUN_UNITS)}, got {demand_unit!r}")
+    kind, to_si = PELICUN_UNITS[demand_unit]
+    im_unit = _SI_UNIT[kind] if im_unit is None else im_unit
+    if im_unit not in PELICUN_UNITS or PELICUN_UNITS[im_unit][0] != kind:
+        raise ParameterError(f"im_unit must be a {kind} unit of {sorted(PELICUN_UNITS)} "
+                             f"(like demand_unit={demand_unit!r}), got {im_unit!r}")
+    factor = PELICUN_UNITS[im_unit][1] / to_si
+    row = {"Incomplete": 0, "Demand-Type": str(demand_type), "Demand-Unit": demand_unit,
+           "Demand-Offset": 0, "Demand-Directional": int(bool(directional))}
+    for k, f in enumerate(fits, start=1):
+        row[f"LS{k}-Family"] = "lognormal"
+        row[f"LS{k}-Theta_0"] = f.median * factor
+        row[f"LS{k}-Theta_1"] = f.beta
+    df = pd.DataFrame([row], index=pd.Index([str(id)], name="ID"))
+    if path is not None:
+        df.to_csv(path)
+    return df
+
+
+def _glm(x: np.ndarray, k: np.ndarray, n: np.ndarray):
+    """The probit GLM on ``ln x`` of ``k`` failures out of ``n`` per row."""
+    import statsmodels.api as sm
+
+    exog = np.column_stack([np.ones_like(x), np.log(x)])
+    endog = np.column_stack([k, n - k])
+    model = sm.GLM(endog, exog, family=sm.families.Binomial(link=sm.families.links.Probit()))
+    return model.fit()
+
+
+def _stripes(x: np.ndarray, y: np.ndarray):
+    levels, inv = np.unique(x, return_inverse=True)
+    n = np.bincount(inv, minlength=levels.size)
+    k = np.bincount(inv, weights=y, minlength=levels.size).astype(int)
+    return levels, n, k, inv
+
+
+def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
+              bootstrap: str = "normal", label: str = "failure") -> FragilityFit:
+    """A lognormal fragility curve fitted by maximum likelihood (Baker 2015).
+
+    ``im``: the IM of each record (> 0, SI units or dimensionless); ``failed``: its
+    outcome (booleans or 0/1). Alternatively ``im`` are the stripe levels and ``failed``
+    one sequence of outcomes per stripe. Records at the same IM form a stripe, so one
+    binomial likelihood covers multiple-stripe analysis.
+
+    The fit is a statsmodels binomial GLM with a probit link on ``ln im``;
+    ``median = exp(-b0/b1)``, ``beta = 1/b1``, standard errors by the delta method.
+    The band uses ``n_boot`` bootstrap draws (``seed``): ``bootstrap="normal"`` draws
+    ``(b0, b1)`` from the GLM's asymptotic normal distribution (the default: vectorised;
+    its pointwise band is the Wald interval of the linear predictor mapped through Phi);
+    ``"resample"`` resamples the records within each stripe (all records when some IM
+    has a single record) and refits each replicate; replicates with separated data are
+    skipped and counted in ``n_boot_failed``.
+
+    Raises :class:`~rocking.ParameterError` for bad input, and when the MLE does not
+    exist: no failure, all failed, or outcomes perfectly separated by the IM.
+    """
+    import pandas as pd
+
+    x, y = records(im, failed)
+    n_boot, rng, bootstrap = _n_boot(n_boot), _rng(seed), _bootstrap(bootstrap)
+    _check_separation(x, y)
+    levels, n, k, inv = _stripes(x, y)
+    res = _glm(levels, k, n)
+    coef = np.asarray(res.params, dtype=float)
+    coef_cov = np.asarray(res.cov_params(), dtype=float)
+    if not np.all(np.isfinite(coef_cov)) or coef[1] <= 0:
+        raise SimulationError("the probit GLM did not give a finite, increasing fit "
+                              f"(b1 = {coef[1]:g}); check the data")
+    n_fail = 0
+    if n_boot == 0:
+        boot = np.empty((0, 2))
+    elif bootstrap == "normal":
+        boot = rng.multivariate_normal(coef, coef_cov, size=n_boot)
+    else:
+        boot, n_fail = _resample_glm(levels, n, k, x, y, inv, n_boot, rng)
+    return _make_fit(coef, coef_cov, "glm-probit (Baker 2015)",
+                     pd.DataFrame({"im": levels, "n": n, "n_failed": k}), boot, bootstrap,
+                     seed, n_fail, float(res.llf), label)
+
+
+def _resample_glm(levels, n, k, x, y, inv, n_boot, rng):
+    """Bootstrap refits: within stripes when every stripe has >= 2 records (a binomial
+    draw of each stripe's count), else plain case resampling."""
+    stratified = bool(n.min() >= 2)
+    out, failed = [], 0
+    for _ in range(n_boot):
+        if stratified:
+            kb, nb, xb = rng.binomial(n, k / n), n, levels
+        else:
+            idx = rng.integers(0, x.size, x.size)
+            xb, nb, kb, _ = _stripes(x[idx], y[idx])
+        yb = np.concatenate([np.r_[np.ones(a, bool), np.zeros(b - a, bool)]
+                             for a, b in zip(kb, nb, strict=True)])
+        try:
+            _check_separation(np.repeat(xb, nb), yb)
+            r = _glm(xb, kb, nb)
+        except (ParameterError, ValueError, np.linalg.LinAlgError):
+            failed += 1
+            continue
+        out.append(np.asarray(r.params, dtype=float))
+    return (np.array(out) if out else np.empty((0, 2))), failed
+
+
+def _make_fit(coef, coef_cov, method, data, boot, bootstrap, seed, n_fail, llf, label):
+    cov = _delta(coef, coef_cov)
+    return FragilityFit(
+        median=math.exp(-coef[0] / coef[1]), beta=1.0 / coef[1],
+        median_se=math.sqrt(cov[0, 0]), beta_se=math.sqrt(cov[1, 1]), cov=cov, coef=coef,
+        coef_cov=coef_cov, method=method, data=data, boot_coef=np.asarray(boot, float),
+        bootstrap=bootstrap, seed=seed if isinstance(seed, int | type(None)) else None,
+        n_boot_failed=n_fail, loglike=llf, label=label)
+
+
+# --------------------------------------------------------------------------- IDA
+
+def _censored_loglike(mu, log_beta, cap, cens):
+    from scipy.stats import norm
+
+    z = (np.log(cap) - mu) / math.exp(log_beta)
+    return float(np.sum(norm.logpdf(z[~cens]) - log_beta - np.log(cap[~cens]))
+                 + np.sum(norm.logsf(z[cens])))
+
+
+def _lognorm_fit(cap, cens):
+    from scipy import stats
+
+    data = stats.CensoredData(uncensored=cap[~cens], right=cap[cens])
+    s, _, scale = stats.lognorm.fit(data, floc=0)
+    return math.log(scale), float(s)
+
+
+def fragility_ida(capacity, censored=None, *, n_boot: int = 1000, seed: int | None = 0,
+                  bootstrap: str = "normal", label: str = "failure") -> FragilityFit:
+    """A lognormal fragility curve from IDA capacities, with right-censoring.
+
+    ``capacity``: per record, the IM at which it first failed; for a ``censored`` record
+    (one that never failed up to the largest level run) that largest level: its capacity
+    is only known to exceed it. The fit maximises the censored likelihood
+    ``prod f(c_i) * prod (1 - F(c_j))`` with scipy (``CensoredData`` and
+    ``lognorm.fit(..., floc=0)``); the covariance is the inverse of the observed
+    information (statsmodels' numerical Hessian at the MLE).
+
+    Dropping the censored records biases the median low: they are the strongest records,
+    and deleting them leaves a sample truncated from above (every capacity below the top
+    level). Treating them as failing at the top level biases it low too. The censored
+    likelihood uses exactly what is known about them.
+
+    ``n_boot``, ``seed`` and ``bootstrap`` as in :func:`fragility` (``"resample"``
+    resamples records and refits, about 0.1 s per replicate).
+    """
+    import pandas as pd
+    from statsmodels.tools.numdiff import approx_hess3
+
+    cap = _as_im("capacity", capacity)
+    cens = (np.zeros(cap.size, bool) if censored is None else _as_bool("censored", censored))
+    if cens.size != cap.size:
+        raise ParameterError(f"capacity and censored must have the same length, got "
+                             f"{cap.size} and {cens.size}")
+    n_boot, rng, bootstrap = _n_boot(n_boot), _rng(seed), _bootstrap(bootstrap)
+    unc = cap[~cens]
+    if unc.size < 2 or np.unique(unc).size < 2:
+        raise ParameterError("capacity: at least two distinct uncensored capacities are "
+                             f"needed to fit a median and a beta, got {unc.size} "
+                             f"uncensored of {cap.size}")
+    mu, beta = _lognorm_fit(cap, cens)
+    if not (math.isfinite(mu) and beta > 0):
+        raise SimulationError("the censored lognormal fit did not converge")
+    theta = np.array([mu, math.log(beta)])
+    hess = approx_hess3(theta, lambda t: _censored_loglike(t[0], t[1], cap, cens))
+    try:
+        cov_t = np.linalg.inv(-hess)              # covariance of (mu, ln beta)
+    except np.linalg.LinAlgError:
+        raise SimulationError("the censored likelihood is flat at its maximum") from None
+    # (mu, ln beta) -> (b0, b1) = (-mu / beta, 1 / beta)
+    jac = np.array([[-1.0 / beta, mu / beta], [0.0, -1.0 / beta]])
+    coef = np.array([-mu / beta, 1.0 / beta])
+    coef_cov = jac @ cov_t @ jac.T
+    n_fail = 0
+    if n_boot == 0:
+        draws = np.empty((0, 2))
+    elif bootstrap == "normal":
+        draws = rng.multivariate_normal(theta, cov_t, size=n_boot)
+    else:
+        draws = []
+        for _ in range(n_boot):
+            idx = rng.integers(0, cap.size, cap.size)
+            if np.unique(cap[idx][~cens[idx]]).size < 2:
+                n_fail += 1
+                continue
+            m, b = _lognorm_fit(cap[idx], cens[idx])
+            draws.append((m, math.log(b)))
+        draws = np.array(draws).reshape(-1, 2)
+    bb = np.exp(draws[:, 1])
+    boot = np.column_stack([-draws[:, 0] / bb, 1.0 / bb])
+    llf = _censored_loglike(mu, math.log(beta), cap, cens)
+    return _make_fit(coef, coef_cov, "censored lognormal MLE (IDA)",
+                     pd.DataFrame({"capacity": cap, "censored": cens}), boot, bootstrap,
+                     seed, n_fail, llf, label)
+
+
+# --------------------------------------------------------------------------- hazard
+
+def annual_frequency(fit, hazard_im, hazard_rate, *, tail: bool = True):
+    """The mean annual frequency of exceeding the state of ``fit`` (Cornell et al. 2002):
+    ``lambda_f = integral P(f | im) |d lambda_IM / d im| d im``.
+
+    ``hazard_im`` (increasing, > 0, in the fit's IM units) and ``hazard_rate`` (the annual
+    rate of exceeding each IM: > 0, non-increasing, not all equal) are the hazard curve,
+    interpolated log-log between its points; each segment is integrated with
+    ``scipy.integrate.quad``. With ``tail`` the records beyond the last point add
+    ``lambda(im_max) * P(f | im_max)`` (a lower bound of their share). For a power-law
+    hazard ``k0 im^-k`` this tends to ``k0 median^-k exp(k^2 beta^2 / 2)``.
+
+    ``fit``: a :class:`FragilityFit` (returns a float) or anything with
+    ``probability(im)`` and a sequence ``fits`` (one float per fit, as a list).
+    """
+    from scipy.integrate import quad
+
+    x = _as_im("hazard_im", hazard_im)
+    lam = np.atleast_1d(np.asarray(hazard_rate, dtype=float))
+    if lam.shape != x.shape:
+        raise ParameterError(f"hazard_im and hazard_rate must have the same length, got "
+                             f"{x.size} and {lam.size}")
+    if x.size < 2:
+        raise ParameterError("hazard_im must have at least 2 points")
+    if not np.all(np.diff(x) > 0):
+        raise ParameterError("hazard_im must be strictly increasing")
+    if not np.all(np.isfinite(lam)) or np.any(lam <= 0):
+        raise ParameterError("hazard_rate must be finite and > 0 (annual rates of "
+                             "exceedance; log-log interpolation)")
+    if np.any(np.diff(lam) > 0) or lam[0] == lam[-1]:
+        raise ParameterError("hazard_rate must be non-increasing with hazard_im (a rate of "
+                             "exceedance), and not constant")
+    fits = getattr(fit, "fits", None)
+    if fits is not None:
+        return [annual_frequency(f, x, lam, tail=tail) for f in fits]
+    if not callable(getattr(fit, "probability", None)):
+        raise ParameterError(f"fit must be a FragilityFit, got {type(fit).__name__}")
+    u, ll = np.log(x), np.log(lam)
+    slope = -np.diff(ll) / np.diff(u)              # local hazard exponent k_i >= 0
+    total = 0.0
+    for i in range(x.size - 1):
+        if slope[i] == 0.0:
+            continue
+
+        def integrand(v, i=i):
+            rate = math.exp(ll[i] - slope[i] * (v - u[i]))
+            return float(fit.probability(math.exp(v))) * slope[i] * rate
+
+        val, _ = quad(integrand, u[i], u[i + 1], limit=200, epsabs=0.0, epsrel=1e-10)
+        total += val
+    if tail:
+        total += float(lam[-1]) * float(fit.probability(float(x[-1])))
+    return total
+
+
+__all__ = ["FragilityFit", "fragility", "fragility_ida", "annual_frequency", "records",
+           "pelicun_table", "BOOTSTRAP_METHODS", "PELICUN_UNITS", "PELICUN_COLUMNS"]
