@@ -36,6 +36,7 @@ from .processing import (
 from .pulses import HalfSine, OneCosine, OneSine, Rectangular, Ricker
 from .records import Record, load_builtin, sample
 from .spectra import response_spectra, response_spectrum, sdof_response
+from .stochastic import stochastic_records
 from .synthetic import (
     Compatibility,
     Envelope,
@@ -54,6 +55,7 @@ __all__ = [
     "response_spectrum", "response_spectra", "sdof_response",
     "synthetic", "Envelope", "seed_earthquakes", "paper_earthquake", "earthquake_motion",
     "check_compatibility", "Compatibility",
+    "stochastic_records",
     "resample", "bandpass", "baseline_correct", "velocity", "displacement", "pga", "pgv",
     "pgd", "arias_intensity", "significant_duration", "intensity_measures",
 ]

@@ -352,8 +352,22 @@ def significant_duration(record, start: float = 0.05, end: float = 0.95,
     return res if return_times else res[0]
 
 
-def intensity_measures_acc(acc, dt: float) -> dict:
+def _block_terms(block) -> tuple[float, float]:
+    """``(g tan alpha, p)`` of a block-like object (``alpha`` rad, ``p`` 1/s), validated."""
+    try:
+        alpha, p = block.alpha, block.p
+    except AttributeError:
+        raise ParameterError(
+            f"block must have attributes alpha (rad) and p (1/s), e.g. a rocking.Block; "
+            f"got {type(block).__name__}") from None
+    alpha = in_range("block.alpha", alpha, 0.0, math.pi / 2, shown="(0, pi/2) rad")
+    p = positive("block.p", p, "1/s")
+    return G * math.tan(alpha), p
+
+
+def intensity_measures_acc(acc, dt: float, block=None) -> dict:
     """:func:`intensity_measures` of the samples ``acc`` (m/s^2, step ``dt`` s)."""
+    gta = _block_terms(block) if block is not None else None
     a = np.asarray(acc, dtype=np.float64)
     v, d = integrate(a, dt)
     p = float(np.max(np.abs(a)))
@@ -361,7 +375,7 @@ def intensity_measures_acc(acc, dt: float) -> dict:
         d595, t5, t95 = significant_duration_acc(a, dt)
     else:
         d595 = t5 = t95 = float("nan")
-    return {
+    out = {
         "pga": p,
         "pga_g": p / G,
         "pgv": float(np.max(np.abs(v))),
@@ -376,15 +390,25 @@ def intensity_measures_acc(acc, dt: float) -> dict:
         "v_end": float(v[-1]),
         "d_end": float(d[-1]),
     }
+    if gta is not None:
+        g_tan, bp = gta
+        out["pga_ratio"] = out["pga"] / g_tan
+        out["pgv_ratio"] = out["pgv"] * bp / g_tan
+    return out
 
 
-def intensity_measures(record) -> dict:
+def intensity_measures(record, block=None) -> dict:
     """Common measures of a record, in SI units.
 
     ``pga`` (m/s^2), ``pga_g``, ``pgv`` (m/s), ``pgd`` (m), ``arias`` (m/s), ``d5_95``
     (s) with ``t5``/``t95``, ``duration`` (s), ``dt`` (s), ``npts``, and the final
     velocity and displacement ``v_end`` (m/s), ``d_end`` (m), which are 0 for a
     baseline-corrected record.
+
+    Given a ``block`` (any object with ``alpha`` in rad and ``p`` in 1/s, e.g. a
+    :class:`rocking.Block`), also the dimensionless rocking measures ``pga_ratio`` =
+    ``PGA / (g tan alpha)`` (> 1 is needed to uplift a block from rest) and ``pgv_ratio`` =
+    ``PGV p / (g tan alpha)``.
     """
     r = _check_record(record)
-    return intensity_measures_acc(r.values, r.dt)
+    return intensity_measures_acc(r.values, r.dt, block=block)

@@ -134,10 +134,10 @@ class Record(Motion):
         """Ground displacement (m) at the samples, from rest, load factor applied."""
         return integrate(self.values, self.dt)[1]
 
-    def intensity_measures(self) -> dict:
-        """PGA, PGV, PGD, Arias intensity, D5-95...; see
-        :func:`~.processing.intensity_measures`."""
-        return intensity_measures_acc(self.values, self.dt)
+    def intensity_measures(self, block=None) -> dict:
+        """PGA, PGV, PGD, Arias intensity, D5-95... (with a ``block``, also ``pga_ratio``
+        and ``pgv_ratio``); see :func:`~.processing.intensity_measures`."""
+        return intensity_measures_acc(self.values, self.dt, block=block)
 
     def response_spectrum(self, periods, damping: float = 0.05, kind: str = "psa"):
         """Elastic response spectrum; see :func:`~.spectra.response_spectrum`."""
