@@ -101,3 +101,36 @@ def test_motion_space_uplift_criterion_and_single_runs():
         motion_space(blk, freqs, amps, kind="square")
     with pytest.raises(ParameterError, match="freqs"):
         motion_space(blk, [-1.0], amps)
+
+
+# ----------------------------------------------------------------------------- IDA
+def test_ida_scales_records_to_the_levels_and_runs_them(paper_set):
+    from rocking.analysis.ida import ida, ida_capacity, intensity
+
+    blk = rocking.specimen(3, "experimental")
+    recs = paper_set[:4]
+    ratio_levels = np.array([0.6, 1.0, 1.5, 2.5, 4.0])
+    t = ida(blk, recs, im="pga_ratio", levels=ratio_levels)
+    assert len(t) == len(recs) * ratio_levels.size
+    for _, row in t.sample(5, random_state=1).iterrows():
+        m = recs[int(row["record"])].scaled(row["scale"])
+        assert intensity(m, "pga_ratio", blk) == pytest.approx(row["im"], rel=1e-12)
+        r = rocking.simulate(blk, m)
+        assert r.max_abs_theta == row["max_abs_theta"] and r.overturned == row["overturned"]
+    # below the uplift level nothing moves; the damage state follows the angle
+    assert not t.loc[t["im"] < 1.0, "overturned"].any()
+    assert (t.loc[t["im"] < 1.0, "max_abs_theta"] == 0.0).all()
+    assert (t.loc[t["overturned"], "damage_state"] == 3).all()
+    cap = ida_capacity(t)
+    assert len(cap) == len(recs)
+    for _, c in cap.iterrows():
+        g = t[t["record"] == c["record"]].sort_values("im")
+        if c["censored"]:
+            assert not g["overturned"].any()
+        else:
+            assert g.loc[g["im"] == c["capacity"], "overturned"].all()
+            assert not g.loc[g["im"] < c["capacity"], "overturned"].any()
+    with pytest.raises(ParameterError, match="im must be one of"):
+        ida(blk, recs, im="sa", levels=[1.0])
+    with pytest.raises(ParameterError, match="levels"):
+        ida(blk, recs, levels=[-1.0])

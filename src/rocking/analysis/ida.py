@@ -1,0 +1,101 @@
+"""Incremental dynamic analysis (IDA) and multiple-stripe analysis of a rocking block.
+
+:func:`ida` scales every record to each level of an intensity measure and runs all of them
+in one compiled batch; the long table it returns feeds :func:`~.fragility.fragility`
+(stripes), :func:`~.fragility.fragility_ida` (capacities, :func:`ida_capacity`) and
+:func:`~.damage.fragility_curves` (damage states).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ..errors import ParameterError
+from ..models import simulate_many
+from ..motions import Record
+from .damage import DEFAULT_THRESHOLDS, damage_state
+
+IMS = {"pga": "m/s^2", "pgv": "m/s", "pgd": "m", "arias": "m/s", "pga_ratio": "-",
+       "pgv_ratio": "-"}
+"""Intensity measures (keys of :func:`rocking.motions.intensity_measures`) and units: the
+dimensionless rocking measures are ``pga_ratio`` = PGA / (g tan alpha) and ``pgv_ratio`` =
+PGV p / (g tan alpha)."""
+
+
+def intensity(record: Record, im: str, block=None) -> float:
+    """The intensity measure ``im`` (:data:`IMS`) of ``record`` (load factor applied)."""
+    if im not in IMS:
+        raise ParameterError(f"im must be one of {', '.join(IMS)}, got {im!r}")
+    return float(record.intensity_measures(block=block if im.endswith("_ratio") else None)[im])
+
+
+def ida(block, records, im: str = "pga", levels=None, model="housner",
+        thresholds=DEFAULT_THRESHOLDS, duration: float | None = None,
+        **options) -> pd.DataFrame:
+    """Scale each record to each IM level and run them all: the IDA / stripes table.
+
+    Parameters
+    ----------
+    block : Block
+    records : sequence of Record
+    im : str
+        The intensity measure (:data:`IMS`), e.g. ``"pga"`` (m/s^2).
+    levels : sequence of float
+        IM levels (in the units of ``im``), > 0.
+    model, duration, **options
+        As in :func:`rocking.simulate_many` (``duration`` defaults to each record's own).
+    thresholds : sequence of float
+        Damage-state thresholds on max |theta| / alpha (:func:`~.damage.damage_state`).
+
+    Returns
+    -------
+    DataFrame, one row per (record, level): ``record`` (index), ``name``, ``level``,
+    ``im``, ``scale`` (load factor), ``max_abs_theta`` (rad),
+    ``max_abs_theta_over_alpha``, ``overturned``, ``overturn_time`` (s, NaN if none),
+    ``n_impacts`` and ``damage_state``.
+    """
+    recs = list(records) if not isinstance(records, Record) else [records]
+    if not recs or not all(isinstance(r, Record) for r in recs):
+        raise ParameterError("records must be a non-empty sequence of rocking.motions.Record")
+    if levels is None:
+        raise ParameterError("levels is required: the IM levels, > 0")
+    lv = np.atleast_1d(np.asarray(levels, dtype=float))
+    if lv.ndim != 1 or lv.size == 0 or not np.all(np.isfinite(lv) & (lv > 0)):
+        raise ParameterError(f"levels must be a non-empty sequence of IM values > 0, "
+                             f"got {levels!r}")
+    base = np.array([intensity(r, im, block) for r in recs])
+    if not np.all(base > 0):
+        raise ParameterError(f"every record must have {im} > 0 to be scaled")
+    ri, li = np.meshgrid(np.arange(len(recs)), np.arange(lv.size), indexing="ij")
+    ri, li = ri.ravel(), li.ravel()
+    scale = lv[li] / base[ri]
+    motions = [recs[i].scaled(s) for i, s in zip(ri, scale, strict=True)]
+    res = simulate_many(block, motions, model=model, duration=duration, **options)
+    ratio = res.max_abs_theta / block.alpha
+    return pd.DataFrame({
+        "record": ri, "name": [recs[i].name for i in ri], "level": li, "im": lv[li],
+        "scale": scale, "max_abs_theta": res.max_abs_theta, "max_abs_theta_over_alpha": ratio,
+        "overturned": res.overturned, "overturn_time": res.overturn_time,
+        "n_impacts": res.n_impacts,
+        "damage_state": damage_state(res.max_abs_theta, block.alpha, res.overturned,
+                                     thresholds),
+    })
+
+
+def ida_capacity(table: pd.DataFrame, state: int | None = None) -> pd.DataFrame:
+    """Per record, the IM capacity of an :func:`ida` table: the lowest level at which the
+    record reaches damage state ``state`` (default: overturning, the last state), and
+    whether it is right-censored (never reached up to the highest level: the capacity only
+    exceeds it). Feed ``capacity`` and ``censored`` to :func:`~.fragility.fragility_ida`.
+    """
+    need = {"record", "im", "damage_state"}
+    if not need <= set(table.columns):
+        raise ParameterError(f"table must be an ida() table with columns {sorted(need)}")
+    k = int(table["damage_state"].max()) if state is None else int(state)
+    rows = []
+    for rec, g in table.sort_values("im").groupby("record"):
+        hit = g.loc[g["damage_state"] >= k, "im"]
+        rows.append({"record": rec, "capacity": float(hit.iloc[0]) if hit.size
+                     else float(g["im"].max()), "censored": hit.size == 0})
+    return pd.DataFrame(rows)
