@@ -33,7 +33,7 @@ from .processing import (
     significant_duration,
     velocity,
 )
-from .pulses import HalfSine, OneCosine, OneSine, Rectangular, Ricker
+from .pulses import HalfSine, MavroeidisPapageorgiou, OneCosine, OneSine, Rectangular, Ricker
 from .records import Record, load_builtin, sample
 from .spectra import response_spectra, response_spectrum, sdof_response
 from .stochastic import stochastic_records
@@ -50,6 +50,7 @@ from .synthetic import (
 __all__ = [
     "Motion", "Sine", "HanningSine", "OneSine", "OneCosine", "HalfSine", "Rectangular",
     "Ricker", "Record", "sample", "read_record", "write_csv", "builtin_records",
+    "MavroeidisPapageorgiou",
     "load_builtin",
     "ec8_spectrum", "DesignSpectrum", "paper_target",
     "response_spectrum", "response_spectra", "sdof_response",

@@ -23,6 +23,7 @@ ONE_COSINE = 5  # prm: scale, amplitude (acc), period, t0
 HALF_SINE = 6  # prm: scale, amplitude (acc), length, t0
 RECTANGULAR = 7  # prm: scale, amplitude (acc), length, t0
 RICKER = 8  # prm: scale, amplitude (acc), peak frequency, centre time
+MAVROEIDIS_PAPAGEORGIOU = 9  # prm: scale, velocity amplitude A, fp, gamma, nu, centre t0
 
 NPRM = 6
 TWO_PI = 2.0 * math.pi
@@ -66,6 +67,19 @@ def ground_acc(kind, prm, samples, t):
         # second derivative of the table displacement X * win(t) * sin(w t)
         return s * X * (ddwin * math.sin(w * t) + 2.0 * dwin * w * math.cos(w * t)
                         - win * w * w * math.sin(w * t))
+    if kind == MAVROEIDIS_PAPAGEORGIOU:
+        # exact derivative of v = A/2 [1 + cos(w tau / gamma)] cos(w tau + nu), w = 2 pi fp,
+        # for |tau| <= gamma / (2 fp) (Mavroeidis and Papageorgiou 2003)
+        A, fp, gam, nu, tc = prm[1], prm[2], prm[3], prm[4], prm[5]
+        tau = t - tc
+        half = 0.5 * gam / fp
+        if tau < -half or tau > half:
+            return 0.0
+        w = TWO_PI * fp
+        u = w * tau / gam
+        ph = w * tau + nu
+        return -0.5 * s * A * w * (math.sin(u) * math.cos(ph) / gam
+                                   + (1.0 + math.cos(u)) * math.sin(ph))
     A, T, t0 = prm[1], prm[2], prm[3]
     if kind == RICKER:
         x = math.pi * T * (t - t0)  # T holds the peak frequency here
@@ -111,6 +125,14 @@ def next_breakpoint(kind, prm, samples, t):
             return t0
         if t < t0 + T - eps:
             return t0 + T
+        return math.inf
+    if kind == MAVROEIDIS_PAPAGEORGIOU:
+        half = 0.5 * prm[3] / prm[2]
+        start, end = prm[5] - half, prm[5] + half
+        if t < start - eps:
+            return start
+        if t < end - eps:
+            return end
         return math.inf
     return math.inf
 

@@ -10,15 +10,24 @@ motion that follows: by default ``max(10 s, 5 x pulse length)`` after ``t0``.
 * :class:`HalfSine`: ``a = A sin(pi (t - t0) / t1)`` over a length ``t1``;
 * :class:`Rectangular`: ``a = A`` over a length ``t1`` (Housner's rectangular pulse);
 * :class:`Ricker`: ``a = A (1 - 2 x^2) exp(-x^2)``, ``x = pi fp (t - tc)``, with peak
-  frequency ``fp`` (Hz) and centre ``tc`` (default ``1.5 / fp``).
+  frequency ``fp`` (Hz) and centre ``tc`` (default ``1.5 / fp``);
+* :class:`MavroeidisPapageorgiou`: the near-fault velocity pulse of Mavroeidis and
+  Papageorgiou (2003), ``v = A/2 [1 + cos(2 pi fp (t - t0) / gamma)] cos(2 pi fp (t - t0)
+  + nu)`` for ``|t - t0| <= gamma / (2 fp)``; the motion is its exact derivative, scaled
+  so that its peak acceleration is ``amplitude`` (like the other pulses).
 """
 
 from __future__ import annotations
 
+import functools
+import math
 from dataclasses import dataclass
 from typing import ClassVar
 
-from .._validate import as_float, non_negative, positive
+import numpy as np
+
+from .._validate import as_float, in_range, non_negative, positive
+from ..errors import ParameterError
 from . import _kernel as K
 from .base import Motion
 
@@ -110,6 +119,125 @@ class Ricker(Motion):
 
     def _params(self):
         return (self.amplitude, self.fp, self.tc)
+
+    @property
+    def scan_step(self) -> float:
+        return 1.0 / (128.0 * self.fp)
+
+
+@functools.lru_cache(maxsize=256)
+def _mp_peak(gamma: float, nu: float) -> float:
+    """Peak of ``|g(u)|`` over ``|u| <= pi gamma``, where the acceleration of the M&P pulse
+    of velocity amplitude ``A`` is ``-(A w / 2) g(w tau)`` (``w = 2 pi fp``)."""
+    from scipy.optimize import minimize_scalar
+
+    def g(u):
+        return np.sin(u / gamma) * np.cos(u + nu) / gamma + (1.0 + np.cos(u / gamma)) * np.sin(
+            u + nu)
+
+    half = math.pi * gamma
+    n = max(4097, int(512 * gamma) + 1)  # >= 256 points per oscillation
+    u = np.linspace(-half, half, n)
+    i = int(np.argmax(np.abs(g(u))))
+    h = u[1] - u[0]
+    lo, hi = max(-half, u[i] - h), min(half, u[i] + h)
+    res = minimize_scalar(lambda x: -abs(float(g(x))), bounds=(lo, hi), method="bounded",
+                          options={"xatol": 1e-12})
+    return max(abs(float(g(u[i]))), -float(res.fun))
+
+
+@dataclass(frozen=True)
+class MavroeidisPapageorgiou(Motion):
+    """The near-fault pulse of Mavroeidis and Papageorgiou (2003, BSSA 93(3)).
+
+    Ground velocity (m/s), with ``tau = t - t0``:
+
+    ``v(t) = A/2 [1 + cos(2 pi fp tau / gamma)] cos(2 pi fp tau + nu)`` for
+    ``|tau| <= gamma / (2 fp)``, zero outside.
+
+    The motion (like every motion, an acceleration) is its exact derivative
+    ``a = dv/dt``; it is continuous, zero at both ends of the pulse, and integrates back to
+    ``v`` (the ground velocity returns to zero after the pulse).
+
+    Parameters
+    ----------
+    amplitude : float
+        Peak absolute ground **acceleration** (m/s^2), as for the other pulses, so that
+        ``amplitude / (g tan alpha)`` is the dimensionless intensity of the overturning
+        spectra. The velocity amplitude ``A`` (m/s) follows:
+        :attr:`velocity_amplitude`.
+    fp : float
+        Frequency of the harmonic (Hz), > 0; ``omega_p = 2 pi fp``.
+    gamma : float
+        Oscillatory character (the number of half-cycles of the envelope, roughly), > 1.
+        The pulse lasts ``gamma / fp``.
+    nu : float
+        Phase of the harmonic (rad); ``nu = 0`` or ``pi`` gives a symmetric velocity pulse,
+        ``+-pi/2`` an antisymmetric one.
+    t0 : float, optional
+        Centre of the envelope (s), the paper's ``t0``; default ``gamma / (2 fp)`` (the
+        pulse starts at ``t = 0``); must be ``>= gamma / (2 fp)``.
+    duration : float, optional
+        Simulation window (s); default the start of the pulse plus
+        ``max(10 s, 5 gamma / fp)``.
+    scale : float
+        Load factor.
+    """
+
+    amplitude: float
+    fp: float
+    gamma: float
+    nu: float
+    t0: float | None = None
+    duration: float | None = None
+    scale: float = 1.0
+    kind = K.MAVROEIDIS_PAPAGEORGIOU
+
+    def __post_init__(self):
+        object.__setattr__(self, "amplitude", non_negative("amplitude", self.amplitude, "m/s^2"))
+        object.__setattr__(self, "fp", positive("fp", self.fp, "Hz"))
+        object.__setattr__(self, "gamma", in_range("gamma", self.gamma, 1.0, math.inf,
+                                                   shown="(1, inf)"))
+        object.__setattr__(self, "nu", as_float("nu", self.nu))
+        half = self.half_length
+        if self.t0 is None:
+            t0 = half
+        else:
+            t0 = as_float("t0", self.t0)
+            if t0 < half * (1.0 - 1e-12):
+                raise ParameterError(f"t0 (the centre of the pulse) must be >= gamma / (2 fp) "
+                                     f"= {half:g} s so that the pulse starts at t >= 0, "
+                                     f"got {self.t0!r}")
+        object.__setattr__(self, "t0", t0)
+        if self.duration is None:
+            object.__setattr__(self, "duration", t0 - half + max(10.0, 10.0 * half))
+        else:
+            object.__setattr__(self, "duration", positive("duration", self.duration, "s"))
+        object.__setattr__(self, "scale", as_float("scale", self.scale))
+
+    @property
+    def half_length(self) -> float:
+        """Half the length of the pulse, ``gamma / (2 fp)`` (s)."""
+        return 0.5 * self.gamma / self.fp
+
+    @property
+    def velocity_amplitude(self) -> float:
+        """The velocity amplitude ``A`` (m/s) of the formula, without the load factor:
+        ``amplitude / (pi fp max|g|)`` with ``g`` the shape of the derivative."""
+        return self.amplitude / (math.pi * self.fp * _mp_peak(self.gamma, self.nu))
+
+    def velocity(self, t) -> np.ndarray:
+        """Ground velocity (m/s) at times ``t`` (s): the formula above, times ``scale``."""
+        arr = np.asarray(t, dtype=np.float64)
+        tau = arr - self.t0
+        w = 2.0 * math.pi * self.fp
+        v = (0.5 * self.scale * self.velocity_amplitude * (1.0 + np.cos(w * tau / self.gamma))
+             * np.cos(w * tau + self.nu))
+        v = np.where(np.abs(tau) <= self.half_length, v, 0.0)
+        return v if arr.ndim else float(v)
+
+    def _params(self):
+        return (self.velocity_amplitude, self.fp, self.gamma, self.nu, self.t0)
 
     @property
     def scan_step(self) -> float:

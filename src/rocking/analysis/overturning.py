@@ -1,0 +1,403 @@
+r"""Overturning spectra and outcome maps of rocking blocks under idealised pulses.
+
+**Dimensionless axes** (Dimitrakopoulos and DeJong 2012). With the dimensionless time
+``tau = p t``, Eq (1) reads
+
+.. math::
+
+    \frac{d^2\theta}{d\tau^2} = -\operatorname{sgn}(\theta)\sin(\alpha - |\theta|)
+        + \cos(\alpha - |\theta|)\,\tan\alpha\;\frac{a_p}{g\tan\alpha}\,
+          f\!\left(\frac{\omega_p}{p}\,\tau\right)
+
+for a pulse ``a(t) = a_p f(omega_p t)``, and an impact multiplies ``d theta / d tau`` by
+``mu``. So ``theta`` as a function of ``p t`` depends only on ``omega_p / p``,
+``a_p / (g tan alpha)``, ``alpha`` and ``mu``: two blocks of different size (different
+``p``) with the same ``alpha`` and ``mu`` have the same overturning spectrum in these
+axes. Every simulation window here is dimensionless too: the pulse plus ``tail / p`` of
+free motion (default ``tail = 60``, i.e. about ten free rocking periods of a small-amplitude
+block; a block that has not overturned by then cannot any more, its energy only decreasing
+at impacts). ``tests/test_overturning.py`` checks the similarity to 1e-6.
+
+**Pulses** (``pulse=``), each of peak ground acceleration ``a_p`` (``amplitude``):
+
+* ``"sine"``: :class:`~rocking.motions.OneSine`, one full sine cycle of period
+  ``Tp = 2 pi / omega_p``;
+* ``"cosine"``: :class:`~rocking.motions.OneCosine`, one full cosine cycle, ``Tp = 2 pi /
+  omega_p``;
+* ``"ricker"``: :class:`~rocking.motions.Ricker` of peak frequency ``fp = omega_p / (2
+  pi)`` (the frequency where its Fourier amplitude peaks), centred at ``1.5 / fp``;
+* ``"mp"``: :class:`~rocking.motions.MavroeidisPapageorgiou` with ``fp = omega_p / (2
+  pi)``; it needs ``gamma`` (> 1) and ``nu`` (rad) as ``pulse_options``.
+
+**Overturning modes** (Zhang and Makris 2001): mode 1 overturns without a prior impact
+(``n_impacts == 0`` at overturning), mode 2 after one or more impacts.
+
+**Method of** :func:`overturning_spectrum`. The overturning boundary is not monotonic in
+the amplitude: for the one-sine pulse a safe region lies between the mode-2 tongue and the
+mode-1 boundary, so a plain bisection between "safe" and "overturns" can miss the minimum.
+The amplitude ratio is therefore first scanned upwards on a grid (``accel_ratio``,
+default 95 levels from 1 to 100 in steps of 5%) for the lowest overturning level, then
+refined by bisection between the last safe and the first overturning grid level, until the
+bracket is narrower than ``tol`` (relative). The result is the minimum *on that grid*,
+refined by bisection: an overturning tongue narrower than one grid step can be missed.
+Every step (one chunk of grid levels, one bisection step) is one
+:func:`rocking.simulate_many` call over all the frequency ratios still open.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .._validate import as_float, in_range, positive
+from ..errors import ParameterError
+from ..units import G
+
+PULSES = ("sine", "cosine", "ricker", "mp")
+"""The pulse names accepted by :func:`overturning_spectrum` and :func:`outcome_map`."""
+
+TAIL = 60.0
+"""Default free motion simulated after the pulse, in units of ``1/p``."""
+
+DEFAULT_ACCEL_RATIO = np.geomspace(1.0, 100.0, 95)
+"""Default scan grid of ``a_p / (g tan alpha)`` of :func:`overturning_spectrum` (5% steps)."""
+
+_CHUNK = 12  # grid levels per simulate_many call of the upward scan
+_MODE_LABELS = {0: "safe", 1: "mode 1 (no impact)", 2: "mode 2 (after impacts)"}
+
+
+# ---------------------------------------------------------------- validation and pulses
+def _ratios(name: str, value, *, sort: bool = False) -> np.ndarray:
+    try:
+        a = np.atleast_1d(np.asarray(value, dtype=np.float64))
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} must be a number or a 1-D array of numbers > 0, got "
+                             f"{value!r}") from None
+    if a.ndim != 1 or a.size == 0:
+        raise ParameterError(f"{name} must be a non-empty 1-D array of numbers > 0")
+    bad = ~np.isfinite(a) | (a <= 0.0)
+    if bad.any():
+        raise ParameterError(f"{name} must hold finite numbers > 0, got {a[bad][0]!r}")
+    return np.unique(a) if sort else a
+
+
+def _check_block(block):
+    for attr in ("alpha", "p", "mu"):
+        if not hasattr(block, attr):
+            raise ParameterError(f"block must be a rocking.Block, got {type(block).__name__}")
+    return block
+
+
+def _pulse_factory(block, pulse: str, pulse_options: dict, tail: float):
+    """A function ``(omega_ratio, accel_ratio) -> Motion`` for ``block`` (validated once)."""
+    from ..motions import MavroeidisPapageorgiou, OneCosine, OneSine, Ricker
+
+    if pulse not in PULSES:
+        raise ParameterError(f"pulse must be one of {', '.join(map(repr, PULSES))}, "
+                             f"got {pulse!r}")
+    allowed = ("gamma", "nu") if pulse == "mp" else ()
+    for k in pulse_options:
+        if k not in allowed:
+            shown = ", ".join(allowed) if allowed else "none"
+            raise ParameterError(f"unknown pulse option {k!r} for pulse={pulse!r} "
+                                 f"(allowed: {shown})")
+    tail = positive("tail", tail, "(units of 1/p)")
+    p = float(block.p)
+    ag = G * math.tan(block.alpha)
+    t_free = tail / p
+    if pulse in ("sine", "cosine"):
+        cls = OneSine if pulse == "sine" else OneCosine
+
+        def make(wr, ar):
+            tp = 2.0 * math.pi / (wr * p)
+            return cls(ar * ag, tp, duration=tp + t_free)
+    elif pulse == "ricker":
+        def make(wr, ar):
+            fp = wr * p / (2.0 * math.pi)
+            return Ricker(ar * ag, fp, duration=3.0 / fp + t_free)
+    else:
+        missing = [k for k in ("gamma", "nu") if k not in pulse_options]
+        if missing:
+            raise ParameterError(f"pulse='mp' needs the pulse option(s) {', '.join(missing)} "
+                                 "(gamma > 1, nu in rad)")
+        gamma = in_range("gamma", pulse_options["gamma"], 1.0, math.inf, shown="(1, inf)")
+        nu = as_float("nu", pulse_options["nu"])
+
+        def make(wr, ar):
+            fp = wr * p / (2.0 * math.pi)
+            return MavroeidisPapageorgiou(ar * ag, fp, gamma, nu, duration=gamma / fp + t_free)
+    return make
+
+
+def pulse_motion(block, pulse: str, omega_ratio: float, accel_ratio: float, *,
+                 tail: float = TAIL, **pulse_options):
+    """The pulse of the dimensionless point ``(omega_ratio, accel_ratio)`` for ``block``.
+
+    ``omega_p = omega_ratio * p`` and peak ground acceleration ``a_p = accel_ratio * g *
+    tan(alpha)``; the window is the pulse plus ``tail / p`` (s). This is the motion that
+    :func:`overturning_spectrum` and :func:`outcome_map` simulate at that point.
+    """
+    _check_block(block)
+    wr = positive("omega_ratio", omega_ratio)
+    ar = positive("accel_ratio", accel_ratio)
+    return _pulse_factory(block, pulse, pulse_options, tail)(wr, ar)
+
+
+def _run(block, motions, model, options):
+    from ..models import simulate_many
+
+    return simulate_many(block, motions, model=model, **(options or {}))
+
+
+# ---------------------------------------------------------------- overturning spectrum
+def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="housner", *,
+                         tol: float = 0.005, accel_ratio=None, tail: float = TAIL,
+                         options: dict | None = None, **pulse_options):
+    """The overturning spectrum: the minimum ``a_p / (g tan alpha)`` that overturns the
+    block, for each ``omega_p / p``.
+
+    The axes are dimensionless (Dimitrakopoulos and DeJong 2012): the result depends only
+    on ``omega_p / p``, ``a_p / (g tan alpha)``, ``alpha`` and ``mu`` (module docstring).
+
+    Parameters
+    ----------
+    block : Block
+    pulse : {"sine", "cosine", "ricker", "mp"}
+        The pulse family (module docstring: what ``omega_p`` is for each).
+    omega_ratio : float or array of float
+        The frequency ratios ``omega_p / p`` (> 0).
+    model : str or Model class
+        As in :func:`rocking.simulate_many`.
+    tol : float
+        Relative precision of the threshold, in [1e-6, 0.2]: the bisection stops when the
+        bracket ``(safe_ratio, min_overturn_ratio]`` is narrower than ``tol *
+        min_overturn_ratio``.
+    accel_ratio : array of float, optional
+        The scan grid of ``a_p / (g tan alpha)`` (default :data:`DEFAULT_ACCEL_RATIO`,
+        1 to 100 in 5% steps). The result is the lowest overturning level on this grid,
+        refined by bisection between it and the grid level below (0 below the first).
+    tail : float
+        Free motion simulated after the pulse, in units of ``1/p`` (default 60).
+    options : dict, optional
+        The model's options (e.g. ``{"rtol": 1e-10}``).
+    **pulse_options
+        ``gamma`` and ``nu`` for ``pulse="mp"``.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per frequency ratio: ``omega_ratio``, ``min_overturn_ratio`` (the lowest
+        amplitude ratio found to overturn; NaN if nothing on the grid overturns),
+        ``mode`` (1: overturning without impact, 2: after one or more impacts, as in Zhang
+        and Makris 2001; <NA> if not found), ``safe_ratio`` (the largest amplitude ratio
+        below it found not to overturn) and ``n_impacts`` (of the run at
+        ``min_overturn_ratio``). ``df.attrs`` holds the block's ``alpha``, ``p``, ``mu``,
+        ``pulse``, ``tol``, ``model`` and ``n_simulations``. Plot with
+        :func:`plot_overturning_spectrum`.
+    """
+    import pandas as pd
+
+    _check_block(block)
+    if omega_ratio is None:
+        raise ParameterError("omega_ratio must be given: the frequency ratios omega_p/p > 0")
+    w = _ratios("omega_ratio", omega_ratio)
+    tol = in_range("tol", tol, 1e-6, 0.2, lo_open=False, hi_open=False, shown="[1e-6, 0.2]")
+    grid = _ratios("accel_ratio", DEFAULT_ACCEL_RATIO if accel_ratio is None else accel_ratio,
+                   sort=True)
+    make = _pulse_factory(block, pulse, pulse_options, tail)
+    n, m = w.size, grid.size
+    first = np.full(n, -1)
+    imp_hi = np.zeros(n, dtype=np.int64)
+    n_sim = 0
+    # 1. upward scan of the grid, a chunk of levels at a time, for the open ratios only
+    for start in range(0, m, _CHUNK):
+        open_ = np.flatnonzero(first < 0)
+        if open_.size == 0:
+            break
+        levels = grid[start:start + _CHUNK]
+        res = _run(block, [make(w[i], a) for i in open_ for a in levels], model, options)
+        n_sim += len(res)
+        over = res.overturned.reshape(open_.size, levels.size)
+        imps = res.n_impacts.reshape(open_.size, levels.size)
+        for row, i in enumerate(open_):
+            hit = np.flatnonzero(over[row])
+            if hit.size:
+                first[i] = start + hit[0]
+                imp_hi[i] = imps[row, hit[0]]
+    found = first >= 0
+    hi = np.where(found, grid[np.maximum(first, 0)], np.nan)
+    lo = np.where(first > 0, grid[np.maximum(first - 1, 0)], 0.0)
+    lo[~found] = grid[-1]
+    # 2. vectorised bisection between the last safe and the first overturning level
+    while True:
+        act = np.flatnonzero(found & (hi - lo > tol * hi))
+        if act.size == 0:
+            break
+        mid = 0.5 * (lo[act] + hi[act])
+        res = _run(block, [make(w[i], a) for i, a in zip(act, mid, strict=True)], model,
+                   options)
+        n_sim += len(res)
+        ov = np.asarray(res.overturned, dtype=bool)
+        hi[act[ov]] = mid[ov]
+        imp_hi[act[ov]] = res.n_impacts[ov]
+        lo[act[~ov]] = mid[~ov]
+    mode = pd.array(np.where(imp_hi == 0, 1, 2), dtype="Int64")
+    mode[~found] = pd.NA
+    df = pd.DataFrame({
+        "omega_ratio": w,
+        "min_overturn_ratio": hi,
+        "mode": mode,
+        "safe_ratio": lo,
+        "n_impacts": pd.array(np.where(found, imp_hi, 0), dtype="Int64"),
+    })
+    df.loc[~found, "n_impacts"] = pd.NA
+    df.attrs.update({"pulse": pulse, "alpha": float(block.alpha), "p": float(block.p),
+                     "mu": float(block.mu), "tol": tol, "model": _model_name(model),
+                     "n_simulations": int(n_sim), "accel_ratio_max": float(grid[-1]),
+                     "tail": float(tail), **{k: float(v) for k, v in pulse_options.items()}})
+    return df
+
+
+def _model_name(model) -> str:
+    return model if isinstance(model, str) else getattr(model, "name", str(model))
+
+
+# ---------------------------------------------------------------- outcome map
+def outcome_map(block, pulse: str = "sine", omega_ratio=None, accel_ratio=None,
+                model="housner", *, tail: float = TAIL, options: dict | None = None,
+                **pulse_options):
+    """The outcome of every cell of an ``(omega_p / p, a_p / (g tan alpha))`` grid.
+
+    The axes are dimensionless (Dimitrakopoulos and DeJong 2012; module docstring). All the
+    cells are run in one :func:`rocking.simulate_many` call.
+
+    Parameters
+    ----------
+    block, pulse, model, tail, options, **pulse_options
+        As in :func:`overturning_spectrum`.
+    omega_ratio, accel_ratio : array of float
+        The frequency ratios ``omega_p / p`` and amplitude ratios ``a_p / (g tan alpha)``
+        (> 0).
+
+    Returns
+    -------
+    pandas.DataFrame
+        Tidy, one row per cell (``omega_ratio`` outer, ``accel_ratio`` inner):
+        ``omega_ratio``, ``accel_ratio``, ``overturned``, ``mode`` (0: safe, 1: overturned
+        without impact, 2: overturned after one or more impacts), ``n_impacts``,
+        ``rocked`` (the block left rest) and ``max_abs_theta_over_alpha``. For the
+        one-sine pulse the map shows the safe region between the mode-2 tongue and the
+        mode-1 boundary. Plot with :func:`plot_outcome_map`.
+    """
+    import pandas as pd
+
+    _check_block(block)
+    if omega_ratio is None or accel_ratio is None:
+        raise ParameterError("omega_ratio and accel_ratio must be given (arrays of numbers "
+                             "> 0)")
+    w = _ratios("omega_ratio", omega_ratio)
+    a = _ratios("accel_ratio", accel_ratio)
+    make = _pulse_factory(block, pulse, pulse_options, tail)
+    ww, aa = np.repeat(w, a.size), np.tile(a, w.size)
+    res = _run(block, [make(x, y) for x, y in zip(ww, aa, strict=True)], model, options)
+    over = np.asarray(res.overturned, dtype=bool)
+    nimp = np.asarray(res.n_impacts, dtype=np.int64)
+    df = pd.DataFrame({
+        "omega_ratio": ww,
+        "accel_ratio": aa,
+        "overturned": over,
+        "mode": np.where(over, np.where(nimp == 0, 1, 2), 0),
+        "n_impacts": nimp,
+        "rocked": np.asarray(res.rocked, dtype=bool),
+        "max_abs_theta_over_alpha": np.asarray(res.max_abs_theta) / block.alpha,
+    })
+    df.attrs.update({"pulse": pulse, "alpha": float(block.alpha), "p": float(block.p),
+                     "mu": float(block.mu), "model": _model_name(model),
+                     "n_simulations": len(res), "tail": float(tail),
+                     **{k: float(v) for k, v in pulse_options.items()}})
+    return df
+
+
+# ---------------------------------------------------------------- plots
+_XLABEL = r"frequency ratio $\omega_p / p$"
+_YLABEL = r"acceleration ratio $a_p / (g \tan\alpha)$"
+_COLORS = {"no rocking": "#F2F2F2", "rocking, safe": "#BFD7EA", "mode 1": "#D55E00",
+           "mode 2": "#E69F00"}
+
+
+def _title(attrs) -> str:
+    bits = [f"{attrs.get('pulse', '')} pulse"]
+    if "alpha" in attrs:
+        bits.append(f"alpha = {attrs['alpha']:.3g} rad")
+    if "mu" in attrs:
+        bits.append(f"mu = {attrs['mu']:.3g}")
+    return ", ".join(bits)
+
+
+def plot_overturning_spectrum(df, ax=None, *, label: str | None = None, **kw):
+    """Plot an :func:`overturning_spectrum`: ``min_overturn_ratio`` against
+    ``omega_ratio``, the points marked by overturning mode. Returns the Axes."""
+    from ..plot import PALETTE, _style, new_axes
+
+    if ax is None:
+        _, ax = new_axes()
+    x = np.asarray(df["omega_ratio"], dtype=float)
+    y = np.asarray(df["min_overturn_ratio"], dtype=float)
+    mode = df["mode"].to_numpy(dtype=float, na_value=np.nan)
+    kw.setdefault("color", PALETTE[0])
+    kw.setdefault("linewidth", 1.2)
+    ax.plot(x, y, label=label or "minimum overturning level", **kw)
+    for md, marker, col in ((1, "o", _COLORS["mode 1"]), (2, "s", _COLORS["mode 2"])):
+        sel = mode == md
+        if sel.any():
+            ax.plot(x[sel], y[sel], linestyle="none", marker=marker, markersize=4, color=col,
+                    label=_MODE_LABELS[md])
+    _style(ax, _XLABEL, _YLABEL)
+    ax.set_ylim(bottom=0.0)
+    ax.legend(frameon=False, fontsize=8)
+    ax.set_title(_title(df.attrs), fontsize=10)
+    return ax
+
+
+def _edges(v: np.ndarray) -> np.ndarray:
+    if v.size == 1:
+        return np.array([v[0] * 0.95, v[0] * 1.05])
+    mid = 0.5 * (v[1:] + v[:-1])
+    return np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
+
+
+def plot_outcome_map(df, ax=None, *, spectrum=None):
+    """Plot an :func:`outcome_map`: the cells coloured by outcome (no rocking, rocking
+    without overturning, overturning in mode 1 or mode 2), which shows both overturning
+    modes and the safe region between them. ``spectrum`` (an :func:`overturning_spectrum`
+    of the same block and pulse) is overlaid as a line. Returns the Axes."""
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+    from matplotlib.patches import Patch
+
+    from ..plot import _style, new_axes
+
+    if ax is None:
+        _, ax = new_axes(figsize=(6.4, 4.4))
+    w = np.unique(np.asarray(df["omega_ratio"], dtype=float))
+    a = np.unique(np.asarray(df["accel_ratio"], dtype=float))
+    cat = np.where(df["mode"] == 1, 2, np.where(df["mode"] == 2, 3,
+                                                np.where(df["rocked"], 1, 0)))
+    grid = np.full((a.size, w.size), np.nan)
+    iw = np.searchsorted(w, np.asarray(df["omega_ratio"], dtype=float))
+    ia = np.searchsorted(a, np.asarray(df["accel_ratio"], dtype=float))
+    grid[ia, iw] = cat
+    names = list(_COLORS)
+    cmap = ListedColormap([_COLORS[k] for k in names])
+    ax.pcolormesh(_edges(w), _edges(a), grid, cmap=cmap,
+                  norm=BoundaryNorm([-0.5, 0.5, 1.5, 2.5, 3.5], 4), shading="flat")
+    handles = [Patch(color=_COLORS[k], label=k) for k in names]
+    if spectrum is not None:
+        (line,) = ax.plot(spectrum["omega_ratio"], spectrum["min_overturn_ratio"], color="k",
+                          linewidth=1.2, label="overturning spectrum")
+        handles.append(line)
+    _style(ax, _XLABEL, _YLABEL)
+    ax.grid(False)
+    ax.legend(handles=handles, fontsize=8, loc="lower right", framealpha=0.9)
+    ax.set_title(_title(df.attrs), fontsize=10)
+    return ax
