@@ -3,4 +3,23 @@
 Built on the model interface (:func:`rocking.simulate`, :func:`rocking.simulate_many`);
 every function returns a tidy :class:`pandas.DataFrame` or a result object with a
 ``plot()``.
+
+* :func:`motion_space`: the rocking-motion space of Table IV;
+* :func:`monte_carlo`: uncertain block, initial tilt and table motion; P(overturn) with a
+  Wilson interval (:func:`wilson_interval`);
+* :func:`ida`: records scaled to intensity levels (stripes / IDA), :func:`ida_capacity`;
+* :func:`fragility`, :func:`fragility_ida`, :func:`fragility_curves` (damage states,
+  :func:`damage_state`), :func:`annual_frequency`.
 """
+
+from .damage import DEFAULT_THRESHOLDS, FragilityCurves, damage_state, fragility_curves
+from .fragility import FragilityFit, annual_frequency, fragility, fragility_ida
+from .harmonic import motion_space, plot_motion_space
+from .ida import ida, ida_capacity
+from .montecarlo import MonteCarloResult, monte_carlo, wilson_interval
+
+__all__ = [
+    "motion_space", "plot_motion_space", "monte_carlo", "MonteCarloResult", "wilson_interval",
+    "ida", "ida_capacity", "fragility", "fragility_ida", "FragilityFit", "annual_frequency",
+    "fragility_curves", "FragilityCurves", "damage_state", "DEFAULT_THRESHOLDS",
+]
