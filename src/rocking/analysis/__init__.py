@@ -5,6 +5,9 @@ every function returns a tidy :class:`pandas.DataFrame` or a result object with 
 ``plot()``.
 
 * :func:`motion_space`: the rocking-motion space of Table IV;
+* :func:`fourier_spectrum`: amplitude spectrum of theta(t) and its peaks (Fig. 6b);
+* :func:`overturning_spectrum`, :func:`outcome_map`: pulses in the dimensionless plane
+  (omega_p/p, a_p/(g tan alpha)) of Dimitrakopoulos and DeJong (2012);
 * :func:`monte_carlo`: uncertain block, initial tilt and table motion; P(overturn) with a
   Wilson interval (:func:`wilson_interval`);
 * :func:`ida`: records scaled to intensity levels (stripes / IDA), :func:`ida_capacity`;
@@ -13,13 +16,24 @@ every function returns a tidy :class:`pandas.DataFrame` or a result object with 
 """
 
 from .damage import DEFAULT_THRESHOLDS, FragilityCurves, damage_state, fragility_curves
+from .fourier import FourierSpectrum, fourier_spectrum
 from .fragility import FragilityFit, annual_frequency, fragility, fragility_ida
 from .harmonic import motion_space, plot_motion_space
 from .ida import ida, ida_capacity
 from .montecarlo import MonteCarloResult, monte_carlo, wilson_interval
+from .overturning import (
+    PULSES,
+    outcome_map,
+    overturning_spectrum,
+    plot_outcome_map,
+    plot_overturning_spectrum,
+    pulse_motion,
+)
 
 __all__ = [
     "motion_space", "plot_motion_space", "monte_carlo", "MonteCarloResult", "wilson_interval",
     "ida", "ida_capacity", "fragility", "fragility_ida", "FragilityFit", "annual_frequency",
     "fragility_curves", "FragilityCurves", "damage_state", "DEFAULT_THRESHOLDS",
+    "fourier_spectrum", "FourierSpectrum", "overturning_spectrum", "outcome_map",
+    "plot_overturning_spectrum", "plot_outcome_map", "pulse_motion", "PULSES",
 ]
