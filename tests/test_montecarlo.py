@@ -105,7 +105,7 @@ def test_motion_space_uplift_criterion_and_single_runs():
 
 # ----------------------------------------------------------------------------- IDA
 def test_ida_scales_records_to_the_levels_and_runs_them(paper_set):
-    from rocking.analysis.ida import ida, ida_capacity, intensity
+    from rocking.analysis.ida import ida, ida_capacity, intensity, plot_ida
 
     blk = rocking.specimen(3, "experimental")
     recs = paper_set[:4]
@@ -130,6 +130,8 @@ def test_ida_scales_records_to_the_levels_and_runs_them(paper_set):
         else:
             assert g.loc[g["im"] == c["capacity"], "overturned"].all()
             assert not g.loc[g["im"] < c["capacity"], "overturned"].any()
+    ax = plot_ida(t)
+    assert len(ax.lines) >= len(recs)
     with pytest.raises(ParameterError, match="im must be one of"):
         ida(blk, recs, im="sa", levels=[1.0])
     with pytest.raises(ParameterError, match="levels"):

@@ -19,7 +19,7 @@ from .damage import DEFAULT_THRESHOLDS, FragilityCurves, damage_state, fragility
 from .fourier import FourierSpectrum, fourier_spectrum
 from .fragility import FragilityFit, annual_frequency, fragility, fragility_ida
 from .harmonic import motion_space, plot_motion_space
-from .ida import ida, ida_capacity
+from .ida import ida, ida_capacity, plot_ida
 from .montecarlo import MonteCarloResult, monte_carlo, wilson_interval
 from .overturning import (
     PULSES,
@@ -32,7 +32,8 @@ from .overturning import (
 
 __all__ = [
     "motion_space", "plot_motion_space", "monte_carlo", "MonteCarloResult", "wilson_interval",
-    "ida", "ida_capacity", "fragility", "fragility_ida", "FragilityFit", "annual_frequency",
+    "ida", "ida_capacity", "plot_ida", "fragility", "fragility_ida", "FragilityFit",
+    "annual_frequency",
     "fragility_curves", "FragilityCurves", "damage_state", "DEFAULT_THRESHOLDS",
     "fourier_spectrum", "FourierSpectrum", "overturning_spectrum", "outcome_map",
     "plot_overturning_spectrum", "plot_outcome_map", "pulse_motion", "PULSES",

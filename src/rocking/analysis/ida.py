@@ -99,3 +99,23 @@ def ida_capacity(table: pd.DataFrame, state: int | None = None) -> pd.DataFrame:
         rows.append({"record": rec, "capacity": float(hit.iloc[0]) if hit.size
                      else float(g["im"].max()), "censored": hit.size == 0})
     return pd.DataFrame(rows)
+
+
+def plot_ida(table: pd.DataFrame, ax=None):
+    """IDA curves of an :func:`ida` table: max |theta| / alpha against the IM level, one
+    line per record, overturning marked at the top. Returns the Axes."""
+    from ..plot import _style, figure  # lazy: matplotlib
+
+    if ax is None:
+        _, ax = figure()
+    top = 1.05 * max(1.0, float(table.loc[~table["overturned"],
+                                          "max_abs_theta_over_alpha"].max()))
+    for _rec, g in table.sort_values("im").groupby("record"):
+        y = np.where(g["overturned"], top, g["max_abs_theta_over_alpha"])
+        ax.plot(g["im"], y, color="0.45", linewidth=0.7, alpha=0.7)
+    ov = table[table["overturned"]]
+    ax.plot(ov["im"], np.full(len(ov), top), "x", color="#C00000", label="overturned")
+    ax.axhline(1.0, color="0.3", linestyle=":", linewidth=0.8)
+    ax.legend(loc="upper left", fontsize=8)
+    _style(ax, "intensity measure", r"max $|\theta|/\alpha$")
+    return ax
