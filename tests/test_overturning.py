@@ -290,3 +290,19 @@ def test_mp_pulse_runs_in_the_models():
     batch = rocking.simulate_many(BLOCK, [m, m.scaled(0.5)])
     assert r.max_abs_theta == batch.max_abs_theta[0]
     assert r.uplift_time >= 0.0
+
+
+def test_a_narrow_overturning_tongue_is_not_missed():
+    """One-cosine pulse at omega_p/p = 1: a tongue of overturning about 0.8% wide lies below
+    a safe gap (found on a fine outcome map). The spectrum must return the tongue's lower
+    edge to ``tol``, not the upper boundary of the gap."""
+    wr = 1.0
+    fine = outcome_map(BLOCK, pulse="cosine", omega_ratio=[wr],
+                       accel_ratio=np.linspace(1.05, 1.25, 401))
+    first = float(fine.loc[fine["overturned"], "accel_ratio"].min())
+    # the map has a safe gap above the first overturning level (non-monotonic boundary)
+    above = fine[fine["accel_ratio"] > first]
+    assert (~above["overturned"]).any(), "no safe gap: the case no longer tests the scan"
+    df = overturning_spectrum(BLOCK, pulse="cosine", omega_ratio=[wr], tol=TOL)
+    got = float(df["min_overturn_ratio"].iloc[0])
+    assert abs(got / first - 1.0) <= TOL + 0.2 / 400 / first

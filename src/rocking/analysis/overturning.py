@@ -37,10 +37,11 @@ the amplitude: for the one-sine pulse a safe region lies between the mode-2 tong
 mode-1 boundary, so a plain bisection between "safe" and "overturns" can miss the minimum.
 The amplitude ratio is therefore first scanned upwards on a grid (``accel_ratio``,
 default 95 levels from 1 to 100 in steps of 5%) for the lowest overturning level, then
-refined by bisection between the last safe and the first overturning grid level, until the
-bracket is narrower than ``tol`` (relative). The result is the minimum *on that grid*,
-refined by bisection: an overturning tongue narrower than one grid step can be missed.
-Every step (one chunk of grid levels, one bisection step) is one
+refined by a scan of that grid step at relative spacing ``tol`` (one tongue of overturning
+narrower than the grid step, but wider than ``tol``, is found there), and last by bisection.
+The result is the lowest overturning amplitude to the relative precision ``tol``, except
+for tongues of overturning narrower than ``tol``, which any sampling can miss.
+Every step (one chunk of grid levels, the fine scan, one bisection step) is one
 :func:`rocking.simulate_many` call over all the frequency ratios still open.
 """
 
@@ -175,8 +176,8 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
         min_overturn_ratio``.
     accel_ratio : array of float, optional
         The scan grid of ``a_p / (g tan alpha)`` (default :data:`DEFAULT_ACCEL_RATIO`,
-        1 to 100 in 5% steps). The result is the lowest overturning level on this grid,
-        refined by bisection between it and the grid level below (0 below the first).
+        1 to 100 in 5% steps). The lowest overturning level on this grid is refined by a
+        scan of the step below it at spacing ``tol`` and then by bisection.
     tail : float
         Free motion simulated after the pulse, in units of ``1/p`` (default 60).
     options : dict, optional
@@ -229,7 +230,27 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
     hi = np.where(found, grid[np.maximum(first, 0)], np.nan)
     lo = np.where(first > 0, grid[np.maximum(first - 1, 0)], 0.0)
     lo[~found] = grid[-1]
-    # 2. vectorised bisection between the last safe and the first overturning level
+    # 2. a fine scan of each bracket at relative spacing tol, so that an overturning
+    #    tongue narrower than the grid step but wider than tol is not missed (the boundary
+    #    is not monotonic: e.g. the one-cosine pulse near omega_p/p = 1)
+    fine = np.flatnonzero(found & (lo > 0.0) & (hi - lo > tol * hi))
+    if fine.size:
+        k = np.ceil(np.log(hi[fine] / lo[fine]) / math.log1p(tol)).astype(int)
+        pts = [(i, lo[i] * (1.0 + tol) ** j) for i, kk in zip(fine, k, strict=True)
+               for j in range(1, kk) if lo[i] * (1.0 + tol) ** j < hi[i]]
+        if pts:
+            res = _run(block, [make(w[i], a) for i, a in pts], model, options)
+            n_sim += len(res)
+            done = set()
+            for (i, a), ov, nimp in zip(pts, res.overturned, res.n_impacts, strict=True):
+                if i in done:
+                    continue
+                if ov:  # the first overturning point of the fine scan
+                    hi[i], imp_hi[i] = a, nimp
+                    done.add(i)
+                else:
+                    lo[i] = a
+    # 3. vectorised bisection between the last safe and the first overturning level
     while True:
         act = np.flatnonzero(found & (hi - lo > tol * hi))
         if act.size == 0:
