@@ -130,6 +130,21 @@ def test_ida_scales_records_to_the_levels_and_runs_them(paper_set):
         else:
             assert g.loc[g["im"] == c["capacity"], "overturned"].all()
             assert not g.loc[g["im"] < c["capacity"], "overturned"].any()
+    # every intensity measure: the scaled records have exactly the requested level
+    for im in ("pga", "pgv", "arias"):
+        lv = np.array([0.5, 2.0]) * intensity(recs[0], im)
+        ti = ida(blk, recs[:2], im=im, levels=lv, duration=2.0)
+        for _, row in ti.iterrows():
+            m = recs[int(row["record"])].scaled(row["scale"])
+            assert intensity(m, im) == pytest.approx(row["im"], rel=1e-9), im
+    # a table where nothing overturns: every capacity is censored at the top level
+    low = ida(blk, recs[:2], im="pga_ratio", levels=[0.5, 0.8], duration=2.0)
+    c = ida_capacity(low)
+    assert c["censored"].all() and (c["capacity"] == 0.8).all()
+    with pytest.raises(ParameterError, match="state must be in"):
+        ida_capacity(low, state=9)
+    with pytest.raises(ParameterError, match="thresholds"):
+        ida(blk, recs, levels=[1.0], thresholds=(0.5, 0.2))
     ax = plot_ida(t)
     assert len(ax.lines) >= len(recs)
     with pytest.raises(ParameterError, match="im must be one of"):

@@ -14,12 +14,13 @@ import pandas as pd
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import Record
-from .damage import DEFAULT_THRESHOLDS, damage_state
+from .damage import DEFAULT_THRESHOLDS, damage_state, state_labels
 
-IMS = {"pga": "m/s^2", "pgv": "m/s", "pgd": "m", "arias": "m/s", "pga_ratio": "-",
-       "pgv_ratio": "-"}
-"""Intensity measures (keys of :func:`rocking.motions.intensity_measures`) and units: the
-dimensionless rocking measures are ``pga_ratio`` = PGA / (g tan alpha) and ``pgv_ratio`` =
+IMS = {"pga": ("m/s^2", 1), "pgv": ("m/s", 1), "pgd": ("m", 1), "arias": ("m/s", 2),
+       "pga_ratio": ("-", 1), "pgv_ratio": ("-", 1)}
+"""Intensity measures (keys of :func:`rocking.motions.intensity_measures`): their unit and
+the power of the load factor they scale with (Arias intensity: 2). The dimensionless
+rocking measures are ``pga_ratio`` = PGA / (g tan alpha) and ``pgv_ratio`` =
 PGV p / (g tan alpha)."""
 
 
@@ -60,20 +61,24 @@ def ida(block, records, im: str = "pga", levels=None, model="housner",
         raise ParameterError("records must be a non-empty sequence of rocking.motions.Record")
     if levels is None:
         raise ParameterError("levels is required: the IM levels, > 0")
-    lv = np.atleast_1d(np.asarray(levels, dtype=float))
+    try:
+        lv = np.atleast_1d(np.asarray(levels, dtype=float))
+    except (TypeError, ValueError):
+        lv = np.array([np.nan])
     if lv.ndim != 1 or lv.size == 0 or not np.all(np.isfinite(lv) & (lv > 0)):
         raise ParameterError(f"levels must be a non-empty sequence of IM values > 0, "
                              f"got {levels!r}")
+    state_labels(thresholds)  # checks the thresholds before any simulation
     base = np.array([intensity(r, im, block) for r in recs])
     if not np.all(base > 0):
         raise ParameterError(f"every record must have {im} > 0 to be scaled")
     ri, li = np.meshgrid(np.arange(len(recs)), np.arange(lv.size), indexing="ij")
     ri, li = ri.ravel(), li.ravel()
-    scale = lv[li] / base[ri]
+    scale = (lv[li] / base[ri]) ** (1.0 / IMS[im][1])
     motions = [recs[i].scaled(s) for i, s in zip(ri, scale, strict=True)]
     res = simulate_many(block, motions, model=model, duration=duration, **options)
     ratio = res.max_abs_theta / block.alpha
-    return pd.DataFrame({
+    table = pd.DataFrame({
         "record": ri, "name": [recs[i].name for i in ri], "level": li, "im": lv[li],
         "scale": scale, "max_abs_theta": res.max_abs_theta, "max_abs_theta_over_alpha": ratio,
         "overturned": res.overturned, "overturn_time": res.overturn_time,
@@ -81,6 +86,8 @@ def ida(block, records, im: str = "pga", levels=None, model="housner",
         "damage_state": damage_state(res.max_abs_theta, block.alpha, res.overturned,
                                      thresholds),
     })
+    table.attrs.update(im=im, unit=IMS[im][0], n_states=len(state_labels(thresholds)))
+    return table
 
 
 def ida_capacity(table: pd.DataFrame, state: int | None = None) -> pd.DataFrame:
@@ -88,11 +95,17 @@ def ida_capacity(table: pd.DataFrame, state: int | None = None) -> pd.DataFrame:
     record reaches damage state ``state`` (default: overturning, the last state), and
     whether it is right-censored (never reached up to the highest level: the capacity only
     exceeds it). Feed ``capacity`` and ``censored`` to :func:`~.fragility.fragility_ida`.
+    The capacity is the first level reached, so it is high by up to one level step (the
+    true capacity lies between that level and the one below): use fine levels.
     """
     need = {"record", "im", "damage_state"}
     if not need <= set(table.columns):
         raise ParameterError(f"table must be an ida() table with columns {sorted(need)}")
-    k = int(table["damage_state"].max()) if state is None else int(state)
+    n_states = int(table.attrs.get("n_states", table["damage_state"].max()))
+    k = n_states if state is None else int(state)
+    if not 1 <= k <= n_states:
+        raise ParameterError(f"state must be in [1, {n_states}] (the damage states of the "
+                             f"table; {n_states} = overturning), got {state!r}")
     rows = []
     for rec, g in table.sort_values("im").groupby("record"):
         hit = g.loc[g["damage_state"] >= k, "im"]
