@@ -22,7 +22,10 @@ KINDS = {"sine": Sine, "hanning": HanningSine}
 
 
 def _grid(name: str, values) -> np.ndarray:
-    arr = np.atleast_1d(np.asarray(values, dtype=float))
+    try:
+        arr = np.atleast_1d(np.asarray(values, dtype=float))
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} must be a non-empty sequence of numbers > 0") from None
     if arr.ndim != 1 or arr.size == 0:
         raise ParameterError(f"{name} must be a non-empty sequence of numbers")
     for v in arr:

@@ -8,8 +8,10 @@ amplitude factor and additive noise, as a shaking table adds), runs every sample
 the compiled batch kernels, and returns P(overturn) with a Wilson confidence interval.
 
 Sample ``i`` draws from its own generator ``numpy.random.default_rng(SeedSequence(seed,
-spawn_key=(i,)))``, and each batch row depends on its own inputs only, so the result does
-not depend on ``chunk_size`` (or on the executor of a campaign).
+spawn_key=(STREAM, i)))`` (the tag ``STREAM`` keeps these draws independent of
+:func:`rocking.motions.stochastic_records` with the same seed), and each batch row
+depends on its own inputs only, so the result does not depend on ``chunk_size`` (or on
+the executor of a campaign).
 """
 
 from __future__ import annotations
@@ -30,6 +32,8 @@ from ..results import jsonable
 from .distributions import draw, frozen
 
 HALF_PI = 0.5 * math.pi
+STREAM = 1
+"""Tag of the Monte Carlo random streams (see the module docstring)."""
 PARAMETERS = {  # name: (nominal from the block or the motion, physical range)
     "alpha": (lambda b: b.alpha, (0.0, HALF_PI)),
     "p": (lambda b: b.p, (0.0, math.inf)),
@@ -45,6 +49,11 @@ added to the motion's samples, m/s^2)."""
 
 def wilson_interval(k: int, n: int, level: float = 0.95) -> tuple[float, float]:
     """Wilson score interval of a binomial proportion ``k / n`` (statsmodels)."""
+    if not (isinstance(n, int | np.integer) and n >= 1):
+        raise ParameterError(f"n must be a whole number >= 1, got {n!r}")
+    if not (isinstance(k, int | np.integer) and 0 <= k <= n):
+        raise ParameterError(f"k must be a whole number in [0, n = {n}], got {k!r}")
+    level = in_range("level", level, 0.0, 1.0, shown="(0, 1)")
     lo, hi = proportion_confint(int(k), int(n), alpha=1.0 - level, method="wilson")
     return float(lo), float(hi)
 
@@ -133,7 +142,7 @@ def draw_samples(block: Block, motions, uncertain: dict, n: int, seed: int, star
              if k in uncertain}
     rows, blocks, ms = [], [], []
     for i in range(start, start + n):
-        rng = np.random.default_rng(np.random.SeedSequence(seed, spawn_key=(i,)))
+        rng = np.random.default_rng(np.random.SeedSequence(seed, spawn_key=(STREAM, i)))
         v = {k: (draw(dists[k], rng, *PARAMETERS[k][1], name=k) if k in dists
                  else PARAMETERS[k][0](block)) for k in PARAMETERS}
         j = i % len(motions)
@@ -176,11 +185,18 @@ def monte_carlo(block: Block, motions, uncertain: dict | None = None, n: int = 1
     motions = list(motions)
     if not motions or not all(isinstance(m, Motion) for m in motions):
         raise ParameterError("motions must be a Motion or a non-empty sequence of Motions")
+    if not isinstance(n, int | np.integer) or isinstance(n, bool):
+        raise ParameterError(f"n must be a whole number in [1, 1e9], got {n!r}")
     n = int(in_range("n", n, 1, 1e9, lo_open=False, hi_open=False, shown="[1, 1e9]"))
     chunk = int(in_range("chunk_size", chunk_size, 1, 1e9, lo_open=False, shown="[1, 1e9)"))
     level = in_range("level", level, 0.0, 1.0, shown="(0, 1)")
-    if not isinstance(seed, int | np.integer) or seed < 0:
+    if isinstance(seed, bool) or not isinstance(seed, int | np.integer) or seed < 0:
         raise ParameterError(f"seed must be a whole number >= 0, got {seed!r}")
+    if uncertain is not None and not isinstance(uncertain, dict):
+        raise ParameterError("uncertain must be a dict {parameter: distribution}, got "
+                             f"{type(uncertain).__name__}")
+    if not isinstance(block, Block):
+        raise ParameterError(f"block must be a rocking.Block, got {type(block).__name__}")
     uncertain = dict(uncertain or {})
     parts = []
     for start in range(0, n, chunk):

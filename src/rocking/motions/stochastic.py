@@ -68,7 +68,7 @@ are dropped (below the rounding of the sum). ``sigma_f`` does not depend on the 
 computed once per call.
 
 **Seeds.** Record ``i`` (``start <= i < start + n``) draws its ``N`` pulses from
-``numpy.random.default_rng(numpy.random.SeedSequence(seed, spawn_key=(i,)))``: a record
+``numpy.random.default_rng(numpy.random.SeedSequence(seed, spawn_key=(STREAM, i)))``: a record
 depends only on ``(seed, i)`` and the parameters, so generating records 0-9 and then 10-19
 (``start=10``) gives the same records, bit for bit, as generating 0-19 at once.
 
@@ -117,6 +117,10 @@ _P5, _P45, _P95 = 0.05, 0.45, 0.95
 _TAIL = 0.9999            # the default duration covers this fraction of the expected Ia
 _HP_DECAY = 10.0          # ... plus this many 1/omega_c for the high-pass to die out
 _DROP = math.log(1e16)    # a pulse is dropped when its envelope has decayed by this (log)
+
+STREAM = 2
+"""Tag of this generator's random streams (``SeedSequence`` spawn key ``(STREAM, i)``), so
+that the same seed in another seeded part of the package draws independent numbers."""
 
 
 # --------------------------------------------------------------------------- modulation
@@ -393,7 +397,7 @@ def _model(Ia, D5_95, t_mid, omega_mid, omega_prime, zeta_f, omega_c, dt, durati
     }
 
 
-def stochastic_records(n: int, seed: int | None = None, *, start: int = 0,
+def stochastic_records(n: int, seed: int | None = 0, *, start: int = 0,
                        Ia: float = DEFAULTS["Ia"], D5_95: float = DEFAULTS["D5_95"],
                        t_mid: float = DEFAULTS["t_mid"],
                        omega_mid: float = DEFAULTS["omega_mid"],
@@ -409,8 +413,8 @@ def stochastic_records(n: int, seed: int | None = None, *, start: int = 0,
     n : int
         Number of records (>= 1).
     seed : int, optional
-        Non-negative integer; the records are a function of ``(seed, index)``. ``None``
-        draws fresh entropy (stored in each record's ``meta["seed"]`` to repeat it).
+        Non-negative integer (default 0); the records are a function of ``(seed, index)``.
+        ``None`` draws fresh entropy (stored in each record's ``meta["seed"]`` to repeat it).
     start : int
         Index of the first record (>= 0): records ``start .. start + n - 1``.
     Ia : float
@@ -449,7 +453,8 @@ def stochastic_records(n: int, seed: int | None = None, *, start: int = 0,
     N = m["N"]
     u = np.empty((n, N))
     for j in range(n):
-        rng = np.random.default_rng(np.random.SeedSequence(seed, spawn_key=(start + j,)))
+        rng = np.random.default_rng(np.random.SeedSequence(seed,
+                                                           spawn_key=(STREAM, start + j)))
         u[j] = rng.standard_normal(N)
     x = _filtered(u, m["amp"], m["rot_re"], m["rot_im"], m["scale"], m["L"])
     p = m["params"]
