@@ -37,6 +37,8 @@ from ..units import G
 #: resamples the records (within each stripe when every IM value is a stripe) and
 #: refits each replicate.
 BOOTSTRAP_METHODS = ("normal", "resample")
+_BAND_NAME = {"normal": "parametric bootstrap, asymptotic normal",
+              "resample": "bootstrap, resampled records"}
 
 #: SI value of one unit, for the units of pelicun's ``default_units.json`` that an IM
 #: may have (``Theta_0`` is written in the ``Demand-Unit``).
@@ -329,7 +331,7 @@ class FragilityFit:
         if band and self.n_boot:
             b = self.band(x, level)
             ax.fill_between(x, b["lower"], b["upper"], color=color, alpha=0.2, lw=0,
-                            label=f"{100 * level:g}% bootstrap band")
+                            label=f"{100 * level:g}% band ({_BAND_NAME[self.bootstrap]})")
         if data:
             self._plot_data(ax, color)
         _style(ax, "intensity measure", "probability of exceedance")
