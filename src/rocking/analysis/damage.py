@@ -19,8 +19,11 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+import pandas as pd
+from statsmodels.miscmodels.ordinal_model import OrderedModel
 
 from ..errors import ParameterError, SimulationError
+from ..plot import PALETTE, figure
 from ..results import jsonable
 from .fragility import (
     FragilityFit,
@@ -114,7 +117,6 @@ class FragilityCurves:
 
     def probability(self, im):
         """``P(DS >= k | im)``: a DataFrame with ``im`` and one column per state label."""
-        import pandas as pd
 
         x = np.atleast_1d(np.asarray(im, dtype=float))
         d = {"im": x}
@@ -124,7 +126,6 @@ class FragilityCurves:
 
     def state_probability(self, im):
         """``P(DS = k | im)`` for k = 0..n (columns ``DS0``..``DSn``), summing to 1."""
-        import pandas as pd
 
         x = np.atleast_1d(np.asarray(im, dtype=float))
         pe = np.column_stack([np.ones_like(x)] + [f.probability(x) for f in self.fits]
@@ -154,7 +155,6 @@ class FragilityCurves:
 
     def plot(self, ax=None, *, level: float = 0.95, band: bool = True, data: bool = True):
         """Every state's curve (with its band and data); returns the Axes."""
-        from ..plot import PALETTE, figure
 
         if ax is None:
             _, ax = figure()
@@ -172,7 +172,6 @@ class FragilityCurves:
 def _ordered_probit(x, state, n_states):
     """statsmodels ``OrderedModel`` (probit) of the states on ``ln x``: the common beta,
     the thresholds, and the model (to transform bootstrap draws)."""
-    from statsmodels.miscmodels.ordinal_model import OrderedModel
 
     model = OrderedModel(state, np.log(x)[:, None], distr="probit")
     res = model.fit(method="bfgs", disp=False, maxiter=500)
@@ -203,7 +202,6 @@ def fragility_curves(im, state=None, *, ratio=None, overturned=None,
     ``method="separate"``: one :func:`fragility` per state, refused if two curves cross
     within the data's IM range. Baker (2015); pelicun's limit-state families.
     """
-    import pandas as pd
 
     if method not in METHODS:
         raise ParameterError(f"method must be one of {METHODS}, got {method!r}")

@@ -24,9 +24,16 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+import pandas as pd
+from scipy import fft
+from scipy.interpolate import CubicSpline
+from scipy.signal import detrend as _detrend
+from scipy.signal import find_peaks, get_window
 
 from .._validate import in_range
 from ..errors import ParameterError
+from ..plot import PALETTE, _style, new_axes
+from ..results import jsonable
 
 _DETREND = ("constant", "linear", None)
 
@@ -69,7 +76,6 @@ def _uniform(t: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, float, bool]:
     if np.all(np.abs(steps - dt) <= 1e-9 * dt):
         return x, dt, False
     n = int(math.floor((t[-1] - t[0]) / dt + 1e-9)) + 1
-    from scipy.interpolate import CubicSpline
 
     grid = t[0] + np.arange(n) * dt
     return CubicSpline(t, x)(grid), dt, True
@@ -98,7 +104,6 @@ class FourierSpectrum:
     @property
     def spectrum(self):
         """The spectrum as a DataFrame with columns ``freq`` (Hz) and ``amplitude``."""
-        import pandas as pd
 
         return pd.DataFrame({"freq": self.freq, "amplitude": self.amplitude})
 
@@ -116,7 +121,6 @@ class FourierSpectrum:
 
     def summary(self) -> dict:
         """JSON-ready: the grid, the resolution ``1/T`` and the peaks."""
-        from ..results import jsonable
 
         return jsonable({
             "dt": self.dt, "duration": self.duration, "resolution": 1.0 / self.duration,
@@ -128,7 +132,6 @@ class FourierSpectrum:
 
     def to_dict(self) -> dict:
         """The summary plus the spectrum arrays, JSON-ready."""
-        from ..results import jsonable
 
         d = self.summary()
         d["freq"] = jsonable(self.freq)
@@ -138,7 +141,6 @@ class FourierSpectrum:
     def plot(self, ax=None, *, fmax: float | None = None, label: str | None = None,
              annotate: bool = True, **kw):
         """Plot the amplitude against frequency, the peaks marked. Returns the Axes."""
-        from ..plot import PALETTE, _style, new_axes
 
         if ax is None:
             _, ax = new_axes()
@@ -193,10 +195,6 @@ def fourier_spectrum(response_or_signal, *, detrend: str | None = "constant",
         ``amplitude``, ``prominence``, highest first; frequency and height refined by a
         parabola through the three samples around each maximum) and ``plot()``.
     """
-    import pandas as pd
-    from scipy import fft
-    from scipy.signal import detrend as _detrend
-    from scipy.signal import find_peaks, get_window
 
     t, x, label = _as_signal(response_or_signal)
     if detrend not in _DETREND:

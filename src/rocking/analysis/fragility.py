@@ -26,9 +26,17 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+import pandas as pd
+import statsmodels.api as sm
+from scipy import stats
+from scipy.integrate import quad
+from scipy.stats import norm
+from statsmodels.duration.survfunc import SurvfuncRight
+from statsmodels.tools.numdiff import approx_hess3
 
 from .._validate import in_range
 from ..errors import ParameterError, SimulationError
+from ..plot import PALETTE, _style, figure
 from ..results import jsonable
 from ..units import G
 
@@ -232,7 +240,6 @@ class FragilityFit:
 
     def probability(self, im):
         """P(failure | im) (an array like ``im``; scalar in, float out)."""
-        from scipy.stats import norm
 
         x = _as_im("im", im)
         p = norm.cdf(np.log(x / self.median) / self.beta)
@@ -241,8 +248,6 @@ class FragilityFit:
     def band(self, im, level: float = 0.95):
         """The pointwise bootstrap band at ``im``: a DataFrame with ``im``,
         ``probability``, ``lower``, ``upper`` (equal-tailed percentiles at ``level``)."""
-        import pandas as pd
-        from scipy.stats import norm
 
         x = _as_im("im", im)
         level = in_range("level", level, 0.0, 1.0)
@@ -317,7 +322,6 @@ class FragilityFit:
              im=None, label: str | None = None, color=None):
         """The curve, its bootstrap band and the data (the failed fraction of each stripe,
         or the Kaplan-Meier estimate of the IDA capacities); returns the Axes."""
-        from ..plot import PALETTE, _style, figure
 
         if ax is None:
             _, ax = figure()
@@ -344,7 +348,6 @@ class FragilityFit:
             d = self.data
             ax.plot(d["im"], d["n_failed"] / d["n"], "o", ms=4, color=color, mfc="none")
             return
-        from statsmodels.duration.survfunc import SurvfuncRight
 
         d = self.data
         sf = SurvfuncRight(np.asarray(d["capacity"]), (~np.asarray(d["censored"])).astype(int))
@@ -356,7 +359,6 @@ def pelicun_table(fits, *, id: str, demand_type: str, demand_unit: str,
                   im_unit: str | None = None, directional: bool = True, path=None):
     """A one-row pelicun fragility table with one limit state per fit (``LS1``,
     ``LS2``, ...); see :meth:`FragilityFit.to_pelicun`."""
-    import pandas as pd
 
     if demand_unit not in PELICUN_UNITS:
         raise ParameterError(f"demand_unit must be one of pelicun's units "
@@ -381,7 +383,6 @@ def pelicun_table(fits, *, id: str, demand_type: str, demand_unit: str,
 
 def _glm(x: np.ndarray, k: np.ndarray, n: np.ndarray):
     """The probit GLM on ``ln x`` of ``k`` failures out of ``n`` per row."""
-    import statsmodels.api as sm
 
     exog = np.column_stack([np.ones_like(x), np.log(x)])
     endog = np.column_stack([k, n - k])
@@ -417,7 +418,6 @@ def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
     Raises :class:`~rocking.ParameterError` for bad input, and when the MLE does not
     exist: no failure, all failed, or outcomes perfectly separated by the IM.
     """
-    import pandas as pd
 
     x, y = records(im, failed)
     n_boot, rng, bootstrap = _n_boot(n_boot), _rng(seed), _bootstrap(bootstrap)
@@ -477,7 +477,6 @@ def _make_fit(coef, coef_cov, method, data, boot, bootstrap, seed, n_fail, llf, 
 # --------------------------------------------------------------------------- IDA
 
 def _censored_loglike(mu, log_beta, cap, cens):
-    from scipy.stats import norm
 
     z = (np.log(cap) - mu) / math.exp(log_beta)
     return float(np.sum(norm.logpdf(z[~cens]) - log_beta - np.log(cap[~cens]))
@@ -485,7 +484,6 @@ def _censored_loglike(mu, log_beta, cap, cens):
 
 
 def _lognorm_fit(cap, cens):
-    from scipy import stats
 
     data = stats.CensoredData(uncensored=cap[~cens], right=cap[cens])
     s, _, scale = stats.lognorm.fit(data, floc=0)
@@ -511,8 +509,6 @@ def fragility_ida(capacity, censored=None, *, n_boot: int = 1000, seed: int | No
     ``n_boot``, ``seed`` and ``bootstrap`` as in :func:`fragility` (``"resample"``
     resamples records and refits, about 0.1 s per replicate).
     """
-    import pandas as pd
-    from statsmodels.tools.numdiff import approx_hess3
 
     cap = _as_im("capacity", capacity)
     cens = (np.zeros(cap.size, bool) if censored is None else _as_bool("censored", censored))
@@ -577,7 +573,6 @@ def annual_frequency(fit, hazard_im, hazard_rate, *, tail: bool = True):
     ``fit``: a :class:`FragilityFit` (returns a float) or anything with
     ``probability(im)`` and a sequence ``fits`` (one float per fit, as a list).
     """
-    from scipy.integrate import quad
 
     x = _as_im("hazard_im", hazard_im)
     lam = np.atleast_1d(np.asarray(hazard_rate, dtype=float))

@@ -16,6 +16,7 @@ from .._validate import positive
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import HanningSine, Sine
+from ..plot import _style, figure
 from ..units import G
 
 KINDS = {"sine": Sine, "hanning": HanningSine}
@@ -81,7 +82,6 @@ def motion_space(block, freqs, amplitudes, kind: str = "sine", duration: float =
 def plot_motion_space(df: pd.DataFrame, ax=None):
     """Map of a :func:`motion_space` table: max |theta| / alpha per cell, overturned cells
     marked, no-rocking cells blank. Returns the Axes."""
-    from ..plot import _style, figure  # lazy: matplotlib
 
     if ax is None:
         _, ax = figure()

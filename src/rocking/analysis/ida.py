@@ -14,6 +14,7 @@ import pandas as pd
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import Record
+from ..plot import _style, figure
 from .damage import DEFAULT_THRESHOLDS, damage_state, state_labels
 
 IMS = {"pga": ("m/s^2", 1), "pgv": ("m/s", 1), "pgd": ("m", 1), "arias": ("m/s", 2),
@@ -117,7 +118,6 @@ def ida_capacity(table: pd.DataFrame, state: int | None = None) -> pd.DataFrame:
 def plot_ida(table: pd.DataFrame, ax=None):
     """IDA curves of an :func:`ida` table: max |theta| / alpha against the IM level, one
     line per record, overturning marked at the top. Returns the Axes."""
-    from ..plot import _style, figure  # lazy: matplotlib
 
     if ax is None:
         _, ax = figure()

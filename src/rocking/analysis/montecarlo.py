@@ -28,6 +28,7 @@ from ..blocks import Block
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import Motion, Record, sample
+from ..plot import _style, figure
 from ..results import jsonable
 from .distributions import draw, frozen
 
@@ -110,7 +111,6 @@ class MonteCarloResult:
 
     def plot(self, ax=None):
         """Histogram of max |theta| / alpha of the surviving samples, with P(overturn)."""
-        from ..plot import _style, figure  # lazy: matplotlib
 
         if ax is None:
             _, ax = figure()

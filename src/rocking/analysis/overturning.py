@@ -50,9 +50,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pandas as pd
 
 from .._validate import as_float, in_range, positive
 from ..errors import ParameterError
+from ..models import simulate_many
+from ..motions import MavroeidisPapageorgiou, OneCosine, OneSine, Ricker
+from ..plot import PALETTE, _style, new_axes
 from ..units import G
 
 PULSES = ("sine", "cosine", "ricker", "mp")
@@ -92,7 +96,6 @@ def _check_block(block):
 
 def _pulse_factory(block, pulse: str, pulse_options: dict, tail: float):
     """A function ``(omega_ratio, accel_ratio) -> Motion`` for ``block`` (validated once)."""
-    from ..motions import MavroeidisPapageorgiou, OneCosine, OneSine, Ricker
 
     if pulse not in PULSES:
         raise ParameterError(f"pulse must be one of {', '.join(map(repr, PULSES))}, "
@@ -146,7 +149,6 @@ def pulse_motion(block, pulse: str, omega_ratio: float, accel_ratio: float, *,
 
 
 def _run(block, motions, model, options):
-    from ..models import simulate_many
 
     return simulate_many(block, motions, model=model, **(options or {}))
 
@@ -197,7 +199,6 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
         ``pulse``, ``tol``, ``model`` and ``n_simulations``. Plot with
         :func:`plot_overturning_spectrum`.
     """
-    import pandas as pd
 
     _check_block(block)
     if omega_ratio is None:
@@ -311,7 +312,6 @@ def outcome_map(block, pulse: str = "sine", omega_ratio=None, accel_ratio=None,
         one-sine pulse the map shows the safe region between the mode-2 tongue and the
         mode-1 boundary. Plot with :func:`plot_outcome_map`.
     """
-    import pandas as pd
 
     _check_block(block)
     if omega_ratio is None or accel_ratio is None:
@@ -359,7 +359,6 @@ def _title(attrs) -> str:
 def plot_overturning_spectrum(df, ax=None, *, label: str | None = None, **kw):
     """Plot an :func:`overturning_spectrum`: ``min_overturn_ratio`` against
     ``omega_ratio``, the points marked by overturning mode. Returns the Axes."""
-    from ..plot import PALETTE, _style, new_axes
 
     if ax is None:
         _, ax = new_axes()
@@ -395,8 +394,6 @@ def plot_outcome_map(df, ax=None, *, spectrum=None):
     of the same block and pulse) is overlaid as a line. Returns the Axes."""
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
-
-    from ..plot import _style, new_axes
 
     if ax is None:
         _, ax = new_axes(figsize=(6.4, 4.4))
