@@ -7,6 +7,7 @@ import re
 from html.parser import HTMLParser
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -314,3 +315,89 @@ def test_same_titles_and_numbers_twice(report, tmp_path):
     # every section title of the full quick report is fixed by the registry of sections
     assert [t for t, _ in first_secs.values() if t != "Provenance"] == [
         s.title for s in ordered_sections()]
+
+
+# ----------------------------------------------------------------------------- issue 10
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+def test_stochastic_sections_present(report):
+    out, index, _ = report
+    text = index.read_text(encoding="utf-8")
+    for sid in ("figure6", "probability", "pulses", "fragility"):
+        assert f'id="{sid}"' in text, sid
+    for png in ("figure6_theta_spectra.png", "probability_p_overturn.png",
+                "pulses_spectra.png", "pulses_outcome_map.png", "fragility_curves.png",
+                "fragility_annual_frequency.png"):
+        assert (out / png).is_file(), png
+    assert "ILLUSTRATIVE" in text or "illustrative" in text
+
+
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+def test_figure6_spectra_peak_at_the_load_frequency(report):
+    out, _, _ = report
+    df = pd.read_csv(out / "figure6_tests.csv")
+    assert {"test", "amplitude_factor", "max_abs_theta_deg", "diff_from_test1_pct",
+            "peak_load_hz", "peak_transient_hz"} <= set(df.columns)
+    assert list(df["test"]) == [1, 2, 3, 4, 5, 6]
+    assert (df["peak_load_hz"] - 3.3).abs().max() < 0.1
+    # the transient peak lies below the load frequency (the paper: 1.9 Hz)
+    assert ((df["peak_transient_hz"] > 1.0) & (df["peak_transient_hz"] < 3.0)).all()
+    assert df["diff_from_test1_pct"].iloc[0] == 0.0
+    spec = pd.read_csv(out / "figure6_spectra.csv")
+    assert spec.columns[0] == "freq_hz" and spec.shape[1] == 7
+
+
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+def test_overturning_spectra_no_overturning_below_uplift(report):
+    out, _, _ = report
+    df = pd.read_csv(out / "pulses_spectra.csv")
+    assert {"specimen", "pulse", "omega_ratio", "min_overturn_ratio", "mode",
+            "safe_ratio"} <= set(df.columns)
+    assert set(df["specimen"]) == {1, 2, 3, 4} and set(df["pulse"]) == {"sine", "cosine"}
+    found = df["min_overturn_ratio"].dropna()
+    assert len(found) > 0.7 * len(df)
+    assert (found >= 1.0).all()
+    omap = pd.read_csv(out / "pulses_outcome_map.csv")
+    assert {"omega_ratio", "accel_ratio", "overturned", "mode"} <= set(omap.columns)
+    assert not omap.loc[omap["accel_ratio"] < 1.0, "overturned"].any()
+    assert set(omap["mode"]) >= {0, 1, 2}  # both modes and the safe cells
+
+
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+def test_p_overturn_non_decreasing_within_its_band(report):
+    out, _, _ = report
+    df = pd.read_csv(out / "probability_p_overturn.csv")
+    assert {"source", "load_factor", "n", "n_overturned", "p_overturn", "ci_low",
+            "ci_high", "nominal_overturned"} <= set(df.columns)
+    d = df[df["source"] == "block and table"].sort_values("load_factor")
+    assert 1.1 in set(d["load_factor"].round(2)) and 1.3 in set(d["load_factor"].round(2))
+    assert ((d["ci_low"] <= d["p_overturn"]) & (d["p_overturn"] <= d["ci_high"])).all()
+    p, hi = d["p_overturn"].to_numpy(), d["ci_high"].to_numpy()
+    for i in range(len(d)):
+        for j in range(i + 1, len(d)):
+            assert hi[j] >= p[i], (d["load_factor"].iloc[i], d["load_factor"].iloc[j])
+    assert p[-1] > p[0]
+
+
+@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+def test_fragility_medians_increase_and_pelicun_table(report):
+    out, _, _ = report
+    fits = pd.read_csv(out / "fragility_fits.csv")
+    assert {"record_set", "specimen", "fit", "state", "median_m_s2", "beta",
+            "beta_se"} <= set(fits.columns)
+    cb = fits[fits["fit"] == "common_beta"]
+    assert set(cb["specimen"]) == {2, 3, 4}
+    assert set(cb["record_set"]) == {"matched", "stochastic"}
+    for _, g in cb.groupby(["record_set", "specimen"]):
+        med = g.sort_values("state")["median_m_s2"].to_numpy()
+        assert len(med) == 3 and (np.diff(med) > 0).all()
+    pel = pd.read_csv(out / "fragility_pelicun.csv")
+    for col in ("ID", "Incomplete", "Demand-Type", "Demand-Unit", "Demand-Offset",
+                "Demand-Directional", "LS1-Family", "LS1-Theta_0", "LS1-Theta_1",
+                "LS3-Theta_0", "LS3-Theta_1"):
+        assert col in pel.columns, col
+    assert len(pel) == 6 and (pel["LS1-Family"] == "lognormal").all()
+    assert (pel["Demand-Unit"] == "g").all()
+    assert (pel["LS1-Theta_0"] < pel["LS3-Theta_0"]).all()
+    af = pd.read_csv(out / "fragility_annual_frequency_illustrative.csv")
+    for _, g in af.groupby(["record_set", "specimen"]):
+        assert (np.diff(g.sort_values("state")["annual_frequency"].to_numpy()) < 0).all()
