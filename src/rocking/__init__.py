@@ -27,7 +27,9 @@ from .errors import (
     RecordError,
     RockingError,
     SimulationError,
+    SpecError,
     SpecimenError,
+    StoreError,
     UnitError,
 )
 from .results import BatchResponse, DEMResponse, Response
@@ -35,8 +37,8 @@ from .units import G
 
 __version__ = "0.1.0"
 
-_SUBMODULES = ("blocks", "motions", "models", "results", "identify", "analysis", "report",
-               "cli", "testing", "units", "errors", "plot")
+_SUBMODULES = ("blocks", "motions", "models", "results", "identify", "analysis", "campaign",
+               "report", "cli", "testing", "units", "errors", "plot")
 """Submodules loaded on first access (PEP 562): ``rocking.identify.free_rocking`` works
 after ``import rocking``, and ``import rocking`` stays cheap (no numba compilation)."""
 _LAZY = {"simulate": ("rocking.models", "simulate"),
@@ -89,5 +91,5 @@ __all__ = [
     "Block", "Stack", "housner_mu", "specimen", "simulate", "simulate_many", "Response",
     "BatchResponse", "DEMResponse", "MODELS", "G", "RockingError", "ParameterError",
     "RecordError", "SpecimenError", "UnitError", "OutputTooLargeError", "IdentificationError",
-    "SimulationError", "__version__",
+    "SimulationError", "SpecError", "StoreError", "__version__",
 ]

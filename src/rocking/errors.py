@@ -42,9 +42,18 @@ class IdentificationError(RockingError):
     """The record does not allow an identification (no rocking, too few impacts, ...)."""
 
 
+class SpecError(ParameterError):
+    """A campaign spec (TOML) is malformed: the message names the key."""
+
+
+class StoreError(RockingError):
+    """A campaign store does not match its spec, or is not a store."""
+
+
 class SimulationError(RuntimeError):
     """A numerical failure of a model on valid input (not bad input)."""
 
 
 __all__ = ["RockingError", "ParameterError", "SpecimenError", "RecordError", "UnitError",
-           "OutputTooLargeError", "IdentificationError", "SimulationError"]
+           "OutputTooLargeError", "IdentificationError", "SimulationError",
+           "SpecError", "StoreError"]

@@ -123,7 +123,9 @@ class MonteCarloResult:
         return ax
 
 
-def _sample_motion(motion: Motion, amplitude: float, noise: float, rng) -> Motion:
+def perturbed(motion: Motion, amplitude: float, noise: float, rng) -> Motion:
+    """``motion`` scaled by ``amplitude`` plus white noise of standard deviation ``noise``
+    (m/s^2) drawn from ``rng`` (a shaking table's perturbations)."""
     m = motion.scaled(amplitude) if amplitude != 1.0 else motion
     if noise == 0.0:
         return m
@@ -150,7 +152,7 @@ def draw_samples(block: Block, motions, uncertain: dict, n: int, seed: int, star
             v["theta0"] = math.copysign(0.999 * v["alpha"], v["theta0"])  # beyond: it falls
         blocks.append(block if all(k not in dists for k in ("alpha", "p", "mu"))
                       else Block.from_params(v["alpha"], v["p"], v["mu"], name=block.name))
-        ms.append(_sample_motion(motions[j], v["amplitude"], v["noise"], rng))
+        ms.append(perturbed(motions[j], v["amplitude"], v["noise"], rng))
         rows.append({"sample": i, "motion": j, **v})
     return pd.DataFrame(rows), blocks, ms
 

@@ -11,10 +11,13 @@
     rocking dem-params --specimen 2
     rocking identify RECORD.csv
     rocking reproduce --out results [--quick] [--full]
+    rocking campaign run SPEC.toml --out STORE [--executor dask --dask-local 2]
+    rocking campaign status|report STORE
 
 Modules: :mod:`~rocking.cli.params`, :mod:`~rocking.cli.simulate`,
 :mod:`~rocking.cli.models`, :mod:`~rocking.cli.motion`, :mod:`~rocking.cli.dem`,
-:mod:`~rocking.cli.identify`, :mod:`~rocking.cli.reproduce`; each imports only
+:mod:`~rocking.cli.identify`, :mod:`~rocking.cli.reproduce`,
+:mod:`~rocking.cli.campaign`; each imports only
 :mod:`~rocking.cli.common` (and the library), and this module registers them.
 
 Errors: :func:`main` prints bad input -- a :class:`~rocking.errors.RockingError` from the
@@ -31,6 +34,7 @@ import sys
 import click
 
 from .. import __version__
+from .campaign import campaign
 from .common import CONTEXT, error_report, one_line
 from .dem import dem_params
 from .identify import identify
@@ -51,7 +55,7 @@ def cli():
 
 
 for _command in (params_cmd, simulate_cmd, reproduce_cmd, identify, dem_params, motion,
-                 models_cmd):
+                 models_cmd, campaign):
     cli.add_command(_command)
 
 _NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())

@@ -1,0 +1,237 @@
+"""Running a campaign into its store: the local executor and Dask.
+
+* ``local`` (default): this process, one chunk after another, each chunk one compiled
+  batch spread over every core by numba (``prange``).
+* ``dask``: chunks as tasks on a ``dask.distributed`` cluster, an existing one
+  (``scheduler="tcp://host:port"``) or a ``LocalCluster`` of ``dask_local`` worker
+  processes. At most ``window`` chunks are in flight (``as_completed``, refilled as chunks
+  finish): submitting every chunk at once stalls the scheduler for large campaigns
+  (dask/distributed#2181). Results come back to this process, which writes the store, so
+  the workers need no shared file system (but ``files`` records must be readable by them).
+
+numba and Dask (see also the README):
+
+* threads: a ``LocalCluster`` gets process workers with one Dask thread each and
+  ``NUMBA_NUM_THREADS = cores // workers`` set before each worker starts (the
+  ``distributed.nanny.pre-spawn-environ`` setting; the nanny does not set it). On an
+  existing cluster each worker calls ``numba.set_num_threads(cores on its host // workers
+  on its host)``, bounded by its ``NUMBA_NUM_THREADS``.
+* a worker with several Dask threads runs one chunk at a time (a lock): numba's default
+  ``workqueue`` threading layer aborts when two threads launch ``prange`` kernels at once.
+* compilation: every worker loads (or compiles) the kernels of the campaign's models once,
+  before any chunk is mapped.
+* ``NUMBA_CACHE_DIR``: keep it on a disk local to each node (e.g. ``$TMPDIR``) on a
+  cluster whose home directory is shared; numba's default is the package's
+  ``__pycache__``.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+import time
+from collections.abc import Callable
+
+import numpy as np
+
+from ..errors import ParameterError
+from .plan import Campaign
+from .spec import CampaignSpec, read_spec
+from .store import Store
+
+EXECUTORS = ("local", "dask")
+
+
+def _cores() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not Linux
+        return os.cpu_count() or 1
+
+
+# ------------------------------------------------------------------------- on a worker
+_CAMPAIGNS: dict[str, Campaign] = {}
+_KERNEL_LOCK = threading.Lock()
+
+
+def _campaign(spec: CampaignSpec) -> Campaign:
+    c = _CAMPAIGNS.get(spec.hash)
+    if c is None:
+        _CAMPAIGNS.clear()
+        c = _CAMPAIGNS[spec.hash] = Campaign(spec)
+    return c
+
+
+def chunk_task(spec: CampaignSpec, k: int):
+    """Run chunk ``k`` of ``spec`` (in a Dask worker): ``(k, table)``."""
+    with _KERNEL_LOCK:
+        return k, _campaign(spec).run_chunk(k)
+
+
+def warm_up(spec: CampaignSpec) -> None:
+    """Load (or compile) the kernels of the spec's models: one short run each."""
+    from ..models import simulate_many
+    from ..motions import Sine
+    for name in spec.models:
+        simulate_many(spec.blocks[0], [Sine.from_acceleration(2.0, 0.1, 0.05)], model=name,
+                      **spec.options.get(name, {}))
+
+
+def setup_worker(spec: CampaignSpec, per_host: dict | None = None, dask_worker=None) -> dict:
+    """Set numba's threads for this worker (cores on its host / workers on its host) and
+    warm up the kernels. Called on every worker with ``Client.run``."""
+    import numba
+    if per_host is not None and dask_worker is not None:
+        host = dask_worker.address.rsplit(":", 1)[0]
+        share = max(1, _cores() // max(1, per_host.get(host, 1)))
+        numba.set_num_threads(min(share, numba.config.NUMBA_NUM_THREADS))
+    with _KERNEL_LOCK:
+        warm_up(spec)
+    return {"pid": os.getpid(), "numba_threads": numba.get_num_threads(),
+            "threading_layer": numba.config.THREADING_LAYER,
+            "cache_dir": numba.config.CACHE_DIR or "(next to the package)"}
+
+
+# ------------------------------------------------------------------------- executors
+def _run_local(campaign: Campaign, store: Store, todo: list[int], on_chunk: Callable):
+    for k in todo:
+        table = campaign.run_chunk(k)
+        store.write_chunk(k, table)
+        on_chunk(k, len(table))
+
+
+def local_cluster(n_workers: int):
+    """A ``LocalCluster`` of ``n_workers`` process workers, one Dask thread each, with
+    ``NUMBA_NUM_THREADS`` set before they start."""
+    import logging
+
+    import dask
+    from distributed import LocalCluster
+    threads = max(1, _cores() // n_workers)
+    with dask.config.set({"distributed.nanny.pre-spawn-environ.NUMBA_NUM_THREADS":
+                          str(threads)}):
+        return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
+                            dashboard_address=None, silence_logs=logging.ERROR)
+
+
+def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Callable,
+              scheduler: str | None, dask_local: int | None, window: int | None,
+              log: Callable):
+    from distributed import Client, as_completed
+    cluster = local_cluster(dask_local) if scheduler is None else None
+    client = Client(cluster if cluster is not None else scheduler, timeout="60s")
+    futures = []
+    try:
+        workers = client.scheduler_info(n_workers=-1)["workers"]
+        if not workers:
+            client.wait_for_workers(1, timeout=120)
+            workers = client.scheduler_info(n_workers=-1)["workers"]
+        per_host: dict[str, int] = {}
+        for addr in workers:
+            host = addr.rsplit(":", 1)[0]
+            per_host[host] = per_host.get(host, 0) + 1
+        info = client.run(setup_worker, spec, None if cluster is not None else per_host)
+        threads = sum(w.get("nthreads", 1) for w in workers.values())
+        log(f"dask: {len(workers)} workers on {len(per_host)} host(s), "
+            f"{sorted({v['numba_threads'] for v in info.values()})} numba threads each")
+        window = window or max(2, 2 * threads)
+        spec_f = client.scatter(spec, broadcast=True)
+        queue = iter(todo)
+        futures = [client.submit(chunk_task, spec_f, k, pure=False)
+                   for k in (next(queue, None) for _ in range(window)) if k is not None]
+        ac = as_completed(futures)
+        for fut in ac:
+            k, table = fut.result()
+            store.write_chunk(k, table)
+            on_chunk(k, len(table))
+            fut.release()
+            nxt = next(queue, None)
+            if nxt is not None:
+                ac.add(client.submit(chunk_task, spec_f, nxt, pure=False))
+    finally:
+        for f in futures:
+            f.cancel()
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
+        dask_local: int | None = None, window: int | None = None, progress: bool = True,
+        log: Callable = print) -> dict:
+    """Run the campaign ``spec`` (a path to a TOML file or a :class:`CampaignSpec`) into
+    the store ``out``, skipping the chunks already there (resume). Returns the store's
+    :meth:`~.store.Store.status`.
+
+    ``executor`` is ``"local"`` (default) or ``"dask"`` with ``scheduler`` (an address,
+    ``tcp://host:port``) or ``dask_local`` (workers of a ``LocalCluster``, default 2);
+    ``window`` bounds the chunks in flight (default 2 per Dask thread). A different spec on
+    an existing store raises :class:`~rocking.errors.StoreError`. Interrupting (Ctrl-C)
+    keeps every finished chunk; run again to resume.
+    """
+    from pathlib import Path
+    spec_dir = "."
+    if not isinstance(spec, CampaignSpec):
+        spec_dir = Path(spec).resolve().parent
+        spec = read_spec(spec)
+    if executor not in EXECUTORS:
+        raise ParameterError(f"executor must be one of {', '.join(EXECUTORS)}, got "
+                             f"{executor!r}")
+    if executor == "local" and (scheduler is not None or dask_local is not None):
+        raise ParameterError("scheduler and dask_local apply to executor 'dask' only")
+    if scheduler is not None and dask_local is not None:
+        raise ParameterError("give scheduler or dask_local, not both")
+    if dask_local is not None and (isinstance(dask_local, bool) or not isinstance(
+            dask_local, int | np.integer) or not 1 <= dask_local <= 1024):
+        raise ParameterError(f"dask_local must be a whole number in [1, 1024], got "
+                             f"{dask_local!r}")
+    if executor == "dask" and scheduler is None and dask_local is None:
+        dask_local = 2
+    store = Store(out).open_for(spec, spec_dir)
+    store.lock()
+    try:
+        done = store.done()
+        todo = [k for k in range(spec.n_chunks) if k not in done]
+        status = store.status()
+        from tqdm.auto import tqdm
+        bar = tqdm(total=spec.n_sims, initial=status["sims_done"], unit="sim",
+                   disable=not progress, dynamic_ncols=True, smoothing=0.1,
+                   desc=spec.name)
+
+        def on_chunk(k, n):
+            bar.update(n)
+
+        try:
+            if todo and executor == "local":
+                _run_local(Campaign(spec), store, todo, on_chunk)
+            elif todo:
+                _run_dask(spec, store, todo, on_chunk, scheduler, dask_local,
+                          window or spec.window, log)
+        finally:
+            bar.close()
+    finally:
+        store.unlock()
+    return store.status()
+
+
+def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:
+    """A dry run: counts, and the time of the local executor estimated from
+    ``n_sample`` simulations spread evenly over the campaign (after a warm-up)."""
+    c = Campaign(spec)
+    warm_up(spec)
+    n = spec.n_sims
+    per_model = n // len(spec.models)
+    seconds = 0.0
+    sampled = 0
+    for m, name in enumerate(spec.models):
+        from ..models.registry import MODELS
+        k = min(per_model, 4 if MODELS[name].slow else n_sample)
+        ids = m * per_model + np.unique(np.linspace(0, per_model - 1, k).astype(np.int64))
+        t0 = time.perf_counter()
+        c.run_ids(ids)
+        seconds += (time.perf_counter() - t0) / ids.size * per_model
+        sampled += ids.size
+    return {"n_sims": n, "n_chunks": spec.n_chunks, "chunk_size": spec.chunk_size,
+            "shape": dict(zip(["models", "blocks", "motions", "levels", "samples"],
+                              spec.shape, strict=True)),
+            "sampled": sampled, "estimated_seconds": seconds}

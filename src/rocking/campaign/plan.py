@@ -1,0 +1,279 @@
+"""A campaign's table of simulations, and the run of one chunk of it.
+
+The spec's axes ``(models, blocks, motions, levels, samples)`` (:attr:`CampaignSpec.shape`)
+are enumerated in that order, the last fastest: ``sim_id`` is the flat index, so it is
+stable for a given spec and needs no table to be stored. A chunk is the contiguous range
+``[k * chunk_size, (k + 1) * chunk_size)`` of ``sim_id``.
+
+Random draws: simulation ``sim_id`` draws its uncertain parameters (and the table noise)
+from ``numpy.random.default_rng(SeedSequence(seed, spawn_key=(STREAM, sim_id)))``, and the
+stochastic records are those of :func:`rocking.motions.stochastic_records` with the
+campaign seed (record ``j`` from ``spawn_key=(2, j)``). A row therefore depends on the spec
+and its ``sim_id`` only, never on the chunk size, the executor or the order of execution;
+the compiled batches make each row bit-identical to its single run
+(:func:`rocking.simulate_many`).
+"""
+
+from __future__ import annotations
+
+import math
+from functools import cached_property
+
+import numpy as np
+import pandas as pd
+
+from ..analysis.damage import damage_state
+from ..analysis.distributions import draw, frozen
+from ..analysis.ida import IMS, intensity
+from ..analysis.montecarlo import PARAMETERS, perturbed
+from ..blocks import Block
+from ..errors import ParameterError
+from ..models import simulate_many
+from ..motions import (
+    HalfSine,
+    Motion,
+    OneCosine,
+    OneSine,
+    Record,
+    Rectangular,
+    Ricker,
+    Sine,
+    load_builtin,
+    sample,
+    seed_earthquakes,
+    stochastic_records,
+)
+from .spec import CampaignSpec
+
+STREAM = 3
+"""Tag of the campaign's random streams (Monte Carlo uses 1, stochastic records 2)."""
+RESULT_COLUMNS = ("max_abs_theta", "max_abs_theta_over_alpha", "overturned", "overturn_time",
+                  "uplift_time", "n_impacts", "damage_state", "status")
+PULSE_CLASSES = {"one_sine": OneSine, "one_cosine": OneCosine, "half_sine": HalfSine,
+                 "rectangular": Rectangular}
+
+
+class MotionSet:
+    """The motions of a ``[motions]`` table, built on demand and kept (unscaled)."""
+
+    def __init__(self, m: dict, seed: int):
+        self.m, self.seed = m, seed
+        self._cache: dict[int, Motion] = {}
+        self._im: dict[tuple, float] = {}
+
+    @cached_property
+    def n(self) -> int:
+        from .spec import n_motions
+        return n_motions(self.m)
+
+    def id(self, j: int) -> str:
+        m, kind = self.m, self.m["kind"]
+        if kind == "seed_earthquakes":
+            return f"seed:{m['records'][j]:02d}"
+        if kind == "files":
+            return m["paths"][j].rsplit("/", 1)[-1]
+        if kind == "builtin":
+            return m["names"][j]
+        if kind == "stochastic":
+            return f"stochastic:{j}"
+        if kind == "sine_grid":
+            return f"sine:{m['frequencies'][j]:g}Hz"
+        return f"{m['pulse']}:{m['periods'][j]:g}s"
+
+    def _stochastic(self, js) -> None:
+        kw = {k: v for k, v in self.m.items() if k not in ("kind", "n", "load_factors", "im",
+                                                           "levels", "record_duration")}
+        if "record_duration" in self.m:
+            kw["duration"] = self.m["record_duration"]
+        js = sorted(js)
+        runs, start = [], js[0]  # contiguous runs of indices, one call each
+        for a, b in zip(js, js[1:] + [None], strict=True):
+            if b != a + 1:
+                runs.append((start, a + 1))
+                start = b
+        for lo, hi in runs:
+            for k, r in enumerate(stochastic_records(hi - lo, seed=self.seed, start=lo, **kw)):
+                self._cache[lo + k] = r
+
+    def prepare(self, js) -> None:
+        """Build the motions ``js`` not built yet (stochastic records in few calls)."""
+        missing = [int(j) for j in dict.fromkeys(np.asarray(js).tolist())
+                   if j not in self._cache]
+        if not missing:
+            return
+        m, kind = self.m, self.m["kind"]
+        if kind == "stochastic":
+            self._stochastic(missing)
+            return
+        if kind == "seed_earthquakes":
+            recs = seed_earthquakes()
+        for j in missing:
+            if kind == "seed_earthquakes":
+                mo = recs[m["records"][j] - 1]
+            elif kind == "files":
+                mo = Record.from_file(m["paths"][j], units=m["units"], dt=m.get("dt"))
+            elif kind == "builtin":
+                mo = load_builtin(m["names"][j])
+            elif kind == "sine_grid":
+                f = m["frequencies"][j]
+                mo = Sine.from_acceleration(f, m["amplitude"], m.get("record_duration",
+                                                                     m.get("cycles", 10) / f))
+            elif m["pulse"] == "ricker":
+                mo = Ricker(m["amplitude"], 1.0 / m["periods"][j],
+                            duration=m.get("record_duration"))
+            else:
+                mo = PULSE_CLASSES[m["pulse"]](m["amplitude"], m["periods"][j],
+                                               duration=m.get("record_duration"))
+            self._cache[j] = mo
+
+    def get(self, j: int) -> Motion:
+        self.prepare([j])
+        return self._cache[j]
+
+    def _record(self, j: int) -> Record:
+        mo = self.get(j)
+        return mo if isinstance(mo, Record) else sample(mo, min(mo.scan_step, 0.005))
+
+    def im(self, j: int, im: str, block: Block | None = None) -> float:
+        """The intensity measure ``im`` of motion ``j`` unscaled (``block`` for the ratio
+        IMs)."""
+        key = (j, im, (block.alpha, block.p) if im.endswith("_ratio") else None)
+        if key not in self._im:
+            mo = self.get(j)
+            if im == "pga" and isinstance(mo, Sine):
+                self._im[key] = mo.acc_amplitude
+            elif im == "pga" and hasattr(mo, "amplitude") and not isinstance(mo, Record):
+                self._im[key] = abs(mo.scale) * mo.amplitude
+            else:
+                self._im[key] = intensity(self._record(j), im, block)
+        return self._im[key]
+
+
+class Campaign:
+    """The simulations of a checked spec (:class:`~.spec.CampaignSpec`), chunk by chunk."""
+
+    def __init__(self, spec: CampaignSpec):
+        self.spec = spec
+        self.motions = MotionSet(spec.motions, spec.seed)
+        self._dists = {(k, b): frozen(k, d, PARAMETERS[k][0](block))
+                       for k, d in spec.uncertain.items()
+                       for b, block in enumerate(spec.blocks)}
+
+    @property
+    def n_sims(self) -> int:
+        return self.spec.n_sims
+
+    def chunk_range(self, k: int) -> tuple[int, int]:
+        """``(start, stop)`` sim ids of chunk ``k``."""
+        if not 0 <= k < self.spec.n_chunks:
+            raise ParameterError(f"chunk must be in [0, {self.spec.n_chunks - 1}], got {k}")
+        cs = self.spec.chunk_size
+        return k * cs, min((k + 1) * cs, self.n_sims)
+
+    def _scale(self, j: int, lv: int, b: int) -> float:
+        s = self.spec
+        if s.im is None:
+            return float(s.levels[lv])
+        base = self.motions.im(j, s.im, s.blocks[b])
+        if not base > 0:
+            raise ParameterError(f"motion {self.motions.id(j)} has {s.im} = 0: it cannot be "
+                                 "scaled to an intensity level")
+        return float((s.levels[lv] / base) ** (1.0 / IMS[s.im][1]))
+
+    def inputs(self, ids):
+        """Simulations ``ids``: ``(table, blocks, motions)`` ready for
+        :func:`rocking.simulate_many` (the table holds the inputs, see :meth:`run_ids`)."""
+        s = self.spec
+        ids = np.asarray(ids, dtype=np.int64).reshape(-1)
+        if ids.size and not (ids.min() >= 0 and ids.max() < self.n_sims):
+            raise ParameterError(f"sim ids must lie in [0, {self.n_sims - 1}]")
+        mi, bi, ji, li, si = np.unravel_index(ids, s.shape)
+        self.motions.prepare(ji)
+        n = ids.size
+        vals = {k: np.empty(n) for k in PARAMETERS}
+        lf, pga = np.empty(n), np.empty(n)
+        blocks, motions = [], []
+        uncertain = s.uncertain
+        for r in range(n):
+            b, j = int(bi[r]), int(ji[r])
+            block = s.blocks[b]
+            scale = self._scale(j, int(li[r]), b)
+            lf[r] = scale
+            if uncertain:
+                rng = np.random.default_rng(np.random.SeedSequence(
+                    s.seed, spawn_key=(STREAM, int(ids[r]))))
+                v = {k: (draw(self._dists[k, b], rng, *PARAMETERS[k][1], name=k)
+                         if k in uncertain else PARAMETERS[k][0](block)) for k in PARAMETERS}
+                if abs(v["theta0"]) >= v["alpha"]:
+                    v["theta0"] = math.copysign(0.999 * v["alpha"], v["theta0"])
+                if uncertain.keys() & {"alpha", "p", "mu"}:
+                    block = Block.from_params(v["alpha"], v["p"], v["mu"], name=block.name)
+                mo = perturbed(self.motions.get(j).scaled(scale), v["amplitude"], v["noise"],
+                               rng)
+            else:
+                v = {k: PARAMETERS[k][0](block) for k in PARAMETERS}
+                mo = self.motions.get(j).scaled(scale)
+            for k in PARAMETERS:
+                vals[k][r] = v[k]
+            pga[r] = self.motions.im(j, "pga") * abs(scale * v["amplitude"])
+            blocks.append(block)
+            motions.append(mo)
+        table = pd.DataFrame({
+            "sim_id": ids, "model": np.array(s.models, dtype=object)[mi],
+            "block": bi.astype(np.int64),
+            "block_name": np.array([b.name for b in s.blocks], dtype=object)[bi],
+            "alpha": vals["alpha"], "p": vals["p"], "mu": vals["mu"],
+            "motion": ji.astype(np.int64),
+            "motion_id": [self.motions.id(int(j)) for j in ji],
+            "level": li.astype(np.int64), "load_factor": lf,
+            **({"im": s.levels[li].astype(float)} if s.im else {}),
+            "sample": si.astype(np.int64),
+            "theta0": vals["theta0"], "amplitude": vals["amplitude"], "noise": vals["noise"],
+            "pga": pga,
+        })
+        return table, blocks, motions
+
+    def run_ids(self, ids) -> pd.DataFrame:
+        """Simulate ``ids`` (one compiled batch per model): the inputs and the results, one
+        row per simulation.
+
+        Results: ``max_abs_theta`` (rad), ``max_abs_theta_over_alpha``, ``overturned``,
+        ``overturn_time`` and ``uplift_time`` (s, NaN if none), ``n_impacts``,
+        ``damage_state`` (:func:`rocking.analysis.damage_state` with the spec's thresholds;
+        -1 for a failed run) and ``status`` (0, or the model's failure code: the run failed
+        numerically and its ``max_abs_theta`` is NaN).
+        """
+        table, blocks, motions = self.inputs(ids)
+        n = len(table)
+        out = {"max_abs_theta": np.full(n, np.nan), "overturned": np.zeros(n, bool),
+               "overturn_time": np.full(n, np.nan), "uplift_time": np.full(n, np.nan),
+               "n_impacts": np.zeros(n, np.int64), "status": np.zeros(n, np.int64)}
+        models = table["model"].to_numpy()
+        theta0 = table["theta0"].to_numpy()
+        for name in dict.fromkeys(models):
+            idx = np.flatnonzero(models == name)
+            res = simulate_many([blocks[i] for i in idx], [motions[i] for i in idx],
+                                model=name, duration=self.spec.duration,
+                                theta0=theta0[idx] if theta0[idx].any() else 0.0,
+                                errors="nan", **self.spec.options.get(name, {}))
+            for k in out:
+                out[k][idx] = getattr(res, k)
+        table = table.assign(**out)
+        table["max_abs_theta_over_alpha"] = table["max_abs_theta"] / table["alpha"]
+        ok = table["status"].to_numpy() == 0
+        ds = np.full(n, -1, dtype=np.int64)
+        if ok.any():
+            ds[ok] = damage_state(table["max_abs_theta"].to_numpy()[ok],
+                                  table["alpha"].to_numpy()[ok], out["overturned"][ok],
+                                  self.spec.thresholds)
+        table["damage_state"] = ds
+        return table[[c for c in table.columns if c not in RESULT_COLUMNS]
+                     + list(RESULT_COLUMNS)]
+
+    def run_chunk(self, k: int) -> pd.DataFrame:
+        """Simulate chunk ``k`` (:meth:`run_ids` over its range)."""
+        return self.run_ids(np.arange(*self.chunk_range(k)))
+
+    def table(self) -> pd.DataFrame:
+        """The inputs of every simulation (no run): for inspection of small campaigns."""
+        return self.inputs(np.arange(self.n_sims))[0]
