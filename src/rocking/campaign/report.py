@@ -1,0 +1,401 @@
+"""The report of a campaign store: P(overturn) per level, fragility curves, plots, summary.
+
+:func:`report` reads the store's table (one row per simulation) and its manifest and
+writes, in one folder:
+
+* ``p_overturn.csv``: per (model, block, level) the IM, the number of runs, of overturned
+  runs, P(overturn) with its Wilson 95% interval, the median max|theta|/alpha of the
+  survivors and P(DS >= k) of every damage state;
+* ``fragility.csv``: per (model, block) the lognormal overturning curve fitted to the
+  outcomes of every run (:func:`rocking.analysis.fragility`: repeated IM values are
+  stripes, one binomial likelihood, Baker 2015) and the damage-state curves
+  (:func:`rocking.analysis.fragility_curves`, one common beta); a group that cannot be
+  fitted (nothing or everything overturned, outcomes separated by the IM) gets a note
+  instead of numbers;
+* ``pelicun.csv``: the damage-state curves as a pelicun fragility table (PGA and PGV);
+* ``p_overturn_<model>.png``: the stripes with Wilson error bars and the fitted curves
+  with their bootstrap bands, one colour per block;
+* ``report.md``: a short markdown summary linking the above.
+
+The IM is the table's ``im`` column when the campaign scaled its motions to intensity
+levels (name and unit from ``manifest["im"]``, so every run of a level has the same IM),
+else the PGA of each run as run (``pga``, m/s^2): the points of a level are then drawn at
+the median PGA of its runs, while the fit uses each run's own PGA. Runs with a non-zero
+``status`` (numerical failure) are left out of every count and fit, and counted.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import warnings
+from collections.abc import Mapping
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from ..analysis import DEFAULT_THRESHOLDS, fragility, fragility_curves, wilson_interval
+from ..analysis.damage import state_labels
+from ..errors import ParameterError, SimulationError
+from ..plot import PALETTE, _style, figure, save_figure
+
+#: Columns the table must have.
+REQUIRED_COLUMNS = (
+    "sim_id", "model", "block", "block_name", "alpha", "p", "mu", "motion", "motion_id",
+    "level", "load_factor", "sample", "theta0", "amplitude", "noise", "pga",
+    "max_abs_theta", "max_abs_theta_over_alpha", "overturned", "overturn_time",
+    "uplift_time", "n_impacts", "damage_state", "status")
+
+#: pelicun demand type and unit of the IMs it knows.
+PELICUN_DEMAND = {"pga": ("Peak Ground Acceleration", "g"),
+                  "pgv": ("Peak Ground Velocity", "mps")}
+_PELICUN_UNIT = {"m/s^2": "mps2", "m/s2": "mps2", "g": "g", "m/s": "mps", "m": "m",
+                 "-": "unitless", "": "unitless"}
+
+N_BOOT = 200
+"""Bootstrap draws of the bands (asymptotic normal: cheap)."""
+DPI = 110
+_FIT_ERRORS = (ParameterError, SimulationError, ValueError, np.linalg.LinAlgError)
+
+
+# --------------------------------------------------------------------------- input
+
+def _check(table, manifest) -> tuple[pd.DataFrame, dict, tuple]:
+    """The table with typed columns, the IM ``{"name", "unit", "column"}``, thresholds."""
+    if not isinstance(manifest, Mapping):
+        raise ParameterError(f"manifest must be a dict (the store's manifest.json), got "
+                             f"{type(manifest).__name__}")
+    if not isinstance(table, pd.DataFrame):
+        raise ParameterError(f"table must be a pandas DataFrame, got {type(table).__name__}")
+    missing = [c for c in REQUIRED_COLUMNS if c not in table.columns]
+    if missing:
+        raise ParameterError(f"table: missing column(s) {', '.join(missing)} (a campaign "
+                             "store's table has one row per simulation)")
+    if len(table) == 0:
+        raise ParameterError("table is empty: the store holds no simulation (run the "
+                             "campaign first)")
+    im_spec = manifest.get("im")
+    if im_spec:
+        if "im" not in table.columns:
+            raise ParameterError(f"table: missing column im (manifest['im'] = {im_spec!r} "
+                                 "says the motions were scaled to intensity levels)")
+        im = {"name": str(im_spec.get("name", "im")), "unit": str(im_spec.get("unit", "")),
+              "column": "im"}
+    elif "im" in table.columns:
+        im = {"name": "im", "unit": "", "column": "im"}
+    else:
+        im = {"name": "pga", "unit": "m/s^2", "column": "pga"}
+    t = table.copy()
+    for col in ("alpha", "load_factor", "pga", "max_abs_theta", "max_abs_theta_over_alpha",
+                *(["im"] if "im" in t else [])):
+        t[col] = _numeric(t, col, float)
+    for col in ("level", "block", "damage_state", "status"):
+        t[col] = _numeric(t, col, int)
+    ov = t["overturned"]
+    if ov.dtype != bool:
+        if not ov.isin([0, 1, True, False]).all():
+            raise ParameterError("table: column overturned must be boolean")
+        t["overturned"] = ov.astype(bool)
+    thresholds = manifest.get("thresholds")
+    thresholds = tuple(DEFAULT_THRESHOLDS if thresholds is None else
+                       (float(v) for v in thresholds))
+    top = len(thresholds) + 1
+    bad = t["damage_state"][(t["status"] == 0) & ~t["damage_state"].between(0, top)]
+    if len(bad):
+        raise ParameterError(f"table: column damage_state must be in 0..{top} (thresholds "
+                             f"{list(thresholds)} and overturning), got {int(bad.iloc[0])}")
+    return t, im, thresholds
+
+
+def _numeric(t: pd.DataFrame, col: str, kind) -> pd.Series:
+    try:
+        s = pd.to_numeric(t[col], errors="raise")
+    except (TypeError, ValueError):
+        raise ParameterError(f"table: column {col} must be numeric") from None
+    if kind is int:
+        if s.isna().any() or (s != np.round(s)).any():
+            raise ParameterError(f"table: column {col} must hold whole numbers")
+        return s.astype(np.int64)
+    return s.astype(float)
+
+
+def _im_label(im: dict) -> str:
+    return f"{im['name']} ({im['unit']})" if im["unit"] else im["name"]
+
+
+def _safe(name: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", str(name)) or "model"
+
+
+def _g(x, digits: int = 3) -> str:
+    """``x`` to ``digits`` significant figures; NaN as a dash."""
+    try:
+        x = float(x)
+    except (TypeError, ValueError):
+        return str(x)
+    return "–" if not math.isfinite(x) else f"{x:.{digits}g}"
+
+
+# --------------------------------------------------------------------------- tables
+
+def _p_overturn(g: pd.DataFrame, im_col: str, n_states: int) -> pd.DataFrame:
+    """The per-level table of one (model, block) group (all rows, failed runs counted)."""
+    rows = []
+    for lv, d in g.groupby("level", sort=True):
+        ok = d[d["status"] == 0]
+        n, k = len(ok), int(ok["overturned"].sum())
+        lo, hi = wilson_interval(k, n) if n else (math.nan, math.nan)
+        if n:  # exact at k = 0 or n (statsmodels leaves a rounding error of ~1e-17)
+            lo, hi = min(max(lo, 0.0), k / n), max(min(hi, 1.0), k / n)
+        surv = ok.loc[~ok["overturned"], "max_abs_theta_over_alpha"].dropna()
+        imv = ok[im_col] if n else d[im_col]
+        row = {"level": int(lv), "im": float(np.nanmedian(imv)) if imv.notna().any()
+               else math.nan,
+               "load_factor": float(d["load_factor"].median()), "n": n, "n_overturned": k,
+               "p_overturn": k / n if n else math.nan, "ci_lower": lo, "ci_upper": hi,
+               "median_ratio_survivors": float(surv.median()) if len(surv) else math.nan,
+               "n_excluded": int(len(d) - n)}
+        for s in range(1, n_states + 1):
+            row[f"p_ds_ge_{s}"] = float((ok["damage_state"] >= s).mean()) if n else math.nan
+        rows.append(row)
+    return pd.DataFrame(rows)
+
+
+def _fit_group(ok: pd.DataFrame, im_col: str, labels: list[str], n_boot: int, seed):
+    """Overturning fit and damage-state curves of one group: ``(rows, fit, curves,
+    notes)``; a fit that cannot be made leaves a row with a note."""
+    n_states = len(labels)
+    base = {"n": len(ok)}
+    rows, notes = [], []
+    x = ok[im_col].to_numpy(float)
+    good = np.isfinite(x) & (x > 0)
+    if not good.all():
+        notes.append(f"{int((~good).sum())} run(s) without a finite IM > 0 left out of the "
+                     "fits")
+    x, ov = x[good], ok["overturned"].to_numpy(bool)[good]
+    ds = ok["damage_state"].to_numpy(int)[good]
+    base["n"] = int(x.size)
+
+    def attempt(fn):
+        if x.size == 0:
+            return None, "no run with a valid IM"
+        if np.unique(x).size < 2:
+            return None, f"a single IM value ({x[0]:.4g}): no curve can be fitted"
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                return fn(), ""
+        except _FIT_ERRORS as e:
+            return None, str(e)
+
+    fit, why = attempt(lambda: fragility(x, ov, n_boot=n_boot, seed=seed,
+                                         label="overturning"))
+    row = {"fit": "overturning", "state": n_states, "label": labels[-1], **base,
+           "n_exceed": int(ov.sum())}
+    if fit is None:
+        rows.append({**row, "median": math.nan, "median_se": math.nan, "beta": math.nan,
+                     "beta_se": math.nan, "note": f"no overturning fit: {why}"})
+    else:
+        note = "" if math.isfinite(fit.median_se) and math.isfinite(fit.beta_se) else \
+            "standard errors not finite (nearly separated data)"
+        rows.append({**row, "median": fit.median, "median_se": fit.median_se,
+                     "beta": fit.beta, "beta_se": fit.beta_se, "note": note})
+    curves, why = attempt(lambda: fragility_curves(x, ds, n_boot=n_boot, seed=seed))
+    if curves is None:
+        rows.append({"fit": "damage_states", "state": -1, "label": "all states", **base,
+                     "n_exceed": -1, "median": math.nan, "median_se": math.nan,
+                     "beta": math.nan, "beta_se": math.nan,
+                     "note": f"no damage-state curves: {why}"})
+    else:
+        for s, f in enumerate(curves.fits, start=1):
+            rows.append({"fit": "damage_states", "state": s, "label": labels[s - 1], **base,
+                         "n_exceed": int((ds >= s).sum()), "median": f.median,
+                         "median_se": f.median_se, "beta": f.beta, "beta_se": f.beta_se,
+                         "note": "common beta (ordered probit)"})
+        if len(curves.fits) < n_states:
+            notes.append(f"damage states above DS{len(curves.fits)} never reached: no "
+                         "curve for them")
+    return rows, fit, curves, notes
+
+
+def _pelicun(curves, im: dict, ident: str):
+    """The pelicun row of ``curves``, or a note why not."""
+    if im["name"] not in PELICUN_DEMAND:
+        return None, f"no pelicun demand type for IM {im['name']!r}"
+    unit = _PELICUN_UNIT.get(im["unit"])
+    if unit is None:
+        return None, f"no pelicun unit for {im['unit']!r}"
+    dtype, dunit = PELICUN_DEMAND[im["name"]]
+    try:
+        return curves.to_pelicun(id=ident, demand_type=dtype, demand_unit=dunit,
+                                 im_unit=unit), ""
+    except ParameterError as e:
+        return None, str(e)
+
+
+# --------------------------------------------------------------------------- plots
+
+def _plot_model(model: str, groups: list, im: dict, path: Path) -> Path:
+    """P(overturn) vs IM of one model: stripes with Wilson bars, fits with bands."""
+    fig, ax = figure(figsize=(6.0, 3.6))
+    for i, (name, pt, fit) in enumerate(groups):
+        c = PALETTE[i % len(PALETTE)]
+        d = pt[(pt["n"] > 0) & pt["im"].notna()]
+        yerr = np.vstack([d["p_overturn"] - d["ci_lower"], d["ci_upper"] - d["p_overturn"]])
+        lab = str(name)
+        if fit is not None:
+            lo = np.nanmin(d["im"]) if len(d) else fit.median
+            hi = np.nanmax(d["im"]) if len(d) else fit.median
+            x = np.geomspace(min(lo, fit.median * math.exp(-2.0 * fit.beta)),
+                             max(hi, fit.median * math.exp(2.0 * fit.beta)), 150)
+            ax.plot(x, fit.probability(x), color=c, lw=1.2)
+            if fit.n_boot:
+                b = fit.band(x)
+                ax.fill_between(x, b["lower"], b["upper"], color=c, alpha=0.18, lw=0)
+            lab += f": median {_g(fit.median)}, beta {_g(fit.beta, 2)}"
+        ax.errorbar(d["im"], d["p_overturn"], yerr=np.clip(yerr, 0, None), fmt="o", ms=4,
+                    mfc="none", color=c, capsize=2, lw=0.8, label=lab)
+    _style(ax, _im_label(im), "P(overturn)")
+    ax.set_ylim(-0.03, 1.03)
+    ax.set_title(f"{model}: P(overturn) per level, 95% Wilson bars; fits with 95% bands",
+                 fontsize=8)
+    ax.legend(frameon=False, fontsize="x-small")
+    return save_figure(fig, path, dpi=DPI)
+
+
+# --------------------------------------------------------------------------- markdown
+
+def _pm(x, se, digits: int) -> str:
+    return "–" if not math.isfinite(x) else f"{_g(x, digits)} ± {_g(se, 2)}"
+
+
+def _md_table(header: list[str], rows: list[list[str]]) -> list[str]:
+    return ["| " + " | ".join(header) + " |", "|" + "---|" * len(header),
+            *("| " + " | ".join(r) + " |" for r in rows), ""]
+
+
+def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states) -> str:
+    unit = f" ({im['unit']})" if im["unit"] else ""
+    src = ("the im column (motions scaled to intensity levels)" if im["column"] == "im"
+           else "the PGA of each run as run (no intensity scaling)")
+    out = [f"# Campaign report: {manifest.get('name', 'campaign')}", "",
+           f"- version: {manifest.get('version', '–')}",
+           f"- spec hash: {manifest.get('spec_hash', '–')}",
+           f"- runs: {n_runs} ({n_excl} failed numerically, excluded from counts and fits)",
+           f"- IM: {_im_label(im)}, from {src}", "",
+           "## Overturning fragility", "",
+           "Lognormal curves P(overturn | IM) = Phi(ln(IM / median) / beta), maximum "
+           "likelihood over the runs (stripes, Baker 2015); ± one standard error.", ""]
+    for model, f in fr[fr["fit"] == "overturning"].groupby("model", sort=False):
+        out += [f"### {model}", ""]
+        rows = [[str(r.block_name), _pm(r.median, r.median_se, 3), _pm(r.beta, r.beta_se, 2),
+                 str(r.n), str(r.n_exceed), r.note or ""] for r in f.itertuples()]
+        out += _md_table(["block", f"median{unit}", "beta", "runs", "overturned", "note"],
+                         rows)
+    out += ["## P(overturn) per level", "",
+            "Wilson 95% intervals; ratio: median max|theta|/alpha of the survivors; "
+            "P(DS>=k) with the manifest's thresholds (the last state is overturning).", ""]
+    for (model, name), d in po.groupby(["model", "block_name"], sort=False):
+        out += [f"### {model}, {name}", ""]
+        rows = [[str(r["level"]), _g(r["im"]), str(r["n"]), str(r["n_overturned"]),
+                 _g(r["p_overturn"]), f"{_g(r['ci_lower'], 2)}–{_g(r['ci_upper'], 2)}",
+                 _g(r["median_ratio_survivors"]),
+                 *(_g(r[f"p_ds_ge_{s}"], 2) for s in range(1, n_states))]
+                for _, r in d.iterrows()]
+        out += _md_table(["level", f"IM{unit}", "runs", "overturned", "P", "95% CI",
+                          "ratio", *(f"P(DS>={s})" for s in range(1, n_states))], rows)
+    if images:
+        out += ["## Figures", ""] + [f"![P(overturn), {m}]({p.name})" for m, p in images]
+        out.append("")
+    if notes:
+        out += ["## Notes", ""] + [f"- {n}" for n in notes] + [""]
+    return "\n".join(out)
+
+
+# --------------------------------------------------------------------------- public
+
+def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
+           seed: int = 0) -> dict:
+    """Write the campaign report of ``table`` (the store's rows) and ``manifest`` to the
+    folder ``out`` (created). See the module docstring for the files.
+
+    Returns ``{"files": [Path], "fragility": DataFrame, "p_overturn": DataFrame,
+    "notes": [str], "im": {"name", "unit", "column"}, "n_runs": int, "n_excluded": int}``.
+    Raises :class:`~rocking.ParameterError` for an empty table or a missing column.
+    """
+    t, im, thresholds = _check(table, manifest)
+    labels = state_labels(thresholds)
+    n_states = len(labels)
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    failed = t["status"] != 0
+    n_excl = int(failed.sum())
+    notes = []
+    if n_excl:
+        notes.append(f"{n_excl} of {len(t)} runs failed numerically (status != 0) and are "
+                     "excluded")
+    po_parts, fr_rows, pel_rows, by_model = [], [], [], {}
+    for (model, block), g in t.groupby(["model", "block"], sort=False):
+        name = str(g["block_name"].iloc[0])
+        key = {"model": model, "block": int(block), "block_name": name}
+        pt = _p_overturn(g, im["column"], n_states)
+        po_parts.append(pt.assign(**key)[[*key, *pt.columns]])
+        ok = g[g["status"] == 0]
+        rows, fit, curves, gnotes = _fit_group(ok, im["column"], labels, n_boot, seed)
+        fr_rows += [{**key, **r} for r in rows]
+        notes += [f"{model}, {name}: {n}" for n in gnotes]
+        notes += [f"{model}, {name}: {r['note']}" for r in rows
+                  if r["note"].startswith("no ")]
+        if curves is not None:
+            ident = f"{_safe(manifest.get('name', 'campaign'))}.{_safe(model)}.{_safe(name)}"
+            pel, why = _pelicun(curves, im, ident)
+            if pel is not None:
+                pel_rows.append(pel)
+            elif f"pelicun: {why}" not in notes:
+                notes.append(f"pelicun: {why}")
+        by_model.setdefault(model, []).append((name, pt, fit))
+    po = pd.concat(po_parts, ignore_index=True)
+    fr = pd.DataFrame(fr_rows)
+    files = []
+    for fname, df in (("p_overturn.csv", po), ("fragility.csv", fr)):
+        df.to_csv(out / fname, index=False, float_format="%.6g")
+        files.append(out / fname)
+    if pel_rows:
+        pd.concat(pel_rows).to_csv(out / "pelicun.csv", float_format="%.6g")
+        files.append(out / "pelicun.csv")
+    images = []
+    for model, groups in by_model.items():
+        p = _plot_model(model, groups, im, out / f"p_overturn_{_safe(model)}.png")
+        images.append((model, p))
+        files.append(p)
+    md = _markdown(manifest, im, len(t), n_excl, fr, po, images, notes, n_states)
+    (out / "report.md").write_text(md, encoding="utf-8")
+    files.append(out / "report.md")
+    return {"files": files, "fragility": fr, "p_overturn": po, "notes": notes, "im": im,
+            "n_runs": len(t), "n_excluded": n_excl}
+
+
+def summary_lines(result: dict) -> list[str]:
+    """A few lines for the terminal: per model and block the overturning median and beta
+    (with units), or why there is no fit."""
+    im = result.get("im", {"name": "IM", "unit": ""})
+    unit = f" {im['unit']}" if im.get("unit") else ""
+    lines = [f"{result.get('n_runs', '?')} runs ({result.get('n_excluded', 0)} failed, "
+             f"excluded); IM: {_im_label(im)}"]
+    fr = result["fragility"]
+    for r in fr[fr["fit"] == "overturning"].itertuples():
+        head = f"{r.model} / {r.block_name}:"
+        if math.isfinite(r.median):
+            lines.append(f"{head} overturning median {_g(r.median)}{unit} "
+                         f"(± {_g(r.median_se, 2)}), beta {_g(r.beta, 2)} "
+                         f"(± {_g(r.beta_se, 2)}), {r.n} runs")
+        else:
+            lines.append(f"{head} {r.note}")
+    md = [p for p in result.get("files", []) if Path(p).name == "report.md"]
+    if md:
+        lines.append(f"report: {md[0]}")
+    return lines
+
+
+__all__ = ["report", "summary_lines", "REQUIRED_COLUMNS", "PELICUN_DEMAND"]
