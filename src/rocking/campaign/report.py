@@ -392,9 +392,6 @@ def summary_lines(result: dict) -> list[str]:
                          f"(± {_g(r.beta_se, 2)}), {r.n} runs")
         else:
             lines.append(f"{head} {r.note}")
-    md = [p for p in result.get("files", []) if Path(p).name == "report.md"]
-    if md:
-        lines.append(f"report: {md[0]}")
     return lines
 
 
