@@ -20,7 +20,6 @@ from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
-from statsmodels.miscmodels.ordinal_model import OrderedModel
 
 from ..errors import ParameterError, SimulationError
 from ..plot import PALETTE, figure
@@ -172,6 +171,8 @@ class FragilityCurves:
 def _ordered_probit(x, state, n_states):
     """statsmodels ``OrderedModel`` (probit) of the states on ``ln x``: the common beta,
     the thresholds, and the model (to transform bootstrap draws)."""
+
+    from statsmodels.miscmodels.ordinal_model import OrderedModel  # 1.3 s to import
 
     model = OrderedModel(state, np.log(x)[:, None], distr="probit")
     res = model.fit(method="bfgs", disp=False, maxiter=500)

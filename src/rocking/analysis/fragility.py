@@ -27,12 +27,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
-import statsmodels.api as sm
 from scipy import stats
 from scipy.integrate import quad
 from scipy.stats import norm
-from statsmodels.duration.survfunc import SurvfuncRight
-from statsmodels.tools.numdiff import approx_hess3
 
 from .._validate import in_range
 from ..errors import ParameterError, SimulationError
@@ -350,6 +347,8 @@ class FragilityFit:
             return
 
         d = self.data
+        from statsmodels.duration.survfunc import SurvfuncRight
+
         sf = SurvfuncRight(np.asarray(d["capacity"]), (~np.asarray(d["censored"])).astype(int))
         ax.step(sf.surv_times, 1.0 - sf.surv_prob, where="post", color=color, lw=0.8,
                 ls="--", label="Kaplan-Meier")
@@ -386,6 +385,8 @@ def _glm(x: np.ndarray, k: np.ndarray, n: np.ndarray):
 
     exog = np.column_stack([np.ones_like(x), np.log(x)])
     endog = np.column_stack([k, n - k])
+    import statsmodels.api as sm  # statsmodels is imported on first use (1-1.5 s)
+
     model = sm.GLM(endog, exog, family=sm.families.Binomial(link=sm.families.links.Probit()))
     return model.fit()
 
@@ -525,6 +526,8 @@ def fragility_ida(capacity, censored=None, *, n_boot: int = 1000, seed: int | No
     if not (math.isfinite(mu) and beta > 0):
         raise SimulationError("the censored lognormal fit did not converge")
     theta = np.array([mu, math.log(beta)])
+    from statsmodels.tools.numdiff import approx_hess3
+
     hess = approx_hess3(theta, lambda t: _censored_loglike(t[0], t[1], cap, cens))
     try:
         cov_t = np.linalg.inv(-hess)              # covariance of (mu, ln beta)

@@ -21,7 +21,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
-from statsmodels.stats.proportion import proportion_confint
 
 from .._validate import in_range
 from ..blocks import Block
@@ -55,6 +54,8 @@ def wilson_interval(k: int, n: int, level: float = 0.95) -> tuple[float, float]:
     if not (isinstance(k, int | np.integer) and 0 <= k <= n):
         raise ParameterError(f"k must be a whole number in [0, n = {n}], got {k!r}")
     level = in_range("level", level, 0.0, 1.0, shown="(0, 1)")
+    from statsmodels.stats.proportion import proportion_confint
+
     lo, hi = proportion_confint(int(k), int(n), alpha=1.0 - level, method="wilson")
     return float(lo), float(hi)
 

@@ -249,9 +249,18 @@ def _motions(t: dict, base_dir: Path) -> dict:
         if "n" not in t:
             _fail("motions.n", "missing (the number of stochastic records)")
         out["n"] = int(_number("motions.n", t["n"], 0, 1e7, integer=True))
-        for k in STOCHASTIC_KEYS - {"n"}:
+        for k in sorted(STOCHASTIC_KEYS - {"n"}):
             if k in t:
                 out[k] = _number(f"motions.{k}", t[k])
+        from ..motions.stochastic import DEFAULTS, _model
+        kw = {**DEFAULTS, **{k: v for k, v in out.items() if k in DEFAULTS}}
+        if "record_duration" in out:
+            kw["duration"] = out["record_duration"]
+        try:
+            _model(**kw)
+        except RockingError as e:
+            name = str(e).split()[0]
+            _fail("motions." + ("record_duration" if name == "duration" else name), str(e))
     elif kind == "sine_grid":
         if "frequencies" not in t:
             _fail("motions.frequencies", "missing (Hz)")

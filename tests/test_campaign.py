@@ -1,0 +1,347 @@
+"""Campaigns: the spec, reproducibility across executors and chunkings, resume after a kill,
+the store's guards, and agreement with direct calls of the models."""
+
+from __future__ import annotations
+
+import math
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import rocking
+from rocking import campaign
+from rocking.cli import main
+from rocking.errors import SpecError, StoreError
+from rocking.motions import Sine, load_builtin
+
+ROCKING = [sys.executable, "-c", "from rocking.cli import main; main()"]
+
+SMALL = """
+[campaign]
+name = "small"
+seed = 11
+model = ["housner", "ccrr"]
+
+[[blocks]]
+specimen = 2
+params = "experimental"
+
+[[blocks]]
+alpha = 0.25
+p = 2.2
+mu = 0.95
+
+[motions]
+kind = "builtin"
+names = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]
+load_factors = [0.4, 0.9, 1.6]
+
+[uncertain]
+alpha = {{dist = "normal", cov = 0.03}}
+theta0 = {{dist = "uniform", low = -0.002, high = 0.002}}
+noise = {{dist = "uniform", low = 0.0, high = 0.05}}
+
+[run]
+chunk_size = {chunk}
+"""
+
+
+def write(tmp_path: Path, text: str, name: str = "spec.toml") -> Path:
+    p = tmp_path / name
+    p.write_text(text)
+    return p
+
+
+def cli(*args, **kw):
+    """The real command in a subprocess (exit code, one-line errors, signals)."""
+    return subprocess.run([*ROCKING, *map(str, args)], capture_output=True, text=True,
+                          timeout=300, **kw)
+
+
+def run_main(capsys, *args):
+    """:func:`rocking.cli.main` in-process: ``(exit code, stdout, stderr)``."""
+    with pytest.raises(SystemExit) as exc:
+        main([str(a) for a in args])
+    out, err = capsys.readouterr()
+    return exc.value.code, out, err
+
+
+# ------------------------------------------------------------------ reproducibility
+@pytest.fixture(scope="module")
+def local_rows(tmp_path_factory):
+    d = tmp_path_factory.mktemp("local")
+    spec = write(d, SMALL.format(chunk=7))
+    campaign.run(spec, d / "store", progress=False)
+    return campaign.load(d / "store")
+
+
+def test_rows_identical_across_chunk_sizes(tmp_path, local_rows):
+    spec = write(tmp_path, SMALL.format(chunk=5))
+    campaign.run(spec, tmp_path / "store", progress=False)
+    other = campaign.load(tmp_path / "store")
+    assert len(local_rows) == 2 * 2 * 2 * 3
+    assert local_rows["sim_id"].tolist() == list(range(len(local_rows)))
+    pd.testing.assert_frame_equal(local_rows, other)
+    # the draws are real: alpha varies, theta0 spans its range, noise > 0
+    assert local_rows["alpha"].nunique() == len(local_rows)
+    assert (local_rows["noise"] > 0).all()
+
+
+def test_rows_identical_on_a_dask_local_cluster(tmp_path, local_rows):
+    spec = write(tmp_path, SMALL.format(chunk=3))
+    st = campaign.run(spec, tmp_path / "store", executor="dask", dask_local=2,
+                      progress=False, log=lambda m: None)
+    assert st["complete"]
+    pd.testing.assert_frame_equal(local_rows, campaign.load(tmp_path / "store"))
+
+
+def test_lazy_load_has_the_same_rows(local_rows, tmp_path):
+    spec = write(tmp_path, SMALL.format(chunk=7))
+    campaign.run(spec, tmp_path / "s", progress=False)
+    lazy = campaign.load(tmp_path / "s", lazy=True)
+    assert not isinstance(lazy, pd.DataFrame)
+    got = lazy.compute().sort_values("sim_id").reset_index(drop=True)
+    pd.testing.assert_frame_equal(local_rows, got, check_dtype=False)
+
+
+# ------------------------------------------------------------------ physics of a row
+def test_a_row_reproduces_the_direct_call(local_rows):
+    """Without ``duration``, each run lasts its motion's duration, as in simulate_many; a
+    row equals rocking.simulate with the row's block, initial tilt and motion."""
+    spec = campaign.parse_spec(SMALL.format(chunk=7))
+    c = campaign.Campaign(spec)
+    for i in (0, 5, 13, 22):
+        row = local_rows.iloc[i]
+        _, blocks, motions = c.inputs([i])
+        block = rocking.Block.from_params(row.alpha, row.p, row.mu)
+        r = rocking.simulate(block, motions[0], model=row.model, theta0=row.theta0)
+        assert r.max_abs_theta == row.max_abs_theta or (r.overturned and row.overturned)
+        assert bool(r.overturned) == bool(row.overturned)
+        assert r.n_impacts == row.n_impacts
+        assert motions[0].duration == load_builtin(row.motion_id).duration
+
+
+def test_no_uncertainty_is_exactly_the_nominal_batch(tmp_path):
+    text = """
+[campaign]
+name = "plain"
+seed = 0
+model = "housner"
+[[blocks]]
+specimen = 3
+params = "experimental"
+[motions]
+kind = "sine_grid"
+frequencies = [1.0, 2.5]
+cycles = 4
+load_factors = {start = 0.5, stop = 3.0, num = 6}
+"""
+    campaign.run(write(tmp_path, text), tmp_path / "s", progress=False)
+    rows = campaign.load(tmp_path / "s")
+    block = rocking.specimen(3, "experimental")
+    motions = [Sine.from_acceleration(f, 1.0, 4 / f).scaled(a)
+               for f in (1.0, 2.5) for a in np.linspace(0.5, 3.0, 6)]
+    res = rocking.simulate_many(block, motions)
+    np.testing.assert_array_equal(rows["max_abs_theta"], res.max_abs_theta)
+    np.testing.assert_array_equal(rows["overturned"], res.overturned)
+    # the sine grid's load factor is the peak acceleration (amplitude 1 m/s^2)
+    np.testing.assert_allclose(rows["pga"], rows["load_factor"], rtol=1e-12)
+    # below g tan(alpha) the block never leaves the ground (Housner's uplift condition)
+    calm = rows["pga"] < rocking.G * math.tan(block.alpha)
+    assert calm.any() and (rows.loc[calm, "max_abs_theta"] == 0).all()
+
+
+def test_im_levels_scale_each_record_to_the_level(tmp_path):
+    text = """
+[campaign]
+name = "ims"
+seed = 0
+model = "housner"
+duration = 6.0
+[[blocks]]
+width = 0.2
+height = 0.8
+[motions]
+kind = "stochastic"
+n = 3
+record_duration = 20.0
+im = "pga"
+levels = [1.0, 2.0, 4.0]
+"""
+    campaign.run(write(tmp_path, text), tmp_path / "s", progress=False)
+    rows = campaign.load(tmp_path / "s")
+    np.testing.assert_allclose(rows["pga"], rows["im"], rtol=1e-12)
+    recs = rocking.motions.stochastic_records(3, seed=0, duration=20.0)
+    for r in rows.itertuples():
+        assert r.load_factor == pytest.approx(r.im / recs[r.motion].pga, rel=1e-12)
+
+
+def test_draws_follow_their_distributions(tmp_path):
+    text = SMALL.format(chunk=500).replace('load_factors = [0.4, 0.9, 1.6]',
+                                           'load_factors = [0.01]')
+    text = text.replace('model = ["housner", "ccrr"]', 'model = "housner"\nsamples = 200')
+    spec = campaign.parse_spec(text)
+    table = campaign.Campaign(spec).table()
+    a = table.loc[table["block"] == 1, "alpha"].to_numpy()
+    assert a.size == 400
+    se = 0.25 * 0.03 / math.sqrt(a.size)
+    assert abs(a.mean() - 0.25) < 4 * se
+    assert a.std(ddof=1) == pytest.approx(0.25 * 0.03, rel=0.2)
+    th = table["theta0"].to_numpy()
+    assert th.min() >= -0.002 and th.max() <= 0.002 and abs(th.mean()) < 4 * 0.004 / 12**0.5 / 28
+
+
+# ------------------------------------------------------------------ store and resume
+def _killed_then_resumed(tmp_path: Path) -> tuple[Path, int, int]:
+    text = SMALL.format(chunk=1).replace('model = ["housner", "ccrr"]',
+                                         'model = "housner"\nsamples = 6')
+    spec = write(tmp_path, text)
+    store = tmp_path / "killed"
+    proc = subprocess.Popen([*ROCKING, "campaign", "run", str(spec), "--out", str(store),
+                             "--quiet"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    chunks = store / "chunks"
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and proc.poll() is None:
+        if chunks.is_dir() and len([f for f in os.listdir(chunks) if f.endswith(".parquet")]) >= 3:
+            break
+        time.sleep(0.002)
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait()
+    n_done = len(campaign.Store(store).done())
+    r = cli("campaign", "run", spec, "--out", store, "--quiet")
+    assert r.returncode == 0, r.stderr
+    return spec, n_done, campaign.status(store)["n_chunks"]
+
+
+def test_sigkill_then_resume_equals_an_uninterrupted_run(tmp_path):
+    spec, n_done, n_chunks = _killed_then_resumed(tmp_path)
+    assert 0 < n_done < n_chunks, "the kill must land mid-run"
+    campaign.run(spec, tmp_path / "clean", progress=False)
+    a = campaign.load(tmp_path / "killed")
+    b = campaign.load(tmp_path / "clean")
+    assert a["sim_id"].is_unique and a["sim_id"].tolist() == list(range(n_chunks))
+    pd.testing.assert_frame_equal(a, b)
+    assert not list((tmp_path / "killed" / "chunks").glob(".*"))  # no temporary left
+
+
+def test_resume_recomputes_nothing(tmp_path):
+    spec = write(tmp_path, SMALL.format(chunk=4))
+    campaign.run(spec, tmp_path / "s", progress=False)
+    before = {f: f.stat().st_mtime_ns for f in campaign.Store(tmp_path / "s").files()}
+    os.remove(campaign.Store(tmp_path / "s").chunk_path(2))
+    st = campaign.status(tmp_path / "s")
+    assert st["chunks_remaining"] == 1 and st["sims_remaining"] == 4
+    campaign.run(spec, tmp_path / "s", progress=False)
+    after = {f: f.stat().st_mtime_ns for f in campaign.Store(tmp_path / "s").files()}
+    assert all(after[f] == t for f, t in before.items() if f.name != "chunk-000002.parquet")
+    assert campaign.status(tmp_path / "s")["complete"]
+
+
+def test_a_changed_spec_is_refused(tmp_path):
+    spec = write(tmp_path, SMALL.format(chunk=12))
+    campaign.run(spec, tmp_path / "s", progress=False)
+    # comments and formatting are not a change
+    write(tmp_path, "# a comment\n" + SMALL.format(chunk=12))
+    campaign.run(spec, tmp_path / "s", progress=False)
+    changed = write(tmp_path, SMALL.format(chunk=12).replace("seed = 11", "seed = 12"), "b.toml")
+    with pytest.raises(StoreError, match="different campaign"):
+        campaign.run(changed, tmp_path / "s", progress=False)
+    r = cli("campaign", "run", changed, "--out", tmp_path / "s")
+    assert r.returncode == 2 and "different campaign" in r.stderr
+    assert "Traceback" not in r.stderr and len(r.stderr.strip().splitlines()) == 1
+
+
+def test_a_directory_that_is_not_a_store_is_refused(tmp_path):
+    (tmp_path / "d").mkdir()
+    (tmp_path / "d" / "x.txt").write_text("mine")
+    with pytest.raises(StoreError, match="not a campaign store"):
+        campaign.run(write(tmp_path, SMALL.format(chunk=5)), tmp_path / "d", progress=False)
+    with pytest.raises(StoreError):
+        campaign.status(tmp_path / "d")
+
+
+# ------------------------------------------------------------------ malformed specs
+BAD = {
+    "unknown key": (SMALL.replace('name = "small"', 'name = "small"\nnmae = "x"'),
+                    "campaign.nmae"),
+    "wrong type": (SMALL.replace("seed = 11", 'seed = "eleven"'), "campaign.seed"),
+    "negative load factor": (SMALL.replace("[0.4, 0.9, 1.6]", "[0.4, -0.9]"),
+                             "motions.load_factors[1]"),
+    "unknown specimen": (SMALL.replace("specimen = 2", "specimen = 9"), "blocks[0].specimen"),
+    "empty motion set": (SMALL.replace('names = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]',
+                                       "names = []"), "motions.names"),
+    "unknown model": (SMALL.replace('["housner", "ccrr"]', '"houser"'), "campaign.model"),
+    "unknown distribution": (SMALL.replace('dist = "normal"', 'dist = "gauss"'),
+                             "uncertain.alpha"),
+    "bad chunk size": (SMALL, "run.chunk_size"),
+    "not TOML": ("[campaign\nname=", "not valid TOML"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD))
+def test_malformed_spec_gives_one_line_naming_the_key(tmp_path, capsys, case):
+    text, key = BAD[case]
+    text = text.format(chunk=0 if case == "bad chunk size" else 5) if "{chunk}" in text \
+        else text
+    spec = write(tmp_path, text)
+    with pytest.raises(SpecError, match=key.replace("[", r"\[").replace("]", r"\]")):
+        campaign.read_spec(spec)
+    code, _, err = run_main(capsys, "campaign", "run", spec, "--out", tmp_path / "s")
+    assert code == 2
+    assert "Traceback" not in err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: ") and key in lines[0]
+    assert not (tmp_path / "s").exists()
+
+
+def test_dem_refuses_uncertain_geometry():
+    text = SMALL.format(chunk=5).replace('["housner", "ccrr"]', '["housner", "dem"]')
+    with pytest.raises(SpecError, match="uncertain.alpha"):
+        campaign.parse_spec(text)
+
+
+# ------------------------------------------------------------------ CLI
+def test_cli_dry_run_and_status(tmp_path, capsys):
+    spec = write(tmp_path, SMALL.format(chunk=5))
+    code, out, err = run_main(capsys, "campaign", "run", spec, "--out", tmp_path / "s",
+                              "--dry-run")
+    assert code == 0, err
+    assert "24 simulations" in out and "5 chunks" in out and "estimated" in out
+    assert not (tmp_path / "s").exists()
+    code, out, err = run_main(capsys, "campaign", "run", spec, "--out", tmp_path / "s")
+    assert code == 0, err
+    assert "sim/s" in err and "24/24" in err  # the progress bar: count and rate
+    code, out, err = run_main(capsys, "campaign", "status", tmp_path / "s")
+    assert code == 0 and "24 done, 0 remaining" in out
+    code, out, err = run_main(capsys, "campaign", "status", tmp_path / "nothing")
+    assert code == 2 and "not a campaign store" in err
+
+
+def test_ctrl_c_stops_cleanly_and_keeps_finished_chunks(tmp_path):
+    text = SMALL.format(chunk=1).replace('model = ["housner", "ccrr"]',
+                                         'model = "housner"\nsamples = 6')
+    spec = write(tmp_path, text)
+    store = tmp_path / "s"
+    proc = subprocess.Popen([*ROCKING, "campaign", "run", str(spec), "--out", str(store),
+                             "--quiet"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and proc.poll() is None:
+        if (store / "chunks").is_dir() and len(campaign.Store(store).done()) >= 3:
+            break
+        time.sleep(0.002)
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=120)
+    assert proc.returncode == 130, err
+    assert "Traceback" not in err and "interrupted" in err and "resume" in err
+    st = campaign.status(store)
+    assert 0 < st["chunks_done"] < st["n_chunks"]
+    done = campaign.load(store)
+    assert done["sim_id"].is_unique and len(done) == st["sims_done"]
