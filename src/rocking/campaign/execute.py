@@ -215,23 +215,30 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
 
 
 def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:
-    """A dry run: counts, and the time of the local executor estimated from
-    ``n_sample`` simulations spread evenly over the campaign (after a warm-up)."""
+    """A dry run: counts, and the time of the local executor estimated from the time to
+    build the motions (up to 500 of them, extrapolated) and ``n_sample`` simulations per
+    model drawn at random over the campaign's axes (after a warm-up)."""
+    from ..models.registry import MODELS
     c = Campaign(spec)
     warm_up(spec)
-    n = spec.n_sims
-    per_model = n // len(spec.models)
-    seconds = 0.0
+    nm = spec.n_motions
+    k_prep = min(nm, 500)
+    t0 = time.perf_counter()
+    c.motions.prepare(range(k_prep))
+    seconds = (time.perf_counter() - t0) * nm / k_prep
+    rng = np.random.default_rng(0)
+    shape = spec.shape
     sampled = 0
     for m, name in enumerate(spec.models):
-        from ..models.registry import MODELS
-        k = min(per_model, 4 if MODELS[name].slow else n_sample)
-        ids = m * per_model + np.unique(np.linspace(0, per_model - 1, k).astype(np.int64))
+        k = 4 if MODELS[name].slow else n_sample
+        idx = [np.full(k, m)] + [rng.integers(0, n, k) for n in
+                                 (shape[1], k_prep, shape[3], shape[4])]
+        ids = np.unique(np.ravel_multi_index(idx, shape))
         t0 = time.perf_counter()
         c.run_ids(ids)
-        seconds += (time.perf_counter() - t0) / ids.size * per_model
+        seconds += (time.perf_counter() - t0) / ids.size * spec.n_sims / len(spec.models)
         sampled += ids.size
-    return {"n_sims": n, "n_chunks": spec.n_chunks, "chunk_size": spec.chunk_size,
+    return {"n_sims": spec.n_sims, "n_chunks": spec.n_chunks, "chunk_size": spec.chunk_size,
             "shape": dict(zip(["models", "blocks", "motions", "levels", "samples"],
-                              spec.shape, strict=True)),
+                              shape, strict=True)),
             "sampled": sampled, "estimated_seconds": seconds}
