@@ -39,8 +39,9 @@ def campaign():
 @click.argument("spec", type=click.Path(dir_okay=False))
 @click.option("--out", "out", default=None, metavar="STORE",
               help="Store directory (created; an existing store of the same spec resumes).")
-@click.option("--executor", type=click.Choice(["local", "dask"]), default="local",
-              show_default=True, help="local: this process, all cores; dask: a cluster.")
+@click.option("--executor", type=click.Choice(["local", "dask"]), default=None,
+              help="local (default): this process, all cores; dask: a Dask cluster (the "
+                   "default with --scheduler or --dask-local).")
 @click.option("--scheduler", default=None, metavar="ADDR",
               help="Address of a running Dask scheduler, e.g. tcp://host:8786.")
 @click.option("--dask-local", "dask_local", type=int, default=None, metavar="N",
@@ -68,8 +69,12 @@ def run_cmd(spec, out, executor, scheduler, dask_local, window, dry_run, quiet):
         return 0
     if out is None:
         raise ParameterError("--out is required: the store directory")
+    if executor is None:
+        executor = "dask" if (scheduler or dask_local) else "local"
     if executor == "local" and (scheduler or dask_local):
         raise ParameterError("--scheduler and --dask-local need --executor dask")
+    if dask_local is not None and not 1 <= dask_local <= 1024:
+        raise ParameterError(f"--dask-local must be in [1, 1024] workers, got {dask_local}")
     if window is not None and window < 1:
         raise ParameterError(f"--window must be >= 1, got {window}")
     try:
