@@ -60,7 +60,8 @@ def _linear_kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_
     n_out = out_th.shape[0]
     while t < t_end - 1e-12:
         if resting:
-            t, k, d, t_up = rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out, k,
+            t, k, d, t_up = rest_advance(kind, prm, samples, t, t_end, h_scan, thr, alpha,
+                                         dt_out, k,
                                          out_th, out_om, t_up)
             if d == 0.0:
                 break
@@ -104,7 +105,7 @@ def _linear_kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_
             over, peak = True, 0.5 * math.pi
             t_over = t - h * (abs(th) - 0.5 * math.pi) / max(abs(th) - abs(th_prev), 1e-300)
             break
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0, math.nan
 
 
 @njit(cache=True, parallel=True)

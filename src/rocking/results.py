@@ -80,6 +80,14 @@ class Response:
     block: object = None
     motion: object = None
     info: dict = field(default_factory=dict)
+    lift_off_time: float = math.nan
+    """Time (s) at which the base fell away from the block (``g + a_v <= 0``, a vertical
+    motion); the classical and CCRR models stop there. NaN if it never happened."""
+
+    @property
+    def lifted_off(self) -> bool:
+        """True if the run stopped because the block left the ground (``g + a_v <= 0``)."""
+        return not math.isnan(self.lift_off_time)
 
     @property
     def rocked(self) -> bool:
@@ -132,6 +140,8 @@ class Response:
             "overturn_time": self.overturn_time,
             "uplift_time": self.uplift_time,
             "n_impacts": int(self.n_impacts),
+            "lifted_off": self.lifted_off,
+            "lift_off_time": self.lift_off_time,
             "duration": self.duration,
         }
         blk = _block_dict(self.block)
@@ -216,7 +226,9 @@ class DEMResponse(Response):
 class BatchResponse:
     """Summaries of a batch of simulations, one entry per motion (numpy arrays).
 
-    ``overturn_time`` and ``uplift_time`` are NaN where the event did not happen.
+    ``overturn_time``, ``uplift_time`` and ``lift_off_time`` are NaN where the event did
+    not happen; ``lifted_off`` marks the runs stopped because the block left the ground
+    (``g + a_v <= 0`` under a vertical motion, classical and CCRR models).
     ``theta``/``omega`` (shape ``(n_motions, n_times)``) are present only when histories
     were requested; after the end of a run (an overturn) they are NaN. ``status`` is 0
     for a successful run (see ``errors=`` of :func:`rocking.simulate_many`).
@@ -235,6 +247,16 @@ class BatchResponse:
     model: str = "housner"
     block: object = None
     info: dict = field(default_factory=dict)
+    lift_off_time: np.ndarray | None = None
+
+    def __post_init__(self):
+        if self.lift_off_time is None:
+            self.lift_off_time = np.full(np.shape(self.max_abs_theta), np.nan)
+
+    @property
+    def lifted_off(self) -> np.ndarray:
+        """True where the run stopped because the block left the ground."""
+        return ~np.isnan(self.lift_off_time)
 
     def __len__(self) -> int:
         return int(self.max_abs_theta.size)
@@ -254,6 +276,8 @@ class BatchResponse:
             "overturn_time": self.overturn_time,
             "uplift_time": self.uplift_time,
             "n_impacts": self.n_impacts,
+            "lifted_off": self.lifted_off,
+            "lift_off_time": self.lift_off_time,
         })
 
     def summary(self) -> dict:
@@ -271,6 +295,7 @@ class BatchResponse:
             "median_max_abs_theta_survived": float(np.median(surv)) if surv.size else None,
             "max_max_abs_theta_survived": float(np.max(surv)) if surv.size else None,
             "n_impacts_sum": int(np.sum(self.n_impacts)),
+            "n_lifted_off": int(np.count_nonzero(self.lifted_off)),
             "n_failed": int(np.count_nonzero(self.status)) if self.status is not None else 0,
         }
         blk = _block_dict(self.block)
@@ -283,6 +308,6 @@ class BatchResponse:
         """Everything, JSON-ready: the summary, the per-motion arrays and the histories."""
         d = self.summary()
         for k in ("max_abs_theta", "overturned", "overturn_time", "uplift_time", "n_impacts",
-                  "n_steps", "status", "t", "theta", "omega"):
+                  "lifted_off", "lift_off_time", "n_steps", "status", "t", "theta", "omega"):
             d[k] = jsonable(getattr(self, k))
         return d

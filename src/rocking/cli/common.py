@@ -14,13 +14,20 @@ from __future__ import annotations
 
 import math
 import re
+from pathlib import Path
 
 import click
 
 from .._validate import as_float
 from ..blocks import PARAM_SETS, Block, specimen_ids
 from ..blocks import specimen as get_specimen
-from ..errors import OutputTooLargeError, ParameterError, RockingError, SimulationError
+from ..errors import (
+    OutputTooLargeError,
+    ParameterError,
+    RecordError,
+    RockingError,
+    SimulationError,
+)
 from ..units import parse_quantity
 
 CONTEXT = {"help_option_names": ["-h", "--help"]}
@@ -270,6 +277,28 @@ def _shown(value) -> str:
     return str(value)
 
 
+# ----------------------------------------------------------------------------- records
+def read_record_arg(M, path, name: str, units, dt):
+    """``(record, source)`` from a file, or from the records shipped with the package by
+    name (``M`` is :mod:`rocking.motions`, passed in to keep numba out of this module)."""
+    p = Path(path)
+    if not p.exists():
+        known = M.builtin_records(three_component=True)
+        stem = p.name[:-4] if p.name.upper().endswith(".AT2") else p.name
+        if stem.upper() in (k.upper() for k in known):
+            return M.load_builtin(stem), f"{stem} (built-in)"
+        raise RecordError(f"{name}: no such file or built-in record: {path} (built-in: "
+                          f"{', '.join(known)})")
+    if p.is_dir():
+        raise RecordError(f"{name}: {path} is a directory, not a record file")
+    try:
+        return M.Record.from_file(p, units=units, dt=dt), str(path)
+    except RockingError:
+        raise
+    except (OSError, ValueError, UnicodeError) as e:
+        raise RecordError(f"{name}: cannot read {path}: {e}") from None
+
+
 # ----------------------------------------------------------------------------- errors
 def one_line(msg) -> str:
     return " ".join(str(msg).split())
@@ -307,5 +336,5 @@ def error_report(e: BaseException) -> tuple[str, int] | None:
 __all__ = ["CONTEXT", "quantity", "number", "check_positive", "positive_quantity", "integer",
            "specimen_number", "json_default", "block_options", "make_block", "model_classes",
            "ModelChoice", "option_value", "parse_options", "validate_options",
-           "models_with_option", "options_table", "one_line", "output_too_large_message",
-           "error_report"]
+           "models_with_option", "options_table", "one_line", "read_record_arg",
+           "output_too_large_message", "error_report"]

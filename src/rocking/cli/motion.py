@@ -6,6 +6,7 @@
     rocking motion synth --count 5 --seed 1 --ag 0.25g --ground C --type 1 --out q/
     rocking motion spectrum quake.AT2                       # PEER file, in g
     rocking motion spectrum quake.csv --units m/s^2 --damping 5% --plot spec.png
+    rocking motion show H.AT2 --vertical V.AT2 [--units g] [--plot motion.png]
 
 The group is registered in :mod:`rocking.cli`. Bad input
 raises :class:`~rocking.errors.RockingError`; the main entry point prints it as one line
@@ -23,7 +24,7 @@ import numpy as np
 from .._validate import as_float, in_range
 from ..errors import ParameterError
 from ..units import G, parse_quantity
-from .common import CONTEXT, integer, positive_quantity
+from .common import CONTEXT, integer, positive_quantity, read_record_arg
 
 # matplotlib, pandas and rocking.motions (numba) are imported inside the functions: lazy,
 # so that `rocking --help` and the other commands start fast.
@@ -279,4 +280,64 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
             click.echo(f"wrote       {out}")
 
 
-__all__ = ["motion", "synth_cmd", "spectrum_cmd"]
+@motion.command("show")
+@click.argument("file")
+@click.option("--vertical", metavar="V", help="Vertical component (positive upwards), a file "
+              "or a built-in record's name.")
+@click.option("--units", default="g", show_default=True, metavar="U",
+              help="Units of the records: g, m/s^2, cm/s^2 (gal).")
+@click.option("--dt", metavar="DT", help="Time step of one-column files (s).")
+@click.option("--plot", "plot_path", type=click.Path(dir_okay=False),
+              help="PNG of both components (default: <file stem>_motion.png here).")
+@click.option("--no-plot", is_flag=True, help="Do not write a PNG.")
+def show_cmd(file, vertical, units, dt, plot_path, no_plot):
+    """Summarise a record FILE and its vertical component: peaks, intensity, and where
+    g + a_v <= 0 (the base falls faster than gravity: a block would leave the ground).
+
+    FILE and V are files (.AT2, columns) or the names of built-in records (e.g.
+    Rinaldi228 and RinaldiUP).
+    """
+    from matplotlib.figure import Figure
+
+    from .. import motions as M
+
+    step = _time(dt, "dt")
+    h, hs = read_record_arg(M, file, "file", units, step)
+    comps = [("horizontal", h, hs)]
+    if vertical is not None:
+        v, vs = read_record_arg(M, vertical, "vertical", units, step)
+        comps.append(("vertical", v, vs))
+    for label, rec, src in comps:
+        im = rec.intensity_measures()
+        click.echo(f"{label:<11} {src}: {len(rec)} samples, dt = {rec.dt:g} s, "
+                   f"{rec.duration:g} s")
+        click.echo(f"{'':<11} PGA {im['pga']:.4g} m/s^2 ({im['pga_g']:.4g} g), PGV "
+                   f"{im['pgv']:.4g} m/s, PGD {im['pgd']:.4g} m, Arias {im['arias']:.4g} m/s")
+    if vertical is not None:
+        av = v.values
+        low = np.flatnonzero(G + av <= 0.0)
+        click.echo(f"{'':<11} a_v from {av.min() / G:.3g} g to {av.max() / G:.3g} g: "
+                   + (f"g + a_v <= 0 at {low.size} samples, first at t = {low[0] * v.dt:.4g} s"
+                      if low.size else "g + a_v > 0 throughout (no lift-off)"))
+        click.echo(f"{'':<11} effective gravity g + a_v from {(G + av.min()) / G:.3g} g "
+                   f"to {(G + av.max()) / G:.3g} g; PGA_v / PGA_h = "
+                   f"{np.max(np.abs(av)) / h.pga:.3g}")
+    if not no_plot:
+        p = Path(file)
+        out = Path(plot_path) if plot_path else Path(f"{p.stem}_motion.png")
+        fig = Figure(figsize=(8.0, 2.4 * len(comps) + 0.6), layout="constrained")
+        axes = fig.subplots(len(comps), 1, sharex=True, squeeze=False)[:, 0]
+        for ax, (label, rec, src) in zip(axes, comps, strict=True):
+            ax.plot(rec.t, rec.values / G, lw=0.7, color="0.2")
+            ax.set_ylabel(f"{label} (g)")
+            ax.set_title(Path(src).name, fontsize=9)
+            ax.grid(alpha=0.3)
+        if vertical is not None:
+            axes[-1].axhline(-1.0, color="C3", lw=0.8, ls="--", label="a_v = -g (lift-off)")
+            axes[-1].legend(fontsize=8, loc="lower right")
+        axes[-1].set_xlabel("t (s)")
+        _save(fig, out)
+        click.echo(f"wrote       {out}")
+
+
+__all__ = ["motion", "synth_cmd", "spectrum_cmd", "show_cmd"]

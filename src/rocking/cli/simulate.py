@@ -23,7 +23,7 @@ from pathlib import Path
 import click
 
 from .._validate import as_float, in_range
-from ..errors import ParameterError, RecordError, RockingError
+from ..errors import ParameterError
 from ..units import ACCELERATION, LENGTH, G, split_quantity
 from .common import (
     CONTEXT,
@@ -37,6 +37,7 @@ from .common import (
     parse_options,
     positive_quantity,
     quantity,
+    read_record_arg,
     validate_options,
 )
 
@@ -77,9 +78,14 @@ def amplitude(text, motion: str) -> tuple[str, float]:
 
 
 def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
-                 earthquake=None):
+                earthquake=None, vertical=None, vertical_factor=None):
     """``(motion or None, description dict, duration for simulate)``."""
     from .. import motions as M  # lazy: the motions import numba
+
+    if vertical is None and vertical_factor is not None:
+        raise ParameterError("vertical-factor applies with --vertical V.AT2 only")
+    if vertical is not None and record is None:
+        raise ParameterError("vertical: --vertical needs the horizontal --record FILE")
 
     if earthquake is not None:
         if motion is not None or record is not None:
@@ -147,14 +153,19 @@ def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
         unused("freq", "amp", "tp")
         dtv = positive_quantity(dt, "time", "dt", "s", "s")
         u = "g" if units is None else units
-        try:
-            rec = M.Record.from_file(record, units=u, dt=dtv)
-        except RockingError:
-            raise
-        except (OSError, ValueError, UnicodeError) as e:
-            raise RecordError(f"record: cannot read {record}: {e}") from None
+        rec, src = read_record_arg(M, record, "record", u, dtv)
         m = rec
-        desc.update(file=str(record), units=u, dt=rec.dt, n=len(rec), pga=rec.pga)
+        desc.update(file=src, units=u, dt=rec.dt, n=len(rec), pga=rec.pga)
+        if vertical is not None:
+            vrec, vsrc = read_record_arg(M, vertical, "vertical", u, dtv)
+            fv = (None if vertical_factor is None
+                  else as_float("vertical-factor", vertical_factor))
+            lf0 = 1.0 if load_factor is None else as_float("load-factor", load_factor)
+            m = M.GroundMotion(rec, vrec).scaled(lf0, vertical=fv)
+            desc.update(vertical=vsrc, vertical_factor=lf0 if fv is None else fv,
+                        pga_vertical=m.pga_vertical, repr=f"{rec!r} + vertical {vrec!r}")
+            desc["load_factor"] = lf0
+            return m, desc, dur
     elif motion in HARMONIC:
         unused("tp")
         need("freq", f, "--freq 5Hz")
@@ -261,8 +272,14 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
 @click.option("--duration", metavar="T",
               help="Simulated time (s); default the motion's (required for sine, "
                    "hanning, free).")
-@click.option("--record", type=click.Path(exists=True, dir_okay=False),
-              help="Accelerogram file (.AT2, CSV or columns).")
+@click.option("--record", metavar="FILE",
+              help="Accelerogram file (.AT2, CSV or columns), or a built-in record's name "
+                   "(e.g. Rinaldi228).")
+@click.option("--vertical", metavar="FILE",
+              help="Vertical accelerogram (positive upwards; same --units and --dt), or a "
+                   "built-in record's name (e.g. RinaldiUP).")
+@click.option("--vertical-factor", "vertical_factor", metavar="F",
+              help="Scale of the vertical component (default: the load factor).")
 @click.option("--units", metavar="U", help=f"Units of the record: {UNITS_HELP} (default g).")
 @click.option("--dt", metavar="DT", help="Time step of a one-column record (s).")
 @click.option("--earthquake", metavar="N",
@@ -283,15 +300,16 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
 @click.option("--out", type=click.Path(file_okay=False),
               help="Write response.csv, summary.json and theta.png to this folder.")
 def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model_opts, motion,
-                 freq, amp, tp, duration, record, units, dt, earthquake, load_factor, theta0,
-                 omega0, linear, friction_angle, stiffness, damping, dt_out, out):
+                 freq, amp, tp, duration, record, vertical, vertical_factor, units, dt,
+                 earthquake, load_factor, theta0, omega0, linear, friction_angle, stiffness,
+                 damping, dt_out, out):
     """Simulate one block under one base motion."""
     from ..models import simulate  # lazy: the models import numba
 
     block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
                               allow_classical=True)
     mot, mdesc, sim_dur = make_motion(motion, freq, amp, tp, duration, record, units, dt,
-                                      load_factor, earthquake)
+                                      load_factor, earthquake, vertical, vertical_factor)
     options = model_options(model, model_opts, friction_angle, stiffness, damping)
     linear = bool(linear) or bool(options.pop("linear", False))  # --linear = --option linear=1
     th0 = quantity(theta0, "angle", "theta0", default_unit="rad")
@@ -328,6 +346,12 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
     up = "-" if math.isnan(resp.uplift_time) else f"t = {resp.uplift_time:.4g} s"
     click.echo(f"uplift      {up}")
     click.echo(f"impacts     {resp.n_impacts}")
+    if "vertical" in mdesc:
+        lo = ("-" if not resp.lifted_off else f"yes, at t = {resp.lift_off_time:.4g} s: "
+              "g + a_v <= 0, the block leaves the ground and the run stops there")
+        click.echo(f"vertical    {mdesc['vertical']} x {mdesc['vertical_factor']:g} "
+                   f"(peak {mdesc['pga_vertical'] / G:.3g} g)")
+        click.echo(f"lift-off    {lo}")
 
     if out is not None:
         folder = Path(out)
@@ -351,6 +375,9 @@ def _motion_title(d: dict) -> str:
         return f"Ricker pulse {d['amplitude'] / G:.3g} g, fp {d['fp']:g} Hz{tail}"
     if kind in PULSES:
         return f"{kind} pulse {d['amplitude'] / G:.3g} g, {d['tp']:g} s{tail}"
+    if kind == "record" and "vertical" in d:
+        return (f"record {Path(d['file']).name} + vertical {Path(d['vertical']).name} "
+                f"(PGA {d['pga'] / G:.3g} g, {d['pga_vertical'] / G:.3g} g vertical){tail}")
     if kind == "record":
         return f"record {Path(d['file']).name} (PGA {d['pga'] / G:.3g} g){tail}"
     return "free rocking"

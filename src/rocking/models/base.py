@@ -23,7 +23,7 @@ A subclass of :class:`Model` provides
 ``kernel`` : a compiled (numba) function, the single-run kernel
     ``kernel(mp, kind, prm, samples, t_end, theta0, omega0, h_scan, dt_out, out_th,
     out_om, imp, extra) -> (n_out, n_impacts, max_abs_theta, overturned, overturn_time,
-    uplift_time, n_steps, status)``.
+    uplift_time, n_steps, status, lift_off_time)``.
 
     * ``mp`` is the model's own parameter tuple (:meth:`Model.kernel_params`);
     * ``(kind, prm, samples)`` is the motion spec (:mod:`rocking.motions._kernel`; evaluate
@@ -36,9 +36,14 @@ A subclass of :class:`Model` provides
       ``extra`` (:meth:`Model.extra_buffers`);
     * it returns the number of samples written, the number of impacts (zero crossings of
       ``theta``), ``max |theta|`` (rad), whether the block overturned (``|theta|`` reached
-      pi/2), the overturning and uplift times (s, NaN if none), the number of steps, and a
-      ``status`` (0: success; otherwise a code that :meth:`Model.failure` explains).
+      pi/2), the overturning and uplift times (s, NaN if none), the number of steps, a
+      ``status`` (0: success; otherwise a code that :meth:`Model.failure` explains) and
+      the lift-off time (s): when a vertical motion makes ``g + a_v <= 0`` and the model
+      cannot represent flight, it stops there and returns that time (NaN otherwise).
       Times with no event are NaN, the one convention of the package.
+    * a vertical component, if any, travels in ``prm`` and ``samples``
+      (:mod:`rocking.motions._kernel`: ``has_vertical``, ``vertical_acc``); it is positive
+      upwards and replaces ``g`` by ``g + a_v`` in the gravity terms.
 ``batch_kernel`` : a compiled parallel function over many motions
     ``batch_kernel(mp, extra0, rows, blocks)``: always the same two lines, a ``prange`` loop
     that calls the model's kernel on :func:`row_args` and stores the result with
@@ -285,16 +290,17 @@ def same_block(mp, b):
 @njit(cache=True)
 def store_row(i, res, rows):
     """Store the kernel result ``res`` of row ``i``:
-    ``res_f[i] = (max_abs_theta, overturn_time, uplift_time)``,
+    ``res_f[i] = (max_abs_theta, overturn_time, uplift_time, lift_off_time)``,
     ``res_i[i] = (n_impacts, overturned, n_steps, status)``; the history past the written
     samples is NaN."""
-    k, n_imp, peak, over, t_over, t_up, n_steps, status = res
+    k, n_imp, peak, over, t_over, t_up, n_steps, status, t_lift = res
     out_th, out_om, res_f, res_i = rows[7], rows[8], rows[9], rows[10]
     out_th[i, k:] = math.nan
     out_om[i, k:] = math.nan
     res_f[i, 0] = peak
     res_f[i, 1] = t_over
     res_f[i, 2] = t_up
+    res_f[i, 3] = t_lift
     res_i[i, 0] = n_imp
     res_i[i, 1] = 1 if over else 0
     res_i[i, 2] = n_steps

@@ -81,7 +81,7 @@ from dataclasses import dataclass
 
 from numba import njit, prange
 
-from ..motions._kernel import ground_acc, next_breakpoint
+from ..motions._kernel import ground_acc, has_vertical, next_breakpoint, vertical_acc
 from ..units import G
 from ._numerics import events as E
 from .base import Model, ModelOptions, option, row_args, store_row
@@ -103,12 +103,18 @@ R1, R3, R4, R5, R6 = 1 / 360, -128 / 4275, -2197 / 75240, 1 / 50, 2 / 55  # 5th 
 
 @njit(cache=True)
 def _f(chi, v, psi, t, p, alpha, l, c, kind, prm, samples):
-    """Time derivatives (physical time) of (chi, chi_dot, psi); chi_dot is per adim. time."""
+    """Time derivatives (physical time) of (chi, chi_dot, psi); chi_dot is per adim. time.
+    With a vertical component, ``g`` becomes ``g + a_v`` in the gravity term of Eq 10."""
     a = ground_acc(kind, prm, samples, t) / G
     inv = 1.0 / chi
     inv2 = inv * inv
-    acc = (l * l * inv2 * inv - math.sin(alpha - alpha * chi) / alpha + c * l * inv2 * v
-           + a / alpha * math.cos(alpha - alpha * chi) * math.cos(psi))
+    if has_vertical(prm):
+        gf = 1.0 + vertical_acc(prm, samples, t) / G
+        acc = (l * l * inv2 * inv - gf * math.sin(alpha - alpha * chi) / alpha
+               + c * l * inv2 * v + a / alpha * math.cos(alpha - alpha * chi) * math.cos(psi))
+    else:
+        acc = (l * l * inv2 * inv - math.sin(alpha - alpha * chi) / alpha + c * l * inv2 * v
+               + a / alpha * math.cos(alpha - alpha * chi) * math.cos(psi))
     return p * v, p * acc, p * l * inv2
 
 
@@ -180,7 +186,10 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
     ``dt_fixed > 0`` selects constant steps; otherwise adaptive with ``rtol``.
     """
     c = 2.0 * math.log(mu) / math.pi
-    thr = G * math.tan(alpha)
+    ct = math.tan(alpha)
+    thr = G * ct
+    hv = has_vertical(prm)
+    t_lift = math.nan
     x_over = HALF_PI / alpha
     fixed = dt_fixed > 0.0
     n_out = out_th.shape[0]
@@ -212,10 +221,13 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
     h = dt_fixed if fixed else min(h_max, 1e-3 / p)
     while t < t_end - 1e-12:
         if resting:
-            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out,
-                                           k, out_th, out_om, t_up)
+            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, t_end, h_scan, thr, ct,
+                                           dt_out, k, out_th, out_om, t_up)
             resting = d == 0.0
             if resting:  # still at rest at t_end
+                break
+            if d == E.LIFT_OFF:
+                t_lift = t
                 break
             x, v = chi_start, 0.0  # uplift from the small modulus, towards sign(a)
             s = 0.0 if d > 0.0 else math.pi
@@ -248,6 +260,19 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
                     ok = False
                     break
                 continue
+        if hv and E.lifts_off(prm, samples, t + hh):
+            # the base falls away (g + a_v <= 0): stop at that instant, the model cannot
+            # represent flight
+            tc = E.lift_off_time(prm, samples, t, t + hh)
+            x2, v2, s2, ex2, ev2, es2 = _step(t, x, v, s, tc - t, p, alpha, l, c, kind, prm,
+                                              samples)
+            if not fixed:
+                x2 += ex2
+                v2 += ev2
+                s2 += es2
+            if alpha * x2 < HALF_PI and x2 > 0.0:
+                hh, x1, v1, s1 = tc - t, x2, v2, s2
+                t_lift = tc
         th_a, om_a = _theta(x, v, s, p, alpha, l)
         th_b, om_b = _theta(x1, v1, s1, p, alpha, l)
         # passages through theta = 0: psi crosses pi/2 + j pi
@@ -289,13 +314,15 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
             peak = max(peak, abs(_herm3(th_a, om_a, th_b, om_b, hh, 0.5 * (lo + hi))[0]))
         t += hh
         x, v, s = x1, v1, s1
+        if not math.isnan(t_lift):
+            break
         if passed and _amp_chi(x, v, alpha, l) < rest_chi:
-            if abs(ground_acc(kind, prm, samples, t)) <= thr:
+            if abs(ground_acc(kind, prm, samples, t)) <= E.threshold(thr, ct, prm, samples, t):
                 resting = True
         if not fixed:
             fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
             h = hh * min(5.0, max(0.2, fac))
-    return k, n_imp, peak, overturned, t_over, t_up, n_steps, ok
+    return k, n_imp, peak, overturned, t_over, t_up, n_steps, ok, t_lift
 
 
 @njit(cache=True)
@@ -307,10 +334,10 @@ def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_
     rest_chi = max(rest_tol, 2.0 * chi_c)
     chi_start = math.sqrt(l)
     h_max = min(0.05 / p, 8.0 * h_scan)
-    k, n_imp, peak, over, t_over, t_up, n_steps, ok = integrate(
+    k, n_imp, peak, over, t_over, t_up, n_steps, ok, t_lift = integrate(
         alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fixed, rest_chi,
         chi_start, h_max, h_scan, dt_out, out_th, out_om, imp)
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, t_lift
 
 
 @njit(cache=True)

@@ -17,6 +17,33 @@ with ``theta = 0``.
 
 ``linear=True`` uses the small-angle form ``theta'' = p^2 (theta - sgn(theta) alpha) + p^2 a/g``.
 
+**Vertical ground motion** (:class:`rocking.motions.GroundMotion`; ``a_v`` positive
+upwards). In the frame of the base, which accelerates by ``(a_h, a_v)``, the block feels
+its weight ``M g`` downwards plus the inertial force ``-M (a_h, a_v)``: a horizontal force
+``-M a_h`` and a vertical one ``-M a_v``, i.e. the effective gravity ``g + a_v``. Moments
+about the pivot O (``theta > 0``), with the centre of mass at distance ``R`` and angle
+``alpha - theta`` from the vertical through O::
+
+    I_O theta'' = -M (g + a_v) R sin(alpha - theta) + M a_h R cos(alpha - theta)
+
+and with ``p^2 = M g R / I_O`` (Eq 3),
+
+.. math::
+
+    \theta'' = -\operatorname{sgn}(\theta)\, p^2 (1 + a_v/g) \sin(\alpha - |\theta|)
+               + p^2 \cos(\alpha - |\theta|)\, a_h(\tau)/g ,
+
+Eq (1) with ``g`` replaced by ``g + a_v`` in the gravity term (``p^2`` becomes
+``p^2 (1 + a_v/g)``: under a constant ``a_v`` the free-rocking period scales as
+``1/sqrt(1 + a_v/g)``). At rest (``theta = 0``) the moments balance while
+``|a_h| <= (g + a_v) tan(alpha)``: uplift starts when ``|a_h| > (g + a_v) tan(alpha)``
+(located by bisection on that margin). Impacts keep Eq (4): ``a_v`` is bounded and does
+no impulsive work. Where ``g + a_v <= 0`` the base falls away faster than gravity and
+the block leaves the ground; the model cannot represent flight, so the run stops at the
+first such instant (located by bisection) and the result carries ``lift_off_time``
+(``lifted_off``). Without a vertical component the arithmetic is that of Eq (1) exactly
+(bit-identical results).
+
 **Events.**
 
 * *Uplift*: a block at rest uplifts exactly when ``|a| > g tan(alpha)`` (``g alpha`` when
@@ -48,7 +75,7 @@ from dataclasses import dataclass
 
 from numba import njit, prange
 
-from ..motions._kernel import ground_acc, next_breakpoint
+from ..motions._kernel import ground_acc, has_vertical, next_breakpoint, vertical_acc
 from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
@@ -59,8 +86,15 @@ HALF_PI = 0.5 * math.pi
 
 @njit(cache=True)
 def _acc(th, t, s, alpha, p2, lin, kind, prm, samples):
-    """Angular acceleration of Eq 1 on branch ``s`` (+1 pivot O, -1 pivot O')."""
+    """Angular acceleration of Eq 1 on branch ``s`` (+1 pivot O, -1 pivot O'), with
+    ``g`` replaced by ``g + a_v`` in the gravity term when the motion has a vertical
+    component."""
     a = ground_acc(kind, prm, samples, t) / G
+    if has_vertical(prm):
+        gf = 1.0 + vertical_acc(prm, samples, t) / G
+        if lin:
+            return p2 * gf * (th - s * alpha) + p2 * a
+        return -s * p2 * gf * math.sin(alpha - s * th) + p2 * math.cos(alpha - s * th) * a
     if lin:
         return p2 * (th - s * alpha) + p2 * a
     return -s * p2 * math.sin(alpha - s * th) + p2 * math.cos(alpha - s * th) * a
@@ -134,14 +168,17 @@ def _amplitude_from_energy(om, alpha, p2, lin):
 @njit(cache=True)
 def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest_tol,
               h_max, h_scan, dt_out, out_th, out_om, imp):
-    """Integrate one simulation. Returns
-    (n_out, n_impacts, max_abs_theta, overturned, overturn_time, uplift_time, n_steps).
+    """Integrate one simulation. Returns (n_out, n_impacts, max_abs_theta, overturned,
+    overturn_time, uplift_time, n_steps, lift_off_time).
 
     ``out_th``/``out_om`` receive the history at ``k*dt_out`` (length 0: none stored);
     ``imp`` receives impact times up to its length (impacts are counted beyond it).
     """
     p2 = p * p
-    thr = G * (alpha if lin else math.tan(alpha))
+    c = alpha if lin else math.tan(alpha)
+    thr = G * c
+    hv = has_vertical(prm)
+    t_lift = math.nan
     atol_th = rtol * alpha * 1e-3
     atol_om = atol_th * p
     n_out = out_th.shape[0]
@@ -167,9 +204,12 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
     need_a = True
     while t < t_end - 1e-12:
         if resting:
-            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out,
-                                           k, out_th, out_om, t_up)
+            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c,
+                                           dt_out, k, out_th, out_om, t_up)
             if d == 0.0:
+                break
+            if d == E.LIFT_OFF:
+                t_lift = t
                 break
             # uplift towards sign(a), with a fresh acceleration and step
             resting, s, need_a, h = False, d, True, min(h_max, 0.01 / p)
@@ -195,6 +235,18 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
         if D.sign_changes(th, om, a_cur, th1, om1, a1, hh, s) >= 2:
             h = 0.5 * hh
             continue
+        if hv and E.lifts_off(prm, samples, t + hh):
+            # the base falls away (g + a_v <= 0): the model cannot represent flight
+            tc = E.lift_off_time(prm, samples, t, t + hh)
+            thc, omc, ac, _e1, _e2 = _step(t, th, om, a_cur, tc - t, s, alpha, p2, lin, kind,
+                                           prm, samples)
+            if s * thc >= 0.0 and abs(thc) < HALF_PI:  # else an event comes first
+                if n_out > 0:
+                    k = _emit(t, th, om, a_cur, tc, thc, omc, ac, dt_out, k, out_th, out_om)
+                peak = _seg_peak(th, om, a_cur, thc, omc, ac, tc - t, peak)
+                t, th, om = tc, thc, omc
+                t_lift = tc
+                break
         if s * th1 < 0.0:
             # impact inside the step: safeguarded Newton on the step length
             x = D.hermite_root(th, om, a_cur, th1, om1, a1, hh, 0.0, 0, s)
@@ -225,8 +277,9 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
             th = 0.0
             om = mu * omc
             ag = ground_acc(kind, prm, samples, t)
-            if om == 0.0 or _amplitude_from_energy(om, alpha, p2, lin) < rest_tol * alpha:
-                if abs(ag) <= thr:
+            p2e = p2 * (1.0 + vertical_acc(prm, samples, t) / G) if hv else p2
+            if om == 0.0 or _amplitude_from_energy(om, alpha, p2e, lin) < rest_tol * alpha:
+                if abs(ag) <= E.threshold(thr, c, prm, samples, t):
                     resting = True
                     om = 0.0
                     continue
@@ -261,7 +314,7 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
             need_a = True  # the excitation has a kink or jump here
         fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
         h = hh * min(5.0, max(0.2, fac)) if not hit_bp or hh >= h else max(h, hh)
-    return k, n_imp, peak, overturned, t_over, t_up, n_steps
+    return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift
 
 
 @njit(cache=True)
@@ -270,10 +323,10 @@ def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
     alpha, p, mu, lin, rtol, rest_tol = mp
     h_max = min(0.05 / p, 8.0 * h_scan)
-    k, n_imp, peak, over, t_over, t_up, n_steps = integrate(
+    k, n_imp, peak, over, t_over, t_up, n_steps, t_lift = integrate(
         alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest_tol, h_max,
         h_scan, dt_out, out_th, out_om, imp)
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift
 
 
 @njit(cache=True)

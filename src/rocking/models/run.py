@@ -130,7 +130,7 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     imp = np.empty(max(1, int(cap)))
     extra = m.extra_buffers(n_out)
     mp = m.kernel_params(dt_out, theta0, omega0)
-    k, n_imp, peak, over, t_over, t_up, n_steps, status = type(m).kernel(
+    k, n_imp, peak, over, t_over, t_up, n_steps, status, t_lift = type(m).kernel(
         mp, kind, prm, samples, duration, theta0, omega0, h_scan, dt_out, out_th, out_om,
         imp, extra)
     if status != 0:
@@ -148,6 +148,7 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
         max_abs_theta=float(peak), overturned=bool(over),
         overturn_time=float(t_over) if over else math.nan, uplift_time=float(t_up),
         n_impacts=int(n_imp), model=m.result_name, block=block, motion=motion, info=info,
+        lift_off_time=float(t_lift),
         **fields)
 
 
@@ -245,7 +246,7 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
            float(t_ends.max()))
     out_th = np.empty((n, n_out))
     out_om = np.empty((n, n_out))
-    res_f = np.empty((n, 3))
+    res_f = np.empty((n, 4))
     res_i = np.zeros((n, 4), dtype=np.int64)
     rows = (kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, res_f, res_i,
             th0, om0)
@@ -277,5 +278,5 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
         t=np.arange(n_out) * dt_out if return_histories else None,
         theta=out_th if return_histories else None,
         omega=out_om if return_histories else None,
-        model=m.result_name, block=block, info=m.info(),
+        model=m.result_name, block=block, info=m.info(), lift_off_time=res_f[:, 3].copy(),
     )

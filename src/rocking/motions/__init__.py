@@ -1,6 +1,8 @@
 """Base motions: harmonic table motions, pulses, recorded and synthetic accelerograms.
 
-All accelerations are in m/s^2 and follow the sign convention of the paper's Eq (1).
+All accelerations are in m/s^2 and follow the sign convention of the paper's Eq (1);
+a vertical component (:class:`GroundMotion`) is positive upwards (effective gravity
+``g + a_v``).
 ``motion=None`` in :func:`rocking.simulate` means free rocking from initial conditions.
 
 Earthquake input:
@@ -18,8 +20,9 @@ Earthquake input:
 
 from .base import Motion
 from .ec8 import DesignSpectrum, ec8_spectrum, paper_target
+from .ground import GroundMotion
 from .harmonic import HanningSine, Sine
-from .io import builtin_records, read_record, write_csv
+from .io import builtin_records, builtin_sets, read_record, write_csv
 from .processing import (
     arias_intensity,
     bandpass,
@@ -50,6 +53,7 @@ from .synthetic import (
 __all__ = [
     "Motion", "Sine", "HanningSine", "OneSine", "OneCosine", "HalfSine", "Rectangular",
     "Ricker", "Record", "sample", "read_record", "write_csv", "builtin_records",
+    "GroundMotion", "builtin_sets",
     "MavroeidisPapageorgiou",
     "load_builtin",
     "ec8_spectrum", "DesignSpectrum", "paper_target",

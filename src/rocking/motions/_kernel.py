@@ -2,9 +2,15 @@
 
 A motion reaches compiled code as a *spec*: an integer ``kind``, a float parameter vector
 ``prm`` (``prm[0]`` is always a load factor) and a sample array (empty except for
-records). ``ground_acc`` evaluates the acceleration at one time; ``next_breakpoint`` gives
-the next time at which the acceleration has a kink or a jump, so that integrators can step
-exactly onto it.
+records). ``ground_acc`` evaluates the horizontal acceleration at one time;
+``next_breakpoint`` gives the next time at which the acceleration (of either component)
+has a kink or a jump, so that integrators can step exactly onto it.
+
+A vertical component (:class:`rocking.motions.GroundMotion`) travels in the same spec:
+``prm[:NPRM1]`` is the horizontal motion, ``prm[V_KIND]`` the vertical motion's kind
+(``NONE``: no vertical component), ``prm[V_OFFSET]`` the index where its samples start in
+``samples`` (after the horizontal record's), and ``prm[V0:V0 + NPRM1]`` its parameters.
+``vertical_acc`` evaluates it (m/s^2, positive upwards).
 """
 
 from __future__ import annotations
@@ -25,19 +31,24 @@ RECTANGULAR = 7  # prm: scale, amplitude (acc), length, t0
 RICKER = 8  # prm: scale, amplitude (acc), peak frequency, centre time
 MAVROEIDIS_PAPAGEORGIOU = 9  # prm: scale, velocity amplitude A, fp, gamma, nu, centre t0
 
-NPRM = 6
+NPRM1 = 6  # parameters of one component
+V_KIND = 6  # prm[V_KIND]: kind of the vertical component (NONE: none)
+V_OFFSET = 7  # prm[V_OFFSET]: first index of its samples
+V0 = 8  # prm[V0:V0 + NPRM1]: its parameters
+NPRM = V0 + NPRM1
 TWO_PI = 2.0 * math.pi
 
 
 @njit(cache=True)
 def ground_acc(kind, prm, samples, t):
-    """Ground acceleration (m/s^2) at time ``t`` of the motion ``(kind, prm, samples)``."""
+    """Horizontal ground acceleration (m/s^2) at time ``t`` of the motion
+    ``(kind, prm, samples)``."""
     s = prm[0]
     if kind == NONE:
         return 0.0
     if kind == RECORD:
         dt = prm[1]
-        n = samples.shape[0]
+        n = min(int(prm[2]), samples.shape[0])
         if t < 0.0 or n == 0:
             return 0.0
         x = t / dt
@@ -99,12 +110,37 @@ def ground_acc(kind, prm, samples, t):
 
 
 @njit(cache=True)
+def has_vertical(prm):
+    """Whether the spec carries a vertical component."""
+    return prm.shape[0] > V_KIND and prm[V_KIND] != 0.0
+
+
+@njit(cache=True)
+def vertical_acc(prm, samples, t):
+    """Vertical ground acceleration (m/s^2, positive upwards) at time ``t``; 0 without a
+    vertical component."""
+    if not has_vertical(prm):
+        return 0.0
+    return ground_acc(int(prm[V_KIND]), prm[V0:], samples[int(prm[V_OFFSET]):], t)
+
+
+@njit(cache=True)
 def next_breakpoint(kind, prm, samples, t):
-    """The first time > ``t`` (+1e-12) where the acceleration has a kink or jump (inf if none)."""
+    """The first time > ``t`` (+1e-12) where either component has a kink or jump (inf if
+    none)."""
+    b = _breakpoint(kind, prm, samples, t)
+    if has_vertical(prm):
+        b = min(b, _breakpoint(int(prm[V_KIND]), prm[V0:], samples[int(prm[V_OFFSET]):], t))
+    return b
+
+
+@njit(cache=True)
+def _breakpoint(kind, prm, samples, t):
+    """:func:`next_breakpoint` of one component."""
     eps = 1e-12
     if kind == RECORD:
         dt = prm[1]
-        n = samples.shape[0]
+        n = min(int(prm[2]), samples.shape[0])
         end = (n - 1) * dt
         if t < -eps:
             return 0.0

@@ -136,14 +136,33 @@ def write_csv(record, path) -> Path:
     return p
 
 
-def builtin_records() -> list[str]:
-    """Names of the PEER NGA records shipped with the package (for :func:`load_builtin`)."""
-    folder = _builtin_dir()
+def _stems(folder) -> list[str]:
     try:
         entries = list(folder.iterdir())
     except (FileNotFoundError, NotADirectoryError):
         return []
     return sorted(e.name[:-4] for e in entries if e.name.upper().endswith(".AT2"))
+
+
+def builtin_records(three_component: bool = False) -> list[str]:
+    """Names of the PEER NGA records shipped with the package (for :func:`load_builtin`):
+    the four horizontal records; with ``three_component=True`` also the six files of the
+    three-component sets (:func:`builtin_sets`)."""
+    names = _stems(_builtin_dir())
+    if three_component:
+        names += _stems(_builtin_dir() / THREE_COMPONENT)
+    return names
+
+
+THREE_COMPONENT = "three_component"
+SETS = {"rinaldi": ("Rinaldi228", "Rinaldi318", "RinaldiUP"),
+        "duzce": ("RSN1158_KOCAELI_DZC180", "RSN1158_KOCAELI_DZC270", "RSN1158_KOCAELI_DZC-UP")}
+
+
+def builtin_sets() -> dict[str, tuple[str, str, str]]:
+    """The three-component sets shipped with the package: ``{name: (H1, H2, UP)}``
+    (Northridge 1994 at Rinaldi, Kocaeli 1999 at Duzce)."""
+    return dict(SETS)
 
 
 def read_builtin(name: str) -> tuple[np.ndarray, float, dict]:
@@ -153,7 +172,7 @@ def read_builtin(name: str) -> tuple[np.ndarray, float, dict]:
     ``name`` is the file stem (``"RSN982_NORTHR_JEN292"``), optionally with ``.AT2``, or
     an unambiguous leading part of it such as ``"RSN982"``; case is ignored.
     """
-    available = builtin_records()
+    available = builtin_records(three_component=True)
     key = str(name).strip()
     if key.upper().endswith(".AT2"):
         key = key[:-4]
@@ -165,7 +184,10 @@ def read_builtin(name: str) -> tuple[np.ndarray, float, dict]:
         raise RecordError(
             f"{what} built-in record {name!r}; available: {', '.join(available) or 'none'}"
         )
-    res = _builtin_dir() / f"{matches[0]}.AT2"
+    folder = _builtin_dir()
+    if matches[0] not in _stems(folder):
+        folder = folder / THREE_COMPONENT
+    res = folder / f"{matches[0]}.AT2"
     with resources.as_file(res) as fp:
         acc, dt, meta = read_record(fp, units="g")
     meta["builtin"] = True

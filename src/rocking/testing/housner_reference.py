@@ -13,7 +13,10 @@ The model (Peña et al. 2007, Section 2.1):
   .. math:: \theta'' = -s\,p^2 \sin(\alpha - s\theta) + p^2 \cos(\alpha - s\theta)\,a(t)/g
 
   or, with ``linear=True``, ``theta'' = p^2 (theta - s alpha) + p^2 a/g``. A positive
-  ``a`` drives ``theta`` positive.
+  ``a`` drives ``theta`` positive. With a vertical acceleration ``a_v`` (positive
+  upwards, :class:`rocking.motions.GroundMotion`) ``g`` becomes ``g + a_v`` in the gravity
+  term (the first one), in the uplift threshold and in the Zeno rule's energy; where
+  ``g + a_v <= 0`` the base falls away from the block and the run stops (lift-off).
 * *Impact* (event ``theta = 0``, crossed from the side ``s``, terminal): the angular
   velocity is multiplied by ``mu`` (Eq 4) and the pivot switches; a new ``solve_ivp``
   call starts from ``theta = 0``.
@@ -66,6 +69,7 @@ from ..motions import (
     Ricker,
     Sine,
 )
+from ..motions.ground import GroundMotion
 from ..results import Response
 from ..units import G
 
@@ -86,6 +90,23 @@ class Excitation:
 
     def __init__(self, motion: Motion | None):
         self.motion = motion
+        self.vfns = None  # the vertical acceleration on each piece (None: no vertical)
+        if isinstance(motion, GroundMotion):
+            h = motion.horizontal.scaled(motion.scale)
+            eh = Excitation(h)
+            if motion.vertical is None:
+                self.starts, self.fns, self.linear = eh.starts, eh.fns, eh.linear
+                self.scan_step = eh.scan_step
+                return
+            ev = Excitation(motion.vertical.scaled(motion.scale))
+            self.starts = sorted(set(eh.starts) | set(ev.starts))
+            self.fns = [eh.fns[eh.piece(t)] for t in self.starts]
+            self.vfns = [ev.fns[ev.piece(t)] for t in self.starts]
+            self.linear = [eh.linear[eh.piece(t)] and ev.linear[ev.piece(t)]
+                           for t in self.starts]
+            self.scan_step = min(eh.scan_step, ev.scan_step)
+            self._h, self._v = eh, ev
+            return
         starts: list[float] = [0.0]
         fns: list = []
         lin: list[bool] = []
@@ -144,9 +165,15 @@ class Excitation:
     def end(self, k: int) -> float:
         return self.starts[k + 1] if k + 1 < len(self.starts) else math.inf
 
+    def vertical(self, t: float) -> float:
+        """Point value of the vertical acceleration (m/s^2, positive upwards)."""
+        return 0.0 if self.vfns is None else self._v(t)
+
     def __call__(self, t: float) -> float:
         """Point value of the acceleration (m/s^2); at a jump, the larger in magnitude of
         the two one-sided values (the pulse or record value, never the zero outside)."""
+        if self.vfns is not None:
+            return self._h(t)
         k = self.piece(t)
         v = self.fns[k](t)
         if k > 0 and t == self.starts[k]:
@@ -193,9 +220,13 @@ def _pulse(m):
 
 
 # ---------------------------------------------------------------------------- uplift
-def _first_exceedance(exc: Excitation, t_from: float, t_end: float, thr: float):
-    """First time in ``[t_from, t_end]`` at which ``|a| > thr``, with ``sign(a)`` there;
-    ``None`` if there is none."""
+def _first_exceedance(exc: Excitation, t_from: float, t_end: float, thr: float,
+                      c: float = 0.0):
+    """First time in ``[t_from, t_end]`` at which ``|a| > thr`` (with a vertical component:
+    ``|a_h| > c (g + a_v)`` or ``g + a_v <= 0``), with ``sign(a)`` there; ``None`` if there
+    is none."""
+    if exc.vfns is not None:
+        return _first_exceedance_v(exc, t_from, t_end, c)
     a0 = exc(t_from)
     if abs(a0) > thr:
         return t_from, math.copysign(1.0, a0)
@@ -228,6 +259,42 @@ def _first_exceedance(exc: Excitation, t_from: float, t_end: float, thr: float):
         if abs(a_b) > thr:
             return hi, math.copysign(1.0, a_b)
         k += 1
+    return None
+
+
+def _first_exceedance_v(exc: Excitation, t_from: float, t_end: float, c: float):
+    """:func:`_first_exceedance` with a vertical component: the margin
+    ``|a_h| - c (g + a_v)`` (and ``-(g + a_v)``) on a grid of ``scan_step`` and at every
+    piece boundary, refined by bisection."""
+
+    def trips(t):
+        ge = G + exc.vertical(t)
+        return ge <= 0.0 or abs(exc(t)) > c * ge
+
+    if trips(t_from):
+        return t_from, math.copysign(1.0, exc(t_from))
+    step = exc.scan_step if math.isfinite(exc.scan_step) else t_end - t_from
+    k = exc.piece(t_from)
+    grid = [t_from]
+    while True:
+        hi = min(exc.end(k), t_end)
+        n = max(1, math.ceil((hi - grid[-1]) / step - 1e-9)) if not exc.linear[k] else 1
+        grid += np.linspace(grid[-1], hi, n + 1)[1:].tolist()
+        if hi >= t_end or not math.isfinite(hi):
+            break
+        k += 1
+    for g0, g1 in zip(grid[:-1], grid[1:], strict=True):
+        if trips(g1):
+            lo, hi = g0, g1
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                if not lo < mid < hi:
+                    break
+                if trips(mid):
+                    hi = mid
+                else:
+                    lo = mid
+            return hi, math.copysign(1.0, exc(hi))
     return None
 
 
@@ -317,8 +384,11 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
 
     linear = bool(linear)
     p2 = p * p
-    thr = G * (alpha if linear else math.tan(alpha))
+    c_up = alpha if linear else math.tan(alpha)
+    thr = G * c_up
     exc = Excitation(motion)
+    has_v = exc.vfns is not None
+    lift_off_time = math.nan
 
     t, th, om = 0.0, theta0, omega0
     resting = th == 0.0 and om == 0.0
@@ -333,7 +403,7 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
 
     while t < t_end:
         if resting:
-            up = _first_exceedance(exc, t, t_end, thr)
+            up = _first_exceedance(exc, t, t_end, thr, c_up)
             if up is None:
                 pieces.append((t, t_end, None))
                 t = t_end
@@ -341,6 +411,10 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             tu, sgn = up
             if tu > t:
                 pieces.append((t, tu, None))
+            if has_v and G + exc.vertical(tu) <= 0.0:
+                lift_off_time = tu
+                t = tu
+                break
             t, th, om, s = tu, 0.0, 0.0, sgn
             resting = False
             if math.isnan(uplift_time):
@@ -351,13 +425,18 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             t = tb
             continue
         fn = exc.fns[k]
+        vfn = exc.vfns[k] if has_v else _const(0.0)
 
-        def rhs(tt, y, s=s, fn=fn):
+        def rhs(tt, y, s=s, fn=fn, vfn=vfn):
             a = fn(tt) / G
+            gf = 1.0 + vfn(tt) / G
             if linear:
-                return (y[1], p2 * (y[0] - s * alpha) + p2 * a)
+                return (y[1], gf * p2 * (y[0] - s * alpha) + p2 * a)
             x = alpha - s * y[0]
-            return (y[1], -s * p2 * math.sin(x) + p2 * math.cos(x) * a)
+            return (y[1], -s * gf * p2 * math.sin(x) + p2 * math.cos(x) * a)
+
+        def ev_lift(tt, y, vfn=vfn):
+            return G + vfn(tt)
 
         def ev_impact(tt, y, s=s, t_start=t):
             # At the start of a piece that begins at theta = 0 (after an impact or an
@@ -376,6 +455,7 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         ev_impact.terminal, ev_impact.direction = True, -1.0
         ev_over.terminal, ev_over.direction = True, 1.0
         ev_peak.terminal, ev_peak.direction = False, 0.0
+        ev_lift.terminal, ev_lift.direction = True, -1.0
 
         opts = {}
         if th == 0.0 and om != 0.0:
@@ -386,7 +466,8 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
                 fs = max(0.5 * abs(om / acc0), 100.0 * math.ulp(max(t, 1.0)))
                 opts["first_step"] = min(fs, tb - t)
         sol = solve_ivp(rhs, (t, tb), [th, om], method=method, rtol=rtol, atol=atol,
-                        events=(ev_impact, ev_over, ev_peak), dense_output=dt_out is not None,
+                        events=(ev_impact, ev_over, ev_peak, ev_lift),
+                        dense_output=dt_out is not None,
                         **opts)
         n_calls += 1
         nfev += sol.nfev
@@ -395,6 +476,12 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         for ye in sol.y_events[2]:
             peak = max(peak, abs(ye[0]))
         pieces.append((t, float(sol.t[-1]), sol))
+        if sol.t_events[3].size:
+            lift_off_time = float(sol.t_events[3][0])
+            th, om = float(sol.y[0, -1]), float(sol.y[1, -1])
+            peak = max(peak, abs(th))
+            t = lift_off_time
+            break
         if sol.t_events[1].size:
             overturned = True
             t_over = float(sol.t_events[1][0])
@@ -410,8 +497,11 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             om = mu * float(sol.y_events[0][0][1])
             th = 0.0
             t = te
-            if om == 0.0 or (_free_amplitude(om, alpha, p, linear) < rest_tol * alpha
-                             and abs(exc(t)) <= thr):
+            gf = 1.0 + exc.vertical(t) / G
+            thr_t = c_up * G * gf if has_v else thr
+            if om == 0.0 or (_free_amplitude(om, alpha, p * math.sqrt(max(gf, 1e-300)),
+                                             linear) < rest_tol * alpha
+                             and abs(exc(t)) <= thr_t):
                 resting = True  # uplift test again from here (immediate if |a| > thr)
                 om = 0.0
             else:
@@ -421,7 +511,9 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         peak = max(peak, abs(th))
         t = tb
 
-    t_out, th_out, om_out = _history(pieces, dt_out, t_over if overturned else t_end)
+    t_stop = t_over if overturned else (lift_off_time if has_v and lift_off_time == t
+                                        else t_end)
+    t_out, th_out, om_out = _history(pieces, dt_out, t_stop)
     return Response(
         t=t_out, theta=th_out, omega=om_out, impact_times=np.asarray(impacts, dtype=float),
         max_abs_theta=float(peak), overturned=overturned,
@@ -430,6 +522,7 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         model=("housner-linear" if linear else "housner") + "-reference", block=block,
         motion=motion,
         info={"rtol": rtol, "method": method, "n_solve_ivp": n_calls, "nfev": int(nfev)},
+        lift_off_time=lift_off_time,
     )
 
 

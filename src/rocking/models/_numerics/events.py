@@ -6,27 +6,76 @@ import math
 
 from numba import njit
 
-from ...motions._kernel import ground_acc, next_breakpoint
+from ...motions._kernel import ground_acc, has_vertical, next_breakpoint, vertical_acc
+from ...units import G
+
+LIFT_OFF = 2.0
+"""``direction`` of :func:`rest_advance` when the base falls faster than gravity."""
 
 
 @njit(cache=True)
-def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out, k, out_th, out_om, t_up):
-    """Advance a block at rest until the uplift criterion ``|a| > thr`` holds or ``t_end``.
+def threshold(thr, c, prm, samples, t):
+    """The uplift threshold at ``t``: ``thr`` (= ``c g``) without a vertical component,
+    ``c (g + a_v(t))`` with one (``c`` = tan(alpha), or alpha for the linear form)."""
+    if not has_vertical(prm):
+        return thr
+    return c * (G + vertical_acc(prm, samples, t))
+
+
+@njit(cache=True)
+def lifts_off(prm, samples, t):
+    """Whether the base accelerates downwards at least as fast as gravity at ``t``
+    (``g + a_v <= 0``): the block leaves the ground."""
+    return has_vertical(prm) and G + vertical_acc(prm, samples, t) <= 0.0
+
+
+@njit(cache=True)
+def _trips(kind, prm, samples, t, thr, c):
+    """Uplift (``|a_h| > c (g + a_v)``) or lift-off (``g + a_v <= 0``) at ``t``."""
+    if not has_vertical(prm):
+        return abs(ground_acc(kind, prm, samples, t)) > thr
+    ge = G + vertical_acc(prm, samples, t)
+    return ge <= 0.0 or abs(ground_acc(kind, prm, samples, t)) > c * ge
+
+
+@njit(cache=True)
+def lift_off_time(prm, samples, t0, t1):
+    """First time in ``(t0, t1]`` with ``g + a_v <= 0`` (bisection; ``t1`` lifts off)."""
+    lo, hi = t0, t1
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        if lifts_off(prm, samples, mid):
+            hi = mid
+        else:
+            lo = mid
+        if hi - lo < 1e-13:
+            break
+    return hi
+
+
+@njit(cache=True)
+def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c, dt_out, k, out_th, out_om,
+                 t_up):
+    """Advance a block at rest until the uplift criterion ``|a_h| > c (g + a_v)`` holds or
+    ``t_end`` (``|a_h| > thr`` without a vertical component).
 
     Scans the excitation with steps ``h_scan`` (and onto every breakpoint), locates the
     first exceedance by bisection, and writes zeros to the output buffers meanwhile.
     Returns ``(t, k, direction, t_up)``: ``direction`` is +1/-1 (sign of ``a``) if the
-    block uplifts at ``t``, 0 if it is still at rest at ``t_end``; ``t_up`` is the first
+    block uplifts at ``t``, :data:`LIFT_OFF` if the base falls away from it
+    (``g + a_v <= 0``), 0 if it is still at rest at ``t_end``; ``t_up`` is the first
     uplift time (``t`` if the given ``t_up`` is NaN and the block uplifts now).
     """
     n_out = out_th.shape[0]
     while True:
-        ag = ground_acc(kind, prm, samples, t)
-        if abs(ag) > thr:
+        if _trips(kind, prm, samples, t, thr, c):
             while k < n_out and k * dt_out < t - 1e-12:
                 out_th[k] = 0.0
                 out_om[k] = 0.0
                 k += 1
+            if lifts_off(prm, samples, t):
+                return t, k, LIFT_OFF, t_up
+            ag = ground_acc(kind, prm, samples, t)
             return t, k, 1.0 if ag > 0.0 else -1.0, t if math.isnan(t_up) else t_up
         if t >= t_end - 1e-12:
             while k < n_out and k * dt_out <= t + 1e-12:
@@ -35,11 +84,11 @@ def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, dt_out, k, out_th, o
                 k += 1
             return t, k, 0.0, t_up
         t1 = min(t + h_scan, next_breakpoint(kind, prm, samples, t), t_end)
-        if abs(ground_acc(kind, prm, samples, t1)) > thr:
+        if _trips(kind, prm, samples, t1, thr, c):
             lo, hi = t, t1
             for _ in range(60):
                 mid = 0.5 * (lo + hi)
-                if abs(ground_acc(kind, prm, samples, mid)) > thr:
+                if _trips(kind, prm, samples, mid, thr, c):
                     hi = mid
                 else:
                     lo = mid

@@ -8,7 +8,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from ...motions._kernel import ground_acc
+from ...motions._kernel import ground_acc, has_vertical, vertical_acc
 from ...units import G
 from ..base import row_args, same_block, store_row
 
@@ -110,9 +110,10 @@ def _forces(pos, vel, t, dt, lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, c
     n = nv.shape[0]
     _world(pos, lv, lvn, len_, nv, wv, wn, en)
     ag = ground_acc(kind, prm, samples, t)
+    ge = G + vertical_acc(prm, samples, t) if has_vertical(prm) else G  # g + a_v
     for i in range(n):
         F[i, 0] = -mass[i] * ag
-        F[i, 1] = -mass[i] * G
+        F[i, 1] = -mass[i] * ge
         F[i, 2] = 0.0
     energy = 0.0
     opened = False
@@ -369,7 +370,7 @@ def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_
     for j in range(k):
         out_th[j] = op[j, iout, 2]
         out_om[j] = ov[j, iout, 2]
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, math.nan
 
 
 @njit(cache=True, parallel=True)

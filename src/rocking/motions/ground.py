@@ -1,0 +1,157 @@
+r"""Two-component base motion: a horizontal motion and an optional vertical one.
+
+**Sign conventions.** The horizontal acceleration ``a_h`` keeps the sign of Eq (1): a
+positive ``a_h`` drives ``theta`` positive. The vertical acceleration ``a_v`` is positive
+*upwards*: a base that accelerates upwards presses the block onto it, and in the frame of
+the base the block feels the effective gravity ``g + a_v`` (``a_v = -g`` is free fall of
+the base: the block leaves the ground). Every model replaces ``g`` by ``g + a_v(t)`` in
+its gravity terms (see :mod:`rocking.models.housner`).
+
+Each component may be any :class:`~rocking.motions.Motion` (a record, a sine, a pulse).
+``GroundMotion(h)`` is the horizontal motion ``h`` exactly: the kernels see the same spec
+and give bit-identical results.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy as np
+
+from .._validate import as_float
+from ..errors import ParameterError
+from . import _kernel as K
+from .base import Motion
+from .records import Record
+
+
+@dataclass(frozen=True)
+class GroundMotion(Motion):
+    """A horizontal motion and an optional vertical one (m/s^2, ``a_v`` positive upwards).
+
+    ``duration`` is the longer of the two; ``scale`` multiplies both components
+    (:meth:`scaled`).
+    """
+
+    horizontal: Motion
+    vertical: Motion | None = None
+    scale: float = 1.0
+
+    def __post_init__(self):
+        if isinstance(self.horizontal, GroundMotion) or not isinstance(self.horizontal,
+                                                                         Motion):
+            raise ParameterError("horizontal must be a rocking.motions.Motion (a record, a "
+                                 f"sine, a pulse), got {type(self.horizontal).__name__}")
+        if self.vertical is not None and (isinstance(self.vertical, GroundMotion)
+                                          or not isinstance(self.vertical, Motion)):
+            raise ParameterError("vertical must be a rocking.motions.Motion or None, got "
+                                 f"{type(self.vertical).__name__}")
+        object.__setattr__(self, "scale", as_float("scale", self.scale))
+
+    # ---- constructors
+    @classmethod
+    def from_files(cls, h_path, v_path=None, units: str = "g", dt: float | None = None,
+                   **kw) -> GroundMotion:
+        """Read a horizontal record and, optionally, the vertical one (same ``units``:
+        ``g``, ``m/s^2``, ``cm/s^2``)."""
+        h = Record.from_file(h_path, units=units, dt=dt)
+        v = Record.from_file(v_path, units=units, dt=dt) if v_path is not None else None
+        return cls(h, v, **kw)
+
+    @classmethod
+    def builtin(cls, name: str, horizontal: int = 1) -> GroundMotion:
+        """A three-component set shipped with the package (``"rinaldi"``, ``"duzce"``; see
+        :func:`rocking.motions.builtin_sets`), with its horizontal component 1 or 2 and its
+        vertical component."""
+        from .io import builtin_sets
+        from .records import load_builtin
+        sets = builtin_sets()
+        if name.lower() not in sets:
+            raise ParameterError(f"name must be one of {', '.join(sets)}, got {name!r}")
+        if horizontal not in (1, 2):
+            raise ParameterError(f"horizontal must be 1 or 2, got {horizontal!r}")
+        h1, h2, up = sets[name.lower()]
+        return cls(load_builtin(h1 if horizontal == 1 else h2), load_builtin(up))
+
+    # ---- Motion interface
+    @property
+    def duration(self) -> float:
+        d = self.horizontal.duration
+        return d if self.vertical is None else max(d, self.vertical.duration)
+
+    @property
+    def kind(self) -> int:  # the horizontal motion's kind
+        return self.horizontal.kind
+
+    @property
+    def scan_step(self) -> float:
+        h = self.horizontal.scan_step
+        return h if self.vertical is None else min(h, self.vertical.scan_step)
+
+    def spec(self) -> tuple[int, np.ndarray, np.ndarray]:
+        """The horizontal spec, with the vertical component in ``prm[V_KIND:]``
+        (:mod:`rocking.motions._kernel`)."""
+        h = self.horizontal if self.scale == 1.0 else self.horizontal.scaled(self.scale)
+        kind, prm, samples = h.spec()
+        if self.vertical is None:
+            return kind, prm, samples
+        v = self.vertical if self.scale == 1.0 else self.vertical.scaled(self.scale)
+        vk, vprm, vs = v.spec()
+        prm = prm.copy()
+        prm[K.V_KIND] = vk
+        prm[K.V_OFFSET] = samples.size
+        prm[K.V0:K.V0 + K.NPRM1] = vprm[:K.NPRM1]
+        return kind, prm, np.ascontiguousarray(np.concatenate([samples, vs]))
+
+    def acceleration(self, t):
+        """Horizontal acceleration (m/s^2) at ``t`` (s)."""
+        return self.horizontal.scaled(self.scale).acceleration(t)
+
+    def vertical_acceleration(self, t):
+        """Vertical acceleration (m/s^2, positive upwards) at ``t`` (s); 0 without one."""
+        arr = np.asarray(t, dtype=np.float64)
+        if self.vertical is None:
+            return np.zeros(arr.shape) if arr.ndim else 0.0
+        return self.vertical.scaled(self.scale).acceleration(t)
+
+    # ---- scaling
+    def scaled(self, factor: float, vertical: float | None = None) -> GroundMotion:
+        """Both components times ``factor``; with ``vertical``, the horizontal component
+        times ``factor`` and the vertical one times ``vertical``."""
+        f = as_float("factor", factor)
+        if vertical is None:
+            return dataclasses.replace(self, scale=self.scale * f)
+        fv = as_float("vertical", vertical)
+        h = self.horizontal.scaled(self.scale * f)
+        v = self.vertical.scaled(self.scale * fv) if self.vertical is not None else None
+        return GroundMotion(h, v)
+
+    def __neg__(self):
+        """The horizontal component reversed (the vertical one unchanged)."""
+        return GroundMotion(-self.horizontal.scaled(self.scale),
+                            None if self.vertical is None
+                            else self.vertical.scaled(self.scale))
+
+    @property
+    def name(self) -> str:
+        hn = getattr(self.horizontal, "name", type(self.horizontal).__name__)
+        if self.vertical is None:
+            return hn
+        return f"{hn} + {getattr(self.vertical, 'name', type(self.vertical).__name__)}"
+
+    @property
+    def pga(self) -> float:
+        """Peak horizontal acceleration (m/s^2)."""
+        h = self.horizontal.scaled(self.scale)
+        return h.pga if isinstance(h, Record) else float(np.max(np.abs(
+            h.acceleration(h.time(min(h.scan_step, 0.005))))))
+
+    @property
+    def pga_vertical(self) -> float:
+        """Peak vertical acceleration (m/s^2); 0 without a vertical component."""
+        if self.vertical is None:
+            return 0.0
+        v = self.vertical.scaled(self.scale)
+        return v.pga if isinstance(v, Record) else float(np.max(np.abs(
+            v.acceleration(v.time(min(v.scan_step, 0.005))))))
