@@ -81,7 +81,7 @@ from dataclasses import dataclass
 
 from numba import njit, prange
 
-from ..motions._kernel import ground_acc, has_vertical, next_breakpoint, vertical_acc
+from ..motions._kernel import ground_acc, ground_acc_hv, has_vertical, next_breakpoint
 from ..units import G
 from ._numerics import events as E
 from .base import Model, ModelOptions, option, row_args, store_row
@@ -105,14 +105,16 @@ R1, R3, R4, R5, R6 = 1 / 360, -128 / 4275, -2197 / 75240, 1 / 50, 2 / 55  # 5th 
 def _f(chi, v, psi, t, p, alpha, l, c, kind, prm, samples):
     """Time derivatives (physical time) of (chi, chi_dot, psi); chi_dot is per adim. time.
     With a vertical component, ``g`` becomes ``g + a_v`` in the gravity term of Eq 10."""
-    a = ground_acc(kind, prm, samples, t) / G
     inv = 1.0 / chi
     inv2 = inv * inv
     if has_vertical(prm):
-        gf = 1.0 + vertical_acc(prm, samples, t) / G
+        ah, av = ground_acc_hv(kind, prm, samples, t)
+        a = ah / G
+        gf = 1.0 + av / G
         acc = (l * l * inv2 * inv - gf * math.sin(alpha - alpha * chi) / alpha
                + c * l * inv2 * v + a / alpha * math.cos(alpha - alpha * chi) * math.cos(psi))
     else:
+        a = ground_acc(kind, prm, samples, t) / G
         acc = (l * l * inv2 * inv - math.sin(alpha - alpha * chi) / alpha + c * l * inv2 * v
                + a / alpha * math.cos(alpha - alpha * chi) * math.cos(psi))
     return p * v, p * acc, p * l * inv2

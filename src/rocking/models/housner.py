@@ -75,7 +75,13 @@ from dataclasses import dataclass
 
 from numba import njit, prange
 
-from ..motions._kernel import ground_acc, has_vertical, next_breakpoint, vertical_acc
+from ..motions._kernel import (
+    ground_acc,
+    ground_acc_hv,
+    has_vertical,
+    next_breakpoint,
+    vertical_acc,
+)
 from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
@@ -89,12 +95,14 @@ def _acc(th, t, s, alpha, p2, lin, kind, prm, samples):
     """Angular acceleration of Eq 1 on branch ``s`` (+1 pivot O, -1 pivot O'), with
     ``g`` replaced by ``g + a_v`` in the gravity term when the motion has a vertical
     component."""
-    a = ground_acc(kind, prm, samples, t) / G
     if has_vertical(prm):
-        gf = 1.0 + vertical_acc(prm, samples, t) / G
+        ah, av = ground_acc_hv(kind, prm, samples, t)
+        a = ah / G
+        gf = 1.0 + av / G
         if lin:
             return p2 * gf * (th - s * alpha) + p2 * a
         return -s * p2 * gf * math.sin(alpha - s * th) + p2 * math.cos(alpha - s * th) * a
+    a = ground_acc(kind, prm, samples, t) / G
     if lin:
         return p2 * (th - s * alpha) + p2 * a
     return -s * p2 * math.sin(alpha - s * th) + p2 * math.cos(alpha - s * th) * a

@@ -118,10 +118,45 @@ def has_vertical(prm):
 @njit(cache=True)
 def vertical_acc(prm, samples, t):
     """Vertical ground acceleration (m/s^2, positive upwards) at time ``t``; 0 without a
-    vertical component."""
+    vertical component. A vertical record is read in place (no slicing: this runs at every
+    evaluation of a model's right-hand side)."""
     if not has_vertical(prm):
         return 0.0
+    if prm[V_KIND] == RECORD:
+        s, dt, n, off = prm[V0], prm[V0 + 1], int(prm[V0 + 2]), int(prm[V_OFFSET])
+        if t < 0.0 or n == 0:
+            return 0.0
+        x = t / dt
+        i = int(math.floor(x))
+        if i >= n - 1:
+            if i == n - 1 and x - i < 1e-9:
+                return s * samples[off + n - 1]
+            return 0.0
+        f = x - i
+        return s * (samples[off + i] + f * (samples[off + i + 1] - samples[off + i]))
     return ground_acc(int(prm[V_KIND]), prm[V0:], samples[int(prm[V_OFFSET]):], t)
+
+
+@njit(cache=True)
+def ground_acc_hv(kind, prm, samples, t):
+    """``(horizontal, vertical)`` accelerations at ``t`` (m/s^2): :func:`ground_acc` and
+    :func:`vertical_acc`, with one interpolation index when both are records on the same
+    time grid (a three-component set)."""
+    if (kind == RECORD and prm[V_KIND] == RECORD and prm[V0 + 1] == prm[1]
+            and prm[V0 + 2] == prm[2]):
+        dt, n, off = prm[1], min(int(prm[2]), samples.shape[0]), int(prm[V_OFFSET])
+        if t < 0.0 or n == 0:
+            return 0.0, 0.0
+        x = t / dt
+        i = int(math.floor(x))
+        if i >= n - 1:
+            if i == n - 1 and x - i < 1e-9:
+                return prm[0] * samples[n - 1], prm[V0] * samples[off + n - 1]
+            return 0.0, 0.0
+        f = x - i
+        return (prm[0] * (samples[i] + f * (samples[i + 1] - samples[i])),
+                prm[V0] * (samples[off + i] + f * (samples[off + i + 1] - samples[off + i])))
+    return ground_acc(kind, prm, samples, t), vertical_acc(prm, samples, t)
 
 
 @njit(cache=True)

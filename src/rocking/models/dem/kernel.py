@@ -8,7 +8,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from ...motions._kernel import ground_acc, has_vertical, vertical_acc
+from ...motions._kernel import ground_acc, ground_acc_hv, has_vertical
 from ...units import G
 from ..base import row_args, same_block, store_row
 
@@ -109,8 +109,11 @@ def _forces(pos, vel, t, dt, lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, c
     """
     n = nv.shape[0]
     _world(pos, lv, lvn, len_, nv, wv, wn, en)
-    ag = ground_acc(kind, prm, samples, t)
-    ge = G + vertical_acc(prm, samples, t) if has_vertical(prm) else G  # g + a_v
+    if has_vertical(prm):
+        ag, av = ground_acc_hv(kind, prm, samples, t)
+        ge = G + av  # the effective gravity g + a_v
+    else:
+        ag, ge = ground_acc(kind, prm, samples, t), G
     for i in range(n):
         F[i, 0] = -mass[i] * ag
         F[i, 1] = -mass[i] * ge
