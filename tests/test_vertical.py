@@ -237,3 +237,58 @@ def test_flipping_horizontal_flips_the_response_but_flipping_vertical_does_not()
     v = rocking.simulate(blk, GroundMotion(gm.horizontal.scaled(0.36),
                                            gm.vertical.scaled(-0.36)))
     assert abs(v.max_abs_theta / r.max_abs_theta - 1.0) > 0.01
+
+
+# ------------------------------------------------------------------ CLI
+def run_main(capsys, *args):
+    from rocking.cli import main
+    with pytest.raises(SystemExit) as exc:
+        main([str(a) for a in args])
+    out, err = capsys.readouterr()
+    return exc.value.code, out, err
+
+
+def test_cli_simulate_with_a_vertical_record(capsys, tmp_path):
+    folder = _builtin_dir() / "three_component"
+    code, out, err = run_main(capsys, "simulate", "--specimen", "4", "--params", "experimental",
+                              "--record", folder / "Rinaldi228.AT2", "--vertical",
+                              folder / "RinaldiUP.AT2", "--units", "g", "--load-factor",
+                              "0.39", "--out", tmp_path)
+    assert code == 0, err
+    assert "overturned  yes" in out and "vertical    " in out
+    # by name, and the same run as the library's
+    code, out2, _ = run_main(capsys, "simulate", "--specimen", "4", "--params",
+                             "experimental", "--record", "Rinaldi228", "--vertical",
+                             "RinaldiUP", "--load-factor", "0.39")
+    assert code == 0 and out2.splitlines()[2] == out.splitlines()[2]  # max |theta|
+    r = rocking.simulate(rocking.specimen(4, "experimental"),
+                         GroundMotion.builtin("rinaldi").scaled(0.39))
+    assert f"t = {r.overturn_time:.4g} s" in out
+    # the vertical factor alone: a vertical peak of 1.44 g lifts the block off
+    code, out, err = run_main(capsys, "simulate", "--specimen", "4", "--record", "Rinaldi228",
+                              "--vertical", "RinaldiUP", "--load-factor", "0.3",
+                              "--vertical-factor", "1.5")
+    assert code == 0, err
+    assert "lift-off    yes" in out
+
+
+@pytest.mark.parametrize("args, key", [
+    (("--vertical-factor", "0.5"), "vertical-factor"),
+    (("--motion", "sine", "--freq", "2", "--amp", "1mm", "--duration", "2", "--vertical",
+      "RinaldiUP"), "vertical"),
+    (("--record", "Rinaldi228", "--vertical", "nosuchfile.AT2"), "vertical"),
+])
+def test_cli_vertical_errors_are_one_line(capsys, args, key):
+    code, _, err = run_main(capsys, "simulate", "--specimen", "2", *args)
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: ") and key in lines[0]
+
+
+def test_cli_motion_shows_both_components(capsys, tmp_path):
+    code, out, err = run_main(capsys, "motion", "show", "Rinaldi228", "--vertical",
+                              "RinaldiUP", "--plot", tmp_path / "m.png")
+    assert code == 0, err
+    assert "horizontal" in out and "vertical" in out and "0.9582 g" in out
+    assert "no lift-off" in out
+    assert (tmp_path / "m.png").stat().st_size > 0
