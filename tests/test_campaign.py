@@ -96,10 +96,27 @@ def test_rows_identical_across_chunk_sizes(tmp_path, local_rows):
 
 def test_rows_identical_on_a_dask_local_cluster(tmp_path, local_rows):
     spec = write(tmp_path, SMALL.format(chunk=3))
+    before = os.environ.get("NUMBA_NUM_THREADS")
+    logs: list[str] = []
     st = campaign.run(spec, tmp_path / "store", executor="dask", dask_local=2,
-                      progress=False, log=lambda m: None)
+                      progress=False, log=logs.append)
     assert st["complete"]
     pd.testing.assert_frame_equal(local_rows, campaign.load(tmp_path / "store"))
+    # 2 workers share the cores: each runs its chunks on cores // 2 numba threads
+    cores = len(os.sched_getaffinity(0))
+    assert f"[{max(1, cores // 2)}] numba threads" in logs[0]
+    # nothing leaked into this process: numba still compiles here
+    assert os.environ.get("NUMBA_NUM_THREADS") == before
+    import numba
+
+    @numba.njit(parallel=True)
+    def total(x):
+        s = 0.0
+        for i in numba.prange(x.size):
+            s += x[i]
+        return s
+
+    assert total(np.ones(1000)) == 1000.0
 
 
 def test_lazy_load_has_the_same_rows(local_rows, tmp_path):

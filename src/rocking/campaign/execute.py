@@ -11,11 +11,15 @@
 
 numba and Dask (see also the README):
 
-* threads: a ``LocalCluster`` gets process workers with one Dask thread each and
-  ``NUMBA_NUM_THREADS = cores // workers`` set before each worker starts (the
-  ``distributed.nanny.pre-spawn-environ`` setting; the nanny does not set it). On an
-  existing cluster each worker calls ``numba.set_num_threads(cores on its host // workers
-  on its host)``, bounded by its ``NUMBA_NUM_THREADS``.
+* threads: a ``LocalCluster`` gets process workers with one Dask thread each. On every
+  worker (of a ``LocalCluster`` or an existing cluster) each chunk runs with
+  ``numba.set_num_threads(cores on its host // workers on its host)``, bounded by the
+  worker's ``NUMBA_NUM_THREADS`` (the nanny sets neither; ``set_num_threads`` is
+  thread-local, so it is called in the thread that runs the chunk). The
+  ``LocalCluster`` also passes ``NUMBA_NUM_THREADS`` to its workers' environment (the
+  nanny's ``env``; ``distributed.nanny.pre-spawn-environ`` would leak it into this
+  process, where numba then refuses to compile: "Cannot set NUMBA_NUM_THREADS to a
+  different value once the threads have been launched").
 * a worker with several Dask threads runs one chunk at a time (a lock): numba's default
   ``workqueue`` threading layer aborts when two threads launch ``prange`` kernels at once.
 * compilation: every worker loads (or compiles) the kernels of the campaign's models once,
@@ -52,6 +56,7 @@ def _cores() -> int:
 # ------------------------------------------------------------------------- on a worker
 _CAMPAIGNS: dict[str, Campaign] = {}
 _KERNEL_LOCK = threading.Lock()
+_THREADS: int | None = None  # numba threads of this worker's chunks (setup_worker)
 
 
 def _campaign(spec: CampaignSpec) -> Campaign:
@@ -65,6 +70,9 @@ def _campaign(spec: CampaignSpec) -> Campaign:
 def chunk_task(spec: CampaignSpec, k: int):
     """Run chunk ``k`` of ``spec`` (in a Dask worker): ``(k, table)``."""
     with _KERNEL_LOCK:
+        if _THREADS is not None:  # thread-local in numba: set in the thread that runs
+            import numba
+            numba.set_num_threads(min(_THREADS, numba.config.NUMBA_NUM_THREADS))
         return k, _campaign(spec).run_chunk(k)
 
 
@@ -78,16 +86,20 @@ def warm_up(spec: CampaignSpec) -> None:
 
 
 def setup_worker(spec: CampaignSpec, per_host: dict | None = None, dask_worker=None) -> dict:
-    """Set numba's threads for this worker (cores on its host / workers on its host) and
-    warm up the kernels. Called on every worker with ``Client.run``."""
+    """Choose numba's threads for this worker's chunks (cores on its host / workers on its
+    host, at most its ``NUMBA_NUM_THREADS``) and warm up the kernels. Called on every
+    worker with ``Client.run``."""
+    global _THREADS
     import numba
     if per_host is not None and dask_worker is not None:
         host = dask_worker.address.rsplit(":", 1)[0]
         share = max(1, _cores() // max(1, per_host.get(host, 1)))
-        numba.set_num_threads(min(share, numba.config.NUMBA_NUM_THREADS))
+        _THREADS = min(share, numba.config.NUMBA_NUM_THREADS)
     with _KERNEL_LOCK:
+        if _THREADS is not None:
+            numba.set_num_threads(_THREADS)
         warm_up(spec)
-    return {"pid": os.getpid(), "numba_threads": numba.get_num_threads(),
+    return {"pid": os.getpid(), "numba_threads": _THREADS or numba.get_num_threads(),
             "threading_layer": numba.config.THREADING_LAYER,
             "cache_dir": numba.config.CACHE_DIR or "(next to the package)"}
 
@@ -102,16 +114,17 @@ def _run_local(campaign: Campaign, store: Store, todo: list[int], on_chunk: Call
 
 def local_cluster(n_workers: int):
     """A ``LocalCluster`` of ``n_workers`` process workers, one Dask thread each, with
-    ``NUMBA_NUM_THREADS`` set before they start."""
+    ``NUMBA_NUM_THREADS = cores // n_workers`` set in each before it starts."""
     import logging
 
-    import dask
     from distributed import LocalCluster
     threads = max(1, _cores() // n_workers)
-    with dask.config.set({"distributed.nanny.pre-spawn-environ.NUMBA_NUM_THREADS":
-                          str(threads)}):
-        return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
-                            dashboard_address=None, silence_logs=logging.ERROR)
+    # the nanny's ``env`` is set in each worker process before it starts, and, unlike
+    # ``distributed.nanny.pre-spawn-environ``, does not leak into this process (where a
+    # changed NUMBA_NUM_THREADS makes numba refuse to compile anything more)
+    return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
+                        dashboard_address=None, silence_logs=logging.ERROR,
+                        env={"NUMBA_NUM_THREADS": str(threads)})
 
 
 def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Callable,
@@ -130,7 +143,7 @@ def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Calla
         for addr in workers:
             host = addr.rsplit(":", 1)[0]
             per_host[host] = per_host.get(host, 0) + 1
-        info = client.run(setup_worker, spec, None if cluster is not None else per_host)
+        info = client.run(setup_worker, spec, per_host)
         threads = sum(w.get("nthreads", 1) for w in workers.values())
         log(f"dask: {len(workers)} workers on {len(per_host)} host(s), "
             f"{sorted({v['numba_threads'] for v in info.values()})} numba threads each")
