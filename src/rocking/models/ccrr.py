@@ -87,6 +87,7 @@ from ._numerics import events as E
 from .base import Model, ModelOptions, option, row_args, store_row
 
 HALF_PI = 0.5 * math.pi
+INV_G = 1.0 / G
 DEFAULT_L = 1e-8
 DEFAULT_RTOL = 1e-6
 
@@ -109,8 +110,8 @@ def _f(chi, v, psi, t, p, alpha, l, c, kind, prm, samples):
     inv2 = inv * inv
     if has_vertical(prm):
         ah, av = ground_acc_hv(kind, prm, samples, t)
-        a = ah / G
-        gf = 1.0 + av / G
+        a = ah * INV_G
+        gf = 1.0 + av * INV_G
         acc = (l * l * inv2 * inv - gf * math.sin(alpha - alpha * chi) / alpha
                + c * l * inv2 * v + a / alpha * math.cos(alpha - alpha * chi) * math.cos(psi))
     else:
@@ -184,7 +185,8 @@ def _amp_chi(x, v, alpha, l):
 def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fixed, rest_chi,
               chi_start, h_max, h_scan, dt_out, out_th, out_om, imp):
     """Integrate one CCRR simulation. Returns
-    (n_out, n_impacts, max_abs_theta, overturned, overturn_time, uplift_time, n_steps, ok).
+    (n_out, n_impacts, max_abs_theta, overturned, overturn_time, uplift_time, n_steps, ok,
+    lift_off_time).
     ``dt_fixed > 0`` selects constant steps; otherwise adaptive with ``rtol``.
     """
     c = 2.0 * math.log(mu) / math.pi

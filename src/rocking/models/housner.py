@@ -88,6 +88,7 @@ from ._numerics import events as E
 from .base import Model, ModelOptions, option, row_args, store_row
 
 HALF_PI = 0.5 * math.pi
+INV_G = 1.0 / G
 
 
 @njit(cache=True)
@@ -97,8 +98,8 @@ def _acc(th, t, s, alpha, p2, lin, kind, prm, samples):
     component."""
     if has_vertical(prm):
         ah, av = ground_acc_hv(kind, prm, samples, t)
-        a = ah / G
-        gf = 1.0 + av / G
+        a = ah * INV_G
+        gf = 1.0 + av * INV_G
         if lin:
             return p2 * gf * (th - s * alpha) + p2 * a
         return -s * p2 * gf * math.sin(alpha - s * th) + p2 * math.cos(alpha - s * th) * a

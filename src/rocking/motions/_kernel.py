@@ -9,7 +9,9 @@ has a kink or a jump, so that integrators can step exactly onto it.
 A vertical component (:class:`rocking.motions.GroundMotion`) travels in the same spec:
 ``prm[:NPRM1]`` is the horizontal motion, ``prm[V_KIND]`` the vertical motion's kind
 (``NONE``: no vertical component), ``prm[V_OFFSET]`` the index where its samples start in
-``samples`` (after the horizontal record's), and ``prm[V0:V0 + NPRM1]`` its parameters.
+``samples`` (after the horizontal record's), ``prm[V0:V0 + NPRM1]`` its parameters and
+``prm[V_SAME]`` 1 when both components are records on the same time grid (one
+interpolation index serves both: :func:`ground_acc_hv`).
 ``vertical_acc`` evaluates it (m/s^2, positive upwards).
 """
 
@@ -35,7 +37,8 @@ NPRM1 = 6  # parameters of one component
 V_KIND = 6  # prm[V_KIND]: kind of the vertical component (NONE: none)
 V_OFFSET = 7  # prm[V_OFFSET]: first index of its samples
 V0 = 8  # prm[V0:V0 + NPRM1]: its parameters
-NPRM = V0 + NPRM1
+V_SAME = V0 + NPRM1  # prm[V_SAME] = 1: both components are records on the same time grid
+NPRM = V_SAME + 1
 TWO_PI = 2.0 * math.pi
 
 
@@ -142,9 +145,9 @@ def ground_acc_hv(kind, prm, samples, t):
     """``(horizontal, vertical)`` accelerations at ``t`` (m/s^2): :func:`ground_acc` and
     :func:`vertical_acc`, with one interpolation index when both are records on the same
     time grid (a three-component set)."""
-    if (kind == RECORD and prm[V_KIND] == RECORD and prm[V0 + 1] == prm[1]
-            and prm[V0 + 2] == prm[2]):
-        dt, n, off = prm[1], min(int(prm[2]), samples.shape[0]), int(prm[V_OFFSET])
+    if prm[V_SAME] == 1.0:  # set by GroundMotion.spec: the vertical samples follow at n
+        dt, n = prm[1], int(prm[2])
+        off = n
         if t < 0.0 or n == 0:
             return 0.0, 0.0
         x = t / dt

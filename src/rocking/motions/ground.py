@@ -102,6 +102,9 @@ class GroundMotion(Motion):
         prm[K.V_KIND] = vk
         prm[K.V_OFFSET] = samples.size
         prm[K.V0:K.V0 + K.NPRM1] = vprm[:K.NPRM1]
+        if (kind == K.RECORD and vk == K.RECORD and vprm[1] == prm[1] and vprm[2] == prm[2]
+                and samples.size == int(prm[2])):
+            prm[K.V_SAME] = 1.0
         return kind, prm, np.ascontiguousarray(np.concatenate([samples, vs]))
 
     def acceleration(self, t):
