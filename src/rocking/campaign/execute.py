@@ -123,7 +123,7 @@ def local_cluster(n_workers: int):
     # ``distributed.nanny.pre-spawn-environ``, does not leak into this process (where a
     # changed NUMBA_NUM_THREADS makes numba refuse to compile anything more)
     return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
-                        dashboard_address=None, silence_logs=logging.ERROR,
+                        dashboard_address=":0", silence_logs=logging.ERROR,
                         env={"NUMBA_NUM_THREADS": str(threads)})
 
 
