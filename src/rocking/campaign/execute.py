@@ -112,6 +112,17 @@ def _run_local(campaign: Campaign, store: Store, todo: list[int], on_chunk: Call
         on_chunk(k, len(table))
 
 
+def _restore(environ: dict) -> None:
+    """Put back this process's environment: the nanny copies its pre-spawn settings
+    (``OMP_NUM_THREADS=1``, ``MALLOC_TRIM_THRESHOLD_``, ...) into the process that starts
+    the workers (distributed's ``nanny.py``), where they would change every later child."""
+    for k in set(os.environ) - set(environ):
+        del os.environ[k]
+    for k, v in environ.items():
+        if os.environ.get(k) != v:
+            os.environ[k] = v
+
+
 def local_cluster(n_workers: int):
     """A ``LocalCluster`` of ``n_workers`` process workers, one Dask thread each, with
     ``NUMBA_NUM_THREADS = cores // n_workers`` set in each before it starts."""
@@ -131,7 +142,11 @@ def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Calla
               scheduler: str | None, dask_local: int | None, window: int | None,
               log: Callable):
     from distributed import Client, as_completed
-    cluster = local_cluster(dask_local) if scheduler is None else None
+    environ = dict(os.environ)
+    try:
+        cluster = local_cluster(dask_local) if scheduler is None else None
+    finally:
+        _restore(environ)
     client = Client(cluster if cluster is not None else scheduler, timeout="60s")
     futures = []
     try:
@@ -167,6 +182,7 @@ def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Calla
         client.close()
         if cluster is not None:
             cluster.close()
+        _restore(environ)
 
 
 def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
