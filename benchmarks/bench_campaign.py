@@ -25,8 +25,8 @@ Sections (``--only local,dask,memory,dem``; all by default), each run ``--repeat
   printed too but is not the child's own: Linux carries the high-water mark of the
   process image replaced by ``exec`` over, so a child of this (large, Dask-importing)
   process reports at least this process's peak. The children get the environment this
-  script started with (a Dask ``LocalCluster`` leaves ``NUMBA_NUM_THREADS=1`` in
-  ``os.environ``, see ``dask``).
+  script started with (checked after the Dask runs: ``rocking.campaign`` restores the
+  environment that distributed's nanny changes when it starts workers).
 * ``dem``: 1,000 runs of the discrete element model (specimen 2, Table I geometry) under
   one-sine pulses (20 periods 0.2-1.0 s x 50 amplitudes 1-6 m/s^2, 3 s windows) through
   the same engine (local executor, ``chunk_size = 250``), after a handful of single runs
@@ -291,12 +291,12 @@ class Bench:
                 print(f"     rows: dask store == local store ({same:,} rows, "
                       "assert_frame_equal)")
             shutil.rmtree(store)
-        # distributed's Nanny sets its pre-spawn-environ (NUMBA_NUM_THREADS=1,
-        # OMP_NUM_THREADS=1, ...) in this process's os.environ and leaves it there: later
-        # child processes would run numba on one thread. Put the environment back.
+        # distributed's Nanny sets its pre-spawn-environ (OMP_NUM_THREADS=1, ...) in the
+        # os.environ of the process that starts the workers; rocking.campaign restores it.
+        # Check, and put it back if anything is left (later children would inherit it).
         leaked = {k: v for k, v in os.environ.items() if ENV0.get(k) != v}
         if leaked:
-            print("     os.environ after the Dask runs (left by the nanny, restored here): "
+            print("     os.environ changed by the Dask runs (restored here): "
                   + ", ".join(f"{k}={v}" for k, v in sorted(leaked.items())))
             os.environ.clear()
             os.environ.update(ENV0)

@@ -133,9 +133,13 @@ def local_cluster(n_workers: int):
     # the nanny's ``env`` is set in each worker process before it starts, and, unlike
     # ``distributed.nanny.pre-spawn-environ``, does not leak into this process (where a
     # changed NUMBA_NUM_THREADS makes numba refuse to compile anything more)
-    return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
-                        dashboard_address=":0", silence_logs=logging.ERROR,
-                        env={"NUMBA_NUM_THREADS": str(threads)})
+    environ = dict(os.environ)
+    try:
+        return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
+                            dashboard_address=":0", silence_logs=logging.ERROR,
+                            env={"NUMBA_NUM_THREADS": str(threads)})
+    finally:
+        _restore(environ)
 
 
 def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Callable,
@@ -143,10 +147,7 @@ def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Calla
               log: Callable):
     from distributed import Client, as_completed
     environ = dict(os.environ)
-    try:
-        cluster = local_cluster(dask_local) if scheduler is None else None
-    finally:
-        _restore(environ)
+    cluster = local_cluster(dask_local) if scheduler is None else None
     client = Client(cluster if cluster is not None else scheduler, timeout="60s")
     futures = []
     try:
