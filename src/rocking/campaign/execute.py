@@ -112,6 +112,17 @@ def _run_local(campaign: Campaign, store: Store, todo: list[int], on_chunk: Call
         on_chunk(k, len(table))
 
 
+def _restore(environ: dict) -> None:
+    """Put back this process's environment: the nanny copies its pre-spawn settings
+    (``OMP_NUM_THREADS=1``, ``MALLOC_TRIM_THRESHOLD_``, ...) into the process that starts
+    the workers (distributed's ``nanny.py``), where they would change every later child."""
+    for k in set(os.environ) - set(environ):
+        del os.environ[k]
+    for k, v in environ.items():
+        if os.environ.get(k) != v:
+            os.environ[k] = v
+
+
 def local_cluster(n_workers: int):
     """A ``LocalCluster`` of ``n_workers`` process workers, one Dask thread each, with
     ``NUMBA_NUM_THREADS = cores // n_workers`` set in each before it starts."""
@@ -122,15 +133,20 @@ def local_cluster(n_workers: int):
     # the nanny's ``env`` is set in each worker process before it starts, and, unlike
     # ``distributed.nanny.pre-spawn-environ``, does not leak into this process (where a
     # changed NUMBA_NUM_THREADS makes numba refuse to compile anything more)
-    return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
-                        dashboard_address=None, silence_logs=logging.ERROR,
-                        env={"NUMBA_NUM_THREADS": str(threads)})
+    environ = dict(os.environ)
+    try:
+        return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
+                            dashboard_address=":0", silence_logs=logging.ERROR,
+                            env={"NUMBA_NUM_THREADS": str(threads)})
+    finally:
+        _restore(environ)
 
 
 def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Callable,
               scheduler: str | None, dask_local: int | None, window: int | None,
               log: Callable):
     from distributed import Client, as_completed
+    environ = dict(os.environ)
     cluster = local_cluster(dask_local) if scheduler is None else None
     client = Client(cluster if cluster is not None else scheduler, timeout="60s")
     futures = []
@@ -167,6 +183,7 @@ def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Calla
         client.close()
         if cluster is not None:
             cluster.close()
+        _restore(environ)
 
 
 def run(spec, out, *, executor: str = "local", scheduler: str | None = None,

@@ -127,8 +127,11 @@ class MotionSet:
             self._cache[j] = mo
 
     def get(self, j: int) -> Motion:
-        self.prepare([j])
-        return self._cache[j]
+        mo = self._cache.get(j)
+        if mo is None:
+            self.prepare([j])
+            mo = self._cache[j]
+        return mo
 
     def _record(self, j: int) -> Record:
         mo = self.get(j)
@@ -140,7 +143,9 @@ class MotionSet:
         key = (j, im, (block.alpha, block.p) if im.endswith("_ratio") else None)
         if key not in self._im:
             mo = self.get(j)
-            if im == "pga" and isinstance(mo, Sine):
+            if im == "pga" and isinstance(mo, Record):
+                self._im[key] = mo.pga
+            elif im == "pga" and isinstance(mo, Sine):
                 self._im[key] = mo.acc_amplitude
             elif im == "pga" and hasattr(mo, "amplitude") and not isinstance(mo, Record):
                 self._im[key] = abs(mo.scale) * mo.amplitude
@@ -155,6 +160,7 @@ class Campaign:
     def __init__(self, spec: CampaignSpec):
         self.spec = spec
         self.motions = MotionSet(spec.motions, spec.seed)
+        self.levels = np.asarray(spec.levels, dtype=float)
         self._dists = {(k, b): frozen(k, d, PARAMETERS[k][0](block))
                        for k, d in spec.uncertain.items()
                        for b, block in enumerate(spec.blocks)}
@@ -173,12 +179,12 @@ class Campaign:
     def _scale(self, j: int, lv: int, b: int) -> float:
         s = self.spec
         if s.im is None:
-            return float(s.levels[lv])
+            return float(self.levels[lv])
         base = self.motions.im(j, s.im, s.blocks[b])
         if not base > 0:
             raise ParameterError(f"motion {self.motions.id(j)} has {s.im} = 0: it cannot be "
                                  "scaled to an intensity level")
-        return float((s.levels[lv] / base) ** (1.0 / IMS[s.im][1]))
+        return float((self.levels[lv] / base) ** (1.0 / IMS[s.im][1]))
 
     def inputs(self, ids):
         """Simulations ``ids``: ``(table, blocks, motions)`` ready for
@@ -226,7 +232,7 @@ class Campaign:
             "motion": ji.astype(np.int64),
             "motion_id": [self.motions.id(int(j)) for j in ji],
             "level": li.astype(np.int64), "load_factor": lf,
-            **({"im": s.levels[li].astype(float)} if s.im else {}),
+            **({"im": self.levels[li]} if s.im else {}),
             "sample": si.astype(np.int64),
             "theta0": vals["theta0"], "amplitude": vals["amplitude"], "noise": vals["noise"],
             "pga": pga,

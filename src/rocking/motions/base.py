@@ -13,7 +13,6 @@ so the Python and the kernel views of a motion can never disagree.
 
 from __future__ import annotations
 
-import dataclasses
 from typing import ClassVar
 
 import numpy as np
@@ -63,7 +62,12 @@ class Motion:
     def scaled(self, factor: float):
         """A copy with the acceleration multiplied by ``factor`` (a load factor)."""
         f = as_float("factor", factor)
-        return dataclasses.replace(self, scale=self.scale * f)
+        # a copy of the validated fields with a new scale: no need to validate them again
+        # (a record's check scans every sample; campaigns scale thousands of motions)
+        new = object.__new__(type(self))
+        new.__dict__.update(self.__dict__)
+        object.__setattr__(new, "scale", self.scale * f)
+        return new
 
     def __neg__(self):
         return self.scaled(-1.0)
