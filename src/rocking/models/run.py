@@ -96,7 +96,10 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     ----------
     block : Block (or Stack for ``model="dem"``)
     motion : Motion or None
-        Base motion; ``None`` means free rocking from ``theta0``, ``omega0``.
+        Base motion; ``None`` means free rocking from ``theta0``, ``omega0``. A
+        :class:`~rocking.motions.GroundMotion` adds a vertical component (positive upwards:
+        ``g`` becomes ``g + a_v``); where ``g + a_v <= 0`` the classical and CCRR models
+        stop (``Response.lifted_off``, ``lift_off_time``).
     model : str or Model class
         A registered name (``"housner"``: classical model, Eq 1; ``"ccrr"``: Eq 10;
         ``"dem"``: discrete elements) or a :class:`rocking.models.Model` subclass.
