@@ -129,20 +129,24 @@ def test_lazy_load_has_the_same_rows(local_rows, tmp_path):
 
 
 # ------------------------------------------------------------------ physics of a row
-def test_a_row_reproduces_the_direct_call(local_rows):
+def test_a_row_reproduces_the_direct_call(tmp_path):
     """Without ``duration``, each run lasts its motion's duration, as in simulate_many; a
-    row equals rocking.simulate with the row's block, initial tilt and motion."""
-    spec = campaign.parse_spec(SMALL.format(chunk=7))
-    c = campaign.Campaign(spec)
+    row equals rocking.simulate with the row's block and initial tilt under the named
+    record times the row's load factor (built here, not by the campaign)."""
+    text = SMALL.format(chunk=7).replace(
+        'noise = {dist = "uniform", low = 0.0, high = 0.05}\n', "")
+    campaign.run(write(tmp_path, text), tmp_path / "s", progress=False)
+    rows = campaign.load(tmp_path / "s")
     for i in (0, 5, 13, 22):
-        row = local_rows.iloc[i]
-        _, blocks, motions = c.inputs([i])
+        row = rows.iloc[i]
         block = rocking.Block.from_params(row.alpha, row.p, row.mu)
-        r = rocking.simulate(block, motions[0], model=row.model, theta0=row.theta0)
+        motion = load_builtin(row.motion_id).scaled(row.load_factor)
+        r = rocking.simulate(block, motion, model=row.model, theta0=row.theta0)
         assert r.max_abs_theta == row.max_abs_theta or (r.overturned and row.overturned)
         assert bool(r.overturned) == bool(row.overturned)
         assert r.n_impacts == row.n_impacts
-        assert motions[0].duration == load_builtin(row.motion_id).duration
+        assert row.load_factor == [0.4, 0.9, 1.6][row.level]
+        assert row.pga == pytest.approx(motion.pga, rel=1e-12)
 
 
 def test_no_uncertainty_is_exactly_the_nominal_batch(tmp_path):
@@ -298,6 +302,10 @@ BAD = {
     "unknown distribution": (SMALL.replace('dist = "normal"', 'dist = "gauss"'),
                              "uncertain.alpha"),
     "bad chunk size": (SMALL, "run.chunk_size"),
+    "samples without uncertainty": (
+        SMALL[:SMALL.index("[uncertain]")].replace('name = "small"',
+                                                  'name = "small"\nsamples = 3')
+        + "[run]\nchunk_size = {chunk}\n", "campaign.samples"),
     "not TOML": ("[campaign\nname=", "not valid TOML"),
 }
 
@@ -424,17 +432,65 @@ def test_chunks_partition_the_sim_ids():
     from hypothesis import given, settings
     from hypothesis import strategies as st
 
-    @settings(max_examples=40, deadline=None)
-    @given(st.integers(1, 3), st.integers(1, 40), st.integers(1, 9), st.integers(1, 200))
-    def check(n_blocks, n_levels, samples, chunk):
+    @settings(max_examples=30, deadline=None)
+    @given(st.integers(1, 2), st.integers(1, 7), st.integers(1, 4), st.integers(1, 40))
+    def check(n_models, n_levels, samples, chunk):
         text = SMALL.format(chunk=chunk).replace("[0.4, 0.9, 1.6]",
                                                  f"{{start = 0.1, stop = 2, num = {n_levels}}}")
+        models = '["housner", "ccrr"]' if n_models == 2 else '"housner"'
         text = text.replace('model = ["housner", "ccrr"]',
-                            f'model = "housner"\nsamples = {samples}')
+                            f"model = {models}\nsamples = {samples}")
         spec = campaign.parse_spec(text)
         c = campaign.Campaign(spec)
         ids = np.concatenate([np.arange(*c.chunk_range(k)) for k in range(spec.n_chunks)])
         assert ids.tolist() == list(range(spec.n_sims))
-        assert spec.n_sims == 2 * 2 * n_levels * samples
+        assert spec.n_sims == n_models * 2 * 2 * n_levels * samples
+        # every (model, block, motion, level, sample) once, the sample running fastest
+        t = c.table()
+        keys = list(zip(t["model"], t["block"], t["motion"], t["level"], t["sample"],
+                        strict=True))
+        expect = [(m, b, j, lv, sm) for m in ("housner", "ccrr")[:n_models]
+                  for b in range(2) for j in range(2) for lv in range(n_levels)
+                  for sm in range(samples)]
+        assert keys == expect
 
     check()
+
+
+def test_files_resume_after_moving_and_refuse_an_edited_record(tmp_path):
+    """The spec hash covers the records' contents, not where they are: a moved project
+    resumes, an edited record is a different campaign."""
+    name = "RSN982_NORTHR_JEN292.AT2"
+    from rocking.motions.io import _builtin_dir
+    src = (_builtin_dir() / name).read_bytes()
+    text = SMALL.format(chunk=8).replace(
+        'kind = "builtin"\nnames = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]',
+        f'kind = "files"\npaths = ["recs/{name}"]\nunits = "g"')
+    for d in ("a", "b"):
+        (tmp_path / d / "recs").mkdir(parents=True)
+        (tmp_path / d / "recs" / name).write_bytes(src)
+        write(tmp_path / d, text)
+    store = tmp_path / "store"
+    campaign.run(tmp_path / "a" / "spec.toml", store, progress=False)
+    st = campaign.run(tmp_path / "b" / "spec.toml", store, progress=False)  # moved: resumes
+    assert st["complete"]
+    assert campaign.load(store)["motion_id"].unique().tolist() == [f"recs/{name}"]
+    (tmp_path / "b" / "recs" / name).write_bytes(src.replace(b"E-0", b"E-1", 1))
+    with pytest.raises(StoreError, match="different campaign"):
+        campaign.run(tmp_path / "b" / "spec.toml", store, progress=False)
+
+
+def test_store_out_that_is_a_file_is_refused(tmp_path, capsys):
+    spec = write(tmp_path, SMALL.format(chunk=8))
+    (tmp_path / "f").write_text("x")
+    code, _, err = run_main(capsys, "campaign", "run", spec, "--out", tmp_path / "f")
+    assert code == 2 and "--out" in err and len(err.strip().splitlines()) == 1
+    with pytest.raises(rocking.ParameterError, match="window"):
+        campaign.run(spec, tmp_path / "s", window=0, progress=False)
+
+
+def test_builtin_three_component_records_in_a_campaign():
+    text = SMALL.format(chunk=8).replace(
+        'names = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]', 'names = ["Rinaldi228"]')
+    spec = campaign.parse_spec(text)
+    assert spec.n_motions == 1

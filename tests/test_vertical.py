@@ -157,7 +157,7 @@ def test_the_vertical_component_changes_the_outcome_on_rinaldi():
     the vertical component (0.37 g) it overturns."""
     blk = rocking.specimen(4, "experimental")
     gm = GroundMotion.builtin("rinaldi").scaled(0.39)
-    assert not rocking.simulate(blk, gm.horizontal.scaled(0.39)).overturned
+    assert not rocking.simulate(blk, gm.horizontal).overturned  # the horizontal part, x 0.39
     assert rocking.simulate(blk, gm).overturned
 
 
@@ -176,7 +176,7 @@ def test_dem_agrees_with_the_classical_model_under_horizontal_and_vertical_sines
     assert not r.overturned and not c.overturned
     assert r.max_abs_theta == pytest.approx(c.max_abs_theta, rel=0.05)
     c0 = rocking.simulate(blk, h)
-    assert abs(c.max_abs_theta / c0.max_abs_theta - 1.0) > 0.0  # the vertical acts
+    assert abs(c.max_abs_theta / c0.max_abs_theta - 1.0) > 0.05  # the vertical matters
 
 
 def test_dem_block_flies_and_lands_when_the_base_falls_faster_than_gravity():
@@ -198,7 +198,37 @@ def test_dem_block_flies_and_lands_when_the_base_falls_faster_than_gravity():
     assert s.y.max() - s.y[0] < 1e-6
 
 
+@pytest.mark.parametrize("ratio", [0.05, 0.1])
+def test_ccrr_agrees_with_the_classical_model_under_a_vertical_sine(ratio):
+    """Tolerance from the horizontal-only agreement d0 of the two models (0.11 % here):
+    max(5 d0, 0.5 %). Measured: 0.05 % and 0.15 %. (At 0.2 g the response enters a
+    sensitive regime after 8 s where CCRR does not converge in rtol; not tested.)"""
+    blk = rocking.specimen(2, "experimental")
+    h = Sine(5.0, 0.005, 10.0)
+    d0 = abs(rocking.simulate(blk, h, model="ccrr").max_abs_theta
+             / rocking.simulate(blk, h).max_abs_theta - 1.0)
+    gm = GroundMotion(h, Sine.from_acceleration(3.0, ratio * G, 10.0))
+    c, a = rocking.simulate(blk, gm, model="ccrr"), rocking.simulate(blk, gm)
+    assert c.max_abs_theta == pytest.approx(a.max_abs_theta, rel=max(5 * d0, 0.005))
+    assert c.n_impacts == a.n_impacts
+
+
 # ------------------------------------------------------------------ lift-off
+@pytest.mark.parametrize("model", ["housner", "ccrr"])
+@pytest.mark.parametrize("peak", [1.0005, 1.002])
+def test_lift_off_of_a_rocking_block_under_a_vertical_sine_just_above_g(model, peak):
+    """a_v = -peak g sin(w t): g + a_v <= 0 only within about 3-6 ms around the first
+    trough, which one integration step can straddle; it must still be found."""
+    blk = rocking.specimen(2, "experimental")
+    h = Sine.from_acceleration(1.5, 1.3 * G * math.tan(blk.alpha), 3.0)
+    f = 2.3
+    v = Sine.from_acceleration(f, peak * G, 3.0)
+    r = rocking.simulate(blk, GroundMotion(h, v), model=model, duration=3.0)
+    t_lift = math.asin(1.0 / peak) / (2.0 * math.pi * f)
+    assert r.uplift_time < t_lift  # it rocks first
+    assert r.lift_off_time == pytest.approx(t_lift, abs=1e-9)
+
+
 @pytest.mark.parametrize("model", ["housner", "ccrr"])
 @pytest.mark.parametrize("rocking_first", [False, True])
 def test_lift_off_is_detected_when_g_plus_av_reaches_zero(model, rocking_first):
@@ -226,16 +256,17 @@ def test_lift_off_is_detected_when_g_plus_av_reaches_zero(model, rocking_first):
 # ------------------------------------------------------------------ symmetry
 def test_flipping_horizontal_flips_the_response_but_flipping_vertical_does_not():
     blk = rocking.specimen(4, "experimental")
-    gm = GroundMotion.builtin("rinaldi").scaled(0.36)
+    g0 = GroundMotion.builtin("rinaldi")
+    gm = g0.scaled(0.36)
     r = rocking.simulate(blk, gm)
-    f = rocking.simulate(blk, GroundMotion(-gm.horizontal.scaled(0.36),
-                                           gm.vertical.scaled(0.36)))
+    f = rocking.simulate(blk, GroundMotion(-g0.horizontal.scaled(0.36),
+                                           g0.vertical.scaled(0.36)))
     np.testing.assert_allclose(f.theta, -r.theta, atol=1e-12)
     assert f.n_impacts == r.n_impacts
     nf = rocking.simulate(blk, -gm)  # GroundMotion.__neg__ flips the horizontal only
     np.testing.assert_allclose(nf.theta, -r.theta, atol=1e-12)
-    v = rocking.simulate(blk, GroundMotion(gm.horizontal.scaled(0.36),
-                                           gm.vertical.scaled(-0.36)))
+    v = rocking.simulate(blk, GroundMotion(g0.horizontal.scaled(0.36),
+                                           g0.vertical.scaled(-0.36)))
     assert abs(v.max_abs_theta / r.max_abs_theta - 1.0) > 0.01
 
 

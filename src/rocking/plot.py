@@ -189,6 +189,9 @@ def plot_motion(motion, ax=None, duration: float | None = None, *, title: str | 
         raise ParameterError(f"motion must be a rocking.motions.Motion, "
                              f"got {type(motion).__name__}")
     dur = motion.duration if duration is None else positive("duration", duration, "s")
+    horizontal = getattr(motion, "horizontal", None)  # a GroundMotion: its horizontal part
+    if horizontal is not None:
+        motion = horizontal.scaled(motion.scale)
     if isinstance(motion, Record):
         n = min(motion.acc.size, int(math.floor(dur / motion.dt + 1e-9)) + 1)
         t = motion.t[:n]

@@ -149,7 +149,7 @@ def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Calla
     environ = dict(os.environ)
     cluster = local_cluster(dask_local) if scheduler is None else None
     client = Client(cluster if cluster is not None else scheduler, timeout="60s")
-    futures = []
+    pending: set = set()  # submitted, not yet written: cancelled if the run stops
     try:
         workers = client.scheduler_info(n_workers=-1)["workers"]
         if not workers:
@@ -166,19 +166,22 @@ def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Calla
         window = window or max(2, 2 * threads)
         spec_f = client.scatter(spec, broadcast=True)
         queue = iter(todo)
-        futures = [client.submit(chunk_task, spec_f, k, pure=False)
-                   for k in (next(queue, None) for _ in range(window)) if k is not None]
-        ac = as_completed(futures)
+        pending.update(client.submit(chunk_task, spec_f, k, pure=False)
+                       for k in (next(queue, None) for _ in range(window)) if k is not None)
+        ac = as_completed(list(pending))
         for fut in ac:
             k, table = fut.result()
             store.write_chunk(k, table)
             on_chunk(k, len(table))
+            pending.discard(fut)
             fut.release()
             nxt = next(queue, None)
             if nxt is not None:
-                ac.add(client.submit(chunk_task, spec_f, nxt, pure=False))
+                new = client.submit(chunk_task, spec_f, nxt, pure=False)
+                pending.add(new)
+                ac.add(new)
     finally:
-        for f in futures:
+        for f in pending:
             f.cancel()
         client.close()
         if cluster is not None:
@@ -199,10 +202,7 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
     an existing store raises :class:`~rocking.errors.StoreError`. Interrupting (Ctrl-C)
     keeps every finished chunk; run again to resume.
     """
-    from pathlib import Path
-    spec_dir = "."
     if not isinstance(spec, CampaignSpec):
-        spec_dir = Path(spec).resolve().parent
         spec = read_spec(spec)
     if executor not in EXECUTORS:
         raise ParameterError(f"executor must be one of {', '.join(EXECUTORS)}, got "
@@ -215,11 +215,15 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
             dask_local, int | np.integer) or not 1 <= dask_local <= 1024):
         raise ParameterError(f"dask_local must be a whole number in [1, 1024], got "
                              f"{dask_local!r}")
+    if window is not None and (isinstance(window, bool) or not isinstance(
+            window, int | np.integer) or not 1 <= window <= 100_000):
+        raise ParameterError(f"window must be a whole number in [1, 100000], got {window!r}")
     if executor == "dask" and scheduler is None and dask_local is None:
         dask_local = 2
-    store = Store(out).open_for(spec, spec_dir)
+    store = Store(out).prepare()
     store.lock()
     try:
+        store.open_for(spec)
         done = store.done()
         todo = [k for k in range(spec.n_chunks) if k not in done]
         status = store.status()

@@ -47,6 +47,8 @@ from .spec import CampaignSpec
 
 STREAM = 3
 """Tag of the campaign's random streams (Monte Carlo uses 1, stochastic records 2)."""
+KEEP = 2000
+"""Motions a worker keeps built between chunks (beyond: only the current chunk's)."""
 RESULT_COLUMNS = ("max_abs_theta", "max_abs_theta_over_alpha", "overturned", "overturn_time",
                   "uplift_time", "n_impacts", "damage_state", "status")
 PULSE_CLASSES = {"one_sine": OneSine, "one_cosine": OneCosine, "half_sine": HalfSine,
@@ -54,7 +56,9 @@ PULSE_CLASSES = {"one_sine": OneSine, "one_cosine": OneCosine, "half_sine": Half
 
 
 class MotionSet:
-    """The motions of a ``[motions]`` table, built on demand and kept (unscaled)."""
+    """The motions of a ``[motions]`` table, built on demand and kept (unscaled) up to
+    :data:`KEEP` of them (then those of the current chunk only: memory follows the chunk
+    size, not the number of motions)."""
 
     def __init__(self, m: dict, seed: int):
         self.m, self.seed = m, seed
@@ -71,7 +75,7 @@ class MotionSet:
         if kind == "seed_earthquakes":
             return f"seed:{m['records'][j]:02d}"
         if kind == "files":
-            return m["paths"][j].rsplit("/", 1)[-1]
+            return m["names"][j] if "names" in m else m["paths"][j]
         if kind == "builtin":
             return m["names"][j]
         if kind == "stochastic":
@@ -97,8 +101,10 @@ class MotionSet:
 
     def prepare(self, js) -> None:
         """Build the motions ``js`` not built yet (stochastic records in few calls)."""
-        missing = [int(j) for j in dict.fromkeys(np.asarray(js).tolist())
-                   if j not in self._cache]
+        wanted = dict.fromkeys(np.asarray(js).tolist())
+        missing = [int(j) for j in wanted if j not in self._cache]
+        if missing and len(self._cache) + len(missing) > KEEP:
+            self._cache = {j: m for j, m in self._cache.items() if j in wanted}
         if not missing:
             return
         m, kind = self.m, self.m["kind"]

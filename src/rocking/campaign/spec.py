@@ -26,7 +26,8 @@
                                   # | sine_grid | pulse_grid
     n = 100
     load_factors = {start = 0.5, stop = 3.0, num = 11}   # or a list
-    # or: im = "pga" and levels = [1.0, 2.0, 4.0]          (m/s^2 for pga)
+    # or: im = "pga" and levels = [1.0, 2.0, 4.0]          (m/s^2 for pga; pga_ratio and
+    #     pgv_ratio use each block's nominal alpha and p, before any uncertain draw)
 
     [uncertain]                   # one entry per parameter (rocking.analysis.montecarlo)
     alpha = {dist = "normal", cov = 0.02}
@@ -234,6 +235,9 @@ def _motions(t: dict, base_dir: Path) -> dict:
                 _fail(f"motions.paths[{i}]", f"no such file: {q}")
             resolved.append(str(q.resolve()))
         out["paths"] = resolved
+        out["names"] = list(paths)  # as written: the motion ids
+        out["digests"] = [hashlib.sha256(Path(q).read_bytes()).hexdigest()[:16]
+                          for q in resolved]
         out["units"] = _string("motions.units", t.get("units", "g"), tuple(ACCELERATION))
         if "dt" in t:
             out["dt"] = _number("motions.dt", t["dt"], 0, lo_open=True)
@@ -243,7 +247,7 @@ def _motions(t: dict, base_dir: Path) -> dict:
         if not isinstance(names, list):
             _fail("motions.names", f"must be a list of record names, got {names!r}")
         for i, n in enumerate(names):
-            _string(f"motions.names[{i}]", n, builtin_records())
+            _string(f"motions.names[{i}]", n, builtin_records(three_component=True))
         out["names"] = list(names)
     elif kind == "stochastic":
         if "n" not in t:
@@ -329,12 +333,17 @@ class CampaignSpec:
     options: dict
     text: str = field(repr=False)
     raw: dict = field(repr=False)
+    base_dir: str = "."
+    """The folder that relative record paths (``kind = "files"``) start from."""
 
     @property
     def hash(self) -> str:
-        """SHA-256 of the spec's content (the parsed TOML, not its formatting or comments,
-        and the resolved record paths)."""
-        content = {"raw": self.raw, "motions": self.motions}
+        """SHA-256 of what the results depend on: the parsed TOML (not its formatting or
+        comments; without ``[run] window``, which only schedules) and, for record files,
+        their contents (a digest each), not where they are."""
+        raw = {k: v for k, v in self.raw.items() if k != "run"}
+        raw["run"] = {k: v for k, v in self.raw.get("run", {}).items() if k != "window"}
+        content = {"raw": raw, "digests": self.motions.get("digests")}
         return hashlib.sha256(json.dumps(content, sort_keys=True, default=str)
                               .encode()).hexdigest()
 
@@ -424,6 +433,9 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
                 frozen(k, d, PARAMETERS[k][0](b))
             except ParameterError as e:
                 _fail(f"uncertain.{k}", str(e))
+    if samples > 1 and not uncertain:
+        _fail("campaign.samples", f"is {samples}, but nothing is uncertain: the samples would "
+                                  "be identical runs (give [uncertain] parameters, or samples = 1)")
     if uncertain and "dem" in models and set(uncertain) & {"alpha", "p", "mu", "theta0"}:
         bad = sorted(set(uncertain) & {"alpha", "p", "mu", "theta0"})[0]
         _fail(f"uncertain.{bad}", "not supported with model 'dem' (its geometry and contacts "
@@ -454,7 +466,7 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
     return CampaignSpec(name=name, seed=seed, models=models, duration=duration,
                         samples=samples, thresholds=thresholds, blocks=blocks, motions=motions,
                         uncertain=uncertain, chunk_size=chunk, window=window, options=options,
-                        text=text, raw=raw)
+                        text=text, raw=raw, base_dir=str(Path(base_dir).resolve()))
 
 
 def read_spec(path) -> CampaignSpec:

@@ -9,8 +9,9 @@
 
 A chunk's Parquet file is written under a temporary name in the same directory and renamed
 (:func:`os.replace`, atomic on POSIX): a chunk is finished exactly when its file exists,
-so a run killed at any instant leaves only finished chunks (and perhaps a temporary file,
-ignored and removed by the next run). One run at a time writes to a store (an exclusive
+so a run killed at any instant leaves only finished chunks (and perhaps temporary files,
+ignored, and removed when the next run takes the lock). One run at a time writes to a
+store (an exclusive
 ``flock`` on ``STORE/.lock``, released by the kernel however the run ends).
 """
 
@@ -105,9 +106,27 @@ class Store:
         return parse_spec((self.path / SPEC).read_text(encoding="utf-8"),
                           base_dir=self.manifest.get("spec_dir", "."))
 
-    def open_for(self, spec: CampaignSpec, spec_dir=".") -> Store:
+    def prepare(self) -> Store:
+        """Make the store's directory (refusing a path that is a file, or a directory that
+        holds anything else than a store), ready for :meth:`lock`."""
+        p = self.path
+        if p.exists() and not p.is_dir():
+            raise StoreError(f"--out {p}: exists and is a file, not a store directory")
+        if p.is_dir() and not self.exists():
+            leftovers = {SPEC, CHUNKS, ".lock"}  # a run killed before its manifest
+            other = [e.name for e in p.iterdir() if e.name not in leftovers
+                     and not e.name.endswith(".tmp")]
+            chunks = p / CHUNKS
+            if other or (chunks.is_dir() and any(_CHUNK.match(n) for n in os.listdir(chunks))):
+                raise StoreError(f"--out {p}: exists and is not a campaign store: give a new "
+                                 "or empty directory")
+        (p / CHUNKS).mkdir(parents=True, exist_ok=True)
+        return self
+
+    def open_for(self, spec: CampaignSpec) -> Store:
         """Create the store for ``spec``, or check that the existing one was made by the
-        same spec and package version (else :class:`~rocking.errors.StoreError`)."""
+        same spec and package version (else :class:`~rocking.errors.StoreError`). Call it
+        with the lock held (:meth:`prepare`, :meth:`lock`)."""
         if self.exists():
             m = self.manifest
             if m.get("spec_hash") != spec.hash:
@@ -118,13 +137,9 @@ class Store:
                 raise StoreError(f"{self.path} was written by rocking {m.get('version')}, this "
                                  f"is {__version__}: results could differ; use another --out")
             return self
-        if self.path.exists() and any(self.path.iterdir()):
-            raise StoreError(f"{self.path} exists and is not a campaign store: give a new or "
-                             "empty directory")
-        (self.path / CHUNKS).mkdir(parents=True, exist_ok=True)
         _write_atomic(self.path / SPEC, spec.text)
         man = manifest_for(spec)
-        man["spec_dir"] = str(Path(spec_dir).resolve())
+        man["spec_dir"] = spec.base_dir
         _write_atomic(self.manifest_path, json.dumps(man, indent=1, default=str))
         return self
 
@@ -137,8 +152,9 @@ class Store:
             f.close()
             raise StoreError(f"another run is writing to {self.path}") from None
         self._lock = f
-        for tmp in (self.path / CHUNKS).glob(".*.tmp"):  # left by a killed run
-            tmp.unlink(missing_ok=True)
+        for d in (self.path, self.path / CHUNKS):  # temporary files of a killed run
+            for tmp in d.glob(".*.tmp"):
+                tmp.unlink(missing_ok=True)
 
     def unlock(self) -> None:
         if self._lock is not None:

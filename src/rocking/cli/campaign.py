@@ -127,6 +127,8 @@ def report_cmd(store, out):
         raise ParameterError(f"{store} has no finished simulation yet: run it first")
     st = s.status()
     out = Path(out) if out is not None else Path(store) / "report"
+    if out.exists() and not out.is_dir():
+        raise ParameterError(f"--out {out}: exists and is a file, not a directory")
     res = report(table, manifest, out)
     if not st["complete"]:
         click.echo(f"note: the store is incomplete ({st['sims_done']} of {st['n_sims']} "

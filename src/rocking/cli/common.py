@@ -281,11 +281,18 @@ def _shown(value) -> str:
 def read_record_arg(M, path, name: str, units, dt):
     """``(record, source)`` from a file, or from the records shipped with the package by
     name (``M`` is :mod:`rocking.motions`, passed in to keep numba out of this module)."""
+    from ..units import ACCELERATION
+
+    if units is not None and units not in ACCELERATION:
+        raise ParameterError(f"units must be one of {', '.join(ACCELERATION)}, got {units!r}")
     p = Path(path)
     if not p.exists():
         known = M.builtin_records(three_component=True)
         stem = p.name[:-4] if p.name.upper().endswith(".AT2") else p.name
         if stem.upper() in (k.upper() for k in known):
+            if units not in (None, "g") or dt is not None:
+                raise ParameterError(f"{name}: {stem} is a built-in record (PEER .AT2, in g): "
+                                     "--units and --dt apply to record files only")
             return M.load_builtin(stem), f"{stem} (built-in)"
         raise RecordError(f"{name}: no such file or built-in record: {path} (built-in: "
                           f"{', '.join(known)})")

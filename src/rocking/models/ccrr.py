@@ -81,7 +81,13 @@ from dataclasses import dataclass
 
 from numba import njit, prange
 
-from ..motions._kernel import ground_acc, ground_acc_hv, has_vertical, next_breakpoint
+from ..motions._kernel import (
+    ground_acc,
+    ground_acc_hv,
+    has_vertical,
+    next_breakpoint,
+    vertical_acc,
+)
 from ..units import G
 from ._numerics import events as E
 from .base import Model, ModelOptions, option, row_args, store_row
@@ -182,6 +188,17 @@ def _amp_chi(x, v, alpha, l):
 
 
 @njit(cache=True)
+def _amp_chi_g(x, v, alpha, l, gf):
+    """:func:`_amp_chi` under the effective gravity ``gf g`` (``gf = 1 + a_v/g``)."""
+    e = 0.5 * v * v + 0.5 * l * l / (x * x) + gf * (math.cos(alpha - alpha * x)
+                                                    - math.cos(alpha)) / (alpha * alpha)
+    cm = math.cos(alpha) + alpha * alpha * e / gf
+    if cm >= 1.0:
+        return math.inf
+    return (alpha - math.acos(cm)) / alpha
+
+
+@njit(cache=True)
 def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fixed, rest_chi,
               chi_start, h_max, h_scan, dt_out, out_th, out_om, imp):
     """Integrate one CCRR simulation. Returns
@@ -264,10 +281,10 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
                     ok = False
                     break
                 continue
-        if hv and E.lifts_off(prm, samples, t + hh):
+        tc = E.first_lift_off(prm, samples, t, t + hh, h_scan) if hv else math.nan
+        if tc == tc:
             # the base falls away (g + a_v <= 0): stop at that instant, the model cannot
             # represent flight
-            tc = E.lift_off_time(prm, samples, t, t + hh)
             x2, v2, s2, ex2, ev2, es2 = _step(t, x, v, s, tc - t, p, alpha, l, c, kind, prm,
                                               samples)
             if not fixed:
@@ -320,7 +337,9 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
         x, v, s = x1, v1, s1
         if not math.isnan(t_lift):
             break
-        if passed and _amp_chi(x, v, alpha, l) < rest_chi:
+        amp = (_amp_chi_g(x, v, alpha, l, 1.0 + vertical_acc(prm, samples, t) * INV_G) if hv
+               else _amp_chi(x, v, alpha, l)) if passed else math.inf
+        if amp < rest_chi:
             if abs(ground_acc(kind, prm, samples, t)) <= E.threshold(thr, ct, prm, samples, t):
                 resting = True
         if not fixed:

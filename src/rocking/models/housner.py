@@ -40,9 +40,14 @@ Eq (1) with ``g`` replaced by ``g + a_v`` in the gravity term (``p^2`` becomes
 (located by bisection on that margin). Impacts keep Eq (4): ``a_v`` is bounded and does
 no impulsive work. Where ``g + a_v <= 0`` the base falls away faster than gravity and
 the block leaves the ground; the model cannot represent flight, so the run stops at the
-first such instant (located by bisection) and the result carries ``lift_off_time``
-(``lifted_off``). Without a vertical component the arithmetic is that of Eq (1) exactly
-(bit-identical results).
+first such instant (located by bisection; an analytic vertical motion is also scanned
+inside each step, every quarter of its scan step) and the result carries
+``lift_off_time`` (``lifted_off``). This is the criterion of a block at rest: while it
+rocks, the pivot's normal force ``M [g + a_v + R (sin(alpha - theta) theta'' -
+cos(alpha - theta) theta'^2)]`` (pivot O; the vertical acceleration of the centre of mass
+is the derivative of ``R sin(alpha - theta) theta'``) can vanish a little earlier, which
+the model does not check (the DEM resolves it through its contacts). Without a vertical
+component the arithmetic is that of Eq (1) exactly (bit-identical results).
 
 **Events.**
 
@@ -244,9 +249,9 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
         if D.sign_changes(th, om, a_cur, th1, om1, a1, hh, s) >= 2:
             h = 0.5 * hh
             continue
-        if hv and E.lifts_off(prm, samples, t + hh):
+        tc = E.first_lift_off(prm, samples, t, t + hh, h_scan) if hv else math.nan
+        if tc == tc:
             # the base falls away (g + a_v <= 0): the model cannot represent flight
-            tc = E.lift_off_time(prm, samples, t, t + hh)
             thc, omc, ac, _e1, _e2 = _step(t, th, om, a_cur, tc - t, s, alpha, p2, lin, kind,
                                            prm, samples)
             if s * thc >= 0.0 and abs(thc) < HALF_PI:  # else an event comes first

@@ -14,7 +14,6 @@ and give bit-identical results.
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -31,7 +30,7 @@ class GroundMotion(Motion):
     """A horizontal motion and an optional vertical one (m/s^2, ``a_v`` positive upwards).
 
     ``duration`` is the longer of the two; ``scale`` multiplies both components
-    (:meth:`scaled`).
+    (:meth:`scaled` puts its factors on the components and leaves ``scale`` at 1).
     """
 
     horizontal: Motion
@@ -121,13 +120,20 @@ class GroundMotion(Motion):
     # ---- scaling
     def scaled(self, factor: float, vertical: float | None = None) -> GroundMotion:
         """Both components times ``factor``; with ``vertical``, the horizontal component
-        times ``factor`` and the vertical one times ``vertical``."""
+        times ``factor`` and the vertical one times ``vertical``. The factors go to the
+        components themselves, so ``GroundMotion(h).scaled(a).scaled(b)`` is
+        ``GroundMotion(h.scaled(a).scaled(b))`` exactly."""
         f = as_float("factor", factor)
-        if vertical is None:
-            return dataclasses.replace(self, scale=self.scale * f)
-        fv = as_float("vertical", vertical)
-        h = self.horizontal.scaled(self.scale * f)
-        v = self.vertical.scaled(self.scale * fv) if self.vertical is not None else None
+        if vertical is not None and self.vertical is None:
+            raise ParameterError("vertical: this GroundMotion has no vertical component to "
+                                 "scale")
+        fv = f if vertical is None else as_float("vertical", vertical)
+        h = self.horizontal.scaled(self.scale).scaled(f) if self.scale != 1.0 \
+            else self.horizontal.scaled(f)
+        v = None
+        if self.vertical is not None:
+            v = self.vertical.scaled(self.scale).scaled(fv) if self.scale != 1.0 \
+                else self.vertical.scaled(fv)
         return GroundMotion(h, v)
 
     def __neg__(self):
@@ -145,16 +151,10 @@ class GroundMotion(Motion):
 
     @property
     def pga(self) -> float:
-        """Peak horizontal acceleration (m/s^2)."""
-        h = self.horizontal.scaled(self.scale)
-        return h.pga if isinstance(h, Record) else float(np.max(np.abs(
-            h.acceleration(h.time(min(h.scan_step, 0.005))))))
+        """Peak horizontal acceleration (m/s^2), as the horizontal motion's own ``pga``."""
+        return self.horizontal.scaled(self.scale).pga
 
     @property
     def pga_vertical(self) -> float:
         """Peak vertical acceleration (m/s^2); 0 without a vertical component."""
-        if self.vertical is None:
-            return 0.0
-        v = self.vertical.scaled(self.scale)
-        return v.pga if isinstance(v, Record) else float(np.max(np.abs(
-            v.acceleration(v.time(min(v.scan_step, 0.005))))))
+        return 0.0 if self.vertical is None else self.vertical.scaled(self.scale).pga

@@ -6,7 +6,14 @@ import math
 
 from numba import njit
 
-from ...motions._kernel import ground_acc, has_vertical, next_breakpoint, vertical_acc
+from ...motions._kernel import (
+    RECORD,
+    V_KIND,
+    ground_acc,
+    has_vertical,
+    next_breakpoint,
+    vertical_acc,
+)
 from ...units import G
 
 LIFT_OFF = 2.0
@@ -54,6 +61,26 @@ def lift_off_time(prm, samples, t0, t1):
 
 
 @njit(cache=True)
+def first_lift_off(prm, samples, t0, t1, h_scan):
+    """First time in ``(t0, t1]`` with ``g + a_v <= 0``, NaN if none. A vertical record is
+    linear between its samples, which are breakpoints of every step: its value at ``t1``
+    decides. An analytic vertical motion is also scanned inside the interval every
+    ``h_scan / 4`` (a dip below ``-g`` narrower than that may be missed)."""
+    if not has_vertical(prm):
+        return math.nan
+    if prm[V_KIND] == RECORD:
+        return lift_off_time(prm, samples, t0, t1) if lifts_off(prm, samples, t1) else math.nan
+    n = max(1, int(math.ceil((t1 - t0) / (0.25 * h_scan) - 1e-9)))
+    a = t0
+    for k in range(1, n + 1):
+        b = t1 if k == n else t0 + (t1 - t0) * k / n
+        if lifts_off(prm, samples, b):
+            return lift_off_time(prm, samples, a, b)
+        a = b
+    return math.nan
+
+
+@njit(cache=True)
 def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c, dt_out, k, out_th, out_om,
                  t_up):
     """Advance a block at rest until the uplift criterion ``|a_h| > c (g + a_v)`` holds or
@@ -84,6 +111,10 @@ def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c, dt_out, k, out_th
                 k += 1
             return t, k, 0.0, t_up
         t1 = min(t + h_scan, next_breakpoint(kind, prm, samples, t), t_end)
+        if has_vertical(prm) and prm[V_KIND] != RECORD:  # a dip below -g inside the step
+            tl = first_lift_off(prm, samples, t, t1, h_scan)
+            if tl == tl:
+                t1 = tl
         if _trips(kind, prm, samples, t1, thr, c):
             lo, hi = t, t1
             for _ in range(60):

@@ -157,8 +157,10 @@ def build(ctx) -> str:
         "The vertical acceleration a_v (positive upwards) changes the effective gravity to "
         "g + a_v: the block uplifts when |a_h| > (g + a_v) tan α, and its restoring moment "
         "scales with g + a_v. Where g + a_v ≤ 0 the block would leave the ground; the "
-        "classical and CCRR models stop there and flag a lift-off (none occurs in these "
-        f"runs: {int(df.lifted_off.sum())} lift-offs).",
+        "classical and CCRR models stop there and flag a lift-off ("
+        + (f"{int(df.lifted_off.sum())} of the {int((df.components == 'H+V').sum())} runs "
+           "with the vertical component" if df.lifted_off.any() else "none in these runs")
+        + ").",
     ]
     h = cmp[cmp.model == "housner"]
     for rec, label in RECORDS.items():
