@@ -1,18 +1,55 @@
 """Validation helpers used at the edges of the API (scikit-learn style).
 
-Each returns the validated value as a float and raises :class:`ParameterError` with a
-message that names the parameter and the allowed range.
+Each returns the validated value (a float, or a bool/int for :func:`as_bool` and
+:func:`as_int`) and raises :class:`ParameterError` with a message that names the
+parameter and the allowed values.
+
+Types are strict: a number is never a bool (``True`` is not 1 m), a bool is only
+``True``/``False`` (or ``numpy.bool_``; never a string such as ``"false"``), and a count
+is a Python or numpy integer (a float is refused, even a whole one such as ``2.0``, so
+that a count never comes from arithmetic that may have rounded).
 """
 
 from __future__ import annotations
 
 import math
+import numbers
+
+import numpy as np
 
 from .errors import ParameterError
 
 
+def _is_bool(value) -> bool:
+    return isinstance(value, bool | np.bool_)
+
+
+def as_bool(name: str, value) -> bool:
+    """``value`` as a bool: only ``True``/``False`` (or ``numpy.bool_``) are accepted."""
+    if not _is_bool(value):
+        raise ParameterError(f"{name} must be True or False, got {value!r}")
+    return bool(value)
+
+
+def as_int(name: str, value, lo: int | None = None, hi: int | None = None) -> int:
+    """``value`` as an int in ``[lo, hi]`` (either bound may be None).
+
+    Only Python and numpy integers are accepted; bools and floats (even ``2.0``) are not.
+    """
+    if _is_bool(value) or not isinstance(value, numbers.Integral | np.integer):
+        raise ParameterError(f"{name} must be an integer, got {value!r}")
+    n = int(value)
+    if (lo is not None and n < lo) or (hi is not None and n > hi):
+        rng = (f"[{lo}, {hi}]" if lo is not None and hi is not None
+               else f">= {lo}" if lo is not None else f"<= {hi}")
+        raise ParameterError(f"{name} must be an integer {rng}, got {value!r}")
+    return n
+
+
 def as_float(name: str, value) -> float:
-    """``value`` as a finite float."""
+    """``value`` as a finite float (a bool is refused; a numeric string is accepted)."""
+    if _is_bool(value):
+        raise ParameterError(f"{name} must be a finite number, not a bool, got {value!r}")
     try:
         x = float(value)
     except (TypeError, ValueError):
