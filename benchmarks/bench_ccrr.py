@@ -4,7 +4,10 @@ Times ``rocking.simulate_many(..., model="ccrr")`` (adaptive RKF45, default l) a
 classical model on the records of ``bench_housner.py`` (band-limited noise, 20 s at 100 Hz,
 specimen 2 with the experimental parameters), and compares the maximum angles.
 
-    .venv/bin/python benchmarks/bench_ccrr.py [--n 400]
+Timings are the best of ``--repeat`` runs after a warm-up. ``--quick`` (a smoke check of
+the script): 4 records of 4 s, one run, unless given.
+
+    .venv/bin/python benchmarks/bench_ccrr.py [--n 400] [--repeat 3] [--quick]
 """
 
 from __future__ import annotations
@@ -32,16 +35,23 @@ def timed(block, records, model, repeat=3):
     return res, best
 
 
+QUICK = {"n": 4, "duration": 4.0, "repeat": 1}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=400)
     ap.add_argument("--duration", type=float, default=20.0)
     ap.add_argument("--seed", type=int, default=2007)
+    ap.add_argument("--repeat", type=int, default=3, help="timed runs (best reported)")
+    ap.add_argument("--quick", action="store_true", help=f"tiny sizes (smoke check): {QUICK}")
+    if ap.parse_known_args(argv)[0].quick:
+        ap.set_defaults(**QUICK)  # sizes given on the command line still win
     args = ap.parse_args(argv)
     block = rocking.specimen(2, "experimental")
     records = make_records(args.n, args.duration, args.seed)
-    h, th = timed(block, records, "housner")
-    c, tc = timed(block, records, "ccrr")
+    h, th = timed(block, records, "housner", args.repeat)
+    c, tc = timed(block, records, "ccrr", args.repeat)
     both = ~h.overturned & ~c.overturned
     rel = np.abs(c.max_abs_theta[both] / h.max_abs_theta[both] - 1)
     print(f"{args.n} records of {args.duration:g} s, {block!r}")

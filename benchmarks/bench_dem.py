@@ -11,9 +11,11 @@ s synthetic record (seeded Gaussian noise band-limited to 1-10 Hz under an envel
 * a batch of records through ``simulate_many`` (parallel over records).
 
 Wall times are the best of ``--repeat`` runs after a JIT warm-up (numba's cache and the
-damping calibration's cache are filled by the warm-up). Nothing is written to disk::
+damping calibration's cache are filled by the warm-up). Nothing is written to disk.
+``--quick`` (a smoke check of the script): 2 s records, one run, a batch of 2, unless
+given::
 
-    .venv/bin/python benchmarks/bench_dem.py --duration 20
+    .venv/bin/python benchmarks/bench_dem.py --duration 20 [--quick]
 """
 
 from __future__ import annotations
@@ -47,6 +49,9 @@ def timed(fn, repeat):
     return best, out
 
 
+QUICK = {"duration": 2.0, "repeat": 1, "batch": 2}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--duration", type=float, default=20.0, help="record length (s)")
@@ -55,6 +60,9 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=2007)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--batch", type=int, default=8, help="records in the batch run")
+    ap.add_argument("--quick", action="store_true", help=f"tiny sizes (smoke check): {QUICK}")
+    if ap.parse_known_args(argv)[0].quick:
+        ap.set_defaults(**QUICK)  # sizes given on the command line still win
     args = ap.parse_args(argv)
 
     blk = rocking.specimen(2, "geometric")

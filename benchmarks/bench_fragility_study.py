@@ -3,11 +3,13 @@
 Specimens 2, 3 and 4 (Table II E parameters) x the 30 seed earthquakes x 20 PGA levels
 (1,800 simulations with the classical model): :func:`rocking.analysis.ida.ida` (one
 compiled batch per specimen), then :func:`rocking.analysis.damage.fragility_curves` (three
-damage states, common beta, 1,000 bootstrap draws) and the overturning curve of
-:func:`rocking.analysis.fragility.fragility`. Prints the time of each phase, simulations
-per second and the fitted medians and betas.
+damage states, common beta, ``--n-boot`` = 1,000 bootstrap draws) and the overturning curve
+of :func:`rocking.analysis.fragility.fragility`. Prints the time of each phase, simulations
+per second and the fitted medians and betas. ``--quick`` (a smoke check of the script): 8
+levels, 50 bootstrap draws, unless given.
 
     .venv/bin/python benchmarks/bench_fragility_study.py [--levels 20] [--model housner]
+        [--n-boot 1000] [--quick]
 """
 
 from __future__ import annotations
@@ -23,11 +25,17 @@ from rocking.analysis.fragility import fragility
 from rocking.analysis.ida import ida
 from rocking.motions import seed_earthquakes
 
+QUICK = {"levels": 8, "n_boot": 50}  # fewer levels can leave a damage state empty
+
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--levels", type=int, default=20)
     ap.add_argument("--model", default="housner")
+    ap.add_argument("--n-boot", type=int, default=1000, help="bootstrap draws of the fits")
+    ap.add_argument("--quick", action="store_true", help=f"tiny sizes (smoke check): {QUICK}")
+    if ap.parse_known_args(argv)[0].quick:
+        ap.set_defaults(**QUICK)  # sizes given on the command line still win
     args = ap.parse_args(argv)
     t0 = time.perf_counter()
     recs = seed_earthquakes()
@@ -44,8 +52,9 @@ def main(argv=None):
         t1 = time.perf_counter()
         table = ida(blk, recs, im="pga", levels=levels, model=args.model)
         t2 = time.perf_counter()
-        curves = fragility_curves(table["im"], table["damage_state"], n_boot=1000, seed=0)
-        ovt = fragility(table["im"], table["overturned"], n_boot=1000, seed=0)
+        curves = fragility_curves(table["im"], table["damage_state"], n_boot=args.n_boot,
+                                  seed=0)
+        ovt = fragility(table["im"], table["overturned"], n_boot=args.n_boot, seed=0)
         t3 = time.perf_counter()
         t_sim += t2 - t1
         t_fit += t3 - t2

@@ -11,9 +11,10 @@ rocks and some records overturn it), then
 * compares ``max_abs_theta`` of the batch with a tight reference (rtol 1e-11) on those
   records.
 
-Nothing is written to disk. Usage::
+Nothing is written to disk. ``--quick`` (a smoke check of the script): 4 records of 4 s,
+one with the reference, unless given. Usage::
 
-    .venv/bin/python benchmarks/bench_housner.py --n 400 --duration 20 --ref-n 10
+    .venv/bin/python benchmarks/bench_housner.py --n 400 --duration 20 --ref-n 10 [--quick]
 """
 
 from __future__ import annotations
@@ -49,6 +50,9 @@ def make_records(n, duration, seed, band=(1.0, 10.0), pga=(2.8, 4.0)):
     return out
 
 
+QUICK = {"n": 4, "duration": 4.0, "ref_n": 1}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=400, help="number of records in the batch")
@@ -57,6 +61,9 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=2007)
     ap.add_argument("--rtol", type=float, default=1e-8, help="rtol of the batch and of the "
                     "timed reference")
+    ap.add_argument("--quick", action="store_true", help=f"tiny sizes (smoke check): {QUICK}")
+    if ap.parse_known_args(argv)[0].quick:
+        ap.set_defaults(**QUICK)  # sizes given on the command line still win
     args = ap.parse_args(argv)
     ref_n = max(1, min(args.ref_n, args.n))
 

@@ -10,10 +10,11 @@ release angle; a constant offset), then times :func:`rocking.identify.free_rocki
 
 It prints the times and the identified parameters against the true ones, for each block
 asked (``--blocks``: specimen numbers and/or ``slender``), and, with ``--rates``, the warm
-time at other sampling rates. Nothing is written to disk. Usage::
+time at other sampling rates. Nothing is written to disk. ``--quick`` (a smoke check of the
+script): specimen 2 only, one warm call, the 50 Hz rate, unless given. Usage::
 
     .venv/bin/python benchmarks/bench_identify.py [--repeat 10] [--blocks 2 4 slender]
-        [--rates 50 1000]
+        [--rates 50 1000] [--quick]
 """
 
 from __future__ import annotations
@@ -49,6 +50,9 @@ def block_of(name: str):
     return rocking.specimen(int(name))
 
 
+QUICK = {"repeat": 1, "blocks": ["2"], "rates": [50.0]}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=10, help="warm calls timed")
@@ -56,6 +60,9 @@ def main(argv=None):
                     help="specimen numbers and/or 'slender' (alpha 0.08, p 2.5, mu 0.95)")
     ap.add_argument("--rates", nargs="*", type=float, default=[50.0, 1000.0],
                     help="other sampling rates (Hz) timed warm")
+    ap.add_argument("--quick", action="store_true", help=f"tiny sizes (smoke check): {QUICK}")
+    if ap.parse_known_args(argv)[0].quick:
+        ap.set_defaults(**QUICK)  # sizes given on the command line still win
     args = ap.parse_args(argv)
 
     records = {name: make_record(block_of(name), 200.0) for name in args.blocks}

@@ -9,27 +9,47 @@
   100 Hz (2001 samples), the median of ``--repeat`` runs, and the same with pyrotd (a
   frequency-domain implementation) for reference if it is installed.
 
-Nothing is written except the cache under a temporary ``ROCKING_CACHE_DIR``. Usage::
+Nothing is written except the cache under a temporary ``ROCKING_CACHE_DIR``, removed at
+the end. ``--quick`` (a smoke check of the script): 3 spectrum runs, unless ``--repeat``
+(the 30 records are the package's fixed set). Usage::
 
-    .venv/bin/python benchmarks/bench_motions.py [--repeat 50]
+    .venv/bin/python benchmarks/bench_motions.py [--repeat 50] [--quick]
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import shutil
 import statistics
 import tempfile
 import time
 
+QUICK = {"repeat": 3}
 
-def main() -> None:
+
+def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=50, help="runs of the spectrum timing")
-    args = ap.parse_args()
+    ap.add_argument("--quick", action="store_true", help=f"tiny sizes (smoke check): {QUICK}")
+    if ap.parse_known_args(argv)[0].quick:
+        ap.set_defaults(**QUICK)  # sizes given on the command line still win
+    args = ap.parse_args(argv)
 
     tmp = tempfile.mkdtemp(prefix="rocking-bench-")
+    old = os.environ.get("ROCKING_CACHE_DIR")
     os.environ["ROCKING_CACHE_DIR"] = tmp
+    try:
+        run(args)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+        if old is None:
+            os.environ.pop("ROCKING_CACHE_DIR", None)
+        else:
+            os.environ["ROCKING_CACHE_DIR"] = old
+
+
+def run(args) -> None:
     import numpy as np
 
     import rocking

@@ -3,9 +3,11 @@
 Times :func:`rocking.analysis.overturning.overturning_spectrum` (upward scan of the default
 amplitude grid, 5% steps, then vectorised bisection; one ``simulate_many`` call per step)
 for specimen 2 (experimental parameters) under each pulse, and prints the wall time, the
-number of simulations and the simulations per second.
+number of simulations and the simulations per second. ``--quick`` (a smoke check of the
+script): 2 ratios to 5 %, unless given.
 
     .venv/bin/python benchmarks/bench_overturning.py [--n 40] [--tol 0.005] [--pulse sine]
+        [--quick]
 """
 
 from __future__ import annotations
@@ -18,6 +20,8 @@ import numpy as np
 import rocking
 from rocking.analysis.overturning import PULSES, overturning_spectrum
 
+QUICK = {"n": 2, "tol": 0.05}
+
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -25,6 +29,9 @@ def main(argv=None):
     ap.add_argument("--tol", type=float, default=0.005)
     ap.add_argument("--wmax", type=float, default=10.0, help="largest omega_p/p")
     ap.add_argument("--pulse", choices=PULSES + ("all",), default="all")
+    ap.add_argument("--quick", action="store_true", help=f"tiny sizes (smoke check): {QUICK}")
+    if ap.parse_known_args(argv)[0].quick:
+        ap.set_defaults(**QUICK)  # sizes given on the command line still win
     args = ap.parse_args(argv)
     block = rocking.specimen(2, "experimental")
     wr = np.linspace(0.5, args.wmax, args.n)

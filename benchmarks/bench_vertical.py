@@ -13,9 +13,10 @@ Each case is timed ``--repeat`` times after a warm-up, the cases interleaved (be
 median reported); ``steps`` is the total number of integration steps, which the vertical
 component changes (the blocks rock differently). The goal
 is a vertical-component throughput within 15 % of the horizontal-only one. Nothing is
-written to disk. Usage::
+written to disk. ``--quick`` (a smoke check of the script): 4 records of 4 s, one run,
+unless given. Usage::
 
-    .venv/bin/python benchmarks/bench_vertical.py [--n 400] [--repeat 3]
+    .venv/bin/python benchmarks/bench_vertical.py [--n 400] [--repeat 3] [--quick]
 """
 
 from __future__ import annotations
@@ -50,12 +51,18 @@ def timed(block, cases, model, repeat):
     return {k: (res[k], min(v), statistics.median(v)) for k, v in times.items()}
 
 
+QUICK = {"n": 4, "duration": 4.0, "repeat": 1}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=400)
     ap.add_argument("--duration", type=float, default=20.0)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--models", default="housner,ccrr")
+    ap.add_argument("--quick", action="store_true", help=f"tiny sizes (smoke check): {QUICK}")
+    if ap.parse_known_args(argv)[0].quick:
+        ap.set_defaults(**QUICK)  # sizes given on the command line still win
     args = ap.parse_args(argv)
     block = rocking.specimen(2, "experimental")
     hs = make_records(args.n, args.duration, 2007)
@@ -80,6 +87,7 @@ def main(argv=None):
             print(f"{model:<8} {name:<20} {best:7.3f} {med:9.3f} {args.n / best:8.0f} "
                   f"{best / base_best:6.3f} {int(res.overturned.sum()):10d} {same:>9} "
                   f"{int(res.n_steps.sum()):>9d}")
+
 
 if __name__ == "__main__":
     main()

@@ -38,10 +38,13 @@ A shorter CCRR section (``model="ccrr"``): its rest threshold is
 default ``l = 1e-8``, so below that ``rest_tol`` has no effect; the section compares
 ``rest_tol`` above that floor, the floor at smaller ``l``, and different ``l``.
 
-Nothing is written to disk. The full default study takes about 8-10 minutes on 2 cores::
+Nothing is written to disk. The full default study takes about 8-10 minutes on 2 cores;
+``--quick`` is a smoke check of every section on tiny inputs (see ``QUICK``; sizes given on
+the command line still win)::
 
     .venv/bin/python benchmarks/study_rest_tol.py
-    .venv/bin/python benchmarks/study_rest_tol.py --n-c 8 --n-seed 10 --no-ccrr   # quick
+    .venv/bin/python benchmarks/study_rest_tol.py --n-c 8 --n-seed 10 --no-ccrr   # shorter
+    .venv/bin/python benchmarks/study_rest_tol.py --quick                         # seconds
 """
 
 from __future__ import annotations
@@ -61,6 +64,9 @@ TOL = 1e-3  # the criterion: 0.1% on the maximum angle
 
 def make_blocks(which: str):
     """(label, Block) pairs."""
+    if which == "tiny":  # --quick: one specimen and the block of the issue
+        return [("spec2-theo", rocking.specimen(2, params="theoretical")),
+                ("a0.25-p2", rocking.Block.from_params(0.25, 2.0, rocking.housner_mu(0.25)))]
     out = []
     for n in (2, 3, 4):
         for ps in ("theoretical", "experimental"):
@@ -280,10 +286,15 @@ def ccrr_section(study):
         print(f"{la:>22} {lb:>22} | {n:5d} {f:7.2%} {w:9.2e} {fl:5d}")
 
 
+QUICK = {"blocks": "tiny", "n_seed": 1, "n_c": 2, "exps": [6], "ref": 8, "top": 1,
+         "timing_repeats": 1, "timing_exps": [6, 8], "ccrr_n_seed": 1, "ccrr_n_c": 2}
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--blocks", choices=("full", "small"), default="full",
-                    help="full: 6 specimens + 9 (alpha, p) + issue block; small: 6 + 3")
+    ap.add_argument("--blocks", choices=("full", "small", "tiny"), default="full",
+                    help="full: 6 specimens + 9 (alpha, p) + issue block; small: 6 + 3 (and "
+                    "the CCRR section's set); tiny: specimen 2 + issue block (also for CCRR)")
     ap.add_argument("--n-seed", type=int, default=30, help="seed earthquakes used (0-30)")
     ap.add_argument("--n-c", type=int, default=25, help="load factors per block and record")
     ap.add_argument("--c-min", type=float, default=1.05, help="smallest c (f = c g tan a/PGA)")
@@ -304,6 +315,9 @@ def main(argv=None):
     ap.add_argument("--no-ccrr", action="store_true", help="skip the CCRR section")
     ap.add_argument("--ccrr-n-seed", type=int, default=10, help="seed earthquakes for CCRR")
     ap.add_argument("--ccrr-n-c", type=int, default=10, help="load factors for CCRR")
+    ap.add_argument("--quick", action="store_true", help=f"tiny sizes (smoke check): {QUICK}")
+    if ap.parse_known_args(argv)[0].quick:
+        ap.set_defaults(**QUICK)
     args = ap.parse_args(argv)
 
     print("Gazli (RSN126), alpha 0.25, p 2, Eq 4 mu, load factor 1.0917, record + 2 s:")
@@ -339,7 +353,7 @@ def main(argv=None):
 
     if not args.no_ccrr:
         t0 = time.perf_counter()
-        cblocks = make_blocks("small")
+        cblocks = make_blocks("tiny" if args.blocks == "tiny" else "small")
         cstudy = Study(cblocks, make_groups(args.ccrr_n_seed),
                        np.geomspace(args.c_min, args.c_max, args.ccrr_n_c))
         Study(cblocks[:1], cstudy.groups[:1], cs[:2]).run(model="ccrr")  # warm-up
