@@ -201,6 +201,11 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
     ``window`` bounds the chunks in flight (default 2 per Dask thread). A different spec on
     an existing store raises :class:`~rocking.errors.StoreError`. Interrupting (Ctrl-C)
     keeps every finished chunk; run again to resume.
+
+    Order: the spec is parsed and the first chunk's motions and inputs are built before the
+    store directory is created (a spec that fails never leaves a store behind); then the
+    store is locked, every chunk verified against its record, files that fail moved into
+    ``STORE/quarantine/`` (each named through ``log``) and their chunks recomputed.
     """
     if not isinstance(spec, CampaignSpec):
         spec = read_spec(spec)
@@ -220,10 +225,14 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
         raise ParameterError(f"window must be a whole number in [1, 100000], got {window!r}")
     if executor == "dask" and scheduler is None and dask_local is None:
         dask_local = 2
+    campaign = Campaign(spec)
+    if not Store(out).exists():
+        _check_buildable(campaign)  # a spec that cannot start never leaves a store behind
     store = Store(out).prepare()
     store.lock()
     try:
-        store.open_for(spec)
+        store.open_for(spec, log=log)
+        store.repair(log=log)  # problem files moved aside, their chunks recomputed
         done = store.done()
         todo = [k for k in range(spec.n_chunks) if k not in done]
         status = store.status()
@@ -237,7 +246,7 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
 
         try:
             if todo and executor == "local":
-                _run_local(Campaign(spec), store, todo, on_chunk)
+                _run_local(campaign, store, todo, on_chunk)
             elif todo:
                 _run_dask(spec, store, todo, on_chunk, scheduler, dask_local,
                           window or spec.window, log)
@@ -246,6 +255,18 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
     finally:
         store.unlock()
     return store.status()
+
+
+def _check_buildable(campaign: Campaign) -> None:
+    """Build what the first chunk needs (its motions, and every motion of a deterministic
+    kind up to the cache's size; the inputs: draws, scaling to the levels), so that an
+    error surfaces before the store is created."""
+    from .plan import KEEP
+    spec = campaign.spec
+    first = np.arange(*campaign.chunk_range(0))
+    if spec.motions["kind"] != "stochastic":
+        campaign.motions.prepare(range(min(spec.n_motions, KEEP)))
+    campaign.inputs(first)
 
 
 def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:

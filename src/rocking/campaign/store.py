@@ -1,43 +1,97 @@
-"""The campaign store: a directory that holds a campaign's spec and finished chunks.
+"""The campaign store: a directory that holds a campaign's spec and finished chunks, and
+proves their integrity.
 
 ::
 
     STORE/
       spec.toml          the spec as given
-      manifest.json      spec hash, package version, seeds, chunk layout, axes
-      chunks/chunk-000000.parquet, chunk-000001.parquet, ...
+      manifest.json      spec hash, package version, seeds, chunk layout, axes (format 2)
+      chunks/chunk-000000.parquet   the rows of chunk 0
+      chunks/chunk-000000.json      its record: rows, sim_id range, bytes, sha256
+      quarantine/<time>-<pid>/...   files that failed verification, moved aside by ``run``
 
-A chunk's Parquet file is written under a temporary name in the same directory and renamed
-(:func:`os.replace`, atomic on POSIX): a chunk is finished exactly when its file exists,
-so a run killed at any instant leaves only finished chunks (and perhaps temporary files,
-ignored, and removed when the next run takes the lock). One run at a time writes to a
-store (an exclusive
-``flock`` on ``STORE/.lock``, released by the kernel however the run ends).
+**Writing a chunk.** The Parquet bytes are built in memory and hashed (sha256); the file
+is written under a temporary name, ``fsync``\\ ed, renamed into place and the directory
+``fsync``\\ ed; only then is the chunk's record written the same way
+(:mod:`rocking._atomic`). A chunk is finished exactly when its record exists and the file
+matches it (size, sha256; the record's rows and ``sim_id`` range are the chunk's in the
+manifest's layout, its spec hash and version the store's). A SIGKILL at any instant leaves
+finished chunks, perhaps one file without a record (not finished: moved aside and
+recomputed by the next run) and temporary files (removed when the next run takes the lock).
+
+**Why one record file per chunk, not an append-only journal.** Each record is written
+whole by the same write-sync-rename as every other file, so there is no torn last line to
+recover, no journal to rewrite when a chunk is recomputed (its record is simply replaced),
+appends need not be atomic (they are not on NFS), and damage to one record costs one chunk
+(recomputed), never the index of the whole store. A store has at most a few thousand
+chunks, so twice as many small files is cheap.
+
+**Verification** (:meth:`Store.check`, run by ``status``, ``run``, ``load`` and ``verify``)
+reads and hashes every chunk. Problems are named by file: ``missing`` (a record without
+its file), ``truncated``, ``altered`` (another checksum), ``duplicate`` (the checksum of
+another chunk: a chunk copied over this one), ``bad record``, ``unreadable`` (deep check:
+the checksum matches but Parquet or its rows disagree), ``unrecorded`` (a chunk file
+without a record) and ``stray`` (any other file in ``chunks/``). The first six are damage:
+:func:`load` raises :class:`~rocking.errors.StoreError` naming the file. ``run`` moves every
+problem file into ``quarantine/`` (nothing is deleted) and recomputes those chunks; a
+damaged ``manifest.json`` is rewritten when the store's ``spec.toml`` (or its records)
+shows it holds the spec being run.
+
+**Stores of format 1** (before chunk records) are refused by every command with a message:
+their files were never checksummed, so nothing can prove them intact.
+:meth:`Store.upgrade` (``rocking campaign upgrade STORE``) adopts their chunks that pass
+the structural checks (Parquet readable, rows and ``sim_id`` range of the layout) and
+moves the others aside; values changed in place before the upgrade cannot be detected.
+
+One run at a time writes to a store (an exclusive ``flock`` on ``STORE/.lock``, released
+by the kernel however the run ends). While a run holds it, a chunk file whose record is
+not written yet is "in progress", not a problem.
 """
 
 from __future__ import annotations
 
 import fcntl
+import hashlib
+import io
 import json
+import math
 import os
 import re
+import shutil
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
 from .. import __version__
+from .._atomic import atomic_write, fsync_dir, is_temporary, replace
 from ..errors import ParameterError, StoreError
 from .spec import CampaignSpec, parse_spec
 
 MANIFEST = "manifest.json"
 SPEC = "spec.toml"
 CHUNKS = "chunks"
-_CHUNK = re.compile(r"^chunk-(\d{6,})\.parquet$")
+QUARANTINE = "quarantine"
+FORMAT = 2
+"""Store format: 2 has a record per chunk; 1 (no records) is refused, see upgrade."""
+_CHUNK = re.compile(r"^chunk-(\d{6,})\.(parquet|json)$")
+_REQUIRED = ("format", "name", "spec_hash", "version", "n_sims", "chunk_size", "n_chunks",
+             "axes", "shape", "models", "blocks", "motions", "levels", "im", "samples",
+             "thresholds", "duration", "seeds", "spec_dir")
+_RECORD_KEYS = ("chunk", "file", "rows", "sim_id_first", "sim_id_last", "bytes", "sha256",
+                "spec_hash", "version")
+_DAMAGE = ("missing", "truncated", "altered", "duplicate", "bad record", "unreadable")
 
 
 def chunk_name(k: int) -> str:
     return f"chunk-{k:06d}.parquet"
+
+
+def record_name(k: int) -> str:
+    return f"chunk-{k:06d}.json"
 
 
 def manifest_for(spec: CampaignSpec) -> dict:
@@ -45,7 +99,7 @@ def manifest_for(spec: CampaignSpec) -> dict:
     from ..analysis.ida import IMS
     from .plan import STREAM
     return {
-        "format": 1,
+        "format": FORMAT,
         "name": spec.name,
         "spec_hash": spec.hash,
         "version": __version__,
@@ -68,13 +122,61 @@ def manifest_for(spec: CampaignSpec) -> dict:
             "simulation": f"SeedSequence({spec.seed}, spawn_key=({STREAM}, sim_id))",
             "stochastic_records": f"SeedSequence({spec.seed}, spawn_key=(2, motion))",
         },
+        "spec_dir": str(spec.base_dir),
     }
 
 
-def _write_atomic(path: Path, text: str) -> None:
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    tmp.write_text(text, encoding="utf-8")
-    os.replace(tmp, path)
+class ManifestError(StoreError):
+    """``manifest.json`` is unreadable or lacks keys (the store is damaged)."""
+
+
+def _whole(x) -> bool:
+    return isinstance(x, int) and not isinstance(x, bool)
+
+
+def _sha256(path: Path) -> tuple[str, int]:
+    h = hashlib.sha256()
+    n = 0
+    with open(path, "rb") as f:
+        while block := f.read(1 << 20):
+            h.update(block)
+            n += len(block)
+    return h.hexdigest(), n
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A file of the store that fails verification."""
+
+    name: str  # relative to the store, e.g. "chunks/chunk-000003.parquet"
+    kind: str  # one of missing, truncated, altered, duplicate, bad record, unreadable,
+    #            unrecorded, stray
+    detail: str = ""
+    chunk: int | None = None
+    paths: tuple[Path, ...] = ()  # the files run moves aside
+
+    @property
+    def damage(self) -> bool:
+        """Finished data lost or changed (``load`` refuses), not just a foreign file."""
+        return self.kind in _DAMAGE
+
+    def __str__(self) -> str:
+        return f"{self.name}: {self.kind}" + (f" ({self.detail})" if self.detail else "")
+
+
+@dataclass(frozen=True)
+class Check:
+    """The result of :meth:`Store.check`."""
+
+    n_chunks: int
+    ok: frozenset[int]  # chunks verified against their records
+    problems: tuple[Problem, ...]
+    running: bool  # a run holds the store's lock
+    adopted: int = 0  # chunks recorded by upgrade (values not proven by a checksum)
+
+    @property
+    def damage(self) -> tuple[Problem, ...]:
+        return tuple(p for p in self.problems if p.damage)
 
 
 class Store:
@@ -83,6 +185,7 @@ class Store:
     def __init__(self, path):
         self.path = Path(path)
         self._lock = None
+        self._manifest: dict | None = None
 
     # ------------------------------------------------------------------ opening
     @property
@@ -92,14 +195,48 @@ class Store:
     def exists(self) -> bool:
         return self.manifest_path.is_file()
 
-    @property
-    def manifest(self) -> dict:
+    def _read_manifest(self) -> dict:
         if not self.exists():
             raise StoreError(f"{self.path} is not a campaign store (no {MANIFEST})")
+        where = f"{self.manifest_path}"
         try:
-            return json.loads(self.manifest_path.read_text(encoding="utf-8"))
+            m = json.loads(self.manifest_path.read_text(encoding="utf-8"))
         except (OSError, ValueError) as e:
-            raise StoreError(f"{self.manifest_path}: unreadable manifest ({e})") from None
+            raise ManifestError(f"{where}: unreadable manifest ({str(e)[:80]})") from None
+        if not isinstance(m, dict):
+            raise ManifestError(f"{where}: damaged manifest (not a JSON object)")
+        return m
+
+    @property
+    def manifest(self) -> dict:
+        """The checked manifest (:class:`ManifestError` if damaged, a
+        :class:`~rocking.errors.StoreError` for a store of another format)."""
+        if self._manifest is None:
+            m = self._read_manifest()
+            where = f"{self.manifest_path}"
+            if m.get("format") == 1:
+                raise StoreError(
+                    f"{self.path} is a store of format 1, written before chunk records: its "
+                    f"chunks cannot be proven intact. Run `rocking campaign upgrade "
+                    f"{self.path}` to adopt those that pass the structural checks, or run "
+                    "the spec into a new --out")
+            missing = [k for k in _REQUIRED if k not in m]
+            if missing:
+                raise ManifestError(f"{where}: damaged manifest, missing "
+                                    f"key{'s' * (len(missing) > 1)} {', '.join(missing)}")
+            if m["format"] != FORMAT:
+                raise StoreError(f"{self.path}: store format {m['format']!r}, this rocking "
+                                 f"{__version__} reads format {FORMAT}")
+            n, cs, nc = m["n_sims"], m["chunk_size"], m["n_chunks"]
+            if not (_whole(n) and _whole(cs) and _whole(nc) and n >= 0 and cs >= 1
+                    and nc == math.ceil(n / cs)):
+                raise ManifestError(f"{where}: damaged manifest (n_sims {n!r}, chunk_size "
+                                    f"{cs!r}, n_chunks {nc!r} disagree)")
+            if not (isinstance(m["spec_hash"], str) and len(m["spec_hash"]) == 64):
+                raise ManifestError(f"{where}: damaged manifest (spec_hash "
+                                    f"{m['spec_hash']!r})")
+            self._manifest = m
+        return self._manifest
 
     def spec(self) -> CampaignSpec:
         """The store's spec, checked again (``files`` paths as resolved when created)."""
@@ -113,9 +250,9 @@ class Store:
         if p.exists() and not p.is_dir():
             raise StoreError(f"--out {p}: exists and is a file, not a store directory")
         if p.is_dir() and not self.exists():
-            leftovers = {SPEC, CHUNKS, ".lock"}  # a run killed before its manifest
+            leftovers = {SPEC, CHUNKS, ".lock", QUARANTINE}  # a run killed before its manifest
             other = [e.name for e in p.iterdir() if e.name not in leftovers
-                     and not e.name.endswith(".tmp")]
+                     and not is_temporary(e.name) and not e.name.endswith(".tmp")]
             chunks = p / CHUNKS
             if other or (chunks.is_dir() and any(_CHUNK.match(n) for n in os.listdir(chunks))):
                 raise StoreError(f"--out {p}: exists and is not a campaign store: give a new "
@@ -123,25 +260,61 @@ class Store:
         (p / CHUNKS).mkdir(parents=True, exist_ok=True)
         return self
 
-    def open_for(self, spec: CampaignSpec) -> Store:
+    def open_for(self, spec: CampaignSpec, log: Callable | None = None) -> Store:
         """Create the store for ``spec``, or check that the existing one was made by the
-        same spec and package version (else :class:`~rocking.errors.StoreError`). Call it
-        with the lock held (:meth:`prepare`, :meth:`lock`)."""
+        same spec and package version (else :class:`~rocking.errors.StoreError`); a damaged
+        manifest is rewritten if the store's ``spec.toml`` or records show it holds
+        ``spec``. Call it with the lock held (:meth:`prepare`, :meth:`lock`)."""
+        (self.path / CHUNKS).mkdir(parents=True, exist_ok=True)
+        self._manifest = None
         if self.exists():
-            m = self.manifest
+            try:
+                m = self.manifest
+            except ManifestError as e:
+                self._rebuild_manifest(spec, str(e), log or (lambda msg: None))
+                return self
             if m.get("spec_hash") != spec.hash:
                 raise StoreError(f"{self.path} holds a different campaign (spec hash "
-                                 f"{m.get('spec_hash', '?')[:12]}, this spec {spec.hash[:12]}):"
-                                 " use another --out, or delete the store to start again")
+                                 f"{str(m.get('spec_hash', '?'))[:12]}, this spec "
+                                 f"{spec.hash[:12]}): use another --out, or delete the "
+                                 "store to start again")
             if m.get("version") != __version__:
                 raise StoreError(f"{self.path} was written by rocking {m.get('version')}, this "
                                  f"is {__version__}: results could differ; use another --out")
             return self
-        _write_atomic(self.path / SPEC, spec.text)
-        man = manifest_for(spec)
-        man["spec_dir"] = spec.base_dir
-        _write_atomic(self.manifest_path, json.dumps(man, indent=1, default=str))
+        atomic_write(self.path / SPEC, spec.text)
+        atomic_write(self.manifest_path, json.dumps(manifest_for(spec), indent=1, default=str))
         return self
+
+    def _rebuild_manifest(self, spec: CampaignSpec, why: str, log: Callable) -> None:
+        """Rewrite a damaged manifest from ``spec`` if the store shows it holds ``spec``."""
+        evidence = None
+        try:
+            stored = parse_spec((self.path / SPEC).read_text(encoding="utf-8"),
+                                base_dir=spec.base_dir)
+            if stored.hash == spec.hash:
+                evidence = f"{SPEC} has the same hash"
+        except (OSError, ValueError):
+            pass
+        recs = [r for r in (self._record(k) for k in self._chunk_indices()) if
+                isinstance(r, dict)]
+        if any(r.get("spec_hash") != spec.hash or r.get("version") != __version__
+               for r in recs):
+            evidence = None  # chunks of another spec or version: never adopt them
+        elif evidence is None and recs:
+            evidence = f"its {len(recs)} chunk records name this spec"
+        if evidence is None:
+            raise StoreError(f"{why}; nothing in {self.path} shows it holds this spec "
+                             "(and version): use another --out")
+        q = self._quarantine_dir()
+        for name in (MANIFEST, SPEC):
+            if (self.path / name).exists():
+                replace(self.path / name, q / name)
+        atomic_write(self.path / SPEC, spec.text)
+        atomic_write(self.manifest_path, json.dumps(manifest_for(spec), indent=1, default=str))
+        self._manifest = None
+        log(f"{MANIFEST}: {why.split(': ', 1)[-1]}: rewritten from the spec ({evidence}); "
+            f"the old one moved to {q.relative_to(self.path)}/")
 
     def lock(self) -> None:
         """Take the store's write lock (one writing run at a time)."""
@@ -153,59 +326,337 @@ class Store:
             raise StoreError(f"another run is writing to {self.path}") from None
         self._lock = f
         for d in (self.path, self.path / CHUNKS):  # temporary files of a killed run
-            for tmp in d.glob(".*.tmp"):
-                tmp.unlink(missing_ok=True)
+            for tmp in d.iterdir() if d.is_dir() else ():
+                if is_temporary(tmp.name) or (tmp.name.startswith(".")
+                                              and tmp.name.endswith(".tmp")):
+                    if tmp.is_dir():
+                        shutil.rmtree(tmp, ignore_errors=True)
+                    else:
+                        tmp.unlink(missing_ok=True)
 
     def unlock(self) -> None:
         if self._lock is not None:
             self._lock.close()
             self._lock = None
 
+    def running(self) -> bool:
+        """Whether another run (process, or open handle) holds the write lock; False
+        when this object holds it (it is the run)."""
+        if self._lock is not None:
+            return False
+        try:
+            fd = os.open(self.path / ".lock", os.O_RDONLY)
+        except OSError:
+            return False
+        try:
+            fcntl.flock(fd, fcntl.LOCK_SH | fcntl.LOCK_NB)
+            return False
+        except OSError:
+            return True
+        finally:
+            os.close(fd)  # releases the shared lock
+
     # ------------------------------------------------------------------ chunks
     def chunk_path(self, k: int) -> Path:
         return self.path / CHUNKS / chunk_name(k)
 
-    def done(self) -> set[int]:
-        """Indices of the finished chunks."""
+    def record_path(self, k: int) -> Path:
+        return self.path / CHUNKS / record_name(k)
+
+    def chunk_range(self, k: int) -> tuple[int, int]:
+        """``(start, stop)`` sim ids of chunk ``k`` in the manifest's layout."""
+        m = self.manifest
+        cs = m["chunk_size"]
+        return k * cs, min((k + 1) * cs, m["n_sims"])
+
+    def _chunk_indices(self) -> set[int]:
         d = self.path / CHUNKS
-        if not d.is_dir():
-            return set()
-        return {int(m.group(1)) for m in map(_CHUNK.match, os.listdir(d)) if m}
+        return ({int(m.group(1)) for m in map(_CHUNK.match, os.listdir(d)) if m}
+                if d.is_dir() else set())
+
+    def _record(self, k: int):
+        """The record of chunk ``k`` as a dict, None if absent, or why it is bad (str)."""
+        p = self.record_path(k)
+        try:
+            r = json.loads(p.read_bytes())
+        except FileNotFoundError:
+            return None
+        except (OSError, ValueError) as e:
+            return f"unreadable: {str(e)[:60]}"
+        if not isinstance(r, dict):
+            return "not a JSON object"
+        missing = [key for key in _RECORD_KEYS if key not in r]
+        if missing:
+            return f"missing {', '.join(missing)}"
+        return r
+
+    def _record_problem(self, k: int, r: dict) -> str | None:
+        """Why record ``r`` cannot be chunk ``k``'s of this store, or None."""
+        m = self.manifest
+        a, b = self.chunk_range(k)
+        if r["chunk"] != k or r["file"] != chunk_name(k):
+            return f"the record of chunk {r['chunk']!r}"
+        if r["spec_hash"] != m["spec_hash"] or r["version"] != m["version"]:
+            return "written for another spec or version"
+        if (r["rows"], r["sim_id_first"], r["sim_id_last"]) != (b - a, a, b - 1):
+            return (f"says {r['rows']!r} rows, sim_ids {r['sim_id_first']!r}-"
+                    f"{r['sim_id_last']!r}; the layout has {b - a}, {a}-{b - 1}")
+        if not (_whole(r["bytes"]) and isinstance(r["sha256"], str)):
+            return "bytes or sha256 malformed"
+        return None
+
+    def check(self, deep: bool = False) -> Check:
+        """Verify every chunk against its record (size and sha256; with ``deep`` also
+        read it: Parquet, rows, ``sim_id`` range). Read-only."""
+        m = self.manifest
+        nc = m["n_chunks"]
+        d = self.path / CHUNKS
+        running = self.running()
+        names = sorted(os.listdir(d)) if d.is_dir() else []
+        problems: list[Problem] = []
+        files, records = set(), {}
+        for name in names:
+            mt = _CHUNK.match(name)
+            if is_temporary(name) or (name.startswith(".") and name.endswith(".tmp")):
+                continue  # a temporary file of a run (removed by the next one)
+            k = int(mt.group(1)) if mt else None
+            if k is None or k >= nc or name != (chunk_name(k) if mt.group(2) == "parquet"
+                                                else record_name(k)):
+                why = (f"chunk index beyond the campaign's {nc} chunks" if k is not None
+                       and k >= nc else "not a file of this store")
+                problems.append(Problem(f"{CHUNKS}/{name}", "stray", why, None, (d / name,)))
+            elif mt.group(2) == "parquet":
+                files.add(k)
+            else:
+                records[k] = self._record(k)
+        by_sha = {r["sha256"]: k for k, r in records.items() if isinstance(r, dict)
+                  and isinstance(r.get("sha256"), str)}
+        ok, adopted = set(), 0
+        for k in sorted(files | set(records)):
+            r, cname = records.get(k), f"{CHUNKS}/{chunk_name(k)}"
+            paths = ((self.chunk_path(k),) if k in files else ()) + (
+                (self.record_path(k),) if k in records else ())
+            if r is None:
+                if not running:  # else: in progress, its record comes next
+                    problems.append(Problem(cname, "unrecorded", "no record: not finished",
+                                            k, paths))
+                continue
+            why = r if isinstance(r, str) else self._record_problem(k, r)
+            if why is not None:
+                problems.append(Problem(f"{CHUNKS}/{record_name(k)}", "bad record", why,
+                                        k, paths))
+                continue
+            if k not in files:
+                problems.append(Problem(cname, "missing", f"its record says {r['rows']} rows, "
+                                        f"sim_ids {r['sim_id_first']}-{r['sim_id_last']}",
+                                        k, paths))
+                continue
+            sha, size = _sha256(self.chunk_path(k))
+            if size < r["bytes"]:
+                problems.append(Problem(cname, "truncated", f"{size} of {r['bytes']} bytes",
+                                        k, paths))
+                continue
+            if sha != r["sha256"]:
+                j = by_sha.get(sha)
+                if j is not None and j != k:
+                    a, b = self.chunk_range(j)
+                    c, e = self.chunk_range(k)
+                    problems.append(Problem(
+                        cname, "duplicate", f"a copy of {chunk_name(j)}: sim_ids {a}-{b - 1} "
+                        f"twice, {c}-{e - 1} missing", k, paths))
+                else:
+                    problems.append(Problem(cname, "altered", "sha256 differs from its record"
+                                            + (f", {size} of {r['bytes']} bytes"
+                                               if size != r["bytes"] else ""), k, paths))
+                continue
+            if deep:
+                why = self._read_problem(k, r)
+                if why is not None:
+                    problems.append(Problem(cname, "unreadable", why, k, paths))
+                    continue
+            ok.add(k)
+            adopted += bool(r.get("adopted"))
+        return Check(nc, frozenset(ok), tuple(problems), running, adopted)
+
+    def _read_problem(self, k: int, r: dict) -> str | None:
+        return self._read(k, r)[1]
+
+    def _read(self, k: int, r: dict) -> tuple[pd.DataFrame | None, str | None]:
+        """``(rows, None)`` of chunk ``k`` if they agree with record ``r`` (rows,
+        ``sim_id`` range), else ``(None, why)``."""
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+        try:
+            t = pq.read_table(self.chunk_path(k)).to_pandas()
+        except (pa.ArrowException, OSError, ValueError) as e:
+            return None, f"unreadable Parquet: {str(e).splitlines()[0][:80]}"
+        if "sim_id" not in t.columns:
+            return None, "no sim_id column"
+        ids = t["sim_id"].to_numpy()
+        a, b = r["sim_id_first"], r["sim_id_last"]
+        if ids.shape != (b - a + 1,) or not np.array_equal(ids, np.arange(a, b + 1)):
+            return None, (f"{len(ids)} rows that are not sim_ids {a}-{b} in order, as its "
+                          "record says")
+        return t, None
+
+    def read_chunk(self, k: int) -> pd.DataFrame:
+        """The rows of chunk ``k``, checked against its record (rows, ``sim_id`` range);
+        :class:`~rocking.errors.StoreError` naming the file otherwise."""
+        r = self._record(k)
+        name = f"{self.path / CHUNKS / chunk_name(k)}"
+        if not isinstance(r, dict):
+            raise StoreError(f"{name}: no valid record ({r or 'none'})")
+        t, why = self._read(k, r)
+        if why is not None:
+            raise StoreError(f"{name}: {why}")
+        return t
+
+    def done(self) -> set[int]:
+        """Indices of the finished chunks (verified against their records)."""
+        return set(self.check().ok)
 
     def write_chunk(self, k: int, table: pd.DataFrame) -> None:
-        """Write chunk ``k`` atomically (temporary file, then rename)."""
-        final = self.chunk_path(k)
-        tmp = final.with_name(f".{final.name}.{os.getpid()}.tmp")
-        table.to_parquet(tmp, index=False, engine="pyarrow")
-        os.replace(tmp, final)
+        """Write chunk ``k`` (its rows, in ``sim_id`` order): the Parquet file, synced and
+        renamed into place, then its record (see the module docstring)."""
+        a, b = self.chunk_range(k)
+        ids = table["sim_id"].to_numpy() if "sim_id" in table.columns else None
+        if ids is None or ids.shape != (b - a,) or not np.array_equal(ids, np.arange(a, b)):
+            raise StoreError(f"chunk {k}: the table is not sim_ids {a}-{b - 1} in order")
+        buf = io.BytesIO()
+        table.to_parquet(buf, index=False, engine="pyarrow")
+        data = buf.getvalue()
+        self.record_path(k).unlink(missing_ok=True)  # a previous record of this chunk
+        atomic_write(self.chunk_path(k), data)
+        m = self.manifest
+        rec = {"chunk": k, "file": chunk_name(k), "rows": b - a, "sim_id_first": a,
+               "sim_id_last": b - 1, "bytes": len(data),
+               "sha256": hashlib.sha256(data).hexdigest(), "spec_hash": m["spec_hash"],
+               "version": m["version"],
+               "written": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}
+        atomic_write(self.record_path(k), json.dumps(rec, indent=1))
 
     def files(self) -> list[Path]:
+        """The files of the finished chunks, in order."""
         return [self.chunk_path(k) for k in sorted(self.done())]
 
-    def status(self) -> dict:
-        """Counts of done and remaining simulations and chunks."""
+    # ------------------------------------------------------------------ repair
+    def _quarantine_dir(self) -> Path:
+        q = self.path / QUARANTINE / (time.strftime("%Y%m%dT%H%M%S", time.gmtime())
+                                      + f"-{os.getpid()}")
+        q.mkdir(parents=True, exist_ok=True)
+        return q
+
+    def repair(self, log: Callable = print) -> list[Problem]:
+        """Move every problem file into ``quarantine/`` (never deleted), saying so with
+        ``log``; the chunks concerned are then not done, for ``run`` to recompute. Call it
+        with the lock held."""
+        problems = list(self.check().problems)
+        if not problems:
+            return []
+        q = self._quarantine_dir()
+        for p in problems:
+            moved = []
+            for f in p.paths:
+                if f.exists():
+                    replace(f, q / f.name)
+                    moved.append(f.name)
+            what = ("recomputed" if p.chunk is not None else "not part of the campaign")
+            log(f"{p}: moved to {q.relative_to(self.path)}/ ({', '.join(moved)}); {what}")
+        return problems
+
+    def upgrade(self, log: Callable = print) -> dict:
+        """Upgrade a store of format 1 (no chunk records): record every chunk that reads
+        as Parquet with the rows and ``sim_id`` range of its place in the layout (a
+        checksum taken now: earlier changes cannot be detected), move the others into
+        ``quarantine/``, and write the manifest as format 2."""
+        m = self._read_manifest()
+        if m.get("format") != 1:
+            raise StoreError(f"{self.path}: format {m.get('format')!r}: only a store of "
+                             "format 1 needs an upgrade")
+        missing = [k for k in _REQUIRED if k not in m and k not in ("spec_dir", "format")]
+        if missing:
+            raise ManifestError(f"{self.manifest_path}: damaged manifest, missing "
+                                f"{', '.join(missing)}")
+        self.prepare()
+        self.lock()
+        try:
+            new = dict(m, format=FORMAT)
+            new.setdefault("spec_dir", ".")
+            self._manifest = new  # for the layout (written at the end)
+            d = self.path / CHUNKS
+            adopted, moved = [], []
+            q = None
+            for name in sorted(os.listdir(d)):
+                if is_temporary(name):
+                    continue
+                mt = _CHUNK.match(name)
+                k = int(mt.group(1)) if mt and mt.group(2) == "parquet" else None
+                why = None
+                if k is None or k >= m["n_chunks"] or name != chunk_name(k):
+                    why = "stray"
+                else:
+                    a, b = self.chunk_range(k)
+                    rec = {"chunk": k, "file": name, "rows": b - a, "sim_id_first": a,
+                           "sim_id_last": b - 1}
+                    why = self._read(k, rec)[1]
+                if why is None:
+                    sha, size = _sha256(d / name)
+                    rec.update(bytes=size, sha256=sha, spec_hash=m["spec_hash"],
+                               version=m["version"], adopted="upgrade from format 1")
+                    atomic_write(self.record_path(k), json.dumps(rec, indent=1))
+                    adopted.append(k)
+                else:
+                    q = q or self._quarantine_dir()
+                    replace(d / name, q / name)
+                    moved.append(name)
+                    log(f"{CHUNKS}/{name}: {why}: moved to {q.relative_to(self.path)}/")
+            atomic_write(self.manifest_path, json.dumps(new, indent=1, default=str))
+            fsync_dir(d)
+        finally:
+            self.unlock()
+            self._manifest = None
+        return {"adopted": len(adopted), "quarantined": moved}
+
+    # ------------------------------------------------------------------ summaries
+    def status(self, check: Check | None = None) -> dict:
+        """Counts of done (verified) and remaining simulations and chunks, and the
+        problems found (as text)."""
         m = self.manifest
-        done = self.done()
-        cs, n = m["chunk_size"], m["n_sims"]
-        sims = sum(min(cs, n - k * cs) for k in done if k < m["n_chunks"])
+        c = check if check is not None else self.check()
+        sims = sum(b - a for a, b in map(self.chunk_range, c.ok))
+        n, nc = m["n_sims"], m["n_chunks"]
         return {"name": m["name"], "store": str(self.path), "version": m["version"],
                 "spec_hash": m["spec_hash"], "n_sims": n, "sims_done": sims,
-                "sims_remaining": n - sims, "n_chunks": m["n_chunks"],
-                "chunks_done": len(done), "chunks_remaining": m["n_chunks"] - len(done),
-                "complete": len(done) == m["n_chunks"]}
+                "sims_remaining": n - sims, "n_chunks": nc, "chunks_done": len(c.ok),
+                "chunks_remaining": nc - len(c.ok), "complete": len(c.ok) == nc,
+                "problems": [str(p) for p in c.problems], "running": c.running}
+
+
+def _damage_error(s: Store, c: Check) -> StoreError:
+    first = c.damage[0]
+    more = (f"; {len(c.problems) - 1} more problems, see `rocking campaign verify {s.path}`"
+            if len(c.problems) > 1 else "")
+    return StoreError(f"{s.path}: {first}{more}; `rocking campaign run SPEC --out {s.path}` "
+                      "moves the bad files aside and recomputes them")
 
 
 def load(store, lazy: bool | None = None):
-    """The rows of a campaign store, sorted by ``sim_id``.
+    """The rows of a campaign store, sorted by ``sim_id``, every chunk verified against its
+    record (:class:`~rocking.errors.StoreError` naming the first damaged file otherwise).
 
     Returns a pandas DataFrame, or with ``lazy=True`` a lazy ``dask.dataframe`` over the
     chunk files (for stores larger than memory). ``lazy=None`` (default) chooses lazy when
     the files, as columns in memory (about 4 times their size on disk), would exceed half
     of the memory available now.
     """
+    if lazy is not None and not isinstance(lazy, bool):
+        raise ParameterError(f"lazy must be True, False or None, got {lazy!r}")
     s = Store(store)
-    s.manifest  # noqa: B018 - raises StoreError if not a store
-    files = s.files()
+    c = s.check()
+    if c.damage:
+        raise _damage_error(s, c)
+    done = sorted(c.ok)
+    files = [s.chunk_path(k) for k in done]
     if lazy is None:
         import psutil
         size = sum(f.stat().st_size for f in files)
@@ -215,10 +666,7 @@ def load(store, lazy: bool | None = None):
         if not files:
             raise StoreError(f"{s.path} has no finished chunk yet")
         return dd.read_parquet([str(f) for f in files])
-    if not isinstance(lazy, bool):
-        raise ParameterError(f"lazy must be True, False or None, got {lazy!r}")
     if not files:
         return pd.DataFrame()
-    import pyarrow.parquet as pq
-    table = pd.concat([pq.read_table(f).to_pandas() for f in files], ignore_index=True)
+    table = pd.concat([s.read_chunk(k) for k in done], ignore_index=True)
     return table.sort_values("sim_id", kind="stable").reset_index(drop=True)

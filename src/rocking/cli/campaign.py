@@ -1,25 +1,38 @@
-"""``rocking campaign run|status|report``: campaigns from a TOML spec into a Parquet store.
+"""``rocking campaign run|status|verify|upgrade|report``: campaigns from a TOML spec into a
+Parquet store.
 
 ::
 
     rocking campaign run SPEC.toml --out STORE [--executor local|dask]
                          [--scheduler tcp://host:port | --dask-local N] [--dry-run]
     rocking campaign status STORE [--json]
+    rocking campaign verify STORE [--json]
+    rocking campaign upgrade STORE
     rocking campaign report STORE [--out DIR]
 
-``run`` on an existing store resumes it (finished chunks are not recomputed) and refuses a
-different spec. Ctrl-C stops cleanly: every finished chunk is kept (exit code 130).
+``run`` on an existing store resumes it (finished chunks are not recomputed, damaged ones
+are moved into ``STORE/quarantine/`` and recomputed) and refuses a different spec. Ctrl-C
+stops cleanly: every finished chunk is kept (exit code 130).
+
+``verify`` exit codes: 0 every chunk matches its record (the store may be incomplete),
+1 problems found (each named on its own line, or a damaged manifest), 2 bad input (not a
+store). The report is written into a temporary folder and its files renamed into
+``--out`` one by one (``report.md`` last), each synced: a killed report never leaves a
+half-written file.
 """
 
 from __future__ import annotations
 
 import json
+import os
+import shutil
 from pathlib import Path
 
 import click
 
-from ..errors import ParameterError
-from .common import CONTEXT, json_default
+from .._atomic import fsync_dir, fsync_file, replace, temporary_name
+from ..errors import ParameterError, StoreError
+from .common import CONTEXT, json_default, one_line
 
 
 def _duration(seconds: float) -> str:
@@ -54,6 +67,29 @@ def campaign():
 @click.option("--quiet", is_flag=True, help="No progress bar.")
 def run_cmd(spec, out, executor, scheduler, dask_local, window, dry_run, quiet):
     """Run the campaign SPEC (TOML) into the store --out."""
+    try:
+        return _run(spec, out, executor, scheduler, dask_local, window, dry_run, quiet)
+    except KeyboardInterrupt:
+        return _interrupted(out)
+
+
+def _interrupted(out) -> int:
+    from ..campaign import Store
+    s = Store(out) if out is not None else None
+    try:
+        st = s.status() if s is not None and s.exists() else None
+    except StoreError:
+        st = None
+    if st is None:
+        click.echo("\ninterrupted before any chunk was kept; nothing to resume", err=True)
+    else:
+        click.echo(f"\ninterrupted: {st['sims_done']} of {st['n_sims']} simulations done "
+                   f"({st['chunks_done']} of {st['n_chunks']} chunks kept in {out}); run the "
+                   "same command again to resume", err=True)
+    return 130
+
+
+def _run(spec, out, executor, scheduler, dask_local, window, dry_run, quiet):
     from ..campaign import estimate, read_spec, run, status
     s = read_spec(spec)
     if dry_run:
@@ -66,6 +102,8 @@ def run_cmd(spec, out, executor, scheduler, dask_local, window, dry_run, quiet):
         if out is not None and Path(out, "manifest.json").is_file():
             st = status(out)
             click.echo(f"store {out}: {st['sims_done']} done, {st['sims_remaining']} to run")
+            for p in st["problems"]:
+                click.echo(f"  {p}")
         return 0
     if out is None:
         raise ParameterError("--out is required: the store directory")
@@ -77,16 +115,8 @@ def run_cmd(spec, out, executor, scheduler, dask_local, window, dry_run, quiet):
         raise ParameterError(f"--dask-local must be in [1, 1024] workers, got {dask_local}")
     if window is not None and window < 1:
         raise ParameterError(f"--window must be >= 1, got {window}")
-    try:
-        st = run(s, out, executor=executor, scheduler=scheduler, dask_local=dask_local,
-                 window=window, progress=not quiet,
-                 log=lambda m: click.echo(m, err=True))
-    except KeyboardInterrupt:
-        st = status(out)
-        click.echo(f"\ninterrupted: {st['sims_done']} of {st['n_sims']} simulations done "
-                   f"({st['chunks_done']} of {st['n_chunks']} chunks kept in {out}); run the "
-                   "same command again to resume", err=True)
-        return 130
+    st = run(s, out, executor=executor, scheduler=scheduler, dask_local=dask_local,
+             window=window, progress=not quiet, log=lambda m: click.echo(m, err=True))
     click.echo(f"{st['name']}: {st['sims_done']} of {st['n_sims']} simulations done "
                f"({st['chunks_done']} chunks) in {out}")
     return 0
@@ -96,7 +126,7 @@ def run_cmd(spec, out, executor, scheduler, dask_local, window, dry_run, quiet):
 @click.argument("store", type=click.Path(file_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable output.")
 def status_cmd(store, as_json):
-    """How many simulations of STORE are done and how many remain."""
+    """How many simulations of STORE are done (verified) and how many remain."""
     from ..campaign import status
     st = status(store)
     if as_json:
@@ -108,7 +138,74 @@ def status_cmd(store, as_json):
     click.echo(f"simulations: {st['sims_done']} done, {st['sims_remaining']} remaining of "
                f"{st['n_sims']} ({pct:.1f}%)")
     click.echo(f"chunks: {st['chunks_done']} done, {st['chunks_remaining']} remaining of "
-               f"{st['n_chunks']}" + ("; complete" if st["complete"] else ""))
+               f"{st['n_chunks']}" + ("; complete" if st["complete"] else "")
+               + ("; a run is writing to it" if st["running"] else ""))
+    if st["problems"]:
+        click.echo(f"{len(st['problems'])} problem(s), not counted as done; `rocking campaign "
+                   "run` moves them into quarantine/ and recomputes:")
+        for p in st["problems"]:
+            click.echo(f"  {p}")
+    return 0
+
+
+@campaign.command("verify", context_settings=CONTEXT)
+@click.argument("store", type=click.Path(file_okay=False))
+@click.option("--json", "as_json", is_flag=True, help="Machine-readable output.")
+def verify_cmd(store, as_json):
+    """Check every chunk of STORE against its record (size, sha256, Parquet, rows, sim_id
+    range) and the manifest. Exit 0 if all is well (complete or not), 1 on any problem
+    (each named), 2 if STORE is not a store."""
+    from ..campaign.store import ManifestError, Store
+    s = Store(store)
+    if not s.path.is_dir() or not s.exists():
+        raise StoreError(f"{store} is not a campaign store (no manifest.json)")
+    try:
+        c = s.check(deep=True)
+    except StoreError as e:  # damaged manifest, or a store of format 1
+        msg = one_line(e)
+        if as_json:
+            click.echo(json.dumps({"store": str(store), "ok": False, "problems": [msg]},
+                                  indent=1))
+        else:
+            click.echo(msg)
+            if isinstance(e, ManifestError):
+                click.echo("`rocking campaign run SPEC --out STORE` rewrites it when the "
+                           "store's spec.toml or chunk records match SPEC")
+        return 1
+    st = s.status(c)
+    if as_json:
+        click.echo(json.dumps({**st, "ok": not c.problems, "adopted": c.adopted}, indent=1,
+                              default=json_default))
+        return 1 if c.problems else 0
+    for p in c.problems:
+        click.echo(str(p))
+    n_rows = st["sims_done"]
+    head = (f"{store}: {len(c.ok)} of {c.n_chunks} chunks verified (sha256, Parquet, rows, "
+            f"sim_ids), {n_rows} of {st['n_sims']} simulations")
+    tail = "complete" if st["complete"] else f"{st['chunks_remaining']} chunks to run"
+    if c.running:
+        tail += "; a run is writing to it (chunks in progress not checked)"
+    if c.adopted:
+        tail += (f"; {c.adopted} chunks adopted by upgrade (checksums from the upgrade, "
+                 "not from their run)")
+    click.echo(f"{head}; {tail}")
+    if c.problems:
+        click.echo(f"{len(c.problems)} problem(s): `rocking campaign run SPEC --out {store}` "
+                   "moves the files into quarantine/ and recomputes their chunks")
+        return 1
+    return 0
+
+
+@campaign.command("upgrade", context_settings=CONTEXT)
+@click.argument("store", type=click.Path(file_okay=False))
+def upgrade_cmd(store):
+    """Upgrade a store of format 1 (written before chunk records): adopt the chunks that
+    pass the structural checks (Parquet, rows, sim_id range), move the others aside."""
+    from ..campaign.store import Store
+    res = Store(store).upgrade(log=lambda m: click.echo(m, err=True))
+    click.echo(f"{store}: upgraded to format 2: {res['adopted']} chunks recorded (values "
+               f"written before the upgrade are not proven by a checksum), "
+               f"{len(res['quarantined'])} moved into quarantine/")
     return 0
 
 
@@ -129,7 +226,13 @@ def report_cmd(store, out):
     out = Path(out) if out is not None else Path(store) / "report"
     if out.exists() and not out.is_dir():
         raise ParameterError(f"--out {out}: exists and is a file, not a directory")
-    res = report(table, manifest, out)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    tmp = temporary_name(out)
+    try:
+        res = report(table, manifest, tmp)
+        _publish(tmp, out)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
     if not st["complete"]:
         click.echo(f"note: the store is incomplete ({st['sims_done']} of {st['n_sims']} "
                    "simulations): the report covers the finished ones", err=True)
@@ -138,3 +241,16 @@ def report_cmd(store, out):
     click.echo(f"report: {out / 'report.md'}")
     return 0
 
+
+def _publish(tmp: Path, out: Path) -> None:
+    """Move the files written in ``tmp`` into ``out``, each synced and renamed (atomic),
+    ``report.md`` last."""
+    out.mkdir(parents=True, exist_ok=True)
+    names = sorted(os.listdir(tmp), key=lambda n: (n == "report.md", n))
+    for n in names:
+        if (tmp / n).is_file():
+            fsync_file(tmp / n)
+    fsync_dir(tmp)
+    for n in names:
+        if (tmp / n).is_file():
+            replace(tmp / n, out / n)
