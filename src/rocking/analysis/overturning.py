@@ -29,12 +29,16 @@ at impacts). ``tests/test_overturning.py`` checks the similarity to 1e-6.
 * ``"mp"``: :class:`~rocking.motions.MavroeidisPapageorgiou` with ``fp = omega_p / (2
   pi)``; it needs ``gamma`` (> 1) and ``nu`` (rad) as ``pulse_options``.
 
-**Overturning modes** (Zhang and Makris 2001): mode 1 overturns without a prior impact
-(``n_impacts == 0`` at overturning), mode 2 after one or more impacts.
+**Overturning modes** (Zhang and Makris 2001, J. Eng. Mech. 127(5)): *mode 1* overturns
+after an impact (``n_impacts >= 1`` at overturning: under a one-sine pulse the block
+rocks to one side, impacts once and overturns to the other side), *mode 2* overturns
+without any impact (``n_impacts == 0``). For the one-sine pulse mode 1 is the tongue at
+the lower amplitudes and mode 2 the region above it. (Up to rocking 0.1.0 the ``mode``
+column numbered them the other way round.)
 
 **Method of** :func:`overturning_spectrum`. The overturning boundary is not monotonic in
-the amplitude: for the one-sine pulse a safe region lies between the mode-2 tongue and the
-mode-1 boundary, so a plain bisection between "safe" and "overturns" can miss the minimum.
+the amplitude: for the one-sine pulse a safe region lies between the mode-1 tongue and the
+mode-2 boundary, so a plain bisection between "safe" and "overturns" can miss the minimum.
 The amplitude ratio is therefore first scanned upwards on a grid (``accel_ratio``,
 default 95 levels from 1 to 100 in steps of 5%) for the lowest overturning level, then
 refined by a scan of that grid step at relative spacing ``tol`` (one tongue of overturning
@@ -69,7 +73,8 @@ DEFAULT_ACCEL_RATIO = np.geomspace(1.0, 100.0, 95)
 """Default scan grid of ``a_p / (g tan alpha)`` of :func:`overturning_spectrum` (5% steps)."""
 
 _CHUNK = 12  # grid levels per simulate_many call of the upward scan
-_MODE_LABELS = {0: "safe", 1: "mode 1 (no impact)", 2: "mode 2 (after impacts)"}
+_MODE_LABELS = {0: "safe", 1: "mode 1 (after an impact)", 2: "mode 2 (no impact)"}
+"""Labels of the ``mode`` column (Zhang and Makris 2001)."""
 
 
 # ---------------------------------------------------------------- validation and pulses
@@ -192,9 +197,9 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
     pandas.DataFrame
         One row per frequency ratio: ``omega_ratio``, ``min_overturn_ratio`` (the lowest
         amplitude ratio found to overturn; NaN if nothing on the grid overturns),
-        ``mode`` (1: overturning without impact, 2: after one or more impacts, as in Zhang
-        and Makris 2001; <NA> if not found), ``safe_ratio`` (the largest amplitude ratio
-        below it found not to overturn) and ``n_impacts`` (of the run at
+        ``mode`` (as in Zhang and Makris 2001: 1, overturning after one or more impacts;
+        2, overturning without any impact; <NA> if not found), ``safe_ratio`` (the
+        largest amplitude ratio below it found not to overturn) and ``n_impacts`` (of the run at
         ``min_overturn_ratio``). ``df.attrs`` holds the block's ``alpha``, ``p``, ``mu``,
         ``pulse``, ``tol``, ``model`` and ``n_simulations``. Plot with
         :func:`plot_overturning_spectrum`.
@@ -264,7 +269,7 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
         hi[act[ov]] = mid[ov]
         imp_hi[act[ov]] = res.n_impacts[ov]
         lo[act[~ov]] = mid[~ov]
-    mode = pd.array(np.where(imp_hi == 0, 1, 2), dtype="Int64")
+    mode = pd.array(_mode(imp_hi), dtype="Int64")
     mode[~found] = pd.NA
     df = pd.DataFrame({
         "omega_ratio": w,
@@ -279,6 +284,11 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
                      "n_simulations": int(n_sim), "accel_ratio_max": float(grid[-1]),
                      "tail": float(tail), **{k: float(v) for k, v in pulse_options.items()}})
     return df
+
+
+def _mode(n_impacts) -> np.ndarray:
+    """Zhang and Makris (2001): mode 1 overturns after an impact, mode 2 without one."""
+    return np.where(np.asarray(n_impacts) > 0, 1, 2)
 
 
 def _model_name(model) -> str:
@@ -306,11 +316,12 @@ def outcome_map(block, pulse: str = "sine", omega_ratio=None, accel_ratio=None,
     -------
     pandas.DataFrame
         Tidy, one row per cell (``omega_ratio`` outer, ``accel_ratio`` inner):
-        ``omega_ratio``, ``accel_ratio``, ``overturned``, ``mode`` (0: safe, 1: overturned
-        without impact, 2: overturned after one or more impacts), ``n_impacts``,
-        ``rocked`` (the block left rest) and ``max_abs_theta_over_alpha``. For the
-        one-sine pulse the map shows the safe region between the mode-2 tongue and the
-        mode-1 boundary. Plot with :func:`plot_outcome_map`.
+        ``omega_ratio``, ``accel_ratio``, ``overturned``, ``mode`` (0: safe; Zhang and
+        Makris 2001: 1, overturned after one or more impacts; 2, overturned without any
+        impact), ``n_impacts``, ``rocked`` (the block left rest) and
+        ``max_abs_theta_over_alpha``. For the one-sine pulse the map shows the safe region
+        between the mode-1 tongue and the mode-2 boundary. Plot with
+        :func:`plot_outcome_map`.
     """
 
     _check_block(block)
@@ -328,7 +339,7 @@ def outcome_map(block, pulse: str = "sine", omega_ratio=None, accel_ratio=None,
         "omega_ratio": ww,
         "accel_ratio": aa,
         "overturned": over,
-        "mode": np.where(over, np.where(nimp == 0, 1, 2), 0),
+        "mode": np.where(over, _mode(nimp), 0),
         "n_impacts": nimp,
         "rocked": np.asarray(res.rocked, dtype=bool),
         "max_abs_theta_over_alpha": np.asarray(res.max_abs_theta) / block.alpha,
@@ -343,8 +354,8 @@ def outcome_map(block, pulse: str = "sine", omega_ratio=None, accel_ratio=None,
 # ---------------------------------------------------------------- plots
 _XLABEL = r"frequency ratio $\omega_p / p$"
 _YLABEL = r"acceleration ratio $a_p / (g \tan\alpha)$"
-_COLORS = {"no rocking": "#F2F2F2", "rocking, safe": "#BFD7EA", "mode 1": "#D55E00",
-           "mode 2": "#E69F00"}
+_COLORS = {"no rocking": "#F2F2F2", "rocking, safe": "#BFD7EA",
+           _MODE_LABELS[1]: "#E69F00", _MODE_LABELS[2]: "#D55E00"}
 
 
 def _title(attrs) -> str:
@@ -368,7 +379,8 @@ def plot_overturning_spectrum(df, ax=None, *, label: str | None = None, **kw):
     kw.setdefault("color", PALETTE[0])
     kw.setdefault("linewidth", 1.2)
     ax.plot(x, y, label=label or "minimum overturning level", **kw)
-    for md, marker, col in ((1, "o", _COLORS["mode 1"]), (2, "s", _COLORS["mode 2"])):
+    for md, marker in ((1, "o"), (2, "s")):
+        col = _COLORS[_MODE_LABELS[md]]
         sel = mode == md
         if sel.any():
             ax.plot(x[sel], y[sel], linestyle="none", marker=marker, markersize=4, color=col,

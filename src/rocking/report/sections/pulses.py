@@ -75,8 +75,8 @@ def build(ctx) -> str:
             c = PALETTE[i % len(PALETTE)]
             ax.plot(d.omega_ratio, d.min_overturn_ratio, color=c, lw=1.1, marker="o", ms=3,
                     label=f"specimen {n} (α = {d.alpha.iloc[0]:.3f}, μ = {d.mu.iloc[0]:.3f})")
-            m1 = d[d["mode"] == 1]
-            ax.plot(m1.omega_ratio, m1.min_overturn_ratio, ls="none", marker="s", ms=6,
+            m2 = d[d["mode"] == 2]  # Zhang and Makris (2001): mode 2, no impact
+            ax.plot(m2.omega_ratio, m2.min_overturn_ratio, ls="none", marker="s", ms=6,
                     mfc="none", mec=c)
         ax.axhline(1.0, color="0.4", ls=":", lw=0.9)
         ax.set_xscale("log")
@@ -84,8 +84,8 @@ def build(ctx) -> str:
         ax.xaxis.set_minor_formatter(NullFormatter())
         ax.set_xlabel("ω_p / p")
         ax.grid(True, which="both", alpha=0.3)
-        ax.set_title(f"{PULSE_LABELS[pulse]} pulse (squares: overturning without impact)",
-                     fontsize=9.5)
+        ax.set_title(f"{PULSE_LABELS[pulse]} pulse (squares: mode 2, overturning without "
+                     "impact)", fontsize=9.5)
     axs[0].set_ylabel("minimum overturning a_p / (g tan α)")
     axs[1].legend(fontsize=7.5, loc="upper left")
     fig_spec = ctx.save_figure(
@@ -93,9 +93,9 @@ def build(ctx) -> str:
         caption=("Overturning spectra of the four specimens (Table II E parameters, "
                  "classical model): the minimum pulse acceleration a_p/(g tan α) that "
                  "overturns the block, against the pulse frequency ω_p/p, found by "
-                 f"bisection to {100 * tol:g} % (open squares: overturning without a prior "
-                 "impact, mode 1; other points: after one or more impacts, mode 2). Dotted: "
-                 "the uplift acceleration."))
+                 f"bisection to {100 * tol:g} % (open squares: overturning without any "
+                 "impact, mode 2 of Zhang and Makris 2001; other points: after one or more "
+                 "impacts, mode 1). Dotted: the uplift acceleration."))
 
     fig2 = Figure(figsize=(7.5, 4.6), layout="constrained")
     ax = fig2.add_subplot()
@@ -110,8 +110,8 @@ def build(ctx) -> str:
         caption=(f"Outcome of each cell of a {len(mw)} × {len(ma)} grid (ω_p/p, a_p/(g tan α)) "
                  f"for specimen {MAP_SPECIMEN} under the one-sine pulse, with its overturning "
                  "spectrum. The safe region lies between the cells that overturn after an "
-                 "impact (mode 2, at lower amplitudes) and those that overturn without one "
-                 "(mode 1, at higher amplitudes)."))
+                 "impact (mode 1 of Zhang and Makris 2001, at lower amplitudes) and those "
+                 "that overturn without one (mode 2, at higher amplitudes)."))
 
     rows, summ = [], []
     for n in SPECIMENS:
@@ -121,15 +121,15 @@ def build(ctx) -> str:
             lowest = d.iloc[k]
             at = {w: float(np.interp(np.log(w), np.log(d.omega_ratio),
                                      d.min_overturn_ratio)) for w in (2.0, 5.0)}
-            n1 = int((d["mode"] == 1).sum())
+            n2 = int((d["mode"] == 2).sum())  # without impact
             summ.append({"specimen": n, "pulse": pulse, "lowest": lowest.min_overturn_ratio,
-                         "at_w": lowest.omega_ratio, "r2": at[2.0], "r5": at[5.0], "n1": n1,
+                         "at_w": lowest.omega_ratio, "r2": at[2.0], "r5": at[5.0], "n2": n2,
                          "found": int(d["mode"].notna().sum())})
             rows.append([str(n), PULSE_LABELS[pulse], f"{lowest.min_overturn_ratio:.3f}",
                          f"{lowest.omega_ratio:.2f}", f"{at[2.0]:.2f}", f"{at[5.0]:.2f}",
-                         f"{n1} / {len(d)}"])
+                         f"{n2} / {len(d)}"])
     tbl = H.table(["specimen", "pulse", "lowest a_p/(g tan α)", "at ω_p/p",
-                   "at ω_p/p = 2", "at ω_p/p = 5", "points in mode 1"], rows,
+                   "at ω_p/p = 2", "at ω_p/p = 5", "points in mode 2 (no impact)"], rows,
                   caption="Overturning spectra: summary (interpolated on the log grid)")
     s = pd.DataFrame(summ)
     mode_counts = omap["mode"].value_counts().to_dict()
@@ -161,8 +161,9 @@ def build(ctx) -> str:
         "the scale of α, and what is left comes from α itself and μ (between "
         f"{spec.mu.min():.3f} and {spec.mu.max():.3f}).",
         f"The outcome map of specimen {MAP_SPECIMEN} ({len(omap)} cells) has "
-        f"{mode_counts.get(0, 0)} safe cells, {mode_counts.get(2, 0)} that overturn after "
-        f"an impact (mode 2) and {mode_counts.get(1, 0)} without one (mode 1). "
+        f"{mode_counts.get(0, 0)} safe cells, {mode_counts.get(1, 0)} that overturn after "
+        f"an impact (mode 1) and {mode_counts.get(2, 0)} without one (mode 2), in the "
+        "numbering of Zhang and Makris (2001). "
         + (f"At {len(safe_above)} of the {omap.omega_ratio.nunique()} frequency ratios "
            f"(ω_p/p from {min(safe_above):.2f} to {max(safe_above):.2f}) a larger pulse is "
            "safe above an overturning one: the safe region between the two modes found by "
