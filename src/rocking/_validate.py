@@ -14,10 +14,38 @@ from __future__ import annotations
 
 import math
 import numbers
+import os
+import sys
+import warnings
 
 import numpy as np
 
 from .errors import ParameterError
+
+
+class PlausibilityWarning(UserWarning):
+    """A valid but implausible input (a 6 g record, a 60 m block): most likely a unit
+    mistake. A warning, not an error: the run goes on."""
+
+
+_PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__)) + os.sep
+
+
+def _inside(code) -> bool:
+    """A frame of the package (or a dataclass's generated ``__init__``)."""
+    name = code.co_filename
+    if name == "<string>" and code.co_name == "__init__":
+        return True
+    return os.path.abspath(name).startswith(_PACKAGE_DIR)
+
+
+def warn_implausible(message: str) -> None:
+    """Issue a one-line :class:`PlausibilityWarning`, attributed to the first caller
+    outside the package (so that it is shown once per place in the user's code)."""
+    level, f = 1, sys._getframe(0)
+    while f is not None and _inside(f.f_code):
+        f, level = f.f_back, level + 1
+    warnings.warn(message, PlausibilityWarning, stacklevel=level)
 
 
 def _is_bool(value) -> bool:

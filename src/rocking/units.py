@@ -36,12 +36,56 @@ KINDS = {
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d].*)?\s*$")
 
 
+# ---- unit words in files (record headers, column names): every spelling, case-insensitive
+_TIME_WORDS = {
+    "s": ("s", "sec", "secs", "second", "seconds"),
+    "ms": ("ms", "msec", "msecs", "millisecond", "milliseconds"),
+    "us": ("us", "usec", "usecs", "microsecond", "microseconds"),
+    "min": ("min", "mins", "minute", "minutes"),
+}
+_TIME_KEYS = {w: k for k, words in _TIME_WORDS.items() for w in words}
+TIME_FACTORS = {"s": 1.0, "ms": 1e-3, "us": 1e-6, "min": 60.0}
+"""SI factor of each canonical time unit that a record file may state."""
+
+_PER_S2 = (r"(?:/\s*(?:s|sec|second)\s*(?:\^?\s*2|/\s*(?:s|sec|second))"  # /s^2, /sec2, /s/s
+           r"|(?:\s+|\s*[*.\u00b7]\s*)(?:s|sec)\s*\^?\s*-\s*2"          # m s^-2, m*s-2
+           r"|ps2)")                                                          # mps2
+_ACC_WORD = re.compile(rf"^(m|cm|mm)\s*{_PER_S2}$")
+_ACC_SIMPLE = {"g": "g", "gal": "gal", "gals": "gal"}
+ACCELERATION_UNITS = ("g", "m/s^2", "cm/s^2", "gal", "mm/s^2")
+"""Canonical acceleration units (keys of :data:`ACCELERATION`)."""
+
+
+def _clean_word(word) -> str:
+    w = " ".join(str(word).split()).lower().rstrip(".:")
+    return (w.replace("\u00b5", "u").replace("\u03bc", "u").replace("**", "^")
+            .replace("\u207b\u00b2", "^-2").replace("\u00b2", "^2"))
+
+
+def acceleration_unit(word) -> str | None:
+    """Canonical name (``g``, ``m/s^2``, ``cm/s^2``, ``gal``, ``mm/s^2``) of an acceleration
+    unit written any usual way (``G``, ``Gal``, ``cm/sec^2``, ``cm/s2``, ``m s^-2``,
+    ``m/s/s``, ``m/s²``...); None if ``word`` is not one."""
+    w = _clean_word(word)
+    if w in _ACC_SIMPLE:
+        return _ACC_SIMPLE[w]
+    m = _ACC_WORD.match(w)
+    return f"{m[1]}/s^2" if m else None
+
+
+def time_unit(word) -> str | None:
+    """Canonical name (``s``, ``ms``, ``us``, ``min``) of a time unit written any usual way
+    (``sec``, ``seconds``, ``msec``, ``milliseconds``, ``µs``, ``microsecond``...); None if
+    ``word`` is not one."""
+    return _TIME_KEYS.get(_clean_word(word).replace(" ", ""))
+
+
 def acceleration_factor(units: str) -> float:
-    """SI factor of an acceleration unit name (``g``, ``m/s^2``, ``cm/s^2``, ``gal``)."""
-    key = str(units).strip().lower().replace(" ", "")
-    if key not in ACCELERATION:
-        allowed = ", ".join(["g", "m/s^2", "cm/s^2", "gal", "mm/s^2"])
-        raise UnitError(f"units must be one of {allowed}; got {units!r}")
+    """SI factor of an acceleration unit name (``g``, ``m/s^2``, ``cm/s^2``, ``gal``,
+    ``mm/s^2``, in any spelling that :func:`acceleration_unit` knows)."""
+    key = acceleration_unit(units)
+    if key is None:
+        raise UnitError(f"units must be one of {', '.join(ACCELERATION_UNITS)}; got {units!r}")
     return ACCELERATION[key]
 
 

@@ -33,9 +33,12 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
-from .._validate import as_float, in_range, non_negative, positive
+from .._validate import as_float, in_range, non_negative, positive, warn_implausible
 from ..errors import ParameterError
 from ..units import G
+
+PLAUSIBLE_SIZE = 50.0
+"""A block width or height (m) above this gets a warning (likely mm given as m)."""
 
 GRANITE_DENSITY = 2650.0
 """Density (kg/m^3) used when a polygon is given neither a mass nor a density."""
@@ -166,6 +169,10 @@ class Block:
         """
         width = positive("width", width, "m")
         height = positive("height", height, "m")
+        for what, x in (("width", width), ("height", height)):
+            if x > PLAUSIBLE_SIZE:
+                warn_implausible(f"Block.rectangular: {what} {x:g} m is above 50 m; check "
+                                 "the units (width and height are in m: 170 mm is 0.17)")
         if mass is not None:
             mass = positive("mass", mass, "kg")
         if thickness is not None:

@@ -17,9 +17,18 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .._validate import as_float, non_negative, positive
+from .._validate import as_float, non_negative, positive, warn_implausible
 from . import _kernel as K
 from .base import Motion
+
+PLAUSIBLE_AMPLITUDE = 1.0
+"""A displacement amplitude (m) above this gets a warning (a table stroke is centimetres)."""
+
+
+def _check_amplitude(cls: str, x: float) -> None:
+    if x > PLAUSIBLE_AMPLITUDE:
+        warn_implausible(f"{cls}: displacement amplitude {x:g} m is above 1 m; check the "
+                         "units (amplitude is in m: 5 mm is 0.005)")
 
 
 @dataclass(frozen=True)
@@ -38,6 +47,7 @@ class Sine(Motion):
         object.__setattr__(self, "amplitude", non_negative("amplitude", self.amplitude, "m"))
         object.__setattr__(self, "duration", positive("duration", self.duration, "s"))
         object.__setattr__(self, "phase", as_float("phase", self.phase))
+        _check_amplitude("Sine", self.amplitude)
         object.__setattr__(self, "scale", as_float("scale", self.scale))
 
     @classmethod
@@ -76,6 +86,7 @@ class HanningSine(Motion):
         object.__setattr__(self, "amplitude", non_negative("amplitude", self.amplitude, "m"))
         object.__setattr__(self, "duration", positive("duration", self.duration, "s"))
         object.__setattr__(self, "scale", as_float("scale", self.scale))
+        _check_amplitude("HanningSine", self.amplitude)
 
     def _params(self):
         return (self.freq, self.amplitude, self.duration)

@@ -39,22 +39,43 @@ from pathlib import Path
 import numpy as np
 
 from .._validate import positive
-from ..errors import RecordError, UnitError
-from ..units import G, acceleration_factor
+from ..errors import RecordError
+from ..units import (
+    ACCELERATION,
+    ACCELERATION_UNITS,
+    TIME_FACTORS,
+    acceleration_factor,
+    acceleration_unit,
+    time_unit,
+)
 from .base import is_sampled
 
 __all__ = ["read_record", "write_csv", "builtin_records", "read_builtin"]
 
 _NUM = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eEdD][-+]?\d+)?"
+_WORD = "[A-Za-z\u00b5\u03bc][^\\s,;]*"  # a unit word: starts with a letter (or a micro sign)
+_BRACKET = r"[(\[{]\s*([^)\]}]*?)\s*[)\]}]"  # "(ms)", "[s]", "{g}"
 _AT2_NPTS = re.compile(r"NPTS\s*=\s*(\d+)", re.I)
-_AT2_DT = re.compile(rf"\bDT\s*=\s*({_NUM})", re.I)
+_AT2_DT = re.compile(rf"\bDT\s*=\s*({_NUM})(?:\s*({_WORD}))?", re.I)
 _AT2_ALT = re.compile(rf"^\s*(\d+)\s*,?\s+({_NUM})\s*,?\s*NPTS\s*,?\s*DT", re.I)
-_AT2_UNITS = re.compile(r"UNITS\s+OF\s+([^\s,.]+)", re.I)
+_AT2_UNITS = re.compile(r"UNITS\s+OF\s+(.+?)\s*(?:[,;]|\s\s|$)", re.I)
+_AT2_KIND = re.compile(r"\b(ACCELERATION|VELOCITY|DISPLACEMENT)\b", re.I)
 _FORTRAN_D = re.compile(r"(?<=[\d.])[dD](?=[-+]?\d)")
-_HDR_DT = re.compile(rf"\bdt\s*[=:]\s*({_NUM})\s*(ms|s)?\b", re.I)
-_HDR_UNITS = re.compile(r"^\s*#?\s*(?:acc\w*\s+)?units?\s*[=:]\s*([^\s,;]+)\s*(?:[,;].*)?$",
+_HDR_DT = re.compile(
+    rf"\bdt(?:_({_WORD})|\s*{_BRACKET})?\s*[=:]\s*({_NUM})(?:\s*{_BRACKET}|\s*({_WORD}))?",
+    re.I)
+_HDR_NPTS = re.compile(r"\bnpts\s*[=:]\s*([^\s,;]*)", re.I)
+_HDR_UNITS = re.compile(r"^\s*#?\s*(?:acc\w*\s+)?units?\s*[=:]\s*([^,;]*?)\s*(?:[,;].*)?$",
                         re.I)
 _SPLIT = re.compile(r"[,;\s]+")
+
+# column names: "<qualifiers> <quantity> <qualifiers> <unit>", e.g. "time_ms", "acc_g",
+# "Acceleration (cm/s^2)", "ground acc NS [gal]", "acceleration in g"
+_TIME_NAMES = {"t", "time"}
+_ACC_NAMES = {"a", "acc", "accel", "acceleration", "ag"}
+_QUALIFIERS = {"in", "of", "ground", "horizontal", "vertical", "hor", "ver", "vert", "h", "v",
+               "x", "y", "z", "n", "e", "ns", "ew", "ud", "up", "h1", "h2", "component",
+               "comp", "abs", "absolute", "input", "base", "table", "record", "value"}
 
 _DT_RTOL = 1e-6  # relative tolerance on time steps (uneven steps, dt disagreements)
 
@@ -102,7 +123,7 @@ def read_record(path, units: str = "g", dt: float | None = None) -> tuple[np.nda
     lines = text.splitlines()
     if _is_at2(p, lines):
         return _read_at2(p, lines, units, factor, dt)
-    return _read_columns(p, lines, units, factor, dt)
+    return _read_columns(p, lines, units, factor, dt, text.endswith(("\n", "\r")))
 
 
 def write_csv(record, path) -> Path:
@@ -238,20 +259,37 @@ def _tokens(line: str) -> list[str]:
 
 
 # ---- PEER NGA .AT2
+def _at2_factor(p: Path, lines: list[str], units: str, factor: float) -> tuple[float, str]:
+    """SI factor and name of the samples' unit: the one line 3 states (``UNITS OF G``; g if
+    it states none), which must agree with ``units``."""
+    line3 = lines[2] if len(lines) > 2 else ""
+    m_k, m_u = _AT2_KIND.search(line3), _AT2_UNITS.search(line3)
+    if m_k and m_k[1].upper() != "ACCELERATION":
+        raise RecordError(f"{p}, line 3: expected an acceleration time series in units of G, "
+                          f"got {line3.strip()!r}")
+    word = m_u[1] if m_u else "G"
+    key = acceleration_unit(word)
+    if key is None:
+        raise RecordError(f"{p}, line 3: unknown acceleration unit {word!r}; known: "
+                          f"{', '.join(ACCELERATION_UNITS)}")
+    if not _close(ACCELERATION[key], factor):
+        where = f"line 3 states units of {word}" if m_u else "a PEER .AT2 file is in g"
+        raise RecordError(f"{p}: the file is in {key} ({where}) but units={units!r} was "
+                          f"passed; pass units={key!r}")
+    return ACCELERATION[key], key
+
+
 def _read_at2(p: Path, lines: list[str], units: str, factor: float, dt: float | None):
-    if factor != G:
-        raise RecordError(
-            f"{p}: PEER .AT2 files are in g; got units={units!r} (leave units='g')"
-        )
     if len(lines) < 4:
         raise RecordError(
             f"{p}: not a valid PEER .AT2 file: expected 4 header lines, the 4th stating "
             f"'NPTS= <n>, DT= <s> SEC'; the file has only {len(lines)} line(s)"
         )
+    factor, unit_key = _at2_factor(p, lines, units, factor)
     hdr = lines[3]
     m_n, m_dt, m_alt = _AT2_NPTS.search(hdr), _AT2_DT.search(hdr), _AT2_ALT.match(hdr)
     if m_n and m_dt:
-        npts, step = int(m_n[1]), _float(m_dt[1])
+        npts, step = int(m_n[1]), _float(m_dt[1]) * _time_factor(p, 4, m_dt[2], "DT")
     elif m_alt:
         npts, step = int(m_alt[1]), _float(m_alt[2])
     else:
@@ -264,12 +302,6 @@ def _read_at2(p: Path, lines: list[str], units: str, factor: float, dt: float | 
                           f"states NPTS={npts}")
     if not (math.isfinite(step) and step > 0.0):
         raise RecordError(f"{p}, line 4: DT must be > 0 s, got {step!r}")
-    m_u = _AT2_UNITS.search(lines[2])
-    if m_u and m_u[1].upper() != "G":
-        raise RecordError(
-            f"{p}, line 3: expected an acceleration time series in units of G, "
-            f"got {lines[2].strip()!r}"
-        )
     if dt is not None and not _close(dt, step):
         raise RecordError(f"{p}: dt={dt:g} s was passed but the header (line 4) states "
                           f"DT={step:g} s")
@@ -288,7 +320,10 @@ def _read_at2(p: Path, lines: list[str], units: str, factor: float, dt: float | 
                 try:
                     float(tok)
                 except ValueError:
-                    raise RecordError(f"{p}, line {i + 1}: non-numeric value {tok!r}") from None
+                    cut = (" (the file looks cut)" if i == len(lines) - 1 and
+                           tok == _tokens(lines[i])[-1] else "")
+                    raise RecordError(f"{p}, line {i + 1}: non-numeric value {tok!r}"
+                                      f"{cut}") from None
         raise RecordError(f"{p}: cannot read the samples")  # pragma: no cover
     bad = np.flatnonzero(~np.isfinite(vals))
     if bad.size:
@@ -296,22 +331,54 @@ def _read_at2(p: Path, lines: list[str], units: str, factor: float, dt: float | 
         raise RecordError(f"{p}, line {ln}: NaN or infinite value {tokens[bad[0]]!r}")
     if vals.size < npts:
         raise RecordError(f"{p}: the header (line 4) states NPTS={npts} but only "
-                          f"{vals.size} values follow")
+                          f"{vals.size} values follow (the file looks cut)")
     if vals.size > npts:
         ln = _line_of_token(lines, first, npts)
         raise RecordError(f"{p}, line {ln}: {vals.size - npts} value(s) beyond "
                           f"NPTS={npts} stated in the header (line 4)")
+    _check_last_field(p, lines, first, tokens)
 
     desc = lines[1].strip()
     meta = {
         "name": p.stem, "format": "AT2", "path": str(p), "npts": npts, "dt": step,
-        "units": "g", "t_start": 0.0, "title": lines[0].strip(), "description": desc,
+        "units": unit_key, "t_start": 0.0, "title": lines[0].strip(), "description": desc,
         "header": [ln.rstrip() for ln in lines[:4]],
     }
     parts = [s.strip() for s in desc.split(",")]
     if len(parts) == 4:
         meta.update(event=parts[0], date=parts[1], station=parts[2], component=parts[3])
-    return vals * G, step, meta
+    return vals * factor, step, meta
+
+
+# the layout of a number: digits as 'd', signs dropped, exponent letter as 'E'
+_LAYOUT = str.maketrans({**{c: "d" for c in "0123456789"}, "+": None, "-": None,
+                         "e": "E", "D": "E"})
+
+
+def _check_last_field(p: Path, lines: list[str], first: int, tokens: list[str]) -> None:
+    """Refuse a file whose last value is shorter than the fixed format of all the others
+    (a file cut inside its last number: ``-.1094953E-0`` for ``-.1094953E-03``)."""
+    layouts = " ".join(tokens).translate(_LAYOUT).split()
+    last = layouts.pop()
+    ref = set(layouts)
+    if len(ref) != 1 or "." not in next(iter(ref)):
+        return  # not a fixed format: nothing to compare with
+    if last not in ref:
+        ln = _line_of_token(lines, first, len(tokens) - 1)
+        raise RecordError(f"{p}, line {ln}: the last value {tokens[-1]!r} does not have the "
+                          f"number format of all the others (like {tokens[-2]!r}): the file "
+                          "looks cut")
+
+
+def _time_factor(p: Path, line: int, word, what: str) -> float:
+    """SI factor of the time unit ``word`` stated for ``what`` on ``line`` (None: s)."""
+    if word is None or not word.strip():
+        return 1.0
+    key = time_unit(word)
+    if key is None:
+        raise RecordError(f"{p}, line {line}: unknown time unit {word!r} for {what}; known: "
+                          "s (sec, seconds), ms (msec, milliseconds), us (usec, microseconds)")
+    return TIME_FACTORS[key]
 
 
 def _line_of_token(lines: list[str], first: int, k: int) -> int:
@@ -338,43 +405,151 @@ def _is_numeric_line(s: str) -> bool:
     return True
 
 
-def _read_columns(p: Path, lines: list[str], units: str, factor: float, dt: float | None):
-    hdr_dt = hdr_units = None
-    header_text = None
+def _header_statements(p: Path, lines: list[str], i: int, s: str, found: dict) -> None:
+    """Collect ``dt``, ``npts`` and ``units`` stated on header line ``i`` (0-based)."""
+    ln = i + 1
+    m = _HDR_DT.search(s)
+    if m and "dt" not in found:
+        pre, pre_b, num, post_b, post = m.groups()
+        before, after = pre or pre_b, post_b if post_b is not None else post
+        f_before = _time_factor(p, ln, before, "dt")
+        f_after = _time_factor(p, ln, after, "dt")
+        if before and after and not _close(f_before, f_after):
+            raise RecordError(f"{p}, line {ln}: dt is stated in {before!r} and in {after!r}")
+        found["dt"] = (_float(num) * (f_before if before else f_after), ln)
+    m = _HDR_NPTS.search(s)
+    if m and "npts" not in found:
+        if not m[1].isdigit():
+            raise RecordError(f"{p}, line {ln}: npts must be a whole number, got {m[1]!r}")
+        found["npts"] = (int(m[1]), ln)
+    m = _HDR_UNITS.match(s)
+    if m and "units" not in found:
+        u = m[1]
+        key = acceleration_unit(u)
+        if key is None:
+            raise RecordError(f"{p}, line {ln}: unknown units {u!r} stated in the header; "
+                              f"use one of {', '.join(ACCELERATION_UNITS)}")
+        found["units"] = (u, key, ln)
+
+
+def _column_names(text: str, delim) -> list[str]:
+    """The column names of a header line (brackets kept with their name)."""
+    text = text.lstrip("#").strip()
+    if delim and delim in text:
+        parts = text.split(delim)
+    else:
+        text = re.sub(r"\s+(?=[(\[{])", "", text)  # "time (s)" -> "time(s)"
+        text = re.sub(r"[(\[{][^)\]}]*[)\]}]", lambda m: "".join(m[0].split()), text)
+        parts = text.split()
+    return [q.strip().strip("\"'").strip() for q in parts]
+
+
+def _name_unit(p: Path, ln: int, name: str):
+    """``(quantity, unit word)`` of a column name: quantity ``"time"``, ``"acc"`` or None;
+    the unit word or None. An unknown word where a unit goes raises a RecordError."""
+    b = list(re.finditer(_BRACKET, name))
+    base = re.sub(_BRACKET, " ", name)
+    words = [w for w in re.split(r"[\s_]+", base.strip().lower()) if w]
+    qty, k = None, -1
+    for j, w in enumerate(words):
+        if w in _TIME_NAMES or w in _ACC_NAMES:
+            qty, k = ("time" if w in _TIME_NAMES else "acc"), j
+    unit = b[-1][1] if b else None
+    if k >= 0:  # words after the quantity: qualifiers, then the unit
+        rest = words[k + 1:]
+        while rest and rest[0] in _QUALIFIERS:
+            rest = rest[1:]
+        while rest and rest[-1] in _QUALIFIERS and rest[-1] not in ("g",):
+            rest = rest[:-1]
+        if rest:
+            word = " ".join(rest)
+            if unit is not None:
+                raise RecordError(f"{p}, line {ln}: column {name!r} states two units, "
+                                  f"{word!r} and {unit!r}")
+            unit = word
+    if unit is not None and time_unit(unit) is None and acceleration_unit(unit) is None:
+        raise RecordError(f"{p}, line {ln}: unknown unit {unit!r} in column name {name!r}; "
+                          f"known: {', '.join(ACCELERATION_UNITS)}; s, ms, us")
+    return qty, unit
+
+
+def _column_units(p: Path, ln: int, text: str, delim, ncols: int):
+    """``(time unit, acceleration unit)`` (canonical names or None) from the header line
+    ``text`` (line ``ln``) of a file with ``ncols`` columns."""
+    names = _column_names(text, delim)
+    roles = ("time", "acc") if ncols == 2 else ("acc",)
+    t_unit = a_unit = None
+    if len(names) == ncols:
+        pairs = [(role, nm, *_name_unit(p, ln, nm)) for role, nm in zip(roles, names,
+                                                                          strict=True)]
+    else:  # names not separable: each unit word found, placed by its kind
+        pairs = [(None, nm, *_name_unit(p, ln, nm)) for nm in names]
+    for role, nm, qty, unit in pairs:
+        if role is not None and qty is not None and qty != role:
+            want = "the time" if role == "time" else "the acceleration"
+            raise RecordError(f"{p}, line {ln}: column {roles.index(role) + 1} is named "
+                              f"{nm!r} but holds {want}; expected "
+                              + ("'time, acceleration'" if ncols == 2 else "one acceleration"
+                                 " column"))
+        if unit is None:
+            continue
+        tu, au = time_unit(unit), acceleration_unit(unit)
+        kind = role or qty or ("time" if tu else "acc")
+        if kind == "time":
+            if tu is None or ncols == 1:
+                raise RecordError(f"{p}, line {ln}: column {nm!r}: {unit!r} is not a time unit"
+                                  if tu is None else f"{p}, line {ln}: column {nm!r} states "
+                                  f"a time unit ({unit!r}) but the file has one column "
+                                  "(acceleration)")
+            t_unit = tu
+        else:
+            if au is None:
+                raise RecordError(f"{p}, line {ln}: column {nm!r}: {unit!r} is not an "
+                                  f"acceleration unit ({', '.join(ACCELERATION_UNITS)})")
+            if a_unit is not None and a_unit != au:
+                raise RecordError(f"{p}, line {ln}: the header states two acceleration "
+                                  f"units, {a_unit!r} and {au!r}")
+            a_unit = au
+    return t_unit, a_unit
+
+
+def _looks_like_names(text: str, delim, ncols: int) -> bool:
+    """Whether a comment line such as ``# time_s, acc_g`` names the columns."""
+    names = _column_names(text, delim)
+    if len(names) != ncols:
+        return False
+    for nm in names:
+        words = re.split(r"[\s_(\[{]+", nm.lower())
+        if not words or (words[0] not in _TIME_NAMES and words[0] not in _ACC_NAMES):
+            return False
+    return True
+
+
+def _read_columns(p: Path, lines: list[str], units: str, factor: float, dt: float | None,
+                  ends_nl: bool = True):
+    found: dict = {}
+    header_text = header_ln = None
+    last_comment = None
     i = 0
     while i < len(lines):
-        raw = lines[i]
-        s = raw.strip()
+        s = lines[i].strip()
         if not s:
             i += 1
             continue
         if s.startswith("#") or (header_text is None
                                    and not _is_numeric_line(_strip_comment(s))):
             if not s.startswith("#"):
-                header_text = s
-            m = _HDR_DT.search(s)
-            if m and hdr_dt is None:
-                hdr_dt = (_float(m[1]) * (1e-3 if (m[2] or "").lower() == "ms" else 1.0), i + 1)
-            m = _HDR_UNITS.match(s)
-            if m and hdr_units is None:
-                hdr_units = (m[1], i + 1)
+                header_text, header_ln = s, i + 1
+            else:
+                last_comment = (s, i + 1)
+            _header_statements(p, lines, i, s, found)
             i += 1
             continue
         break
     if i >= len(lines):
         raise RecordError(f"{p}: no data (the file holds only comments or a header line)")
 
-    # units stated in the file must agree with the units passed
-    if hdr_units is not None:
-        u, ln = hdr_units
-        try:
-            f_hdr = acceleration_factor(u)
-        except UnitError:
-            raise RecordError(f"{p}, line {ln}: unknown units {u!r} stated in the header; "
-                              "use one of g, m/s^2, cm/s^2, gal") from None
-        if not _close(f_hdr, factor):
-            raise RecordError(f"{p}, line {ln}: the file states units {u!r} but units="
-                              f"{units!r} was passed; pass units={u!r}")
+    hdr_dt = found.get("dt")
     if hdr_dt is not None:
         v, ln = hdr_dt
         if not (math.isfinite(v) and v > 0.0):
@@ -388,8 +563,10 @@ def _read_columns(p: Path, lines: list[str], units: str, factor: float, dt: floa
     first_data = _strip_comment(lines[first])
     # ';' first: with decimal commas ("0,01;1,5") a ',' split would misread the numbers
     delim = ";" if ";" in first_data else ("," if "," in first_data else None)
+    # whitespace-only lines are blank lines (loadtxt would count their empty field)
+    body = "\n".join(ln if ln.strip() else "" for ln in lines[first:])
     try:
-        arr = np.loadtxt(_io.StringIO("\n".join(lines[first:])), delimiter=delim,
+        arr = np.loadtxt(_io.StringIO(body), delimiter=delim,
                          comments="#", ndmin=2, dtype=np.float64, quotechar='"')
     except ValueError as e:
         _raise_column_problem(p, lines, first, delim, str(e))
@@ -405,8 +582,37 @@ def _read_columns(p: Path, lines: list[str], units: str, factor: float, dt: floa
         raise RecordError(f"{p}, line {first + 1}: a record needs at least 2 samples, "
                           f"found {n}")
 
+    # units stated in the file (column names, '# units:') must agree with the units passed
+    t_unit = a_unit = None
+    names_text, names_ln = header_text, header_ln
+    if names_text is None and last_comment is not None and last_comment[1] == first and \
+            _looks_like_names(last_comment[0], delim, ncols):
+        names_text, names_ln = last_comment
+    if names_text is not None:
+        t_unit, a_unit = _column_units(p, names_ln, names_text, delim, ncols)
+    stated = []
+    if "units" in found:
+        u, key, ln = found["units"]
+        stated.append((u, key, f"line {ln}"))
+    if a_unit is not None:
+        stated.append((a_unit, a_unit, f"line {names_ln} (column names)"))
+    for u, key, where in stated:
+        if not _close(ACCELERATION[key], factor):
+            raise RecordError(f"{p}, {where}: the file states units {u!r} but units="
+                              f"{units!r} was passed; pass units={key!r}")
+    unit_name = stated[0][1] if stated else (acceleration_unit(units) or str(units))
+
+    npts = found.get("npts")
+    if npts is not None and npts[0] != n:
+        raise RecordError(f"{p}, line {npts[1]}: the header states npts = {npts[0]} but "
+                          f"{n} samples were read" + (" (the file looks cut)"
+                                                      if n < npts[0] else ""))
+    if not ends_nl:
+        _check_cut_columns(p, lines, first, delim, npts is not None)
+
     if ncols == 2:
-        t, a = arr[:, 0], arr[:, 1]
+        tf = TIME_FACTORS[t_unit] if t_unit else 1.0
+        t, a = arr[:, 0] * tf, arr[:, 1]
         steps = np.diff(t)
         back = np.flatnonzero(steps <= 0.0)
         if back.size:
@@ -445,11 +651,39 @@ def _read_columns(p: Path, lines: list[str], units: str, factor: float, dt: floa
 
     meta = {
         "name": p.stem, "format": "columns" if delim is None else "csv", "path": str(p),
-        "npts": n, "dt": step, "units": units, "t_start": t_start, "columns": ncols,
+        "npts": n, "dt": step, "units": unit_name, "t_start": t_start, "columns": ncols,
     }
+    if ncols == 2:
+        meta["time_units"] = t_unit or "s"
     if header_text is not None:
         meta["header"] = header_text
     return np.ascontiguousarray(a * factor), step, meta
+
+
+def _check_cut_columns(p: Path, lines: list[str], first: int, delim, declared: bool) -> None:
+    """Checks of a column file that does not end with a line break (a cut file): refused
+    if it declares its length (``# npts``), or if its last value does not have the fixed
+    format of the values above it (``-1.094953e-0`` below ``...e-03`` values)."""
+    last_j = max(j for j in range(first, len(lines)) if _strip_comment(lines[j]))
+    if declared:
+        raise RecordError(f"{p}, line {last_j + 1}: the file declares npts but does not end "
+                          "with a line break after its last value: the file looks cut (add "
+                          "the line break if the file is complete)")
+
+    def fields(j):
+        r = _strip_comment(lines[j])
+        return [t.strip().strip('"') for t in (r.split(delim) if delim else r.split())]
+
+    toks = fields(last_j)
+    above = [fields(j) for j in range(max(first, last_j - 50), last_j)
+             if _strip_comment(lines[j])]
+    col = len(toks) - 1
+    layouts = {r[col].translate(_LAYOUT) if len(r) > col else "" for r in above}
+    (ref,) = layouts if len(layouts) == 1 else ("",)
+    if "." in ref and "E" in ref and toks[col].translate(_LAYOUT) != ref:  # fixed E format
+        raise RecordError(f"{p}, line {last_j + 1}: the last value {toks[col]!r} does not "
+                          f"have the number format of the values above it (like "
+                          f"{above[-1][col]!r}): the file looks cut")
 
 
 def _data_line_numbers(lines: list[str], first: int) -> list[int]:

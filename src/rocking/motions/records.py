@@ -16,8 +16,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validate import as_float, positive
+from .._validate import as_float, positive, warn_implausible
 from ..errors import RecordError
+from ..units import G
 from . import _kernel as K
 from .base import Motion
 from .io import read_builtin, read_record
@@ -61,6 +62,7 @@ class Record(Motion):
         object.__setattr__(self, "acc", acc)
         object.__setattr__(self, "dt", positive("dt", self.dt, "s"))
         object.__setattr__(self, "scale", as_float("scale", self.scale))
+        _check_plausible(acc, self.dt, self.name)
 
     @classmethod
     def from_file(cls, path, units: str = "g", dt: float | None = None, **kw) -> Record:
@@ -150,6 +152,25 @@ class Record(Motion):
         nm = f"{self.name!r}, " if self.name else ""
         sc = f", scale={self.scale:g}" if self.scale != 1.0 else ""
         return f"Record({nm}n={self.acc.size}, dt={self.dt:g} s, pga={self.pga:.3f} m/s^2{sc})"
+
+
+PLAUSIBLE_PGA = 5.0 * G
+"""A record whose PGA (m/s^2, before the load factor) is above this gets a warning."""
+PLAUSIBLE_DT = 0.1
+"""A record whose time step (s) is above this gets a warning."""
+
+
+def _check_plausible(acc: np.ndarray, dt: float, name: str) -> None:
+    """Warn (:class:`~rocking._validate.PlausibilityWarning`) on a PGA above 5 g or a time
+    step above 0.1 s: valid, but most likely a unit mistake."""
+    what = f"record {name!r}" if name else "record"
+    pga = float(np.max(np.abs(acc)))
+    if pga > PLAUSIBLE_PGA:
+        warn_implausible(f"{what}: PGA {pga / G:.3g} g is above 5 g; check the units "
+                         "(acc is in m/s^2; a file in cm/s^2 or gal needs units='cm/s^2')")
+    if dt > PLAUSIBLE_DT:
+        warn_implausible(f"{what}: time step {dt:g} s is above 0.1 s; check that dt is in "
+                         "seconds")
 
 
 def sample(motion: Motion, dt: float, duration: float | None = None) -> Record:
