@@ -388,7 +388,8 @@ def _blk():
 
 
 BAD_CALLS = [
-    ("duration", lambda f: f(_blk(), None)),
+    ("max_free_time", lambda f: f(_blk(), None, max_free_time=-1.0)),
+    ("max_free_time", lambda f: f(_blk(), None, duration=1.0, max_free_time=5.0)),
     ("duration", lambda f: f(_blk(), None, duration=-1.0)),
     ("theta0", lambda f: f(_blk(), None, duration=1.0, theta0=2.0)),
     ("rtol", lambda f: f(_blk(), None, duration=1.0, theta0=0.1, rtol=0.0)),

@@ -41,8 +41,8 @@ def _lin_rk4(th, om, t, h, s, alpha, p2, kind, prm, samples):
 
 
 @njit(cache=True)
-def _linear_kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_om,
-                   imp, extra):
+def _linear_kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th,
+                   out_om, imp, extra):
     """The linearised classical model with ground motion, written independently of
     rocking.models.housner: constant-step RK4 that steps onto the kinks of the motion,
     impacts by bisection on a cubic Hermite interpolant, Eq 4 at impacts, rest and uplift
@@ -60,9 +60,10 @@ def _linear_kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_
     n_out = out_th.shape[0]
     while t < t_end - 1e-12:
         if resting:
-            t, k, d, t_up = rest_advance(kind, prm, samples, t, t_end, h_scan, thr, alpha,
-                                         dt_out, k,
-                                         out_th, out_om, t_up)
+            if t >= t_quiet:  # the ground is still: at rest for good
+                break
+            t, k, d, t_up = rest_advance(kind, prm, samples, t, min(t_end, t_quiet), h_scan,
+                                         thr, alpha, dt_out, k, out_th, out_om, t_up)
             if d == 0.0:
                 break
             resting, s = False, d
@@ -105,7 +106,7 @@ def _linear_kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_
             over, peak = True, 0.5 * math.pi
             t_over = t - h * (abs(th) - 0.5 * math.pi) / max(abs(th) - abs(th_prev), 1e-300)
             break
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0, math.nan
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0, math.nan, over or resting
 
 
 @njit(cache=True, parallel=True)

@@ -11,6 +11,10 @@ One convention for every model:
   the whole run (``impact_times`` keeps the first ``max_impacts`` of them); the DEM counts
   a zero crossing once ``|theta|`` has exceeded its ``impact_tol`` since the previous one
   (contact springs make tiny oscillations at rest);
+* ``settled``: the block was at rest or had overturned when the run ended. With the
+  default ``duration`` a run goes on after the motion until it has settled, up to
+  ``max_free_time`` (:func:`rocking.simulate`); an unsettled run's outcome may still
+  change, so it is flagged, never silently counted as a survivor;
 * the default output interval is :data:`DEFAULT_DT_OUT` everywhere;
 * every result has ``summary()`` (a small JSON-ready dict) and ``to_dict()`` (everything,
   JSON-ready).
@@ -83,6 +87,10 @@ class Response:
     lift_off_time: float = math.nan
     """Time (s) at which the base fell away from the block (``g + a_v <= 0``, a vertical
     motion); the classical and CCRR models stop there. NaN if it never happened."""
+    settled: bool = True
+    """True if the block was at rest or had overturned when the run ended (the classical
+    model also settles a block whose outcome the energy decides exactly; see
+    :mod:`rocking.models.housner`). False: it was still moving (extend the duration)."""
 
     @property
     def lifted_off(self) -> bool:
@@ -142,6 +150,7 @@ class Response:
             "n_impacts": int(self.n_impacts),
             "lifted_off": self.lifted_off,
             "lift_off_time": self.lift_off_time,
+            "settled": bool(self.settled),
             "duration": self.duration,
         }
         blk = _block_dict(self.block)
@@ -230,8 +239,10 @@ class BatchResponse:
     not happen; ``lifted_off`` marks the runs stopped because the block left the ground
     (``g + a_v <= 0`` under a vertical motion, classical and CCRR models).
     ``theta``/``omega`` (shape ``(n_motions, n_times)``) are present only when histories
-    were requested; after the end of a run (an overturn) they are NaN. ``status`` is 0
-    for a successful run (see ``errors=`` of :func:`rocking.simulate_many`).
+    were requested; after the end of a run (an overturn, or the block at rest after the
+    motion) they are NaN. ``status`` is 0 for a successful run (see ``errors=`` of
+    :func:`rocking.simulate_many`). ``settled`` is True where the block was at rest or
+    had overturned when the run ended (see :class:`Response`).
     """
 
     max_abs_theta: np.ndarray
@@ -248,10 +259,13 @@ class BatchResponse:
     block: object = None
     info: dict = field(default_factory=dict)
     lift_off_time: np.ndarray | None = None
+    settled: np.ndarray | None = None
 
     def __post_init__(self):
         if self.lift_off_time is None:
             self.lift_off_time = np.full(np.shape(self.max_abs_theta), np.nan)
+        if self.settled is None:
+            self.settled = np.ones(np.shape(self.max_abs_theta), dtype=bool)
 
     @property
     def lifted_off(self) -> np.ndarray:
@@ -278,6 +292,7 @@ class BatchResponse:
             "n_impacts": self.n_impacts,
             "lifted_off": self.lifted_off,
             "lift_off_time": self.lift_off_time,
+            "settled": self.settled,
         })
 
     def summary(self) -> dict:
@@ -296,6 +311,7 @@ class BatchResponse:
             "max_max_abs_theta_survived": float(np.max(surv)) if surv.size else None,
             "n_impacts_sum": int(np.sum(self.n_impacts)),
             "n_lifted_off": int(np.count_nonzero(self.lifted_off)),
+            "n_unsettled": int(np.count_nonzero(~self.settled)),
             "n_failed": int(np.count_nonzero(self.status)) if self.status is not None else 0,
         }
         blk = _block_dict(self.block)
@@ -308,6 +324,7 @@ class BatchResponse:
         """Everything, JSON-ready: the summary, the per-motion arrays and the histories."""
         d = self.summary()
         for k in ("max_abs_theta", "overturned", "overturn_time", "uplift_time", "n_impacts",
-                  "lifted_off", "lift_off_time", "n_steps", "status", "t", "theta", "omega"):
+                  "lifted_off", "lift_off_time", "settled", "n_steps", "status", "t", "theta",
+                  "omega"):
             d[k] = jsonable(getattr(self, k))
         return d

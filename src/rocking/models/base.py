@@ -21,14 +21,17 @@ A subclass of :class:`Model` provides
     bad values raise :class:`~rocking.errors.ParameterError` naming the option and the
     allowed range; unknown options are rejected too.
 ``kernel`` : a compiled (numba) function, the single-run kernel
-    ``kernel(mp, kind, prm, samples, t_end, theta0, omega0, h_scan, dt_out, out_th,
-    out_om, imp, extra) -> (n_out, n_impacts, max_abs_theta, overturned, overturn_time,
-    uplift_time, n_steps, status, lift_off_time)``.
+    ``kernel(mp, kind, prm, samples, t_end, t_quiet, theta0, omega0, h_scan, dt_out,
+    out_th, out_om, imp, extra) -> (n_out, n_impacts, max_abs_theta, overturned,
+    overturn_time, uplift_time, n_steps, status, lift_off_time, settled)``.
 
     * ``mp`` is the model's own parameter tuple (:meth:`Model.kernel_params`);
     * ``(kind, prm, samples)`` is the motion spec (:mod:`rocking.motions._kernel`; evaluate
       it with ``ground_acc`` and step onto ``next_breakpoint``), ``h_scan`` a time step
       that resolves it (s), ``t_end`` the simulated time (s);
+    * ``t_quiet`` (s): from this time on the ground is still (the motion has ended), and
+      the kernel stops as soon as the block is *settled*, at rest or overturned (``inf``:
+      run to ``t_end`` whatever the state, as for an explicit ``duration``);
     * ``theta0``, ``omega0``: the initial state (rad, rad/s; both 0: at rest);
     * the kernel writes ``theta`` and ``omega`` at ``k * dt_out`` into ``out_th``,
       ``out_om`` (length 0: no history), impact times into ``imp`` up to its length
@@ -39,7 +42,10 @@ A subclass of :class:`Model` provides
       pi/2), the overturning and uplift times (s, NaN if none), the number of steps, a
       ``status`` (0: success; otherwise a code that :meth:`Model.failure` explains) and
       the lift-off time (s): when a vertical motion makes ``g + a_v <= 0`` and the model
-      cannot represent flight, it stops there and returns that time (NaN otherwise).
+      cannot represent flight, it stops there and returns that time (NaN otherwise);
+      and ``settled``: whether the block was at rest or had overturned when the run
+      ended (a model may also call a block settled whose outcome it has decided exactly,
+      as the classical model does by energy, see :mod:`rocking.models.housner`).
       Times with no event are NaN, the one convention of the package.
     * a vertical component, if any, travels in ``prm`` and ``samples``
       (:mod:`rocking.motions._kernel`: ``has_vertical``, ``vertical_acc``); it is positive
@@ -274,11 +280,11 @@ def row_args(i, rows, extra0):
     """The kernel arguments (after ``mp``) of row ``i`` of a batch.
 
     ``rows = (kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, res_f,
-    res_i, theta0, omega0)`` as built by :func:`rocking.models.run.simulate_many`."""
+    res_i, theta0, omega0, t_quiets)`` as built by :func:`rocking.models.run.simulate_many`."""
     kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om = rows[:9]
-    th0, om0 = rows[11], rows[12]
-    return (kinds[i], prms[i], samples[i, : nsamp[i]], t_ends[i], th0[i], om0[i], h_scans[i],
-            dt_out, out_th[i], out_om[i], np.empty(0), extra0)
+    th0, om0, t_quiets = rows[11], rows[12], rows[13]
+    return (kinds[i], prms[i], samples[i, : nsamp[i]], t_ends[i], t_quiets[i], th0[i], om0[i],
+            h_scans[i], dt_out, out_th[i], out_om[i], np.empty(0), extra0)
 
 
 @njit(cache=True)
@@ -291,9 +297,9 @@ def same_block(mp, b):
 def store_row(i, res, rows):
     """Store the kernel result ``res`` of row ``i``:
     ``res_f[i] = (max_abs_theta, overturn_time, uplift_time, lift_off_time)``,
-    ``res_i[i] = (n_impacts, overturned, n_steps, status)``; the history past the written
-    samples is NaN."""
-    k, n_imp, peak, over, t_over, t_up, n_steps, status, t_lift = res
+    ``res_i[i] = (n_impacts, overturned, n_steps, status, settled)``; the history past the
+    written samples is NaN."""
+    k, n_imp, peak, over, t_over, t_up, n_steps, status, t_lift, settled = res
     out_th, out_om, res_f, res_i = rows[7], rows[8], rows[9], rows[10]
     out_th[i, k:] = math.nan
     out_om[i, k:] = math.nan
@@ -305,3 +311,4 @@ def store_row(i, res, rows):
     res_i[i, 1] = 1 if over else 0
     res_i[i, 2] = n_steps
     res_i[i, 3] = status
+    res_i[i, 4] = 1 if settled else 0

@@ -199,12 +199,13 @@ def _amp_chi_g(x, v, alpha, l, gf):
 
 
 @njit(cache=True)
-def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fixed, rest_chi,
-              chi_start, h_max, h_scan, dt_out, out_th, out_om, imp):
+def integrate(alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, dt_fixed,
+              rest_chi, chi_start, h_max, h_scan, dt_out, out_th, out_om, imp):
     """Integrate one CCRR simulation. Returns
     (n_out, n_impacts, max_abs_theta, overturned, overturn_time, uplift_time, n_steps, ok,
-    lift_off_time).
-    ``dt_fixed > 0`` selects constant steps; otherwise adaptive with ``rtol``.
+    lift_off_time, settled).
+    ``dt_fixed > 0`` selects constant steps; otherwise adaptive with ``rtol``. From
+    ``t_quiet`` on the ground is still: the run stops once the block is at rest.
     """
     c = 2.0 * math.log(mu) / math.pi
     ct = math.tan(alpha)
@@ -242,10 +243,12 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
     h = dt_fixed if fixed else min(h_max, 1e-3 / p)
     while t < t_end - 1e-12:
         if resting:
-            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, t_end, h_scan, thr, ct,
-                                           dt_out, k, out_th, out_om, t_up)
+            if t >= t_quiet - 1e-12:
+                break  # the ground is still: at rest for good
+            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, min(t_end, t_quiet), h_scan,
+                                           thr, ct, dt_out, k, out_th, out_om, t_up)
             resting = d == 0.0
-            if resting:  # still at rest at t_end
+            if resting:  # still at rest at t_end (or t_quiet)
                 break
             if d == E.LIFT_OFF:
                 t_lift = t
@@ -345,22 +348,23 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fix
         if not fixed:
             fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
             h = hh * min(5.0, max(0.2, fac))
-    return k, n_imp, peak, overturned, t_over, t_up, n_steps, ok, t_lift
+    settled = ok and (overturned or resting)
+    return k, n_imp, peak, overturned, t_over, t_up, n_steps, ok, t_lift, settled
 
 
 @njit(cache=True)
-def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_om, imp,
-           extra):
+def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th, out_om,
+           imp, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
     alpha, p, mu, l, rtol, dt_fixed, rest_tol = mp
     chi_c = (l * l * alpha / math.sin(alpha)) ** (1.0 / 3.0)  # orbit that l sustains
     rest_chi = max(rest_tol, 2.0 * chi_c)
     chi_start = math.sqrt(l)
     h_max = min(0.05 / p, 8.0 * h_scan)
-    k, n_imp, peak, over, t_over, t_up, n_steps, ok, t_lift = integrate(
-        alpha, p, mu, l, kind, prm, samples, t_end, th0, om0, rtol, dt_fixed, rest_chi,
-        chi_start, h_max, h_scan, dt_out, out_th, out_om, imp)
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, t_lift
+    k, n_imp, peak, over, t_over, t_up, n_steps, ok, t_lift, settled = integrate(
+        alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, dt_fixed,
+        rest_chi, chi_start, h_max, h_scan, dt_out, out_th, out_om, imp)
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, t_lift, settled
 
 
 @njit(cache=True)

@@ -180,13 +180,53 @@ def _amplitude_from_energy(om, alpha, p2, lin):
 
 
 @njit(cache=True)
-def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest_tol,
-              h_max, h_scan, dt_out, out_th, out_om, imp):
+def free_outcome(th, om, s, alpha, p2, mu, lin):
+    """The outcome of free rocking (no ground motion) from ``(th, om)`` on pivot ``s``,
+    decided by energy: ``(overturns, amplitude)``.
+
+    Between impacts ``E = om^2/2 + p^2 cos(alpha - |th|)`` is conserved (Eq 1 with
+    ``a = 0``; ``om^2/2 - p^2 (|th| - alpha)^2 / 2`` when linear); an impact (Eq 4)
+    multiplies ``om^2`` at ``th = 0``, i.e. the energy above the rest position, by
+    ``mu^2``. Moving away from ``th = 0`` the block overturns iff ``E`` exceeds the
+    potential at ``|th| = alpha``; moving towards it, iff the energy after the next impact
+    does (past ``|th| = alpha`` it falls unless it comes back over the top); after that
+    every impact lowers the energy, so it never overturns. Otherwise it
+    returns to rest and ``amplitude`` is the largest ``|th|`` it will still reach (0 if
+    none beyond ``|th|``): exact for the classical model.
+    """
+    a = abs(th)
+    if lin:
+        e = 0.5 * om * om - 0.5 * p2 * (a - alpha) ** 2
+        top = 0.0
+        bottom = -0.5 * p2 * alpha * alpha
+    else:
+        e = 0.5 * om * om + p2 * math.cos(alpha - a)
+        top = p2
+        bottom = p2 * math.cos(alpha)
+    away = th * om > 0.0 or (th == 0.0 and s * om > 0.0)
+    if a > alpha and (away or e <= top):
+        return True, HALF_PI  # past the tipping point and not coming back over it
+    if not away:
+        e = bottom + mu * mu * (e - bottom)
+    if e > top:
+        return True, HALF_PI
+    if lin:
+        amp = alpha - math.sqrt(max(-2.0 * e / p2, 0.0))
+    else:
+        amp = alpha - math.acos(min(e / p2, 1.0))
+    return False, amp
+
+
+@njit(cache=True)
+def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,
+              rest_tol, h_max, h_scan, dt_out, out_th, out_om, imp):
     """Integrate one simulation. Returns (n_out, n_impacts, max_abs_theta, overturned,
-    overturn_time, uplift_time, n_steps, lift_off_time).
+    overturn_time, uplift_time, n_steps, lift_off_time, settled).
 
     ``out_th``/``out_om`` receive the history at ``k*dt_out`` (length 0: none stored);
-    ``imp`` receives impact times up to its length (impacts are counted beyond it).
+    ``imp`` receives impact times up to its length (impacts are counted beyond it). From
+    ``t_quiet`` on the ground is still: the run stops once the block is at rest; a block
+    still rocking at ``t_end > t_quiet`` is decided by :func:`free_outcome` (exact).
     """
     p2 = p * p
     c = alpha if lin else math.tan(alpha)
@@ -205,6 +245,7 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
     n_steps = 0
     peak = abs(th0)
     overturned = False
+    decided = False
     t_over = math.nan
     t_up = math.nan
     resting = th0 == 0.0 and om0 == 0.0
@@ -216,10 +257,27 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
     h = min(h_max, 0.01 / p)
     a_cur = 0.0
     need_a = True
-    while t < t_end - 1e-12:
+    free_time = t_end - t_quiet  # the cap of the free motion (when t_quiet < t_end)
+    extended = False
+    while True:
+        if not t < t_end - 1e-12:
+            if resting or overturned or t_quiet > t_end or extended:
+                break
+            # the cap of the free motion: the energy decides the outcome exactly
+            will, amp = free_outcome(th, om, s, alpha, p2, mu, lin)
+            if not will:
+                peak = max(peak, amp)
+                decided = True
+                break
+            # it will overturn: follow it there (once more the cap at most)
+            t_end = t + max(free_time, 1.0 / p)
+            extended = True
+            continue
         if resting:
-            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c,
-                                           dt_out, k, out_th, out_om, t_up)
+            if t >= t_quiet - 1e-12:
+                break  # the ground is still: at rest for good
+            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, min(t_end, t_quiet),
+                                           h_scan, thr, c, dt_out, k, out_th, out_om, t_up)
             if d == 0.0:
                 break
             if d == E.LIFT_OFF:
@@ -328,19 +386,20 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest
             need_a = True  # the excitation has a kink or jump here
         fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
         h = hh * min(5.0, max(0.2, fac)) if not hit_bp or hh >= h else max(h, hh)
-    return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift
+    settled = overturned or decided or (resting and t_lift != t_lift)
+    return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
 
 
 @njit(cache=True)
-def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_om, imp,
-           extra):
+def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th, out_om,
+           imp, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
     alpha, p, mu, lin, rtol, rest_tol = mp
     h_max = min(0.05 / p, 8.0 * h_scan)
-    k, n_imp, peak, over, t_over, t_up, n_steps, t_lift = integrate(
-        alpha, p, mu, lin, kind, prm, samples, t_end, th0, om0, rtol, rest_tol, h_max,
-        h_scan, dt_out, out_th, out_om, imp)
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift
+    k, n_imp, peak, over, t_over, t_up, n_steps, t_lift, settled = integrate(
+        alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, rest_tol,
+        h_max, h_scan, dt_out, out_th, out_om, imp)
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled
 
 
 @njit(cache=True)

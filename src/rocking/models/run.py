@@ -13,7 +13,7 @@ import math
 import numba
 import numpy as np
 
-from .._validate import as_float, in_range, positive, sequence_of
+from .._validate import as_float, in_range, non_negative, positive, sequence_of
 from ..blocks import Block, Stack
 from ..errors import OutputTooLargeError, ParameterError, SimulationError
 from ..motions import Motion
@@ -27,6 +27,21 @@ MAX_OUTPUT_BYTES = 2 * 1024 ** 3
 """Largest memory (bytes) the output buffers of one call may take (the memory guard)."""
 MAX_IMPACTS = 100_000
 """Default number of impact times kept by a single run (all impacts are counted)."""
+DEFAULT_MAX_FREE_TIME = 60.0
+"""Default cap (s) of the free motion after the ground motion ends (``duration=None``).
+
+Free rocking decays geometrically: each impact multiplies the angular velocity by
+``mu`` (Eq 4) and a half-cycle of amplitude ``a alpha`` lasts ``~ (2/p) sqrt(2 a)``
+(linearised Eq 1), so a block released from any amplitude below ``alpha`` comes to rest
+within ``T = 2 sqrt(2) / (p (1 - mu))``. For Housner's ``mu = 1 - 1.5 sin^2(alpha)``
+(Eq 4) that is 18 s for specimen 2 (``alpha = 0.168``, ``p = 3.8``) and 60 s for a block
+with ``p = 1.5 1/s`` (about 4.5 m tall) and ``alpha = 0.2`` (``mu = 0.94``): 60 s lets
+every block with ``p >= 1.5 1/s`` and ``alpha >= 0.2``, or ``p >= 3`` and
+``alpha >= 0.14``, settle from any amplitude. More slender or larger blocks may end
+unsettled (flagged by ``settled``) in the CCRR and DEM models; the classical model
+decides every block at the cap exactly, by energy (:func:`rocking.models.housner.free_outcome`).
+The tail costs little: most runs end at rest or overturned long before the cap
+(``benchmarks/bench_campaign.py --only tail``)."""
 
 
 def get_model(model) -> type[Model]:
@@ -45,7 +60,7 @@ def get_model(model) -> type[Model]:
 
 def _make(model, block, linear: bool, options: dict) -> Model:
     cls = get_model(model)
-    if linear:
+    if check_linear(linear):
         if "linear" not in {f for f in cls.Options.__dataclass_fields__}:
             raise ParameterError(f"linear=True is not available for model {cls.name!r} "
                                  "(use model='housner')")
@@ -60,7 +75,8 @@ def _guard(n_values: int, extra: int, dt_out: float, duration: float) -> None:
         raise OutputTooLargeError(
             f"dt_out = {dt_out:g} s over a duration of {duration:g} s needs "
             f"{need / 1e9:.3g} GB of output (limit {MAX_OUTPUT_BYTES / 1e9:.3g} GB): "
-            "increase dt_out or shorten the duration")
+            "increase dt_out or shorten the duration (with duration=None a run may go on "
+            "max_free_time seconds after the motion)")
 
 
 def _n_out(duration: float, dt_out: float) -> int:
@@ -70,26 +86,54 @@ def _n_out(duration: float, dt_out: float) -> int:
     return int(math.floor(n + 1e-9)) + 1
 
 
+# ================================================================================ window
+def run_window(motion, duration=None, max_free_time=None) -> tuple[float, float]:
+    """``(t_end, t_quiet)`` of a run (s): where it stops at the latest, and from when the
+    ground is still, so that it stops as soon as the block has settled.
+
+    An explicit ``duration`` is the run's length exactly (``t_quiet = inf``). With
+    ``duration=None`` the run covers the motion (``max(motion.duration,
+    motion.quiet_time)``; 0 for free rocking) and goes on with the ground still until
+    the block is at rest or has overturned, at most ``max_free_time`` more seconds
+    (default :data:`DEFAULT_MAX_FREE_TIME`).
+    """
+    if duration is not None:
+        if max_free_time is not None:
+            raise ParameterError("max_free_time applies only with duration=None (a run "
+                                 "with an explicit duration stops exactly there)")
+        return positive("duration", duration, "s"), math.inf
+    free = DEFAULT_MAX_FREE_TIME if max_free_time is None else non_negative(
+        "max_free_time", max_free_time, "s")
+    t_quiet = 0.0 if motion is None else max(motion.duration, motion.quiet_time)
+    return t_quiet + free, t_quiet
+
+
 # ================================================================================ single
-def check_run(motion, duration, theta0, omega0) -> tuple[float, float, float]:
-    """Validated ``(duration, theta0, omega0)`` of a single run (``duration`` defaults to
-    the motion's; it is required for free rocking)."""
+def check_run(motion, duration, theta0, omega0, max_free_time=None
+              ) -> tuple[float, float, float, float]:
+    """Validated ``(t_end, t_quiet, theta0, omega0)`` of a single run
+    (:func:`run_window`)."""
     if motion is not None and not isinstance(motion, Motion):
         raise ParameterError(f"motion must be a rocking.motions.Motion or None, "
                              f"got {type(motion).__name__}")
-    if duration is None:
-        if motion is None:
-            raise ParameterError("duration is required for free rocking (motion=None), in s > 0")
-        duration = motion.duration
-    duration = positive("duration", duration, "s")
+    t_end, t_quiet = run_window(motion, duration, max_free_time)
     theta0 = in_range("theta0", theta0, -HALF_PI, HALF_PI, shown="(-pi/2, pi/2) rad")
     omega0 = as_float("omega0", omega0)
-    return duration, theta0, omega0
+    return t_end, t_quiet, theta0, omega0
+
+
+def check_linear(linear) -> bool:
+    """``linear`` as a bool: only ``True`` or ``False`` (a string such as ``"false"``
+    would otherwise select the linear model)."""
+    if not isinstance(linear, bool | np.bool_):
+        raise ParameterError(f"linear must be True or False, got {linear!r}")
+    return bool(linear)
 
 
 def simulate(block, motion=None, model="housner", duration: float | None = None,
              theta0: float = 0.0, omega0: float = 0.0, linear: bool = False, *,
-             dt_out: float = DEFAULT_DT_OUT, max_impacts: int = MAX_IMPACTS, **options):
+             max_free_time: float | None = None, dt_out: float = DEFAULT_DT_OUT,
+             max_impacts: int = MAX_IMPACTS, **options):
     """Simulate one block under one base motion and return a :class:`~rocking.Response`.
 
     Parameters
@@ -104,11 +148,17 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
         A registered name (``"housner"``: classical model, Eq 1; ``"ccrr"``: Eq 10;
         ``"dem"``: discrete elements) or a :class:`rocking.models.Model` subclass.
     duration : float, optional
-        Simulated time (s). Defaults to ``motion.duration``; required for free rocking.
+        Simulated time (s), exactly. By default (``None``) the run covers the motion and
+        goes on, with the ground still, until the block is at rest or has overturned
+        (``Response.settled``), at most ``max_free_time`` longer: a block still falling
+        when the record ends is not reported as a survivor.
     theta0, omega0 : float
         Initial angle (rad, in (-pi/2, pi/2)) and angular velocity (rad/s).
     linear : bool
-        The small-angle form of Eq 1 (models with a ``linear`` option).
+        The small-angle form of Eq 1 (models with a ``linear`` option); a bool.
+    max_free_time : float, optional
+        Cap (s) of the free motion after the ground motion ends, with ``duration=None``
+        (default :data:`DEFAULT_MAX_FREE_TIME`, 60 s; see there why).
     dt_out : float
         Output interval of the time history (s).
     max_impacts : int
@@ -118,12 +168,17 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
         ``rest_tol`` for ``"housner"``. Unknown options are an error.
     """
     m = _make(model, block, linear, options)
-    duration, theta0, omega0 = check_run(motion, duration, theta0, omega0)
+    duration, t_quiet, theta0, omega0 = check_run(motion, duration, theta0, omega0,
+                                                  max_free_time)
     dt_out = positive("dt_out", dt_out, "s")
+    if isinstance(max_impacts, bool | np.bool_) or not isinstance(max_impacts,
+                                                                   int | np.integer):
+        raise ParameterError(f"max_impacts must be a whole number in [0, 1e7], "
+                             f"got {max_impacts!r}")
     cap = in_range("max_impacts", max_impacts, 0, 1e7, lo_open=False, hi_open=False,
                    shown="[0, 1e7]")
     if motion is None:
-        kind, prm, samples, h_scan = 0, np.zeros(NPRM), np.empty(0), duration
+        kind, prm, samples, h_scan = 0, np.zeros(NPRM), np.empty(0), max(duration, 1.0)
     else:
         (kind, prm, samples), h_scan = motion.spec(), motion.scan_step
     n_out = _n_out(duration, dt_out)
@@ -133,9 +188,9 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     imp = np.empty(max(1, int(cap)))
     extra = m.extra_buffers(n_out)
     mp = m.kernel_params(dt_out, theta0, omega0)
-    k, n_imp, peak, over, t_over, t_up, n_steps, status, t_lift = type(m).kernel(
-        mp, kind, prm, samples, duration, theta0, omega0, h_scan, dt_out, out_th, out_om,
-        imp, extra)
+    k, n_imp, peak, over, t_over, t_up, n_steps, status, t_lift, settled = type(m).kernel(
+        mp, kind, prm, samples, duration, t_quiet, theta0, omega0, h_scan, dt_out, out_th,
+        out_om, imp, extra)
     if status != 0:
         raise SimulationError(m.failure(int(status), k * dt_out))
     t = np.arange(k) * dt_out
@@ -151,15 +206,16 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
         max_abs_theta=float(peak), overturned=bool(over),
         overturn_time=float(t_over) if over else math.nan, uplift_time=float(t_up),
         n_impacts=int(n_imp), model=m.result_name, block=block, motion=motion, info=info,
-        lift_off_time=float(t_lift),
+        lift_off_time=float(t_lift), settled=bool(settled),
         **fields)
 
 
 # ================================================================================= batch
-def pack_motions(motions, duration=None):
+def pack_motions(motions, duration=None, max_free_time=None):
     """Pack motions into padded arrays for the batch kernels.
 
-    Returns ``kinds, prms, samples, nsamp, t_ends, h_scans``.
+    Returns ``kinds, prms, samples, nsamp, t_ends, h_scans, t_quiets`` (the window of each
+    run: :func:`run_window`).
     """
     if isinstance(motions, Motion):
         motions = [motions]
@@ -172,12 +228,11 @@ def pack_motions(motions, duration=None):
         samples[i, : s[2].size] = s[2]
     kinds = np.array([s[0] for s in specs], dtype=np.int64)
     prms = np.stack([s[1] for s in specs])
-    if duration is None:
-        t_ends = np.array([mo.duration for mo in motions], dtype=np.float64)
-    else:
-        t_ends = np.full(n, positive("duration", duration, "s"))
+    windows = np.array([run_window(mo, duration, max_free_time) for mo in motions],
+                       dtype=np.float64).reshape(n, 2)
     h_scans = np.array([mo.scan_step for mo in motions], dtype=np.float64)
-    return kinds, prms, samples, nsamp, t_ends, h_scans
+    return (kinds, prms, samples, nsamp, windows[:, 0].copy(), h_scans,
+            windows[:, 1].copy())
 
 
 def _per_row(name: str, value, n: int, lo: float = -math.inf, hi: float = math.inf,
@@ -207,8 +262,8 @@ def _blocks(cls: type[Model], block, n: int) -> list:
 
 def simulate_many(block, motions, model="housner", duration: float | None = None,
                   linear: bool = False, *, theta0=0.0, omega0=0.0,
-                  return_histories: bool = False, dt_out: float = DEFAULT_DT_OUT,
-                  errors: str = "raise", **options):
+                  max_free_time: float | None = None, return_histories: bool = False,
+                  dt_out: float = DEFAULT_DT_OUT, errors: str = "raise", **options):
     """Simulate blocks under many motions in one compiled, parallel call.
 
     ``block`` is one block for every motion, or one block per motion (Monte Carlo over the
@@ -226,12 +281,18 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     :class:`~rocking.errors.SimulationError` if a run fails numerically;
     ``errors="nan"`` marks it with a non-zero ``status`` and NaN ``max_abs_theta`` and
     times instead (its ``overturned`` and ``n_impacts`` are those reached before the
-    failure). ``duration`` defaults to each motion's own duration. Other arguments as in
-    :func:`simulate`.
+    failure). ``duration=None`` (default): each run covers its motion and goes on until
+    the block has settled, at most ``max_free_time`` more (``settled`` flags the runs
+    that had not); an explicit ``duration`` is every run's length exactly. Other
+    arguments as in :func:`simulate`.
     """
     if errors not in ("raise", "nan"):
         raise ParameterError(f"errors must be 'raise' or 'nan', got {errors!r}")
-    kinds, prms, samples, nsamp, t_ends, h_scans = pack_motions(motions, duration)
+    if not isinstance(return_histories, bool | np.bool_):
+        raise ParameterError(f"return_histories must be True or False, "
+                             f"got {return_histories!r}")
+    kinds, prms, samples, nsamp, t_ends, h_scans, t_quiets = pack_motions(
+        motions, duration, max_free_time)
     n = kinds.size
     cls = get_model(model)
     blocks = _blocks(cls, block, n)
@@ -250,9 +311,9 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     out_th = np.empty((n, n_out))
     out_om = np.empty((n, n_out))
     res_f = np.empty((n, 4))
-    res_i = np.zeros((n, 4), dtype=np.int64)
+    res_i = np.zeros((n, 5), dtype=np.int64)
     rows = (kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, res_f, res_i,
-            th0, om0)
+            th0, om0, t_quiets)
     nb = len(cls.block_row(blocks[0]))
     if nb or len({id(b) for b in blocks}) == 1:
         bp = np.array([cls.block_row(b) for b in blocks], dtype=np.float64).reshape(n, nb)
@@ -282,4 +343,5 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
         theta=out_th if return_histories else None,
         omega=out_om if return_histories else None,
         model=m.result_name, block=block, info=m.info(), lift_off_time=res_f[:, 3].copy(),
+        settled=res_i[:, 4].astype(bool) & (status == 0),
     )

@@ -42,6 +42,13 @@ class Motion:
         """A time step that resolves the motion (s): used to scan for uplift from rest."""
         raise NotImplementedError
 
+    @property
+    def quiet_time(self) -> float:
+        """The time (s) from which the ground acceleration is zero for good: a run with
+        the default ``duration`` goes on past ``max(duration, quiet_time)`` only while the
+        block still moves (:func:`rocking.simulate`)."""
+        raise NotImplementedError
+
     # ---- shared behaviour
     def spec(self) -> tuple[int, np.ndarray, np.ndarray]:
         """``(kind, prm, samples)`` for the compiled kernels."""

@@ -80,6 +80,11 @@ class GroundMotion(Motion):
         return d if self.vertical is None else max(d, self.vertical.duration)
 
     @property
+    def quiet_time(self) -> float:
+        q = self.horizontal.quiet_time
+        return q if self.vertical is None else max(q, self.vertical.quiet_time)
+
+    @property
     def kind(self) -> int:  # the horizontal motion's kind
         return self.horizontal.kind
 

@@ -69,6 +69,10 @@ class Sine(Motion):
     def scan_step(self) -> float:
         return 1.0 / (64.0 * self.freq)
 
+    @property
+    def quiet_time(self) -> float:
+        return self.duration  # the table stops at the end of the window
+
 
 @dataclass(frozen=True)
 class HanningSine(Motion):
@@ -94,3 +98,7 @@ class HanningSine(Motion):
     @property
     def scan_step(self) -> float:
         return 1.0 / (64.0 * self.freq)
+
+    @property
+    def quiet_time(self) -> float:
+        return self.duration  # the table stops at the end of the window

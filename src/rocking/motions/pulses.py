@@ -62,6 +62,10 @@ class _Pulse(Motion):
     def scan_step(self) -> float:
         return self.length / 128.0
 
+    @property
+    def quiet_time(self) -> float:
+        return self.t0 + self.length
+
 
 @dataclass(frozen=True)
 class OneSine(_Pulse):
@@ -123,6 +127,11 @@ class Ricker(Motion):
     @property
     def scan_step(self) -> float:
         return 1.0 / (128.0 * self.fp)
+
+    @property
+    def quiet_time(self) -> float:
+        # |a| < 6e-16 A beyond tc + 2/fp (x = 2 pi): below double precision of the peak
+        return self.tc + 2.0 / self.fp
 
 
 @functools.lru_cache(maxsize=256)
@@ -242,3 +251,7 @@ class MavroeidisPapageorgiou(Motion):
     @property
     def scan_step(self) -> float:
         return 1.0 / (128.0 * self.fp)
+
+    @property
+    def quiet_time(self) -> float:
+        return self.t0 + self.half_length

@@ -97,6 +97,10 @@ class Record(Motion):
     def scan_step(self) -> float:
         return self.dt
 
+    @property
+    def quiet_time(self) -> float:
+        return self.duration
+
     # ---- conveniences
     @property
     def t(self) -> np.ndarray:

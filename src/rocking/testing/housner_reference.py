@@ -335,7 +335,7 @@ def _free_amplitude(om, alpha, p, linear):
 def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0,
                        linear=False, rtol=1e-8, atol=None, method="DOP853",
                        rest_tol=DEFAULT_REST_TOL,
-                       dt_out=None):
+                       dt_out=None, max_free_time=None):
     """Classical model integrated with :func:`scipy.integrate.solve_ivp` and events.
 
     Parameters
@@ -344,7 +344,10 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
     motion : Motion or None
         ``None``: free rocking from ``theta0``, ``omega0`` (then ``duration`` is required).
     duration : float, optional
-        Simulated time (s); defaults to ``motion.duration``.
+        Simulated time (s), exactly; by default the motion and then free rocking until
+        the block is at rest or has overturned, at most ``max_free_time`` more
+        (:func:`rocking.models.run.run_window`; here no energy decision at the cap: a
+        block still rocking there is unsettled).
     theta0, omega0 : float
         Initial angle (rad, in ``(-pi/2, pi/2)``) and angular velocity (rad/s).
     linear : bool
@@ -369,7 +372,8 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
     # input validation is shared with the compiled model (the physics below is not)
     opts = Housner.from_kwargs(block, rtol=rtol, rest_tol=rest_tol).options
     rtol, rest_tol = opts.rtol, opts.rest_tol
-    t_end, theta0, omega0 = check_run(motion, duration, theta0, omega0)
+    t_end, t_quiet, theta0, omega0 = check_run(motion, duration, theta0, omega0,
+                                               max_free_time)
     if method not in METHODS:
         raise ParameterError(f"method must be one of {', '.join(METHODS)}; got {method!r}")
     if dt_out is not None:
@@ -403,10 +407,13 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
 
     while t < t_end:
         if resting:
-            up = _first_exceedance(exc, t, t_end, thr, c_up)
+            if t >= t_quiet:
+                break  # the ground is still: at rest for good
+            t_stop = min(t_end, t_quiet)
+            up = _first_exceedance(exc, t, t_stop, thr, c_up)
             if up is None:
-                pieces.append((t, t_end, None))
-                t = t_end
+                pieces.append((t, t_stop, None))
+                t = t_stop
                 break
             tu, sgn = up
             if tu > t:
@@ -512,7 +519,7 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         t = tb
 
     t_stop = t_over if overturned else (lift_off_time if has_v and lift_off_time == t
-                                        else t_end)
+                                        else t)
     t_out, th_out, om_out = _history(pieces, dt_out, t_stop)
     return Response(
         t=t_out, theta=th_out, omega=om_out, impact_times=np.asarray(impacts, dtype=float),
@@ -523,6 +530,7 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         motion=motion,
         info={"rtol": rtol, "method": method, "n_solve_ivp": n_calls, "nfev": int(nfev)},
         lift_off_time=lift_off_time,
+        settled=overturned or (resting and math.isnan(lift_off_time)),
     )
 
 

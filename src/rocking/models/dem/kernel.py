@@ -197,10 +197,14 @@ def _forces(pos, vel, t, dt, lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, c
 
 @njit(cache=True)
 def integrate(lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, coh, kind,
-              prm, samples, t_end, dt, every, pos, vel, fs, sedge, nominal, iout, th_tol,
-              resting, out_pos, out_vel, out_e, out_f, imp):
+              prm, samples, t_end, t_quiet, dt, every, pos, vel, fs, sedge, nominal, iout,
+              th_tol, resting, out_pos, out_vel, out_e, out_f, imp):
     """Integrate from ``pos``/``vel`` (updated in place) until ``t_end``. Returns
-    ``(n_out, n_impacts, max|theta|, overturned, overturn_time, uplift_time, n_steps, ok)``.
+    ``(n_out, n_impacts, max|theta|, overturned, overturn_time, uplift_time, n_steps, ok,
+    settled)``.
+
+    From ``t_quiet`` on the ground is still, and the run stops at the first output step
+    at which every block is at rest (:func:`at_rest`).
 
     Output every ``every`` steps into ``out_pos``/``out_vel`` (n_out, N, 3) (length 0:
     none), energies (kinetic, potential, spring) into ``out_e`` and slot forces into
@@ -227,6 +231,8 @@ def integrate(lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, 
     t_over = math.nan
     t_up = math.nan if resting else 0.0
     ok = True
+    settled = False
+    q_step = int(math.ceil(t_quiet / dt - 1e-9)) if t_quiet < t_end else n_steps + 1
     step = 0
     while True:
         t = step * dt
@@ -270,7 +276,12 @@ def integrate(lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, 
             overturned = True
             t_over = t
             break
+        if step >= q_step and step % every == 0 and at_rest(pos, vel, mass, inertia, rad,
+                                                             th_tol):
+            settled = True
+            break
         if step >= n_steps:
+            settled = at_rest(pos, vel, mass, inertia, rad, th_tol)
             break
         th_old = pos[iout, 2]
         for i in range(n):
@@ -302,7 +313,22 @@ def integrate(lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, 
             if a >= HALF_PI:
                 t_over -= dt * (a - HALF_PI) / max(a - abs(th_old), 1e-300)
             break
-    return k, n_imp, peak, overturned, t_over, t_up, step, ok
+    return k, n_imp, peak, overturned, t_over, t_up, step, ok, settled or overturned
+
+
+@njit(cache=True)
+def at_rest(pos, vel, mass, inertia, rad, th_tol):
+    """Every block at rest: ``|theta| <= th_tol`` and a kinetic energy below
+    ``m g R th_tol^2`` (``R``: the block's radius), far below the energy of a rocking
+    amplitude of ``th_tol`` (``~ m g R sin(alpha) th_tol``): the motion left is the
+    vibration of the contact springs."""
+    for i in range(mass.shape[0]):
+        if abs(pos[i, 2]) > th_tol:
+            return False
+        ke = 0.5 * (mass[i] * (vel[i, 0] ** 2 + vel[i, 1] ** 2) + inertia[i] * vel[i, 2] ** 2)
+        if ke > mass[i] * G * rad[i] * th_tol * th_tol:
+            return False
+    return True
 
 
 @njit(cache=True)
@@ -346,8 +372,8 @@ def _probe(pos, lv, lvn, len_, nv, rad, rr, tol, out):
 
 
 @njit(cache=True)
-def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_om, imp,
-           extra):
+def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th, out_om,
+           imp, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`).
 
     ``mp`` holds the packed assembly, the contact parameters, the step and the initial
@@ -366,14 +392,14 @@ def kernel(mp, kind, prm, samples, t_end, th0, om0, h_scan, dt_out, out_th, out_
         op = np.empty((n_out, n, 3))
         ov = np.empty((n_out, n, 3))
     resting = th0 == 0.0 and om0 == 0.0
-    k, n_imp, peak, over, t_over, t_up, n_steps, ok = integrate(
+    k, n_imp, peak, over, t_over, t_up, n_steps, ok, settled = integrate(
         lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, coh, kind, prm,
-        samples, t_end, dt, every, pos0.copy(), vel0.copy(), fs0.copy(), sedge0.copy(),
+        samples, t_end, t_quiet, dt, every, pos0.copy(), vel0.copy(), fs0.copy(), sedge0.copy(),
         nominal, iout, th_tol, resting, op, ov, out_e, out_f, imp)
     for j in range(k):
         out_th[j] = op[j, iout, 2]
         out_om[j] = ov[j, iout, 2]
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, math.nan
+    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, math.nan, ok and settled
 
 
 @njit(cache=True, parallel=True)
