@@ -73,6 +73,36 @@ def _style(ax, xlabel: str | None = None, ylabel: str | None = None):
     return ax
 
 
+_IM_NAMES = {"pga": "PGA", "pgv": "PGV", "pgd": "PGD", "arias": "Arias intensity",
+             "pga_ratio": r"PGA / ($g\,\tan\alpha$)",
+             "pgv_ratio": r"PGV $p$ / ($g\,\tan\alpha$)",
+             "im": "intensity measure"}
+_UNIT_TEX = {"m/s^2": r"m/s$^2$", "m/s2": r"m/s$^2$", "mps2": r"m/s$^2$",
+             "cm/s^2": r"cm/s$^2$", "cm/s2": r"cm/s$^2$", "mm/s^2": r"mm/s$^2$",
+             "mps": "m/s", "1/s": r"s$^{-1}$"}
+
+
+def unit_label(unit: str | None) -> str:
+    """A unit for an axis label, exponents in mathtext (``m/s^2`` -> ``m/s$^2$``); ``""``
+    for a dimensionless or unknown unit (``None``, ``""``, ``"-"``)."""
+    if unit is None:
+        return ""
+    u = str(unit).strip()
+    if u in ("", "-", "unitless", "1"):
+        return ""
+    return _UNIT_TEX.get(u, u.replace("^2", "$^2$") if "$" not in u else u)
+
+
+def im_label(name: str | None, unit: str | None = None) -> str:
+    """An axis label for an intensity measure: its name (``pga`` -> ``PGA``, the keys of
+    :data:`rocking.analysis.ida.IMS`) and its unit in parentheses, e.g. ``PGA (m/s$^2$)``;
+    ``"intensity measure"`` when the name is not known."""
+    key = "im" if not name else str(name)
+    text = _IM_NAMES.get(key.lower(), key)
+    u = unit_label(unit)
+    return f"{text} ({u})" if u else text
+
+
 def _angle_label(deg: bool) -> str:
     return r"rocking angle $\theta$ (deg)" if deg else r"rocking angle $\theta$ (rad)"
 

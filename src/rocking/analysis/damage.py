@@ -153,18 +153,32 @@ class FragilityCurves:
         return d
 
     def plot(self, ax=None, *, level: float = 0.95, band: bool = True, data: bool = True):
-        """Every state's curve (with its band and data); returns the Axes."""
+        """Every state's curve (with its band and data); returns the Axes.
+
+        One legend entry per state (its median, in the IM's unit, and beta) and one for
+        the bands, outside the axes on the right so that it covers no curve."""
 
         if ax is None:
-            _, ax = figure()
+            _, ax = figure(figsize=(8.0, 3.6))
         lo = min(f.median * math.exp(-2.5 * f.beta) for f in self.fits)
         hi = max(f.median * math.exp(2.5 * f.beta) for f in self.fits)
         lo, hi = min(lo, self.fits[0].im_range[0]), max(hi, self.fits[0].im_range[1])
         x = np.geomspace(lo, hi, 200)
+        unit = f" {self.fits[0].im_unit}" if self.fits[0].im_unit else ""
         for i, f in enumerate(self.fits):
             f.plot(ax, level=level, band=band, data=data, im=x,
                    color=PALETTE[i % len(PALETTE)],
-                   label=f"{f.label} (median {f.median:.3g}, beta {f.beta:.2f})")
+                   label=f"{f.label}\n(median {f.median:.3g}{unit}, beta {f.beta:.2f})")
+        handles, labels = ax.get_legend_handles_labels()
+        keep = [k for k, t in enumerate(labels) if "band" not in t]
+        if band and len(keep) < len(labels):  # one entry for all the bands, in grey
+            from matplotlib.patches import Patch
+
+            first = next(t for t in labels if "band" in t)
+            handles = [handles[k] for k in keep] + [Patch(color="0.6", alpha=0.35, lw=0)]
+            labels = [labels[k] for k in keep] + [first]
+        ax.legend(handles, labels, frameon=False, fontsize="small", loc="upper left",
+                  bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
         return ax
 
 
@@ -191,7 +205,8 @@ def _cuts(params: np.ndarray) -> np.ndarray:
 
 def fragility_curves(im, state=None, *, ratio=None, overturned=None,
                      thresholds=DEFAULT_THRESHOLDS, method: str = "common_beta",
-                     n_boot: int = 1000, seed: int | None = 0, bootstrap: str = "normal"):
+                     n_boot: int = 1000, seed: int | None = 0, bootstrap: str = "normal",
+                     im_name: str = "im", im_unit: str | None = None):
     """Fragility curves ``P(DS >= k | im)`` of every damage state k >= 1.
 
     Give the integer ``state`` of each record (:func:`damage_state`), or ``ratio``
@@ -201,7 +216,8 @@ def fragility_curves(im, state=None, *, ratio=None, overturned=None,
     ``exp(t_{k-1} / b)``, standard errors by the delta method; the ``"normal"``
     bootstrap draws all parameters jointly, so no draw crosses either.
     ``method="separate"``: one :func:`fragility` per state, refused if two curves cross
-    within the data's IM range. Baker (2015); pelicun's limit-state families.
+    within the data's IM range. ``im_name`` and ``im_unit`` as in :func:`fragility` (every
+    state's fit carries them). Baker (2015); pelicun's limit-state families.
     """
 
     if method not in METHODS:
@@ -239,7 +255,8 @@ def fragility_curves(im, state=None, *, ratio=None, overturned=None,
     thr = None if t is None else tuple(t.tolist())
     if method == "separate":
         fits = tuple(fragility(x, s >= k, n_boot=n_boot, seed=seed, bootstrap=bootstrap,
-                               label=labels[k - 1]) for k in range(1, n_states + 1))
+                               label=labels[k - 1], im_name=im_name, im_unit=im_unit)
+                     for k in range(1, n_states + 1))
         _check_no_crossing(fits, x.min(), x.max())
         return FragilityCurves(fits, thr, method, labels)
     if bootstrap != "normal":
@@ -276,7 +293,8 @@ def fragility_curves(im, state=None, *, ratio=None, overturned=None,
         boot = np.column_stack([-boot_cuts[:, j], draws[:, 0]]) if n_boot else \
             np.empty((0, 2))
         fits.append(_make_fit(coef, jac @ pcov @ jac.T, "ordered probit, common beta",
-                              data, boot, bootstrap, seed, 0, llf, labels[j]))
+                              data, boot, bootstrap, seed, 0, llf, labels[j], im_name,
+                              im_unit))
     return FragilityCurves(tuple(fits), thr, method, labels)
 
 

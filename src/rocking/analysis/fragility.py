@@ -11,8 +11,12 @@ A fragility curve is ``P(failure | IM = im) = Phi(ln(im / median) / beta)``.
   that never failed (scipy's ``CensoredData`` and ``lognorm.fit(..., floc=0)``).
 * :func:`annual_frequency` integrates a fit over a hazard curve (Cornell et al. 2002).
 
-IMs are in SI units (PGA in m/s^2) or dimensionless; :meth:`FragilityFit.to_pelicun`
-converts the median at the edge, to the units of a pelicun fragility table.
+A fit carries the name and unit of its IM (``im_name``, ``im_unit``: ``fragility(...,
+im_name="pga", im_unit="m/s^2")``), which label its plot and let :func:`annual_frequency`
+refuse a hazard curve in another unit (a hazard in g integrated with a fit in m/s^2 is off
+by orders of magnitude, with no error). The package's IMs are in SI units (PGA in m/s^2)
+or dimensionless; :meth:`FragilityFit.to_pelicun` converts the median at the edge, to the
+units of a pelicun fragility table.
 
 References: J. W. Baker (2015), Efficient analytical fragility function fitting using
 dynamic structural analysis, Earthquake Spectra 31(1). C. A. Cornell et al. (2002),
@@ -33,9 +37,9 @@ from scipy.stats import norm
 
 from .._validate import in_range
 from ..errors import ParameterError, SimulationError
-from ..plot import PALETTE, _style, figure
+from ..plot import PALETTE, _style, figure, im_label
 from ..results import jsonable
-from ..units import G
+from ..units import ACCELERATION, G
 
 #: How the bootstrap band is drawn: ``"normal"`` draws the curve's coefficients from
 #: the asymptotic normal distribution of the MLE (vectorised, cheap); ``"resample"``
@@ -58,6 +62,41 @@ PELICUN_UNITS = {
     "unitless": ("unitless", 1.0), "ea": ("unitless", 1.0), "rad": ("unitless", 1.0),
 }
 _SI_UNIT = {"acceleration": "mps2", "velocity": "mps", "length": "m", "unitless": "unitless"}
+
+#: Units an IM may be stated in (``im_unit``): ``(kind, SI value of one unit)``, with the
+#: package's spellings (``m/s^2``) beside pelicun's (``mps2``).
+IM_UNITS = {
+    **{k: ("acceleration", v) for k, v in ACCELERATION.items()},
+    **PELICUN_UNITS,
+    "m/s": ("velocity", 1.0), "cm/s": ("velocity", 0.01), "-": ("unitless", 1.0),
+}
+
+
+def _unit(name: str, unit) -> str | None:
+    """``unit`` as a stripped string (None stays None: not stated)."""
+    if unit is None:
+        return None
+    if not isinstance(unit, str):
+        raise ParameterError(f"{name} must be a unit string such as 'm/s^2' or 'g', or "
+                             f"None, got {unit!r}")
+    return unit.strip()
+
+
+def _unit_info(u: str):
+    """``(kind, SI value)`` of an IM unit, None if unknown."""
+    for key in (u, u.replace(" ", ""), u.replace(" ", "").lower()):
+        if key in IM_UNITS:
+            return IM_UNITS[key]
+    return None
+
+
+def _same_unit(a: str, b: str) -> bool:
+    """Whether two IM units are the same quantity in the same unit (``m/s^2`` and
+    ``mps2`` are; ``g`` and ``m/s^2`` are not)."""
+    ka, kb = _unit_info(a), _unit_info(b)
+    if ka is None or kb is None:
+        return a.replace(" ", "").lower() == b.replace(" ", "").lower()
+    return ka[0] == kb[0] and math.isclose(ka[1], kb[1], rel_tol=1e-12)
 
 #: Columns of a pelicun fragility (damage model) table, before the limit-state columns.
 PELICUN_COLUMNS = ("Incomplete", "Demand-Type", "Demand-Unit", "Demand-Offset",
@@ -203,7 +242,9 @@ class FragilityFit:
     ``coef = (b0, b1)`` are the probit coefficients on ``ln im`` (``median = exp(-b0/b1)``,
     ``beta = 1/b1``) and ``coef_cov`` their covariance; ``cov`` is the covariance of
     ``(median, beta)`` by the delta method. ``boot_coef`` holds the ``n_boot`` bootstrap
-    coefficient pairs behind :meth:`band`.
+    coefficient pairs behind :meth:`band`. ``median`` is in the IM's unit ``im_unit``
+    (``None``: not stated); ``im_name`` names the IM (``"pga"``, ...). The scalar fields are
+    plain Python floats; the repr is one short line (no arrays).
     """
 
     median: float
@@ -223,6 +264,34 @@ class FragilityFit:
     n_boot_failed: int = 0
     loglike: float = math.nan
     label: str = "failure"
+    im_name: str = "im"
+    im_unit: str | None = None
+
+    def __post_init__(self):
+        for k in ("median", "beta", "median_se", "beta_se", "loglike"):
+            setattr(self, k, float(getattr(self, k)))
+        self.n_boot_failed = int(self.n_boot_failed)
+        self.im_name = str(self.im_name)
+        self.im_unit = _unit("im_unit", self.im_unit)
+
+    def __repr__(self) -> str:
+        unit = f" {self.im_unit}" if self.im_unit else ""
+        n = self._counts().get("n")
+        return (f"FragilityFit({self.label!r}, {self.im_name}: median {self.median:.4g}{unit}"
+                f", beta {self.beta:.3g}, n {n}, {self.method}, n_boot {self.n_boot})")
+
+    def _counts(self) -> dict:
+        if self.data is None:
+            return {}
+        if "n" in self.data:
+            return {"n": int(self.data["n"].sum()), "n_failed": int(self.data["n_failed"].sum()),
+                    "n_stripes": len(self.data)}
+        return {"n": len(self.data), "n_censored": int(self.data["censored"].sum())}
+
+    @property
+    def im_axis_label(self) -> str:
+        """The IM and its unit for a plot axis, e.g. ``PGA (m/s$^2$)``."""
+        return im_label(self.im_name, self.im_unit)
 
     @property
     def n_boot(self) -> int:
@@ -275,16 +344,13 @@ class FragilityFit:
     def summary(self) -> dict:
         """JSON-ready summary: the parameters, their standard errors and 95% bootstrap
         intervals, the data counts."""
-        d = {"label": self.label, "method": self.method, "median": self.median,
+        d = {"label": self.label, "im_name": self.im_name, "im_unit": self.im_unit,
+             "method": self.method, "median": self.median,
              "beta": self.beta, "median_se": self.median_se, "beta_se": self.beta_se,
              "cov": self.cov, "loglike": self.loglike, "bootstrap": self.bootstrap,
              "n_boot": self.n_boot, "n_boot_failed": self.n_boot_failed, "seed": self.seed,
              "im_range": self.im_range}
-        if "n" in self.data:
-            d.update(n=int(self.data["n"].sum()), n_failed=int(self.data["n_failed"].sum()),
-                     n_stripes=len(self.data))
-        else:
-            d.update(n=len(self.data), n_censored=int(self.data["censored"].sum()))
+        d.update(self._counts())
         if self.n_boot:
             ci = self.ci(0.95)
             d.update(median_ci95=ci["median"], beta_ci95=ci["beta"])
@@ -308,8 +374,9 @@ class FragilityFit:
         Columns: ``Incomplete``, ``Demand-Type``, ``Demand-Unit``, ``Demand-Offset``,
         ``Demand-Directional``, ``LS1-Family`` (``lognormal``), ``LS1-Theta_0`` (the median,
         in ``Demand-Unit``) and ``LS1-Theta_1`` (beta, dimensionless). ``im_unit`` is the
-        unit of the fitted IM: by default the SI unit of ``demand_unit``'s kind (m/s^2 for
-        ``g``). ``path`` also writes the CSV.
+        unit of the fitted IM: by default the fit's own ``im_unit``, else the SI unit of
+        ``demand_unit``'s kind (m/s^2 for ``g``); one that contradicts the fit's is refused.
+        ``path`` also writes the CSV.
         """
         return pelicun_table([self], id=id, demand_type=demand_type,
                              demand_unit=demand_unit, im_unit=im_unit,
@@ -335,7 +402,7 @@ class FragilityFit:
                             label=f"{100 * level:g}% band ({_BAND_NAME[self.bootstrap]})")
         if data:
             self._plot_data(ax, color)
-        _style(ax, "intensity measure", "probability of exceedance")
+        _style(ax, self.im_axis_label, "probability of exceedance")
         ax.set_ylim(-0.02, 1.02)
         ax.legend(frameon=False, fontsize="small")
         return ax
@@ -363,6 +430,22 @@ def pelicun_table(fits, *, id: str, demand_type: str, demand_unit: str,
         raise ParameterError(f"demand_unit must be one of pelicun's units "
                              f"{sorted(PELICUN_UNITS)}, got {demand_unit!r}")
     kind, to_si = PELICUN_UNITS[demand_unit]
+    stated = {f.im_unit for f in fits if getattr(f, "im_unit", None)}
+    if len(stated) > 1:
+        raise ParameterError(f"the fits have different IM units {sorted(stated)}: one "
+                             "pelicun row needs one")
+    if im_unit is None and stated:
+        own = stated.pop()
+        im_unit = next((k for k, v in PELICUN_UNITS.items()
+                        if k == own or v == _unit_info(own)), None)
+        if im_unit is None:
+            raise ParameterError(f"im_unit: the fits' IM unit {own!r} is not one of "
+                                 f"pelicun's units {sorted(PELICUN_UNITS)}; give im_unit")
+    elif im_unit is not None and stated:
+        own = stated.pop()
+        if not _same_unit(own, im_unit):
+            raise ParameterError(f"im_unit={im_unit!r} contradicts the fits' IM unit "
+                                 f"{own!r}")
     im_unit = _SI_UNIT[kind] if im_unit is None else im_unit
     if im_unit not in PELICUN_UNITS or PELICUN_UNITS[im_unit][0] != kind:
         raise ParameterError(f"im_unit must be a {kind} unit of {sorted(PELICUN_UNITS)} "
@@ -399,7 +482,8 @@ def _stripes(x: np.ndarray, y: np.ndarray):
 
 
 def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
-              bootstrap: str = "normal", label: str = "failure") -> FragilityFit:
+              bootstrap: str = "normal", label: str = "failure", im_name: str = "im",
+              im_unit: str | None = None) -> FragilityFit:
     """A lognormal fragility curve fitted by maximum likelihood (Baker 2015).
 
     ``im``: the IM of each record (> 0, SI units or dimensionless); ``failed``: its
@@ -416,10 +500,16 @@ def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
     has a single record) and refits each replicate; replicates with separated data are
     skipped and counted in ``n_boot_failed``.
 
+    ``im_name`` and ``im_unit`` name the IM and its unit (e.g. ``"pga"``, ``"m/s^2"``, as
+    in the ``attrs`` of an :func:`~rocking.analysis.ida` table); the fit carries them to its
+    plot, to :func:`annual_frequency` (which then refuses a hazard curve in another unit)
+    and to :meth:`FragilityFit.to_pelicun`.
+
     Raises :class:`~rocking.ParameterError` for bad input, and when the MLE does not
     exist: no failure, all failed, or outcomes perfectly separated by the IM.
     """
 
+    im_unit = _unit("im_unit", im_unit)
     x, y = records(im, failed)
     n_boot, rng, bootstrap = _n_boot(n_boot), _rng(seed), _bootstrap(bootstrap)
     _check_separation(x, y)
@@ -439,7 +529,7 @@ def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
         boot, n_fail = _resample_glm(levels, n, k, x, y, inv, n_boot, rng)
     return _make_fit(coef, coef_cov, "glm-probit (Baker 2015)",
                      pd.DataFrame({"im": levels, "n": n, "n_failed": k}), boot, bootstrap,
-                     seed, n_fail, float(res.llf), label)
+                     seed, n_fail, float(res.llf), label, im_name, im_unit)
 
 
 def _resample_glm(levels, n, k, x, y, inv, n_boot, rng):
@@ -465,14 +555,15 @@ def _resample_glm(levels, n, k, x, y, inv, n_boot, rng):
     return (np.array(out) if out else np.empty((0, 2))), failed
 
 
-def _make_fit(coef, coef_cov, method, data, boot, bootstrap, seed, n_fail, llf, label):
+def _make_fit(coef, coef_cov, method, data, boot, bootstrap, seed, n_fail, llf, label,
+              im_name="im", im_unit=None):
     cov = _delta(coef, coef_cov)
     return FragilityFit(
         median=math.exp(-coef[0] / coef[1]), beta=1.0 / coef[1],
         median_se=math.sqrt(cov[0, 0]), beta_se=math.sqrt(cov[1, 1]), cov=cov, coef=coef,
         coef_cov=coef_cov, method=method, data=data, boot_coef=np.asarray(boot, float),
         bootstrap=bootstrap, seed=seed if isinstance(seed, int | type(None)) else None,
-        n_boot_failed=n_fail, loglike=llf, label=label)
+        n_boot_failed=n_fail, loglike=llf, label=label, im_name=im_name, im_unit=im_unit)
 
 
 # --------------------------------------------------------------------------- IDA
@@ -492,7 +583,8 @@ def _lognorm_fit(cap, cens):
 
 
 def fragility_ida(capacity, censored=None, *, n_boot: int = 1000, seed: int | None = 0,
-                  bootstrap: str = "normal", label: str = "failure") -> FragilityFit:
+                  bootstrap: str = "normal", label: str = "failure", im_name: str = "im",
+                  im_unit: str | None = None) -> FragilityFit:
     """A lognormal fragility curve from IDA capacities, with right-censoring.
 
     ``capacity``: per record, the IM at which it first failed; for a ``censored`` record
@@ -507,10 +599,12 @@ def fragility_ida(capacity, censored=None, *, n_boot: int = 1000, seed: int | No
     level). Treating them as failing at the top level biases it low too. The censored
     likelihood uses exactly what is known about them.
 
-    ``n_boot``, ``seed`` and ``bootstrap`` as in :func:`fragility` (``"resample"``
-    resamples records and refits, about 0.1 s per replicate).
+    ``n_boot``, ``seed``, ``bootstrap``, ``im_name`` and ``im_unit`` as in
+    :func:`fragility` (``"resample"`` resamples records and refits, about 0.1 s per
+    replicate).
     """
 
+    im_unit = _unit("im_unit", im_unit)
     cap = _as_im("capacity", capacity)
     cens = (np.zeros(cap.size, bool) if censored is None else _as_bool("censored", censored))
     if cens.size != cap.size:
@@ -557,14 +651,20 @@ def fragility_ida(capacity, censored=None, *, n_boot: int = 1000, seed: int | No
     llf = _censored_loglike(mu, math.log(beta), cap, cens)
     return _make_fit(coef, coef_cov, "censored lognormal MLE (IDA)",
                      pd.DataFrame({"capacity": cap, "censored": cens}), boot, bootstrap,
-                     seed, n_fail, llf, label)
+                     seed, n_fail, llf, label, im_name, im_unit)
 
 
 # --------------------------------------------------------------------------- hazard
 
-def annual_frequency(fit, hazard_im, hazard_rate, *, tail: bool = True):
+def annual_frequency(fit, hazard_im, hazard_rate, *, hazard_unit: str | None = None,
+                     tail: bool = True):
     """The mean annual frequency of exceeding the state of ``fit`` (Cornell et al. 2002):
     ``lambda_f = integral P(f | im) |d lambda_IM / d im| d im``.
+
+    ``hazard_unit`` is the unit of ``hazard_im``. It must be given, and equal the fit's
+    ``im_unit``, when the fit states its unit: a hazard curve in g with a fit in m/s^2 is
+    refused (integrated as it stands it would be wrong by orders of magnitude). A fit
+    without a stated unit cannot be checked: ``hazard_im`` is taken in its IM's units.
 
     ``hazard_im`` (increasing, > 0, in the fit's IM units) and ``hazard_rate`` (the annual
     rate of exceeding each IM: > 0, non-increasing, not all equal) are the hazard curve,
@@ -592,11 +692,27 @@ def annual_frequency(fit, hazard_im, hazard_rate, *, tail: bool = True):
     if np.any(np.diff(lam) > 0) or lam[0] == lam[-1]:
         raise ParameterError("hazard_rate must be non-increasing with hazard_im (a rate of "
                              "exceedance), and not constant")
+    hazard_unit = _unit("hazard_unit", hazard_unit)
     fits = getattr(fit, "fits", None)
     if fits is not None:
-        return [annual_frequency(f, x, lam, tail=tail) for f in fits]
+        return [annual_frequency(f, x, lam, hazard_unit=hazard_unit, tail=tail)
+                for f in fits]
     if not callable(getattr(fit, "probability", None)):
         raise ParameterError(f"fit must be a FragilityFit, got {type(fit).__name__}")
+    own = getattr(fit, "im_unit", None)
+    if own:
+        what = f"{getattr(fit, 'im_name', 'im')} in {own}"
+        if hazard_unit is None:
+            raise ParameterError(f"hazard_unit is required: the fit's IM is {what}; give "
+                                 f"the unit of hazard_im (hazard_unit={own!r} if it is the "
+                                 "same)")
+        if not _same_unit(own, hazard_unit):
+            a, b = _unit_info(own), _unit_info(hazard_unit)
+            hint = (f"; convert hazard_im (1 {hazard_unit} = {b[1] / a[1]:.6g} {own})"
+                    if a and b and a[0] == b[0] else "")
+            raise ParameterError(f"hazard_unit={hazard_unit!r} differs from the fit's IM "
+                                 f"unit ({what}): the hazard curve and the fragility curve "
+                                 f"must be in the same unit{hint}")
     u, ll = np.log(x), np.log(lam)
     slope = -np.diff(ll) / np.diff(u)              # local hazard exponent k_i >= 0
     total = 0.0
@@ -616,4 +732,5 @@ def annual_frequency(fit, hazard_im, hazard_rate, *, tail: bool = True):
 
 
 __all__ = ["FragilityFit", "fragility", "fragility_ida", "annual_frequency", "records",
-           "pelicun_table", "BOOTSTRAP_METHODS", "PELICUN_UNITS", "PELICUN_COLUMNS"]
+           "pelicun_table", "BOOTSTRAP_METHODS", "PELICUN_UNITS", "PELICUN_COLUMNS",
+           "IM_UNITS"]
