@@ -14,7 +14,7 @@ import pandas as pd
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import Record
-from ..plot import _style, figure
+from ..plot import _style, figure, im_label
 from .damage import DEFAULT_THRESHOLDS, damage_state, state_labels
 
 IMS = {"pga": ("m/s^2", 1), "pgv": ("m/s", 1), "pgd": ("m", 1), "arias": ("m/s", 2),
@@ -130,5 +130,6 @@ def plot_ida(table: pd.DataFrame, ax=None):
     ax.plot(ov["im"], np.full(len(ov), top), "x", color="#C00000", label="overturned")
     ax.axhline(1.0, color="0.3", linestyle=":", linewidth=0.8)
     ax.legend(loc="upper left", fontsize=8)
-    _style(ax, "intensity measure", r"max $|\theta|/\alpha$")
+    _style(ax, im_label(table.attrs.get("im"), table.attrs.get("unit")),
+           r"max $|\theta|/\alpha$")
     return ax
