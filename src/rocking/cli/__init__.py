@@ -64,7 +64,8 @@ _NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())
 def main(argv=None) -> None:
     """Console entry point: run :func:`cli`, turning errors into one ``error: ...`` line.
 
-    Exit codes: 0 success, 2 bad input, 1 a numerical failure or another runtime error.
+    Exit codes: 0 success, 2 bad input, 1 a numerical failure or another runtime error,
+    130 interrupted (Ctrl-C).
     Exits with ``sys.exit(code)``; ``argv`` defaults to ``sys.argv[1:]``.
     """
     try:
@@ -76,9 +77,13 @@ def main(argv=None) -> None:
             sys.exit(0)
         click.echo(f"error: {one_line(e.format_message())}", err=True)
         code = 2
-    except click.exceptions.Abort:
-        click.echo("error: aborted", err=True)
-        code = 1
+    except click.exceptions.Abort as e:
+        if isinstance(e.__cause__, KeyboardInterrupt):  # Ctrl-C before a command caught it
+            click.echo("interrupted", err=True)
+            code = 130  # 128 + SIGINT, as a shell reports it
+        else:
+            click.echo("error: aborted", err=True)
+            code = 1
     except click.ClickException as e:
         click.echo(f"error: {one_line(e.format_message())}", err=True)
         code = e.exit_code if e.exit_code else 1
