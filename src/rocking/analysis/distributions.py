@@ -8,55 +8,113 @@ A distribution is a dict with ``dist`` and its parameters, e.g.::
     {"dist": "uniform", "low": 0.0, "high": 0.002}
     {"dist": "fixed", "value": 0.97}
 
-A missing ``mean`` or ``median`` is the parameter's nominal value. Draws are made with a
-:class:`numpy.random.Generator` (scipy.stats frozen distributions, ``random_state=rng``).
+A missing ``mean`` or ``median`` is the parameter's nominal value. Every number must be a
+real number (never a bool or a string: ``cov = true`` is refused, not read as 1). Draws are
+made with a :class:`numpy.random.Generator` (scipy.stats frozen distributions,
+``random_state=rng``).
+
+Truncation: a parameter has a range (its physical range, and for the initial tilt
+``|theta0| < alpha``). :func:`draw` truncates the distribution to it by rejection: a draw
+outside is redrawn from the same generator, so the draws follow the truncated
+distribution exactly, and a draw that falls inside at once consumes the generator exactly
+as an untruncated draw would. :func:`draw_counted` also returns the number of redraws. A
+distribution with more than :data:`MAX_OUTSIDE` of its mass outside the range is refused
+(:func:`check_mass`): truncating it would change it, not trim it.
 """
 
 from __future__ import annotations
 
 import math
+import numbers
 
+import numpy as np
 from scipy import stats
 
-from .._validate import as_float, positive
+from .._validate import as_float
 from ..errors import ParameterError
 
 DISTS = ("normal", "lognormal", "uniform", "fixed")
+KEYS = {"normal": {"mean", "std", "cov"}, "lognormal": {"median", "beta"},
+        "uniform": {"low", "high"}, "fixed": {"value"}}
+MAX_OUTSIDE = 0.01
+"""Largest fraction of a distribution's mass allowed outside its parameter's range (the
+rest is redrawn). For a normal given by its ``cov`` around a positive nominal value and a
+parameter that must be > 0 (``alpha``, ``p``, ``amplitude``) this bounds ``cov`` at
+``-1 / Phi^-1(0.01)`` = 0.43 (:data:`MAX_COV`)."""
+MAX_COV = -1.0 / float(stats.norm.ppf(MAX_OUTSIDE))
+"""0.4299...: the largest ``cov`` of a normal whose mass below zero is at most
+:data:`MAX_OUTSIDE`."""
 
 
-def frozen(name: str, spec, nominal: float):
-    """The scipy.stats frozen distribution of parameter ``name`` from its dict ``spec``."""
+def _sub(where: str, key: str) -> str:
+    """The name of ``key`` inside ``where``: ``uncertain['p']['cov']`` (Python) or
+    ``uncertain.p.cov`` (a spec)."""
+    return f"{where}[{key!r}]" if where.endswith("]") else f"{where}.{key}"
+
+
+def _number(name: str, value) -> float:
+    """A finite real number: bools and strings are refused."""
+    if isinstance(value, bool | np.bool_) or not isinstance(value, numbers.Real):
+        raise ParameterError(f"{name} must be a finite number, got {type(value).__name__} "
+                             f"{value!r}")
+    return as_float(name, value)
+
+
+def _positive(name: str, value) -> float:
+    x = _number(name, value)
+    if x <= 0.0:
+        raise ParameterError(f"{name} must be > 0, got {value!r}")
+    return x
+
+
+def frozen(name: str, spec, nominal: float, where: str | None = None):
+    """The scipy.stats frozen distribution of parameter ``name`` from its dict ``spec``.
+
+    ``where`` names the dict in messages (default ``uncertain['name']``; a campaign spec
+    passes ``uncertain.name``)."""
+    where = where or f"uncertain[{name!r}]"
     if not isinstance(spec, dict) or "dist" not in spec:
-        raise ParameterError(f"uncertain[{name!r}] must be a dict with 'dist' (one of "
-                             f"{', '.join(DISTS)}) and its parameters, got {spec!r}")
+        raise ParameterError(f"{where} must be a table with dist (one of {', '.join(DISTS)}) "
+                             f"and its parameters, got {spec!r}")
     kind = spec["dist"]
-    keys = {"normal": {"mean", "std", "cov"}, "lognormal": {"median", "beta"},
-            "uniform": {"low", "high"}, "fixed": {"value"}}
-    if kind not in keys:
-        raise ParameterError(f"uncertain[{name!r}]['dist'] must be one of {', '.join(DISTS)}, "
+    if not isinstance(kind, str) or kind not in KEYS:
+        raise ParameterError(f"{_sub(where, 'dist')} must be one of {', '.join(DISTS)}, "
                              f"got {kind!r}")
-    extra = set(spec) - keys[kind] - {"dist"}
+    extra = set(spec) - KEYS[kind] - {"dist"}
     if extra:
-        raise ParameterError(f"uncertain[{name!r}]: unknown key(s) {', '.join(sorted(extra))} "
-                             f"for dist {kind!r} (allowed: {', '.join(sorted(keys[kind]))})")
-    where = f"uncertain[{name!r}]"
+        raise ParameterError(f"{where}: unknown key(s) {', '.join(sorted(map(str, extra)))} "
+                             f"for dist {kind!r} (allowed: {', '.join(sorted(KEYS[kind]))})")
     if kind == "normal":
-        mean = as_float(f"{where}['mean']", spec.get("mean", nominal))
+        mean = _number(_sub(where, "mean"), spec.get("mean", nominal))
         if ("std" in spec) == ("cov" in spec):
             raise ParameterError(f"{where}: give exactly one of 'std' or 'cov' for a normal")
-        std = (positive(f"{where}['std']", spec["std"]) if "std" in spec
-               else positive(f"{where}['cov']", spec["cov"]) * abs(mean))
+        if "std" in spec:
+            std = _positive(_sub(where, "std"), spec["std"])
+        else:
+            cov = _positive(_sub(where, "cov"), spec["cov"])
+            if mean == 0.0:
+                raise ParameterError(f"{_sub(where, 'cov')} needs a mean != 0 (the std is "
+                                     f"cov x |mean|); give std instead")
+            std = cov * abs(mean)
         return stats.norm(mean, std)
     if kind == "lognormal":
-        med = positive(f"{where}['median']", spec.get("median", nominal))
-        return stats.lognorm(positive(f"{where}['beta']", spec.get("beta")), scale=med)
+        med = _positive(_sub(where, "median"), spec.get("median", nominal))
+        if "beta" not in spec:
+            raise ParameterError(f"{_sub(where, 'beta')} missing (the log standard "
+                                 "deviation, > 0)")
+        return stats.lognorm(_positive(_sub(where, "beta"), spec["beta"]), scale=med)
     if kind == "uniform":
-        lo = as_float(f"{where}['low']", spec.get("low"))
-        hi = as_float(f"{where}['high']", spec.get("high"))
+        for k in ("low", "high"):
+            if k not in spec:
+                raise ParameterError(f"{_sub(where, k)} missing (a uniform needs low < high)")
+        lo = _number(_sub(where, "low"), spec["low"])
+        hi = _number(_sub(where, "high"), spec["high"])
         if not hi > lo:
             raise ParameterError(f"{where}: 'high' must exceed 'low', got {lo:g}, {hi:g}")
+        if not math.isfinite(hi - lo):
+            raise ParameterError(f"{where}: high - low must be finite, got {lo:g}, {hi:g}")
         return stats.uniform(lo, hi - lo)
-    return _Fixed(as_float(f"{where}['value']", spec.get("value", nominal)))
+    return _Fixed(_number(_sub(where, "value"), spec.get("value", nominal)))
 
 
 class _Fixed:
@@ -69,13 +127,59 @@ class _Fixed:
         return self.value
 
 
+def mass_outside(dist, lo: float, hi: float) -> float:
+    """The probability that a draw of ``dist`` falls outside the open interval
+    ``(lo, hi)``."""
+    if isinstance(dist, _Fixed):
+        return 0.0 if lo < dist.value < hi else 1.0
+    return float(min(1.0, dist.cdf(lo) + dist.sf(hi)))
+
+
+def mass_beyond(dist, bound, bound_range=(0.0, math.inf)) -> float:
+    """The probability that ``|x| >= bound`` for ``x`` drawn from ``dist`` and ``bound``
+    either a number or itself a distribution (then truncated to ``bound_range``, as
+    :func:`draw` does, and the probability is averaged over it)."""
+    if isinstance(bound, numbers.Real):
+        return mass_outside(dist, -float(bound), float(bound))
+    if isinstance(bound, _Fixed):
+        return mass_outside(dist, -bound.value, bound.value)
+    lo, hi = bound_range
+    return float(bound.expect(lambda a: mass_outside(dist, -a, a), lb=lo, ub=hi,
+                              conditional=True))
+
+
+def _pct(x: float) -> str:
+    return f"{100 * x:.3g}%"
+
+
+def check_mass(where: str, dist, lo: float, hi: float, what: str = "") -> None:
+    """Refuse ``dist`` if more than :data:`MAX_OUTSIDE` of its mass lies outside
+    ``(lo, hi)`` (``what`` describes the range in the message)."""
+    m = mass_outside(dist, lo, hi)
+    if m > MAX_OUTSIDE:
+        rng = what or f"({lo:g}, {hi:g})"
+        hint = ""
+        if getattr(getattr(dist, "dist", None), "name", "") == "norm" and abs(lo) < 1e-12 \
+                and dist.mean() > 0 and dist.cdf(lo) > MAX_OUTSIDE:
+            hint = f" (a normal needs std/mean <= {MAX_COV:.2f})"
+        raise ParameterError(f"{where}: {_pct(m)} of the distribution lies outside {rng}; "
+                             f"at most {_pct(MAX_OUTSIDE)} may{hint}")
+
+
+def draw_counted(dist, rng, lo: float = -math.inf, hi: float = math.inf, name: str = "",
+                 tries: int = 1000) -> tuple[float, int]:
+    """One draw of ``dist`` inside ``(lo, hi)`` by rejection (the distribution truncated to
+    the interval), and the number of draws rejected on the way."""
+    for k in range(tries):
+        x = float(dist.rvs(random_state=rng))
+        if lo < x < hi:
+            return x, k
+    raise ParameterError(f"uncertain[{name!r}] almost never falls inside its range "
+                         f"({lo:g}, {hi:g}): check its distribution")
+
+
 def draw(dist, rng, lo: float = -math.inf, hi: float = math.inf, name: str = "",
          tries: int = 1000) -> float:
     """One draw of ``dist`` inside ``(lo, hi)``, by rejection (the distribution truncated to
     the physical range of the parameter)."""
-    for _ in range(tries):
-        x = float(dist.rvs(random_state=rng))
-        if lo < x < hi:
-            return x
-    raise ParameterError(f"uncertain[{name!r}] almost never falls inside its range "
-                         f"({lo:g}, {hi:g}): check its distribution")
+    return draw_counted(dist, rng, lo, hi, name, tries)[0]

@@ -12,6 +12,17 @@ spawn_key=(STREAM, i)))`` (the tag ``STREAM`` keeps these draws independent of
 :func:`rocking.motions.stochastic_records` with the same seed), and each batch row
 depends on its own inputs only, so the result does not depend on ``chunk_size`` (or on
 the executor of a campaign).
+
+Truncation (:mod:`rocking.analysis.distributions`): each parameter is drawn from its
+distribution truncated to its range (:data:`PARAMETERS`), by rejection. The initial tilt
+is truncated to ``|theta0| < alpha`` of its own sample (a block tilted beyond alpha is not
+a block at rest: it simply falls): a draw at or beyond is redrawn, the sample is flagged
+(column ``theta0_truncated``) and counted (:attr:`MonteCarloResult.n_theta0_truncated`).
+A sample whose draws all fell inside at once consumes its generator exactly as before the
+truncation existed, so its numbers do not change. A distribution with more than 1 %
+(:data:`~rocking.analysis.distributions.MAX_OUTSIDE`) of its mass outside its range (for
+``theta0``: beyond +-alpha, averaged over alpha's distribution when alpha is uncertain) is
+refused with a :class:`~rocking.ParameterError` naming it.
 """
 
 from __future__ import annotations
@@ -29,7 +40,7 @@ from ..models import simulate_many
 from ..motions import Motion, Record, sample
 from ..plot import _style, figure
 from ..results import jsonable
-from .distributions import draw, frozen
+from .distributions import MAX_OUTSIDE, check_mass, draw, draw_counted, frozen, mass_beyond
 
 HALF_PI = 0.5 * math.pi
 STREAM = 1
@@ -45,6 +56,61 @@ PARAMETERS = {  # name: (nominal from the block or the motion, physical range)
 """The uncertain parameters: ``alpha`` (rad), ``p`` (1/s), ``mu``, ``theta0`` (rad),
 ``amplitude`` (a factor on the motion) and ``noise`` (standard deviation of white noise
 added to the motion's samples, m/s^2)."""
+RANGES = {"alpha": "(0, pi/2) rad", "p": "(0, inf) 1/s", "mu": "(0, 1]",
+          "theta0": "(-alpha, alpha)", "amplitude": "(0, inf)", "noise": "[0, inf) m/s^2"}
+"""The ranges of :data:`PARAMETERS` as written in messages."""
+
+
+def distributions(block: Block, uncertain: dict, where=None, of: str = "") -> dict:
+    """The checked frozen distributions of ``uncertain`` for ``block``: ``{name: dist}``.
+
+    ``where(name)`` names a parameter in messages (default ``uncertain['name']``; a
+    campaign spec gives ``uncertain.name``), ``of`` the block (e.g. `` of blocks[1]``).
+    Refused (:class:`~rocking.ParameterError`): an unknown name, a malformed
+    distribution, and a distribution with more than
+    :data:`~rocking.analysis.distributions.MAX_OUTSIDE` of its mass outside the
+    parameter's range (for ``theta0``: at or beyond +-alpha, the nominal alpha of
+    ``block`` or, when alpha is uncertain, averaged over its distribution)."""
+    unknown = set(uncertain) - set(PARAMETERS)
+    if unknown:
+        raise ParameterError(f"uncertain: unknown parameter(s) "
+                             f"{', '.join(sorted(map(str, unknown)))}; "
+                             f"allowed: {', '.join(PARAMETERS)}")
+    key = where or (lambda k: f"uncertain[{k!r}]")
+    dists = {k: frozen(k, uncertain[k], PARAMETERS[k][0](block), where=key(k))
+             for k in PARAMETERS if k in uncertain}
+    for k, d in dists.items():
+        if k != "theta0":
+            check_mass(key(k), d, *PARAMETERS[k][1], RANGES[k])
+    if "theta0" in dists:
+        a = dists.get("alpha", block.alpha)
+        m = mass_beyond(dists["theta0"], a, PARAMETERS["alpha"][1])
+        if m > MAX_OUTSIDE:
+            alpha = (f"alpha{of} ~ its distribution around {block.alpha:.4g} rad"
+                     if "alpha" in dists else f"alpha{of} = {block.alpha:.4g} rad")
+            raise ParameterError(
+                f"{key('theta0')}: {100 * m:.3g}% of the distribution lies at or beyond "
+                f"+-alpha ({alpha}); at most {100 * MAX_OUTSIDE:g}% may (draws there are "
+                "redrawn: theta0 is truncated to |theta0| < alpha)")
+    return dists
+
+
+def draw_parameters(block: Block, dists: dict, rng) -> tuple[dict, bool]:
+    """One sample: ``({name: value}, theta0_truncated)``, every parameter of
+    :data:`PARAMETERS` in its order, drawn from ``dists`` (:func:`distributions`) truncated
+    to its range, or nominal; ``theta0`` inside ``(-alpha, alpha)`` of this sample.
+    ``theta0_truncated`` says that a ``theta0`` draw fell at or beyond +-alpha and was
+    redrawn."""
+    v, redrawn = {}, 0
+    for k, (nominal, (lo, hi)) in PARAMETERS.items():
+        if k not in dists:
+            v[k] = nominal(block)
+        elif k == "theta0":
+            v[k], redrawn = draw_counted(dists[k], rng, max(lo, -v["alpha"]),
+                                         min(hi, v["alpha"]), name=k)
+        else:
+            v[k] = draw(dists[k], rng, lo, hi, name=k)
+    return v, redrawn > 0
 
 
 def wilson_interval(k: int, n: int, level: float = 0.95) -> tuple[float, float]:
@@ -65,7 +131,8 @@ class MonteCarloResult:
     """Samples and outcomes of :func:`monte_carlo`."""
 
     samples: pd.DataFrame
-    """One row per sample: the drawn parameters, ``motion`` (index into ``motions``),
+    """One row per sample: the drawn parameters, ``theta0_truncated`` (its first ``theta0``
+    draw lay at or beyond +-alpha and was redrawn), ``motion`` (index into ``motions``),
     ``max_abs_theta`` (rad), ``max_abs_theta_over_alpha``, ``overturned``, ``n_impacts``."""
     level: float = 0.95
     seed: int = 0
@@ -78,6 +145,13 @@ class MonteCarloResult:
     @property
     def n_overturned(self) -> int:
         return int(self.samples["overturned"].sum())
+
+    @property
+    def n_theta0_truncated(self) -> int:
+        """Samples whose initial tilt was redrawn because a draw lay at or beyond +-alpha
+        (the distribution of ``theta0`` truncated to ``|theta0| < alpha``)."""
+        col = self.samples.get("theta0_truncated")
+        return 0 if col is None else int(col.sum())
 
     @property
     def p_overturn(self) -> float:
@@ -100,6 +174,7 @@ class MonteCarloResult:
         return jsonable({"n": self.n, "n_overturned": self.n_overturned,
                          "p_overturn": self.p_overturn, "ci_low": lo, "ci_high": hi,
                          "level": self.level, "seed": self.seed,
+                         "n_theta0_truncated": self.n_theta0_truncated,
                          "max_abs_theta_over_alpha_q05": q.iloc[0] if q.size else None,
                          "max_abs_theta_over_alpha_median": q.iloc[1] if q.size else None,
                          "max_abs_theta_over_alpha_q95": q.iloc[2] if q.size else None,
@@ -136,25 +211,18 @@ def perturbed(motion: Motion, amplitude: float, noise: float, rng) -> Motion:
 
 
 def draw_samples(block: Block, motions, uncertain: dict, n: int, seed: int, start: int = 0):
-    """Samples ``start .. start + n - 1``: ``(table, blocks, motions)`` (see the module)."""
-    unknown = set(uncertain) - set(PARAMETERS)
-    if unknown:
-        raise ParameterError(f"uncertain: unknown parameter(s) {', '.join(sorted(unknown))}; "
-                             f"allowed: {', '.join(PARAMETERS)}")
-    dists = {k: frozen(k, uncertain[k], PARAMETERS[k][0](block)) for k in PARAMETERS
-             if k in uncertain}
+    """Samples ``start .. start + n - 1``: ``(table, blocks, motions)`` (see the module;
+    the table's columns as :attr:`MonteCarloResult.samples` before the results)."""
+    dists = distributions(block, uncertain)
     rows, blocks, ms = [], [], []
     for i in range(start, start + n):
         rng = np.random.default_rng(np.random.SeedSequence(seed, spawn_key=(STREAM, i)))
-        v = {k: (draw(dists[k], rng, *PARAMETERS[k][1], name=k) if k in dists
-                 else PARAMETERS[k][0](block)) for k in PARAMETERS}
+        v, truncated = draw_parameters(block, dists, rng)
         j = i % len(motions)
-        if abs(v["theta0"]) >= v["alpha"]:
-            v["theta0"] = math.copysign(0.999 * v["alpha"], v["theta0"])  # beyond: it falls
         blocks.append(block if all(k not in dists for k in ("alpha", "p", "mu"))
                       else Block.from_params(v["alpha"], v["p"], v["mu"], name=block.name))
         ms.append(perturbed(motions[j], v["amplitude"], v["noise"], rng))
-        rows.append({"sample": i, "motion": j, **v})
+        rows.append({"sample": i, "motion": j, **v, "theta0_truncated": truncated})
     return pd.DataFrame(rows), blocks, ms
 
 
@@ -172,8 +240,12 @@ def monte_carlo(block: Block, motions, uncertain: dict | None = None, n: int = 1
     uncertain : dict
         ``{name: distribution}`` for names in :data:`PARAMETERS` (``alpha``, ``p``, ``mu``,
         ``theta0``, ``amplitude``, ``noise``); distributions as in
-        :mod:`rocking.analysis.distributions`, truncated to the physical range. A drawn
-        ``|theta0|`` beyond 0.999 alpha is clipped there (the block would simply fall).
+        :mod:`rocking.analysis.distributions`, truncated to the parameter's range by
+        redrawing (``theta0`` to ``|theta0| < alpha`` of its sample: the samples redrawn
+        are flagged in ``theta0_truncated`` and counted in
+        :attr:`MonteCarloResult.n_theta0_truncated`). A distribution with more than 1 % of
+        its mass outside its range is refused (:class:`~rocking.ParameterError` naming
+        it), before any run.
     n, seed : int
         Number of samples; the seed of every draw (see the module docstring).
     model, duration, **options
@@ -201,6 +273,7 @@ def monte_carlo(block: Block, motions, uncertain: dict | None = None, n: int = 1
     if not isinstance(block, Block):
         raise ParameterError(f"block must be a rocking.Block, got {type(block).__name__}")
     uncertain = dict(uncertain or {})
+    distributions(block, uncertain)  # every distribution checked before any run
     parts = []
     for start in range(0, n, chunk):
         table, blocks, ms = draw_samples(block, motions, uncertain, min(chunk, n - start),

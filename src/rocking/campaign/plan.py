@@ -12,20 +12,24 @@ campaign seed (record ``j`` from ``spawn_key=(2, j)``). A row therefore depends 
 and its ``sim_id`` only, never on the chunk size, the executor or the order of execution;
 the compiled batches make each row bit-identical to its single run
 (:func:`rocking.simulate_many`).
+
+The uncertain parameters are drawn as in :func:`rocking.analysis.monte_carlo`
+(:func:`~rocking.analysis.montecarlo.draw_parameters`): each distribution truncated to its
+parameter's range by redrawing, ``theta0`` to ``|theta0| < alpha`` of the row's own
+(drawn) alpha. A row whose ``theta0`` was redrawn says so in ``theta0_truncated``; the
+report counts them.
 """
 
 from __future__ import annotations
 
-import math
 from functools import cached_property
 
 import numpy as np
 import pandas as pd
 
 from ..analysis.damage import damage_state
-from ..analysis.distributions import draw, frozen
 from ..analysis.ida import IMS, intensity
-from ..analysis.montecarlo import PARAMETERS, perturbed
+from ..analysis.montecarlo import PARAMETERS, distributions, draw_parameters, perturbed
 from ..blocks import Block
 from ..errors import ParameterError
 from ..models import simulate_many
@@ -167,9 +171,8 @@ class Campaign:
         self.spec = spec
         self.motions = MotionSet(spec.motions, spec.seed)
         self.levels = np.asarray(spec.levels, dtype=float)
-        self._dists = {(k, b): frozen(k, d, PARAMETERS[k][0](block))
-                       for k, d in spec.uncertain.items()
-                       for b, block in enumerate(spec.blocks)}
+        self._dists = [distributions(block, spec.uncertain, where=lambda k: f"uncertain.{k}")
+                       for block in spec.blocks]
 
     @property
     def n_sims(self) -> int:
@@ -203,7 +206,7 @@ class Campaign:
         self.motions.prepare(ji)
         n = ids.size
         vals = {k: np.empty(n) for k in PARAMETERS}
-        lf, pga = np.empty(n), np.empty(n)
+        lf, pga, truncated = np.empty(n), np.empty(n), np.zeros(n, bool)
         blocks, motions = [], []
         uncertain = s.uncertain
         for r in range(n):
@@ -214,10 +217,7 @@ class Campaign:
             if uncertain:
                 rng = np.random.default_rng(np.random.SeedSequence(
                     s.seed, spawn_key=(STREAM, int(ids[r]))))
-                v = {k: (draw(self._dists[k, b], rng, *PARAMETERS[k][1], name=k)
-                         if k in uncertain else PARAMETERS[k][0](block)) for k in PARAMETERS}
-                if abs(v["theta0"]) >= v["alpha"]:
-                    v["theta0"] = math.copysign(0.999 * v["alpha"], v["theta0"])
+                v, truncated[r] = draw_parameters(block, self._dists[b], rng)
                 if uncertain.keys() & {"alpha", "p", "mu"}:
                     block = Block.from_params(v["alpha"], v["p"], v["mu"], name=block.name)
                 mo = perturbed(self.motions.get(j).scaled(scale), v["amplitude"], v["noise"],
@@ -240,7 +240,8 @@ class Campaign:
             "level": li.astype(np.int64), "load_factor": lf,
             **({"im": self.levels[li]} if s.im else {}),
             "sample": si.astype(np.int64),
-            "theta0": vals["theta0"], "amplitude": vals["amplitude"], "noise": vals["noise"],
+            "theta0": vals["theta0"], "theta0_truncated": truncated,
+            "amplitude": vals["amplitude"], "noise": vals["noise"],
             "pga": pga,
         })
         return table, blocks, motions

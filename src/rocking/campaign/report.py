@@ -275,7 +275,19 @@ def _md_table(header: list[str], rows: list[list[str]]) -> list[str]:
             *("| " + " | ".join(r) + " |" for r in rows), ""]
 
 
-def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states) -> str:
+def _run_counts(t: pd.DataFrame) -> tuple[list[str], dict]:
+    """Lines on how the runs were made (truncated draws), and their counts."""
+    lines, counts = [], {}
+    if "theta0_truncated" in t.columns:
+        k = counts["n_theta0_truncated"] = int(t["theta0_truncated"].astype(bool).sum())
+        if k or t["theta0"].ne(0).any():  # theta0 was uncertain
+            lines.append(f"initial tilt: {k} of {len(t)} runs drew theta0 at or beyond "
+                         "+-alpha and redrew it (theta0 truncated to |theta0| < alpha)")
+    return lines, counts
+
+
+def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
+              counts=()) -> str:
     unit = f" ({im['unit']})" if im["unit"] else ""
     src = ("the im column (motions scaled to intensity levels)" if im["column"] == "im"
            else "the PGA of each run as run (no intensity scaling)")
@@ -283,6 +295,7 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states) -> 
            f"- version: {manifest.get('version', '–')}",
            f"- spec hash: {manifest.get('spec_hash', '–')}",
            f"- runs: {n_runs} ({n_excl} failed numerically, excluded from counts and fits)",
+           *(f"- {c}" for c in counts),
            f"- IM: {_im_label(im)}, from {src}", "",
            "## Overturning fragility", "",
            "Lognormal curves P(overturn | IM) = Phi(ln(IM / median) / beta), maximum "
@@ -321,7 +334,10 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     folder ``out`` (created). See the module docstring for the files.
 
     Returns ``{"files": [Path], "fragility": DataFrame, "p_overturn": DataFrame,
-    "notes": [str], "im": {"name", "unit", "column"}, "n_runs": int, "n_excluded": int}``.
+    "notes": [str], "im": {"name", "unit", "column"}, "n_runs": int, "n_excluded": int,
+    "run_notes": [str], "n_theta0_truncated": int}`` (``run_notes``: how the runs were made,
+    e.g. how many initial tilts were redrawn, also in ``report.md`` and the terminal
+    summary; ``n_theta0_truncated`` only for a table with that column).
     Raises :class:`~rocking.ParameterError` for an empty table or a missing column.
     """
     t, im, thresholds = _check(table, manifest)
@@ -331,6 +347,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     out.mkdir(parents=True, exist_ok=True)
     failed = t["status"] != 0
     n_excl = int(failed.sum())
+    run_lines, run_counts = _run_counts(t)
     notes = []
     if n_excl:
         notes.append(f"{n_excl} of {len(t)} runs failed numerically (status != 0) and are "
@@ -369,11 +386,12 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         p = _plot_model(model, groups, im, out / f"p_overturn_{_safe(model)}.png")
         images.append((model, p))
         files.append(p)
-    md = _markdown(manifest, im, len(t), n_excl, fr, po, images, notes, n_states)
+    md = _markdown(manifest, im, len(t), n_excl, fr, po, images, notes, n_states,
+                   counts=run_lines)
     (out / "report.md").write_text(md, encoding="utf-8")
     files.append(out / "report.md")
     return {"files": files, "fragility": fr, "p_overturn": po, "notes": notes, "im": im,
-            "n_runs": len(t), "n_excluded": n_excl}
+            "n_runs": len(t), "n_excluded": n_excl, "run_notes": run_lines, **run_counts}
 
 
 def summary_lines(result: dict) -> list[str]:
@@ -382,7 +400,7 @@ def summary_lines(result: dict) -> list[str]:
     im = result.get("im", {"name": "IM", "unit": ""})
     unit = f" {im['unit']}" if im.get("unit") else ""
     lines = [f"{result.get('n_runs', '?')} runs ({result.get('n_excluded', 0)} failed, "
-             f"excluded); IM: {_im_label(im)}"]
+             f"excluded); IM: {_im_label(im)}", *result.get("run_notes", ())]
     fr = result["fragility"]
     for r in fr[fr["fit"] == "overturning"].itertuples():
         head = f"{r.model} / {r.block_name}:"

@@ -40,7 +40,14 @@
     rest_tol = 1e-12
 
 Every motion kind and its keys are listed in :data:`MOTION_KEYS`. A malformed spec raises
-:class:`~rocking.errors.SpecError` with one line that names the key.
+:class:`~rocking.errors.SpecError` with one line that names the key and what it allows.
+Everything that a spec can get wrong is found by :func:`parse_spec`, before a store is
+created: every number is a number (never a bool: ``cov = true`` is refused), record files
+are read (an unreadable one is refused), a record's length and sample count are bounded
+before anything is allocated (:data:`MAX_RECORD_DURATION`, :data:`MAX_RECORD_SAMPLES`),
+the number of simulations fits ``sim_id`` (int64), and every ``[uncertain]`` distribution
+has at most 1 % of its mass outside its parameter's range (for ``theta0``: beyond +-alpha
+of each block; :func:`rocking.analysis.montecarlo.distributions`).
 """
 
 from __future__ import annotations
@@ -55,9 +62,8 @@ from pathlib import Path
 import numpy as np
 
 from ..analysis.damage import DEFAULT_THRESHOLDS, state_labels
-from ..analysis.distributions import frozen
 from ..analysis.ida import IMS
-from ..analysis.montecarlo import PARAMETERS
+from ..analysis.montecarlo import PARAMETERS, distributions
 from ..blocks import Block, specimen
 from ..blocks.specimens import PARAM_SETS, specimen_ids
 from ..errors import ParameterError, RockingError, SpecError
@@ -98,6 +104,16 @@ MOTION_KEYS = {
   ``record_duration`` (s, optional window).
 """
 PULSES = ("one_sine", "one_cosine", "half_sine", "rectangular", "ricker")
+MAX_RECORD_DURATION = 1e4
+"""Longest motion a spec may define (s): ``record_duration``, or ``cycles / frequency`` of
+a sine. The longest strong-motion records are a few hundred seconds (long-period records
+of the 2011 Tohoku earthquake: about 300-600 s); 1e4 s (2.8 h) is 15 times more, while a
+sine of 1e9 s would run for days and a stochastic record of 1e9 s would allocate 745 GB."""
+MAX_RECORD_SAMPLES = 10 ** 7
+"""Most samples of one stochastic record (``duration / dt + 1``): 80 MB per array (the
+generator holds a few such arrays per record, and a worker keeps many records)."""
+MAX_SIMS = 2 ** 63 - 1
+"""Most simulations of a campaign: ``sim_id`` is an int64."""
 
 
 def _fail(key: str, msg: str):
@@ -227,20 +243,22 @@ def _motions(t: dict, base_dir: Path) -> dict:
             _fail("motions.paths", "missing (a list of record files)")
         if not isinstance(paths, list) or not all(isinstance(p, str) for p in paths):
             _fail("motions.paths", f"must be a list of file paths, got {paths!r}")
-        resolved = []
+        units = _string("motions.units", t.get("units", "g"), tuple(ACCELERATION))
+        dt = _number("motions.dt", t["dt"], 0, lo_open=True) if "dt" in t else None
+        resolved, digests = [], []
         for i, p in enumerate(paths):
             q = Path(p).expanduser()
             q = q if q.is_absolute() else base_dir / q
             if not q.is_file():
                 _fail(f"motions.paths[{i}]", f"no such file: {q}")
             resolved.append(str(q.resolve()))
+            digests.append(_read_record(f"motions.paths[{i}]", q, units, dt))
         out["paths"] = resolved
         out["names"] = list(paths)  # as written: the motion ids
-        out["digests"] = [hashlib.sha256(Path(q).read_bytes()).hexdigest()[:16]
-                          for q in resolved]
-        out["units"] = _string("motions.units", t.get("units", "g"), tuple(ACCELERATION))
-        if "dt" in t:
-            out["dt"] = _number("motions.dt", t["dt"], 0, lo_open=True)
+        out["digests"] = digests
+        out["units"] = units
+        if dt is not None:
+            out["dt"] = dt
     elif kind == "builtin":
         from ..motions import builtin_records
         names = t.get("names", builtin_records())
@@ -256,13 +274,34 @@ def _motions(t: dict, base_dir: Path) -> dict:
         for k in sorted(STOCHASTIC_KEYS - {"n"}):
             if k in t:
                 out[k] = _number(f"motions.{k}", t[k])
-        from ..motions.stochastic import DEFAULTS, _model
+        if "record_duration" in out:
+            _number("motions.record_duration", out["record_duration"], 0,
+                    MAX_RECORD_DURATION, lo_open=True)
+        from ..motions.stochastic import _HP_DECAY, DEFAULTS, _model, modulating_parameters
         kw = {**DEFAULTS, **{k: v for k, v in out.items() if k in DEFAULTS}}
         if "record_duration" in out:
             kw["duration"] = out["record_duration"]
         try:
+            _number("motions.dt", kw["dt"], 0, lo_open=True)
+            if kw.get("duration") is not None:
+                length, key = kw["duration"], "motions.record_duration"
+            else:  # the generator's default length (rocking.motions.stochastic._model)
+                tail = modulating_parameters(kw["Ia"], kw["D5_95"], kw["t_mid"])["t_tail"]
+                hp = _HP_DECAY / kw["omega_c"] if kw["omega_c"] > 0 else 0.0
+                length, key = tail + hp, "motions.dt"
+                if not length <= MAX_RECORD_DURATION:
+                    _fail("motions.omega_c" if hp > tail else "motions.t_mid",
+                          f"the records would last {length:g} s (t_tail {tail:g} s + "
+                          f"{_HP_DECAY:g} / omega_c); at most {MAX_RECORD_DURATION:g} s "
+                          "(or give record_duration)")
+            if not length / kw["dt"] + 1 <= MAX_RECORD_SAMPLES:
+                _fail(key, f"a record of {length:g} s at dt = {kw['dt']:g} s would have "
+                           f"{length / kw['dt']:.3g} samples; at most {MAX_RECORD_SAMPLES:.0e} "
+                           "(raise dt or shorten record_duration)")
             _model(**kw)
         except RockingError as e:
+            if isinstance(e, SpecError):
+                raise
             name = str(e).split()[0]
             _fail("motions." + ("record_duration" if name == "duration" else name), str(e))
     elif kind == "sine_grid":
@@ -275,9 +314,15 @@ def _motions(t: dict, base_dir: Path) -> dict:
             _fail("motions.cycles", "give cycles or record_duration, not both")
         if "record_duration" in t:
             out["record_duration"] = _number("motions.record_duration",
-                                             t["record_duration"], 0, lo_open=True)
+                                             t["record_duration"], 0, MAX_RECORD_DURATION,
+                                             lo_open=True)
         else:
             out["cycles"] = _number("motions.cycles", t.get("cycles", 10), 0, lo_open=True)
+            longest = out["cycles"] / min(out["frequencies"])
+            if longest > MAX_RECORD_DURATION:
+                _fail("motions.cycles", f"{out['cycles']:g} cycles at "
+                                        f"{min(out['frequencies']):g} Hz last {longest:g} s; "
+                                        f"at most {MAX_RECORD_DURATION:g} s")
     else:  # pulse_grid
         if "pulse" not in t:
             _fail("motions.pulse", f"missing (one of {', '.join(PULSES)})")
@@ -289,7 +334,8 @@ def _motions(t: dict, base_dir: Path) -> dict:
                                    lo_open=True)
         if "record_duration" in t:
             out["record_duration"] = _number("motions.record_duration",
-                                             t["record_duration"], 0, lo_open=True)
+                                             t["record_duration"], 0, MAX_RECORD_DURATION,
+                                             lo_open=True)
     # the intensity axis
     has_lf, has_im = "load_factors" in t, ("im" in t or "levels" in t)
     if has_lf and has_im:
@@ -307,10 +353,31 @@ def _motions(t: dict, base_dir: Path) -> dict:
     return out
 
 
+def _read_record(key: str, path: Path, units: str, dt: float | None) -> str:
+    """Read the record file ``path`` as a run will (refused if it cannot be read or
+    parsed); its content digest."""
+    from ..motions import Record
+    try:
+        data = path.read_bytes()
+        Record.from_file(path, units=units, dt=dt)
+    except RockingError as e:
+        _fail(key, f"{path.name}: {str(e).splitlines()[0] if str(e) else type(e).__name__}")
+    except (OSError, ValueError) as e:  # unreadable, not text, ...
+        _fail(key, f"cannot read {path}: {type(e).__name__}: "
+                   f"{str(e).splitlines()[0] if str(e) else ''}")
+    return hashlib.sha256(data).hexdigest()[:16]
+
+
 def n_motions(m: dict) -> int:
     """Number of motions of a checked ``[motions]`` table."""
     return len(m.get("records") or m.get("paths") or m.get("names") or m.get("frequencies")
                or m.get("periods") or []) if m["kind"] != "stochastic" else m["n"]
+
+
+def _motion_axis_key(m: dict) -> str:
+    """The key of ``[motions]`` that sets the number of motions."""
+    return {"seed_earthquakes": "records", "files": "paths", "builtin": "names",
+            "stochastic": "n", "sine_grid": "frequencies", "pulse_grid": "periods"}[m["kind"]]
 
 
 # ------------------------------------------------------------------------------ the spec
@@ -369,7 +436,7 @@ class CampaignSpec:
 
     @property
     def n_sims(self) -> int:
-        return int(np.prod(self.shape))
+        return math.prod(self.shape)  # Python ints: no overflow
 
     @property
     def n_chunks(self) -> int:
@@ -403,6 +470,8 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
     thr = c.get("thresholds", list(DEFAULT_THRESHOLDS))
     if not isinstance(thr, list):
         _fail("campaign.thresholds", f"must be a list of numbers, got {thr!r}")
+    for i, x in enumerate(thr):
+        _number(f"campaign.thresholds[{i}]", x, 0, lo_open=True)
     try:
         state_labels(thr)
     except ParameterError as e:
@@ -419,20 +488,20 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
         _fail("motions", "missing (a [motions] table with kind)")
     motions = _motions(raw["motions"], Path(base_dir))
     if n_motions(motions) == 0:
-        key = {"seed_earthquakes": "records", "files": "paths", "builtin": "names",
-               "stochastic": "n"}.get(motions["kind"], "kind")
-        _fail(f"motions.{key}", "empty motion set (no motion to run)")
+        _fail(f"motions.{_motion_axis_key(motions)}", "empty motion set (no motion to run)")
 
     uncertain = _table("uncertain", raw.get("uncertain", {}))
     _known("uncertain", uncertain, PARAMETERS)
     for k, d in uncertain.items():
         if not isinstance(d, dict):
             _fail(f"uncertain.{k}", f"must be a table with dist, got {d!r}")
-        for b in blocks:
-            try:
-                frozen(k, d, PARAMETERS[k][0](b))
-            except ParameterError as e:
-                _fail(f"uncertain.{k}", str(e))
+    for i, b in enumerate(blocks):
+        try:
+            distributions(b, uncertain, where=lambda k: f"uncertain.{k}",
+                          of=f" of blocks[{i}]" if len(blocks) > 1 else "")
+        except ParameterError as e:  # "uncertain.k.sub must ..." or "uncertain.k: ..."
+            key, _, msg = str(e).partition(" ")
+            _fail(key.rstrip(":"), msg)
     if samples > 1 and not uncertain:
         _fail("campaign.samples", f"is {samples}, but nothing is uncertain: the samples would "
                                   "be identical runs (give [uncertain] parameters, or samples = 1)")
@@ -440,6 +509,18 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
         bad = sorted(set(uncertain) & {"alpha", "p", "mu", "theta0"})[0]
         _fail(f"uncertain.{bad}", "not supported with model 'dem' (its geometry and contacts "
                                   "define alpha, p and mu; it starts at rest)")
+
+    shape = (len(models), len(blocks), n_motions(motions),
+             len(motions.get("levels", motions.get("load_factors", []))), samples)
+    if math.prod(shape) > MAX_SIMS:
+        axes = {"campaign.model": shape[0], "blocks": shape[1],
+                f"motions.{_motion_axis_key(motions)}": shape[2],
+                "motions.levels" if "levels" in motions else "motions.load_factors": shape[3],
+                "campaign.samples": shape[4]}
+        key = max(axes, key=axes.get)
+        _fail(key, f"the campaign would have {math.prod(shape):.3g} simulations ("
+                   + " x ".join(f"{v} {k}" for k, v in axes.items())
+                   + "); at most 2^63 - 1 (sim_id is an int64)")
 
     r = _table("run", raw.get("run", {}))
     _known("run", r, RUN_KEYS)
@@ -455,7 +536,11 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
         try:
             MODELS[m].Options.build(m, **o)
         except (TypeError, RockingError) as e:
-            _fail(f"options.{m}", str(e).splitlines()[0])
+            msg = str(e).splitlines()[0]
+            opt = msg.split(" ", 1)[0]
+            if opt in o and " " in msg:  # "rest_tol must be ...": name the option's key
+                _fail(f"options.{m}.{opt}", msg.split(" ", 1)[1])
+            _fail(f"options.{m}", msg)
         options[m] = dict(o)
     for m in models:  # each block must suit each model (the DEM needs a geometry)
         for i, b in enumerate(blocks):
