@@ -98,6 +98,11 @@ def split_quantity(text) -> tuple[float, str] | None:
     return float(m.group(1)), (m.group(2) or "").strip().lower().replace(" ", "")
 
 
+def _a(word: str) -> str:
+    """``word`` with its indefinite article: "an acceleration", "a length"."""
+    return f"{'an' if word[:1].lower() in 'aeiou' else 'a'} {word}"
+
+
 def parse_quantity(text, kind: str, *, name: str = "value",
                    default_unit: str | None = None) -> float:
     """Parse ``text`` (e.g. ``"5mm"``) as a quantity of ``kind`` and return it in SI units.
@@ -112,13 +117,13 @@ def parse_quantity(text, kind: str, *, name: str = "value",
     if not m:
         examples = {"length": "5mm", "acceleration": "0.3g", "time": "2s",
                     "frequency": "5Hz", "angle": "2deg"}[kind]
-        raise UnitError(f"{name} must be a number with a {kind} unit such as {examples!r}; "
+        raise UnitError(f"{name} must be a number with {_a(kind)} unit such as {examples!r}; "
                         f"got {text!r}")
     number = float(m.group(1))
     unit = (m.group(2) or "").strip().lower().replace(" ", "")
     if not unit:
         if default_unit is None:
-            raise UnitError(f"{name} needs a {kind} unit ({', '.join(table)}); got {text!r}")
+            raise UnitError(f"{name} needs {_a(kind)} unit ({', '.join(table)}); got {text!r}")
         unit = default_unit.lower()
     if unit not in table:
         raise UnitError(f"{name}: unknown {kind} unit {m.group(2)!r}; allowed: {', '.join(table)}")
