@@ -356,14 +356,16 @@ _LAYOUT = str.maketrans({**{c: "d" for c in "0123456789"}, "+": None, "-": None,
 
 
 def _check_last_field(p: Path, lines: list[str], first: int, tokens: list[str]) -> None:
-    """Refuse a file whose last value is shorter than the fixed format of all the others
-    (a file cut inside its last number: ``-.1094953E-0`` for ``-.1094953E-03``)."""
+    """Refuse a file whose last value is cut short: all the other values have one fixed
+    format and the last one has only its beginning (``-.1094953E-0`` for ``.dddddddE-dd``:
+    a valid-looking number that lost its exponent)."""
     layouts = " ".join(tokens).translate(_LAYOUT).split()
     last = layouts.pop()
     ref = set(layouts)
     if len(ref) != 1 or "." not in next(iter(ref)):
         return  # not a fixed format: nothing to compare with
-    if last not in ref:
+    (shape,) = ref
+    if last != shape and shape.startswith(last):  # a prefix of the format: cut short
         ln = _line_of_token(lines, first, len(tokens) - 1)
         raise RecordError(f"{p}, line {ln}: the last value {tokens[-1]!r} does not have the "
                           f"number format of all the others (like {tokens[-2]!r}): the file "
@@ -449,17 +451,17 @@ def _name_unit(p: Path, ln: int, name: str):
     the unit word or None. An unknown word where a unit goes raises a RecordError."""
     b = list(re.finditer(_BRACKET, name))
     base = re.sub(_BRACKET, " ", name)
-    words = [w for w in re.split(r"[\s_]+", base.strip().lower()) if w]
+    words = [w for w in re.split(r"[\s_]+", base.strip()) if w]
     qty, k = None, -1
     for j, w in enumerate(words):
-        if w in _TIME_NAMES or w in _ACC_NAMES:
-            qty, k = ("time" if w in _TIME_NAMES else "acc"), j
+        if w.lower() in _TIME_NAMES or w.lower() in _ACC_NAMES:
+            qty, k = ("time" if w.lower() in _TIME_NAMES else "acc"), j
     unit = b[-1][1] if b else None
     if k >= 0:  # words after the quantity: qualifiers, then the unit
         rest = words[k + 1:]
-        while rest and rest[0] in _QUALIFIERS:
+        while rest and rest[0].lower() in _QUALIFIERS:
             rest = rest[1:]
-        while rest and rest[-1] in _QUALIFIERS and rest[-1] not in ("g",):
+        while rest and rest[-1].lower() in _QUALIFIERS:
             rest = rest[:-1]
         if rest:
             word = " ".join(rest)
@@ -474,11 +476,11 @@ def _name_unit(p: Path, ln: int, name: str):
 
 
 def _column_units(p: Path, ln: int, text: str, delim, ncols: int):
-    """``(time unit, acceleration unit)`` (canonical names or None) from the header line
-    ``text`` (line ``ln``) of a file with ``ncols`` columns."""
+    """``(time unit, acceleration unit, its word as written)`` (canonical names or None)
+    from the header line ``text`` (line ``ln``) of a file with ``ncols`` columns."""
     names = _column_names(text, delim)
     roles = ("time", "acc") if ncols == 2 else ("acc",)
-    t_unit = a_unit = None
+    t_unit = a_unit = a_word = None
     if len(names) == ncols:
         pairs = [(role, nm, *_name_unit(p, ln, nm)) for role, nm in zip(roles, names,
                                                                           strict=True)]
@@ -509,8 +511,8 @@ def _column_units(p: Path, ln: int, text: str, delim, ncols: int):
             if a_unit is not None and a_unit != au:
                 raise RecordError(f"{p}, line {ln}: the header states two acceleration "
                                   f"units, {a_unit!r} and {au!r}")
-            a_unit = au
-    return t_unit, a_unit
+            a_unit, a_word = au, unit
+    return t_unit, a_unit, a_word
 
 
 def _looks_like_names(text: str, delim, ncols: int) -> bool:
@@ -583,19 +585,19 @@ def _read_columns(p: Path, lines: list[str], units: str, factor: float, dt: floa
                           f"found {n}")
 
     # units stated in the file (column names, '# units:') must agree with the units passed
-    t_unit = a_unit = None
+    t_unit = a_unit = a_word = None
     names_text, names_ln = header_text, header_ln
     if names_text is None and last_comment is not None and last_comment[1] == first and \
             _looks_like_names(last_comment[0], delim, ncols):
         names_text, names_ln = last_comment
     if names_text is not None:
-        t_unit, a_unit = _column_units(p, names_ln, names_text, delim, ncols)
+        t_unit, a_unit, a_word = _column_units(p, names_ln, names_text, delim, ncols)
     stated = []
     if "units" in found:
         u, key, ln = found["units"]
         stated.append((u, key, f"line {ln}"))
     if a_unit is not None:
-        stated.append((a_unit, a_unit, f"line {names_ln} (column names)"))
+        stated.append((a_word, a_unit, f"line {names_ln} (column names)"))
     for u, key, where in stated:
         if not _close(ACCELERATION[key], factor):
             raise RecordError(f"{p}, {where}: the file states units {u!r} but units="
@@ -680,7 +682,8 @@ def _check_cut_columns(p: Path, lines: list[str], first: int, delim, declared: b
     col = len(toks) - 1
     layouts = {r[col].translate(_LAYOUT) if len(r) > col else "" for r in above}
     (ref,) = layouts if len(layouts) == 1 else ("",)
-    if "." in ref and "E" in ref and toks[col].translate(_LAYOUT) != ref:  # fixed E format
+    last = toks[col].translate(_LAYOUT)
+    if "." in ref and "E" in ref and last != ref and ref.startswith(last):  # cut short
         raise RecordError(f"{p}, line {last_j + 1}: the last value {toks[col]!r} does not "
                           f"have the number format of the values above it (like "
                           f"{above[-1][col]!r}): the file looks cut")
