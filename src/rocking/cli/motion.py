@@ -21,7 +21,7 @@ from pathlib import Path
 import click
 import numpy as np
 
-from .._validate import as_float, in_range
+from .._validate import as_float
 from ..errors import ParameterError
 from ..units import G, parse_quantity
 from .common import CONTEXT, integer, positive_quantity, read_record_arg
@@ -45,7 +45,10 @@ def _damping(text) -> float:
         if x >= 1.0:
             raise ParameterError(f"damping is a fraction (0.05) or a percentage (5%); "
                                  f"got {text!r}")
-    return in_range("damping", x, 0.0, 1.0, lo_open=False, shown="[0, 100) %")
+    if not 0.0 <= x < 1.0:  # name the text the user typed, not the fraction (500% -> 5.0)
+        raise ParameterError(f"damping must be in [0, 100) % (or a fraction in [0, 1)), "
+                             f"got {text!r}")
+    return x
 
 
 def _target(ag, ground, stype, damping: float):
