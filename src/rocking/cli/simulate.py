@@ -153,17 +153,18 @@ def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
         unused("freq", "amp", "tp")
         dtv = positive_quantity(dt, "time", "dt", "s", "s")
         u = "g" if units is None else units
-        rec, src = read_record_arg(M, record, "record", u, dtv)
+        rec, src = read_record_arg(M, record, "record", units, dtv)
         m = rec
         desc.update(file=src, units=u, dt=rec.dt, n=len(rec), pga=rec.pga)
         if vertical is not None:
-            vrec, vsrc = read_record_arg(M, vertical, "vertical", u, dtv)
+            vrec, vsrc = read_record_arg(M, vertical, "vertical", units, dtv)
             fv = (None if vertical_factor is None
                   else as_float("vertical-factor", vertical_factor))
             lf0 = 1.0 if load_factor is None else as_float("load-factor", load_factor)
             m = M.GroundMotion(rec, vrec).scaled(lf0, vertical=fv)
             desc.update(vertical=vsrc, vertical_factor=lf0 if fv is None else fv,
-                        pga_vertical=m.pga_vertical, repr=f"{rec!r} + vertical {vrec!r}")
+                        pga=m.pga, pga_vertical=m.pga_vertical,  # as run (scaled)
+                        repr=f"{m.horizontal!r} + vertical {m.vertical!r}")
             desc["load_factor"] = lf0
             return m, desc, dur
     elif motion in HARMONIC:
@@ -206,6 +207,8 @@ def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
         dur = None
     if lf != 1.0:
         m = m.scaled(lf)
+    if "pga" in desc:
+        desc["pga"] = m.pga  # as run, with the load factor
     desc["load_factor"] = lf
     desc["repr"] = repr(m)
     return m, desc, dur
@@ -376,10 +379,15 @@ def _motion_title(d: dict) -> str:
     if kind in PULSES:
         return f"{kind} pulse {d['amplitude'] / G:.3g} g, {d['tp']:g} s{tail}"
     if kind == "record" and "vertical" in d:
+        vf = d.get("vertical_factor", lf)
+        tail = (f", load factor {lf:g}" + (f" ({vf:g} vertical)" if vf != lf else "")
+                if lf != 1.0 or vf != 1.0 else "")
         return (f"record {Path(d['file']).name} + vertical {Path(d['vertical']).name} "
                 f"(PGA {d['pga'] / G:.3g} g, {d['pga_vertical'] / G:.3g} g vertical){tail}")
     if kind == "record":
         return f"record {Path(d['file']).name} (PGA {d['pga'] / G:.3g} g){tail}"
+    if kind == "earthquake":
+        return f"earthquake {d['number']} (PGA {d['pga'] / G:.3g} g){tail}"
     return "free rocking"
 
 
