@@ -161,8 +161,12 @@ def make_block(specimen=None, params=None, width=None, height=None, mass=None, a
                                  f"(full size, e.g. 0.17 or 170mm)")
         w = quantity(width, "length", "width", default_unit="m")
         h = quantity(height, "length", "height", default_unit="m")
-        block = Block.rectangular(w, h, mass=number(mass, "mass", ("kg",)),
-                                  name="rectangular block")
+        try:
+            block = Block.rectangular(w, h, mass=number(mass, "mass", ("kg",)),
+                                      mu=None if mu is None else number(mu, "mu"),
+                                      name="rectangular block")
+        except ParameterError as e:  # name what the user gave, not p or the vertices
+            raise ParameterError(_size_problem(width, height, w, h, e)) from None
         info.update(width=block.width, height=block.height, mass=block.mass)
     else:
         if p is None or mu is None:
@@ -184,6 +188,23 @@ def make_block(specimen=None, params=None, width=None, height=None, mass=None, a
         block = block.with_params(**changes)
         info.update({f"{k}_override": v for k, v in changes.items()})
     return block, info
+
+
+def _size_problem(width, height, w: float, h: float, e: ParameterError) -> str:
+    """The message of a block that ``--width``/``--height`` cannot make, in their words.
+
+    Sizes so large that ``R``, ``p = sqrt(3 g / 4 R)`` or the area leave floating point
+    (``--width 1e308``) would otherwise be reported as ``p must be > 0`` or ``vertices
+    enclose no area``, naming what the user never gave."""
+    given = f"--width {width} --height {height}"
+    msg = one_line(e)
+    if msg.startswith(("width", "height", "mass")):
+        return msg
+    with_r = math.hypot(w / 2.0, h / 2.0)
+    if not (math.isfinite(w * h) and math.isfinite(with_r * with_r) and with_r * with_r > 0):
+        return (f"{given}: too large (or too small) a block for floating point ({w:g} m x "
+                f"{h:g} m): give the sizes in m, e.g. --width 0.17 --height 1 or 170mm")
+    return f"{given}: {msg}"
 
 
 # ----------------------------------------------------------------------------- models
@@ -278,9 +299,26 @@ def _shown(value) -> str:
 
 
 # ----------------------------------------------------------------------------- records
+def _option_words(msg: str, units, dt) -> str:
+    """A record reader's message in the CLI's words: ``units='g' was passed`` becomes
+    ``--units g was given`` (or, when the user gave no ``--units``, ``--units was not
+    given (the default is g)``), ``pass units='m/s^2'`` becomes ``pass --units m/s^2``,
+    ``dt=0.01 s was passed`` becomes ``--dt 0.01 s was given``."""
+    said = (r"--units \1 was given" if units is not None
+            else "--units was not given (the default is g)")
+    msg = re.sub(r"\bunits='([^']*)' was passed", said, msg)
+    msg = re.sub(r"\bpass units='([^']*)'", r"pass --units \1", msg)
+    if dt is not None:
+        msg = re.sub(r"\bdt=(\S+) s was passed", r"--dt \1 s was given", msg)
+    return msg
+
+
 def read_record_arg(M, path, name: str, units, dt):
     """``(record, source)`` from a file, or from the records shipped with the package by
-    name (``M`` is :mod:`rocking.motions`, passed in to keep numba out of this module)."""
+    name (``M`` is :mod:`rocking.motions`, passed in to keep numba out of this module).
+
+    ``units`` None: the user gave no ``--units``; a file is read in g (the default) and a
+    message says so rather than naming a ``units='g'`` the user never wrote."""
     from ..units import ACCELERATION
 
     if units is not None and units not in ACCELERATION:
@@ -299,9 +337,12 @@ def read_record_arg(M, path, name: str, units, dt):
     if p.is_dir():
         raise RecordError(f"{name}: {path} is a directory, not a record file")
     try:
-        return M.Record.from_file(p, units=units, dt=dt), str(path)
-    except RockingError:
-        raise
+        return M.Record.from_file(p, units="g" if units is None else units, dt=dt), str(path)
+    except RockingError as e:
+        msg = _option_words(str(e), units, dt)
+        if msg == str(e):
+            raise
+        raise type(e)(msg) from None
     except (OSError, ValueError, UnicodeError) as e:
         raise RecordError(f"{name}: cannot read {path}: {e}") from None
 
