@@ -257,7 +257,7 @@ class Store:
             if other or (chunks.is_dir() and any(_CHUNK.match(n) for n in os.listdir(chunks))):
                 raise StoreError(f"--out {p}: exists and is not a campaign store: give a new "
                                  "or empty directory")
-        (p / CHUNKS).mkdir(parents=True, exist_ok=True)
+        p.mkdir(parents=True, exist_ok=True)
         return self
 
     def open_for(self, spec: CampaignSpec, log: Callable | None = None) -> Store:
@@ -265,13 +265,14 @@ class Store:
         same spec and package version (else :class:`~rocking.errors.StoreError`); a damaged
         manifest is rewritten if the store's ``spec.toml`` or records show it holds
         ``spec``. Call it with the lock held (:meth:`prepare`, :meth:`lock`)."""
-        (self.path / CHUNKS).mkdir(parents=True, exist_ok=True)
+        self.path.mkdir(parents=True, exist_ok=True)
         self._manifest = None
         if self.exists():
             try:
                 m = self.manifest
             except ManifestError as e:
                 self._rebuild_manifest(spec, str(e), log or (lambda msg: None))
+                (self.path / CHUNKS).mkdir(exist_ok=True)
                 return self
             if m.get("spec_hash") != spec.hash:
                 raise StoreError(f"{self.path} holds a different campaign (spec hash "
@@ -281,9 +282,11 @@ class Store:
             if m.get("version") != __version__:
                 raise StoreError(f"{self.path} was written by rocking {m.get('version')}, this "
                                  f"is {__version__}: results could differ; use another --out")
-            return self
-        atomic_write(self.path / SPEC, spec.text)
-        atomic_write(self.manifest_path, json.dumps(manifest_for(spec), indent=1, default=str))
+        else:
+            atomic_write(self.path / SPEC, spec.text)
+            atomic_write(self.manifest_path, json.dumps(manifest_for(spec), indent=1,
+                                                        default=str))
+        (self.path / CHUNKS).mkdir(exist_ok=True)  # after the manifest: chunks/ implies it
         return self
 
     def _rebuild_manifest(self, spec: CampaignSpec, why: str, log: Callable) -> None:
@@ -307,10 +310,12 @@ class Store:
             raise StoreError(f"{why}; nothing in {self.path} shows it holds this spec "
                              "(and version): use another --out")
         q = self._quarantine_dir()
-        for name in (MANIFEST, SPEC):
-            if (self.path / name).exists():
-                replace(self.path / name, q / name)
-        atomic_write(self.path / SPEC, spec.text)
+        replace(self.manifest_path, q / MANIFEST)
+        sp = self.path / SPEC
+        if not sp.is_file() or sp.read_text(encoding="utf-8", errors="replace") != spec.text:
+            if sp.exists():
+                replace(sp, q / SPEC)
+            atomic_write(sp, spec.text)
         atomic_write(self.manifest_path, json.dumps(manifest_for(spec), indent=1, default=str))
         self._manifest = None
         log(f"{MANIFEST}: {why.split(': ', 1)[-1]}: rewritten from the spec ({evidence}); "
@@ -452,10 +457,6 @@ class Store:
                                         k, paths))
                 continue
             sha, size = _sha256(self.chunk_path(k))
-            if size < r["bytes"]:
-                problems.append(Problem(cname, "truncated", f"{size} of {r['bytes']} bytes",
-                                        k, paths))
-                continue
             if sha != r["sha256"]:
                 j = by_sha.get(sha)
                 if j is not None and j != k:
@@ -464,6 +465,9 @@ class Store:
                     problems.append(Problem(
                         cname, "duplicate", f"a copy of {chunk_name(j)}: sim_ids {a}-{b - 1} "
                         f"twice, {c}-{e - 1} missing", k, paths))
+                elif size < r["bytes"]:
+                    problems.append(Problem(cname, "truncated",
+                                            f"{size} of {r['bytes']} bytes", k, paths))
                 else:
                     problems.append(Problem(cname, "altered", "sha256 differs from its record"
                                             + (f", {size} of {r['bytes']} bytes"
@@ -476,7 +480,8 @@ class Store:
                     continue
             ok.add(k)
             adopted += bool(r.get("adopted"))
-        return Check(nc, frozenset(ok), tuple(problems), running, adopted)
+        return Check(nc, frozenset(ok), tuple(sorted(problems, key=lambda p: p.name)),
+                     running, adopted)
 
     def _read_problem(self, k: int, r: dict) -> str | None:
         return self._read(k, r)[1]
@@ -489,7 +494,7 @@ class Store:
         try:
             t = pq.read_table(self.chunk_path(k)).to_pandas()
         except (pa.ArrowException, OSError, ValueError) as e:
-            return None, f"unreadable Parquet: {str(e).splitlines()[0][:80]}"
+            return None, f"unreadable Parquet: {str(e).splitlines()[0][:120]}"
         if "sim_id" not in t.columns:
             return None, "no sim_id column"
         ids = t["sim_id"].to_numpy()
@@ -512,8 +517,9 @@ class Store:
         return t
 
     def done(self) -> set[int]:
-        """Indices of the finished chunks (verified against their records)."""
-        return set(self.check().ok)
+        """Indices of the finished chunks (verified against their records); none before
+        the manifest is written."""
+        return set(self.check().ok) if self.exists() else set()
 
     def write_chunk(self, k: int, table: pd.DataFrame) -> None:
         """Write chunk ``k`` (its rows, in ``sim_id`` order): the Parquet file, synced and
@@ -560,7 +566,7 @@ class Store:
                 if f.exists():
                     replace(f, q / f.name)
                     moved.append(f.name)
-            what = ("recomputed" if p.chunk is not None else "not part of the campaign")
+            what = ("to be recomputed" if p.chunk is not None else "not part of the campaign")
             log(f"{p}: moved to {q.relative_to(self.path)}/ ({', '.join(moved)}); {what}")
         return problems
 
@@ -586,7 +592,7 @@ class Store:
             d = self.path / CHUNKS
             adopted, moved = [], []
             q = None
-            for name in sorted(os.listdir(d)):
+            for name in sorted(os.listdir(d)) if d.is_dir() else []:
                 if is_temporary(name):
                     continue
                 mt = _CHUNK.match(name)

@@ -191,7 +191,7 @@ def verify_cmd(store, as_json):
     click.echo(f"{head}; {tail}")
     if c.problems:
         click.echo(f"{len(c.problems)} problem(s): `rocking campaign run SPEC --out {store}` "
-                   "moves the files into quarantine/ and recomputes their chunks")
+                   "moves these files into quarantine/ and recomputes the chunks concerned")
         return 1
     return 0
 
