@@ -46,7 +46,9 @@ def ida(block, records, im: str = "pga", levels=None, model="housner",
     levels : sequence of float
         IM levels (in the units of ``im``), > 0.
     model, duration, **options
-        As in :func:`rocking.simulate_many` (``duration`` defaults to each record's own).
+        As in :func:`rocking.simulate_many`: with no ``duration`` each run goes on after
+        its record until the block has settled, at most ``max_free_time`` (an option)
+        longer.
     thresholds : sequence of float
         Damage-state thresholds on max |theta| / alpha (:func:`~.damage.damage_state`).
 
@@ -55,7 +57,9 @@ def ida(block, records, im: str = "pga", levels=None, model="housner",
     DataFrame, one row per (record, level): ``record`` (index), ``name``, ``level``,
     ``im``, ``scale`` (load factor), ``max_abs_theta`` (rad),
     ``max_abs_theta_over_alpha``, ``overturned``, ``overturn_time`` (s, NaN if none),
-    ``n_impacts`` and ``damage_state``.
+    ``n_impacts``, ``settled`` (the block was at rest or had overturned when the run
+    ended; an unsettled run is still rocking: it counts as not overturned, with the angle
+    it reached) and ``damage_state``.
     """
     recs = list(records) if not isinstance(records, Record) else [records]
     if not recs or not all(isinstance(r, Record) for r in recs):
@@ -83,7 +87,7 @@ def ida(block, records, im: str = "pga", levels=None, model="housner",
         "record": ri, "name": [recs[i].name for i in ri], "level": li, "im": lv[li],
         "scale": scale, "max_abs_theta": res.max_abs_theta, "max_abs_theta_over_alpha": ratio,
         "overturned": res.overturned, "overturn_time": res.overturn_time,
-        "n_impacts": res.n_impacts,
+        "n_impacts": res.n_impacts, "settled": res.settled,
         "damage_state": damage_state(res.max_abs_theta, block.alpha, res.overturned,
                                      thresholds),
     })

@@ -133,7 +133,9 @@ class MonteCarloResult:
     samples: pd.DataFrame
     """One row per sample: the drawn parameters, ``theta0_truncated`` (its first ``theta0``
     draw lay at or beyond +-alpha and was redrawn), ``motion`` (index into ``motions``),
-    ``max_abs_theta`` (rad), ``max_abs_theta_over_alpha``, ``overturned``, ``n_impacts``."""
+    ``max_abs_theta`` (rad), ``max_abs_theta_over_alpha``, ``overturned``, ``n_impacts``,
+    ``settled`` (at rest or overturned when the run ended; an unsettled sample counts as
+    not overturned)."""
     level: float = 0.95
     seed: int = 0
     info: dict = field(default_factory=dict)
@@ -152,6 +154,12 @@ class MonteCarloResult:
         (the distribution of ``theta0`` truncated to ``|theta0| < alpha``)."""
         col = self.samples.get("theta0_truncated")
         return 0 if col is None else int(col.sum())
+
+    @property
+    def n_unsettled(self) -> int:
+        """Samples still rocking when their run ended (counted as not overturned)."""
+        col = self.samples.get("settled")
+        return 0 if col is None else int((~col.astype(bool)).sum())
 
     @property
     def p_overturn(self) -> float:
@@ -175,6 +183,7 @@ class MonteCarloResult:
                          "p_overturn": self.p_overturn, "ci_low": lo, "ci_high": hi,
                          "level": self.level, "seed": self.seed,
                          "n_theta0_truncated": self.n_theta0_truncated,
+                         "n_unsettled": self.n_unsettled,
                          "max_abs_theta_over_alpha_q05": q.iloc[0] if q.size else None,
                          "max_abs_theta_over_alpha_median": q.iloc[1] if q.size else None,
                          "max_abs_theta_over_alpha_q95": q.iloc[2] if q.size else None,
@@ -249,7 +258,9 @@ def monte_carlo(block: Block, motions, uncertain: dict | None = None, n: int = 1
     n, seed : int
         Number of samples; the seed of every draw (see the module docstring).
     model, duration, **options
-        As in :func:`rocking.simulate_many`.
+        As in :func:`rocking.simulate_many` (with no ``duration`` a run goes on after its
+        motion until the block has settled, at most ``max_free_time`` longer; the samples
+        still rocking at the end are flagged in ``settled``).
     chunk_size : int
         Samples per compiled batch (memory only: results do not depend on it).
     level : float
@@ -284,6 +295,7 @@ def monte_carlo(block: Block, motions, uncertain: dict | None = None, n: int = 1
         table["max_abs_theta_over_alpha"] = res.max_abs_theta / table["alpha"]
         table["overturned"] = res.overturned
         table["n_impacts"] = res.n_impacts
+        table["settled"] = res.settled
         parts.append(table)
     samples = pd.concat(parts, ignore_index=True)
     return MonteCarloResult(samples, level=level, seed=int(seed),

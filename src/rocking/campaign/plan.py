@@ -54,7 +54,7 @@ STREAM = 3
 KEEP = 2000
 """Motions a worker keeps built between chunks (beyond: only the current chunk's)."""
 RESULT_COLUMNS = ("max_abs_theta", "max_abs_theta_over_alpha", "overturned", "overturn_time",
-                  "uplift_time", "n_impacts", "damage_state", "status")
+                  "uplift_time", "n_impacts", "settled", "damage_state", "status")
 PULSE_CLASSES = {"one_sine": OneSine, "one_cosine": OneCosine, "half_sine": HalfSine,
                  "rectangular": Rectangular}
 
@@ -252,21 +252,27 @@ class Campaign:
 
         Results: ``max_abs_theta`` (rad), ``max_abs_theta_over_alpha``, ``overturned``,
         ``overturn_time`` and ``uplift_time`` (s, NaN if none), ``n_impacts``,
-        ``damage_state`` (:func:`rocking.analysis.damage_state` with the spec's thresholds;
-        -1 for a failed run) and ``status`` (0, or the model's failure code: the run failed
+        ``settled`` (the block was at rest or had overturned when the run ended: with no
+        ``duration`` a run goes on after its motion until then, at most the spec's
+        ``max_free_time``; an unsettled run is still rocking and counts as a survivor with
+        the angle it reached, flagged here), ``damage_state``
+        (:func:`rocking.analysis.damage_state` with the spec's thresholds; -1 for a failed
+        run) and ``status`` (0, or the model's failure code: the run failed
         numerically and its ``max_abs_theta`` is NaN).
         """
         table, blocks, motions = self.inputs(ids)
         n = len(table)
         out = {"max_abs_theta": np.full(n, np.nan), "overturned": np.zeros(n, bool),
                "overturn_time": np.full(n, np.nan), "uplift_time": np.full(n, np.nan),
-               "n_impacts": np.zeros(n, np.int64), "status": np.zeros(n, np.int64)}
+               "n_impacts": np.zeros(n, np.int64), "settled": np.zeros(n, bool),
+               "status": np.zeros(n, np.int64)}
         models = table["model"].to_numpy()
         theta0 = table["theta0"].to_numpy()
         for name in dict.fromkeys(models):
             idx = np.flatnonzero(models == name)
             res = simulate_many([blocks[i] for i in idx], [motions[i] for i in idx],
                                 model=name, duration=self.spec.duration,
+                                max_free_time=self.spec.max_free_time,
                                 theta0=theta0[idx] if theta0[idx].any() else 0.0,
                                 errors="nan", **self.spec.options.get(name, {}))
             for k in out:

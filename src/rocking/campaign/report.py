@@ -21,7 +21,12 @@ The IM is the table's ``im`` column when the campaign scaled its motions to inte
 levels (name and unit from ``manifest["im"]``, so every run of a level has the same IM),
 else the PGA of each run as run (``pga``, m/s^2): the points of a level are then drawn at
 the median PGA of its runs, while the fit uses each run's own PGA. Runs with a non-zero
-``status`` (numerical failure) are left out of every count and fit, and counted.
+``status`` (numerical failure) are left out of every count and fit, and counted. Runs
+still rocking when they ended (``settled`` false: neither at rest nor overturned at the
+spec's ``duration``, or ``max_free_time`` after their motion) are counted as survivors,
+with the max|theta|/alpha they reached, and flagged: their number is in ``report.md``, in
+the terminal summary and per level (``n_unsettled`` in ``p_overturn.csv``). Initial tilts
+redrawn because a draw lay beyond +-alpha (``theta0_truncated``) are counted the same way.
 """
 
 from __future__ import annotations
@@ -97,6 +102,11 @@ def _check(table, manifest) -> tuple[pd.DataFrame, dict, tuple]:
         if not ov.isin([0, 1, True, False]).all():
             raise ParameterError("table: column overturned must be boolean")
         t["overturned"] = ov.astype(bool)
+    for col in ("settled", "theta0_truncated"):  # optional: stores of older versions lack them
+        if col in t.columns and t[col].dtype != bool:
+            if not t[col].isin([0, 1, True, False]).all():
+                raise ParameterError(f"table: column {col} must be boolean")
+            t[col] = t[col].astype(bool)
     thresholds = manifest.get("thresholds")
     thresholds = tuple(DEFAULT_THRESHOLDS if thresholds is None else
                        (float(v) for v in thresholds))
@@ -156,6 +166,8 @@ def _p_overturn(g: pd.DataFrame, im_col: str, n_states: int) -> pd.DataFrame:
                "p_overturn": k / n if n else math.nan, "ci_lower": lo, "ci_upper": hi,
                "median_ratio_survivors": float(surv.median()) if len(surv) else math.nan,
                "n_excluded": int(len(d) - n)}
+        if "settled" in ok.columns:
+            row["n_unsettled"] = int((~ok["settled"]).sum())
         for s in range(1, n_states + 1):
             row[f"p_ds_ge_{s}"] = float((ok["damage_state"] >= s).mean()) if n else math.nan
         rows.append(row)
@@ -275,15 +287,25 @@ def _md_table(header: list[str], rows: list[list[str]]) -> list[str]:
             *("| " + " | ".join(r) + " |" for r in rows), ""]
 
 
-def _run_counts(t: pd.DataFrame) -> tuple[list[str], dict]:
-    """Lines on how the runs were made (truncated draws), and their counts."""
-    lines, counts = [], {}
+def _run_counts(t: pd.DataFrame) -> tuple[list[str], list[str], dict]:
+    """How the runs were made and ended: ``(lines for report.md, those of them with a
+    non-zero count for the terminal, the counts)``."""
+    lines, alerts, counts = [], [], {}
     if "theta0_truncated" in t.columns:
-        k = counts["n_theta0_truncated"] = int(t["theta0_truncated"].astype(bool).sum())
+        k = counts["n_theta0_truncated"] = int(t["theta0_truncated"].sum())
         if k or t["theta0"].ne(0).any():  # theta0 was uncertain
             lines.append(f"initial tilt: {k} of {len(t)} runs drew theta0 at or beyond "
                          "+-alpha and redrew it (theta0 truncated to |theta0| < alpha)")
-    return lines, counts
+            alerts += lines[-1:] if k else []
+    if "settled" in t.columns:
+        ok = t["status"] == 0
+        k = counts["n_unsettled"] = int((ok & ~t["settled"]).sum())
+        lines.append(f"unsettled: {k} of {int(ok.sum())} runs were still rocking when they "
+                     "ended (neither at rest nor overturned); they count as survivors with "
+                     "the max|theta|/alpha they reached (column settled = false; raise "
+                     "max_free_time or duration to decide them)")
+        alerts += lines[-1:] if k else []
+    return lines, alerts, counts
 
 
 def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
@@ -335,9 +357,11 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
 
     Returns ``{"files": [Path], "fragility": DataFrame, "p_overturn": DataFrame,
     "notes": [str], "im": {"name", "unit", "column"}, "n_runs": int, "n_excluded": int,
-    "run_notes": [str], "n_theta0_truncated": int}`` (``run_notes``: how the runs were made,
-    e.g. how many initial tilts were redrawn, also in ``report.md`` and the terminal
-    summary; ``n_theta0_truncated`` only for a table with that column).
+    "run_notes": [str], "run_alerts": [str], "n_theta0_truncated": int,
+    "n_unsettled": int}``: ``run_notes`` say how the runs were made and ended (initial
+    tilts redrawn, runs still rocking at their end) in ``report.md``, ``run_alerts`` are
+    those with a non-zero count (the terminal summary); the counts only for a table with
+    the column (``theta0_truncated``, ``settled``).
     Raises :class:`~rocking.ParameterError` for an empty table or a missing column.
     """
     t, im, thresholds = _check(table, manifest)
@@ -347,7 +371,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     out.mkdir(parents=True, exist_ok=True)
     failed = t["status"] != 0
     n_excl = int(failed.sum())
-    run_lines, run_counts = _run_counts(t)
+    run_lines, run_alerts, run_counts = _run_counts(t)
     notes = []
     if n_excl:
         notes.append(f"{n_excl} of {len(t)} runs failed numerically (status != 0) and are "
@@ -391,7 +415,8 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     (out / "report.md").write_text(md, encoding="utf-8")
     files.append(out / "report.md")
     return {"files": files, "fragility": fr, "p_overturn": po, "notes": notes, "im": im,
-            "n_runs": len(t), "n_excluded": n_excl, "run_notes": run_lines, **run_counts}
+            "n_runs": len(t), "n_excluded": n_excl, "run_notes": run_lines,
+            "run_alerts": run_alerts, **run_counts}
 
 
 def summary_lines(result: dict) -> list[str]:
@@ -400,7 +425,7 @@ def summary_lines(result: dict) -> list[str]:
     im = result.get("im", {"name": "IM", "unit": ""})
     unit = f" {im['unit']}" if im.get("unit") else ""
     lines = [f"{result.get('n_runs', '?')} runs ({result.get('n_excluded', 0)} failed, "
-             f"excluded); IM: {_im_label(im)}", *result.get("run_notes", ())]
+             f"excluded); IM: {_im_label(im)}", *result.get("run_alerts", ())]
     fr = result["fragility"]
     for r in fr[fr["fit"] == "overturning"].itertuples():
         head = f"{r.model} / {r.block_name}:"

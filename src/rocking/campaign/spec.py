@@ -6,7 +6,11 @@
     name = "fragility-2-4"
     seed = 7                      # every random draw derives from (seed, sim_id)
     model = "housner"             # or a list: ["housner", "ccrr"]
-    duration = 25.0               # s, optional: default each motion's own duration
+    duration = 25.0               # s, optional: default each motion's own duration, then
+                                  # free rocking until the block has settled
+    max_free_time = 60.0          # s, optional (only without duration): cap of that free
+                                  # rocking (default rocking.models.run.DEFAULT_MAX_FREE_TIME;
+                                  # 0 stops at the end of each motion)
     samples = 1                   # optional: realizations of [uncertain] per (block, motion, level)
     thresholds = [0.25, 0.5]      # optional: damage states on max|theta|/alpha
 
@@ -71,7 +75,8 @@ from ..models.registry import MODELS
 from ..units import ACCELERATION
 
 SECTIONS = {"campaign", "blocks", "motions", "uncertain", "run", "options"}
-CAMPAIGN_KEYS = {"name", "seed", "model", "duration", "samples", "thresholds"}
+CAMPAIGN_KEYS = {"name", "seed", "model", "duration", "max_free_time", "samples",
+                 "thresholds"}
 RUN_KEYS = {"chunk_size", "window"}
 BLOCK_FORMS = ({"specimen", "params"}, {"width", "height", "mass"}, {"alpha", "p", "mu"})
 MOTION_KINDS = ("seed_earthquakes", "files", "builtin", "stochastic", "sine_grid", "pulse_grid")
@@ -402,6 +407,9 @@ class CampaignSpec:
     raw: dict = field(repr=False)
     base_dir: str = "."
     """The folder that relative record paths (``kind = "files"``) start from."""
+    max_free_time: float | None = None
+    """Cap (s) of the free rocking after each motion (``duration`` unset); None: the
+    package's default (:data:`rocking.models.run.DEFAULT_MAX_FREE_TIME`)."""
 
     @property
     def hash(self) -> str:
@@ -466,6 +474,13 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
         _fail("campaign.model", "has repeated models")
     duration = (_number("campaign.duration", c["duration"], 0, 1e6, lo_open=True)
                 if "duration" in c else None)
+    max_free_time = None
+    if "max_free_time" in c:
+        max_free_time = _number("campaign.max_free_time", c["max_free_time"], 0,
+                                MAX_RECORD_DURATION)
+        if duration is not None:
+            _fail("campaign.max_free_time", "applies only without campaign.duration (a run "
+                                            "with a duration stops exactly there)")
     samples = int(_number("campaign.samples", c.get("samples", 1), 1, 1e9, integer=True))
     thr = c.get("thresholds", list(DEFAULT_THRESHOLDS))
     if not isinstance(thr, list):
@@ -551,7 +566,8 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
     return CampaignSpec(name=name, seed=seed, models=models, duration=duration,
                         samples=samples, thresholds=thresholds, blocks=blocks, motions=motions,
                         uncertain=uncertain, chunk_size=chunk, window=window, options=options,
-                        text=text, raw=raw, base_dir=str(Path(base_dir).resolve()))
+                        text=text, raw=raw, base_dir=str(Path(base_dir).resolve()),
+                        max_free_time=max_free_time)
 
 
 def read_spec(path) -> CampaignSpec:
