@@ -104,9 +104,8 @@ def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
                                  f"got {earthquake!r}") from None
         lf = 1.0 if load_factor is None else as_float("load-factor", load_factor)
         m = earthquake_motion(n, lf)
+        # default (None): the run goes on after the record until the block has settled
         dur = positive_quantity(duration, "time", "duration", "s", "s")
-        if dur is None:  # capture the free rocking after the record ends
-            dur = m.duration + 5.0
         desc = {"type": "earthquake", "number": n, "load_factor": lf, "dt": m.dt,
                 "pga": m.pga, "repr": repr(m)}
         return m, desc, dur
@@ -142,10 +141,7 @@ def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
 
     desc: dict = {"type": motion}
     if motion == "free":
-        unused("freq", "amp", "tp")
-        if dur is None:
-            raise ParameterError("duration is required for --motion free (s > 0), "
-                                 "e.g. --duration 10")
+        unused("freq", "amp", "tp")  # no --duration: until at rest or overturned
         desc["load_factor"] = lf
         return None, desc, dur
 
@@ -204,7 +200,7 @@ def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
                    "half-sine": M.HalfSine, "rectangular": M.Rectangular}[motion]
             m = cls(a, tpv, duration=dur)
             desc.update(amplitude=a, tp=tpv, duration=m.duration)
-        dur = None
+        # a pulse's --duration is the run's length exactly (None: until settled)
     if lf != 1.0:
         m = m.scaled(lf)
     if "pga" in desc:
@@ -273,8 +269,11 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
                    "pulses: peak acceleration (0.3g, 2.8m/s2).")
 @click.option("--tp", metavar="T", help="Pulse period/length (s).")
 @click.option("--duration", metavar="T",
-              help="Simulated time (s); default the motion's (required for sine, "
-                   "hanning, free).")
+              help="Simulated time (s), exactly. Default: the motion, then free motion "
+                   "until the block is at rest or has overturned (at most --max-free-time "
+                   "more). Required for sine and hanning (the motion's length).")
+@click.option("--max-free-time", "max_free_time", metavar="T",
+              help="Cap of the free motion after the ground motion ends (s; default 60).")
 @click.option("--record", metavar="FILE",
               help="Accelerogram file (.AT2, CSV or columns), or a built-in record's name "
                    "(e.g. Rinaldi228).")
@@ -303,9 +302,9 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
 @click.option("--out", type=click.Path(file_okay=False),
               help="Write response.csv, summary.json and theta.png to this folder.")
 def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model_opts, motion,
-                 freq, amp, tp, duration, record, vertical, vertical_factor, units, dt,
-                 earthquake, load_factor, theta0, omega0, linear, friction_angle, stiffness,
-                 damping, dt_out, out):
+                 freq, amp, tp, duration, max_free_time, record, vertical, vertical_factor,
+                 units, dt, earthquake, load_factor, theta0, omega0, linear, friction_angle,
+                 stiffness, damping, dt_out, out):
     """Simulate one block under one base motion."""
     from ..models import simulate  # lazy: the models import numba
 
@@ -320,6 +319,14 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
     run = {}
     if dt_out is not None:
         run["dt_out"] = positive_quantity(dt_out, "time", "dt_out", "s", "s")
+    if max_free_time is not None:
+        if sim_dur is not None:
+            raise ParameterError("max-free-time applies without --duration only (--duration "
+                                 "is the run's length exactly)")
+        mft = quantity(max_free_time, "time", "max-free-time", default_unit="s")
+        if not mft >= 0.0:
+            raise ParameterError(f"max-free-time must be >= 0 s, got {max_free_time!r}")
+        run["max_free_time"] = mft
     resp = simulate(block, mot, model=model, duration=sim_dur,
                     theta0=0.0 if th0 is None else th0, omega0=0.0 if om0 is None else om0,
                     linear=linear, **run, **options)
@@ -349,6 +356,10 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
     up = "-" if math.isnan(resp.uplift_time) else f"t = {resp.uplift_time:.4g} s"
     click.echo(f"uplift      {up}")
     click.echo(f"impacts     {resp.n_impacts}")
+    if not resp.settled and not resp.lifted_off:
+        fix = "extend --duration" if sim_dur is not None else "raise --max-free-time"
+        click.echo(f"warning: still rocking at the end (t = {resp.duration:.4g} s): the "
+                   f"outcome may change; {fix}", err=True)
     if "vertical" in mdesc:
         lo = ("-" if not resp.lifted_off else f"yes, at t = {resp.lift_off_time:.4g} s: "
               "g + a_v <= 0, the block leaves the ground and the run stops there")
