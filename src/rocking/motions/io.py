@@ -4,19 +4,32 @@
 reads
 
 * PEER NGA ``.AT2`` files (recognised by the extension or by an ``NPTS`` header on line 4):
-  four header lines, the fourth stating ``NPTS=  2048, DT=   .0066 SEC`` (possibly followed
-  by filter information) or ``2048    0.0066    NPTS, DT``; then the samples in g, in
-  Fortran E format (``.1717907E-01``), five to a line, the last line possibly short;
+  four header lines, the third stating the units (``... IN UNITS OF G``; g if it states
+  none), the fourth ``NPTS=  2048, DT=   .0066 SEC`` (possibly followed by filter
+  information) or ``2048    0.0066    NPTS, DT``; then the samples in Fortran E format
+  (``.1717907E-01``), five to a line, the last line possibly short;
 * CSV or whitespace-separated columns: ``time, acceleration`` with uniform time steps, or
   a single acceleration column with a time step ``dt`` given by the caller or stated in a
   header comment (``# dt = 0.01 s``). Lines starting with ``#`` are comments; the first
-  non-numeric line is taken as a column header. A comment ``# units: g`` states the units
-  of the acceleration column; it must agree with the ``units`` passed.
+  non-numeric line is taken as a column header (so is a comment line just above the data
+  that names the columns, ``# time_s, acc_g``). Whitespace-only lines are blank lines.
 
-Samples are returned in m/s^2 and the record starts at ``t = 0`` (a time column that
-starts elsewhere is re-based, the original start kept in ``meta["t_start"]``). Every
-problem raises :class:`~rocking.errors.RecordError` with a message that names the file and,
-where it applies, the 1-based line number.
+Records are read exactly, or refused:
+
+* **units.** Every unit word is understood, in any case: time ``s``/``sec``/``second(s)``,
+  ``ms``/``msec``/``millisecond(s)``, ``us``/``µs``/``usec``/``microsecond(s)``;
+  acceleration ``g``, ``gal``, ``cm/s^2`` (``cm/s2``, ``cm/sec^2``, ``cm/s/s``, ``cm s^-2``),
+  ``m/s^2``, ``mm/s^2``. They are read from ``dt`` statements (``# dt = 10 msec``,
+  ``# dt (ms) = 10``, ``# dt_ms = 10``, AT2 ``DT= 5 MSEC``; a bare number is in s), from a
+  ``# units: gal`` comment, from the AT2 units line and from column names (``time_ms``,
+  ``acc_g``, ``Acceleration (cm/s^2)``, ``t [s]``, ``acceleration in g``). A word where a
+  unit goes that is not one of these is refused by name; a time column in ms or us is
+  converted. An acceleration unit stated in the file must agree with ``units``: otherwise
+  the error names both (the file is never silently re-scaled, either way).
+* **counts.** A declared count (AT2 ``NPTS``, ``# npts = N``) must equal the values read.
+* **cut files.** A last value that is only the beginning of the file's fixed number format
+  (``-.1094953E-0`` after thousands of ``.dddddddE-dd``) is refused; so is a column file
+  that declares ``npts`` but does not end with a line break.
 
 :func:`write_csv` writes a record as ``t,acc`` columns in m/s^2 that :func:`read_record`
 reads back with ``units="m/s^2"``. :func:`builtin_records` and :func:`read_builtin` give
@@ -61,13 +74,15 @@ _AT2_ALT = re.compile(rf"^\s*(\d+)\s*,?\s+({_NUM})\s*,?\s*NPTS\s*,?\s*DT", re.I)
 _AT2_UNITS = re.compile(r"UNITS\s+OF\s+(.+?)\s*(?:[,;]|\s\s|$)", re.I)
 _AT2_KIND = re.compile(r"\b(ACCELERATION|VELOCITY|DISPLACEMENT)\b", re.I)
 _FORTRAN_D = re.compile(r"(?<=[\d.])[dD](?=[-+]?\d)")
+# statements start a comment or follow a ',' or ';' (not inside a record's name)
 _HDR_DT = re.compile(
-    rf"\bdt(?:_({_WORD})|\s*{_BRACKET})?\s*[=:]\s*({_NUM})(?:\s*{_BRACKET}|\s*({_WORD}))?",
+    rf"(?:^|[#,;])\s*dt(?:_({_WORD})|\s*{_BRACKET})?\s*[=:]\s*({_NUM})(?:\s*{_BRACKET}|\s*({_WORD}))?",
     re.I)
-_HDR_NPTS = re.compile(r"\bnpts\s*[=:]\s*([^\s,;]*)", re.I)
+_HDR_NPTS = re.compile(r"(?:^|[#,;])\s*npts\s*[=:]\s*([^\s,;]*)", re.I)
 _HDR_UNITS = re.compile(r"^\s*#?\s*(?:acc\w*\s+)?units?\s*[=:]\s*([^,;]*?)\s*(?:[,;].*)?$",
                         re.I)
 _SPLIT = re.compile(r"[,;\s]+")
+_TITLE = re.compile(r"^#\s*rocking record:")
 
 # column names: "<qualifiers> <quantity> <qualifiers> <unit>", e.g. "time_ms", "acc_g",
 # "Acceleration (cm/s^2)", "ground acc NS [gal]", "acceleration in g"
@@ -90,7 +105,8 @@ def read_record(path, units: str = "g", dt: float | None = None) -> tuple[np.nda
         A PEER NGA ``.AT2`` file, or a CSV / whitespace-column file (see the module doc).
     units : str
         Units of the acceleration values in the file: ``g``, ``m/s^2``, ``cm/s^2`` or
-        ``gal`` (also ``mm/s^2``). ``.AT2`` files are always in g.
+        ``gal`` (also ``mm/s^2``). A unit stated in the file (``.AT2`` files: g unless
+        their third line says otherwise) must agree with it.
     dt : float, optional
         Time step (s). Required for a one-column file that does not state ``dt`` in a
         header comment; otherwise, if given, it must agree with the file.
@@ -103,7 +119,8 @@ def read_record(path, units: str = "g", dt: float | None = None) -> tuple[np.nda
         Time step (s).
     meta : dict
         ``name`` (file stem), ``format`` (``"AT2"``, ``"csv"`` or ``"columns"``), ``path``,
-        ``npts``, ``dt``, ``units``, ``t_start`` (s, original start time) and, for
+        ``npts``, ``dt``, ``units`` (canonical name), ``t_start`` (s, original start
+        time), ``time_units`` (two-column files: the time column's unit) and, for
         ``.AT2`` files, ``description`` (event and station line), ``title``, ``header`` (the
         four header lines) and, when the description has the usual four comma-separated
         fields, ``event``, ``date``, ``station`` and ``component``.
@@ -409,6 +426,8 @@ def _is_numeric_line(s: str) -> bool:
 
 def _header_statements(p: Path, lines: list[str], i: int, s: str, found: dict) -> None:
     """Collect ``dt``, ``npts`` and ``units`` stated on header line ``i`` (0-based)."""
+    if _TITLE.match(s):
+        return  # write_csv's title line holds the record's name, whatever it says
     ln = i + 1
     m = _HDR_DT.search(s)
     if m and "dt" not in found:

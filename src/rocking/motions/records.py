@@ -36,7 +36,12 @@ __all__ = ["Record", "sample", "load_builtin"]
 
 @dataclass(frozen=True, eq=False)
 class Record(Motion):
-    """A sampled accelerogram: ``acc`` in m/s^2, time step ``dt`` in s."""
+    """A sampled accelerogram: ``acc`` in m/s^2, time step ``dt`` in s.
+
+    A PGA above 5 g (before the load factor) or a time step above 0.1 s is valid but
+    most likely a unit mistake: it gives a one-line
+    :class:`~rocking._validate.PlausibilityWarning`.
+    """
 
     acc: np.ndarray
     dt: float
@@ -71,7 +76,8 @@ class Record(Motion):
         Formats: PEER NGA ``.AT2``; CSV or whitespace columns with either time and
         acceleration (uniform steps) or one acceleration column plus ``dt``. ``units`` is
         one of ``g``, ``m/s^2``, ``cm/s^2`` (``gal``) and applies to the acceleration
-        column; the record is stored in m/s^2.
+        column; a unit the file states must agree with it (see
+        :mod:`rocking.motions.io`). The record is stored in m/s^2.
         """
         return cls._from_read(*read_record(path, units=units, dt=dt), **kw)
 
