@@ -48,7 +48,7 @@ def runs(quick: bool) -> pd.DataFrame:
                        "H+V": [gm.scaled(f) for f in lfs]}
             for model in MODELS:
                 for comp, ms in motions.items():
-                    r = simulate_many(b, ms, model=model, duration=gm.duration + 5.0)
+                    r = simulate_many(b, ms, model=model)  # until settled
                     for i, f in enumerate(lfs):
                         rows.append({
                             "record": name, "specimen": n, "model": model,
@@ -129,7 +129,15 @@ def build(ctx) -> str:
                 ax.set_xlabel("horizontal PGA / (g tan α)")
             if c == 0:
                 ax.set_ylabel("max |θ| / α (× : overturned)")
-    axs[0, 0].legend(fontsize=7.5, loc="upper left")
+    from matplotlib.lines import Line2D
+
+    # one legend for the whole figure, above the panels: inside a panel it hid the data
+    handles = [Line2D([], [], color=PALETTE[k], marker="o", ms=3, lw=1.1, label=lab)
+               for k, lab in enumerate(("horizontal only", "horizontal + vertical"))]
+    handles.append(Line2D([], [], color="0.3", marker="x", ls="none", ms=5,
+                          label="overturned (drawn at the top)"))
+    fig.legend(handles=handles, loc="outside upper center", ncols=3, fontsize=8.5,
+               frameon=False)
     fig_html = ctx.save_figure(
         fig, "vertical",
         caption=("Classical model: max |θ|/α of the runs that survive (lines) and the "
