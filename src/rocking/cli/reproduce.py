@@ -11,6 +11,7 @@ from pathlib import Path
 
 import click
 
+from ..errors import ParameterError
 from .common import CONTEXT
 
 
@@ -26,6 +27,12 @@ def reproduce_cmd(out, quick, full):
     except ImportError as e:
         raise click.ClickException(f"the report module is not available ({e})") from None
 
+    folder = Path(out)
+    try:  # before any section runs: one line naming --out, not a raw errno at the end
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise ParameterError(f"--out {out}: cannot create the folder "
+                             f"({e.strerror or type(e).__name__})") from None
     report_error = getattr(report, "ReportError", ())
     extra = {"full": True} if full else {}  # only when asked: older report.reproduce lacks it
     try:
