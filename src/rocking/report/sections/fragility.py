@@ -9,6 +9,11 @@ alpha, plus overturning; :func:`rocking.analysis.fragility_curves` fits them (or
 probit, one beta) with bootstrap bands, and :func:`rocking.analysis.fragility` the
 overturning curve alone (its own beta). The curves go to a pelicun-format table, and one
 annual frequency is computed on an illustrative power-law hazard curve.
+
+Units: the simulations run in SI (the IDA levels are PGAs in m/s^2), and the curves are
+fitted to the PGA in g, the unit of the hazard curve and the pelicun table, so that the
+plots, the table and the text all give medians in g (the fits state their unit, and
+:func:`~rocking.analysis.annual_frequency` checks the hazard curve's against it).
 """
 
 from __future__ import annotations
@@ -45,9 +50,9 @@ def levels_for(block, quick: bool) -> np.ndarray:
     return np.geomspace(0.8 * lo, 6.0 * lo, 6 if quick else 12)
 
 
-def hazard_rate(pga):
-    """The illustrative hazard curve: annual rate of exceeding ``pga`` (m/s^2)."""
-    return HAZARD_K0 * (np.asarray(pga, dtype=float) / (HAZARD_A0 * G)) ** (-HAZARD_K)
+def hazard_rate(pga_g):
+    """The illustrative hazard curve: annual rate of exceeding ``pga_g`` (g)."""
+    return HAZARD_K0 * (np.asarray(pga_g, dtype=float) / HAZARD_A0) ** (-HAZARD_K)
 
 
 def run(quick: bool):
@@ -62,20 +67,22 @@ def run(quick: bool):
             tab.insert(0, "specimen", n)
             tab.insert(0, "record_set", sname)
             tables.append(tab)
-            curves = fragility_curves(tab["im"], tab["damage_state"], n_boot=n_boot, seed=0)
-            ovt = fragility(tab["im"], tab["overturned"], n_boot=n_boot, seed=0,
-                            label="overturning")
+            pga_g = tab["im"].to_numpy() / G  # the levels are in m/s^2 (tab.attrs)
+            curves = fragility_curves(pga_g, tab["damage_state"], n_boot=n_boot, seed=0,
+                                      im_name="pga", im_unit="g")
+            ovt = fragility(pga_g, tab["overturned"], n_boot=n_boot, seed=0,
+                            label="overturning", im_name="pga", im_unit="g")
             out[(sname, n)] = (curves, ovt)
             for k, (lab, f) in enumerate(zip(curves.labels, curves.fits, strict=True), 1):
                 fits.append({"record_set": sname, "specimen": n, "fit": "common_beta",
-                             "state": k, "label": lab, "median_m_s2": f.median,
-                             "median_g": f.median / G, "beta": f.beta,
-                             "median_se_m_s2": f.median_se, "beta_se": f.beta_se,
+                             "state": k, "label": lab, "median_m_s2": f.median * G,
+                             "median_g": f.median, "beta": f.beta,
+                             "median_se_m_s2": f.median_se * G, "beta_se": f.beta_se,
                              "n_records": len(recs)})
             fits.append({"record_set": sname, "specimen": n, "fit": "overturning_alone",
                          "state": len(curves), "label": "overturning",
-                         "median_m_s2": ovt.median, "median_g": ovt.median / G,
-                         "beta": ovt.beta, "median_se_m_s2": ovt.median_se,
+                         "median_m_s2": ovt.median * G, "median_g": ovt.median,
+                         "beta": ovt.beta, "median_se_m_s2": ovt.median_se * G,
                          "beta_se": ovt.beta_se, "n_records": len(recs)})
     return pd.concat(tables, ignore_index=True), pd.DataFrame(fits), out
 
@@ -105,7 +112,7 @@ def build(ctx) -> str:
             ax.legend([h[k] for k in keep], [lab[k].replace(" (median", "\n(median")
                                              for k in keep], fontsize=6, loc="lower right")
             ax.set_title(f"specimen {n}, {s} records", fontsize=9)
-            ax.set_xlabel("PGA (m/s²)" if i == 1 else "")
+            ax.set_xlabel("PGA (g)" if i == 1 else "")
             ax.set_ylabel("P(DS ≥ k)" if j == 0 else "")
     thr = ", ".join(f"{t:g}" for t in DEFAULT_THRESHOLDS)
     fig_html = ctx.save_figure(
@@ -117,13 +124,13 @@ def build(ctx) -> str:
                  "at each PGA level."))
 
     # illustrative hazard curve and annual frequencies
-    him = np.geomspace(0.02 * G, 3.0 * G, 13)  # exact log-log: a power law
+    him = np.geomspace(0.02, 3.0, 13)  # PGA (g); exact log-log: a power law
     hr = hazard_rate(him)
     af_rows = []
     for s in SETS:
         for n in SPECIMENS:
             curves, ovt = res[(s, n)]
-            lam = annual_frequency(curves, him, hr)
+            lam = annual_frequency(curves, him, hr, hazard_unit="g")
             for k, (lab, v) in enumerate(zip(curves.labels, lam, strict=True), 1):
                 af_rows.append({"record_set": s, "specimen": n, "state": k, "label": lab,
                                 "annual_frequency": v, "return_period_yr": 1.0 / v})
@@ -131,7 +138,7 @@ def build(ctx) -> str:
     ctx.save_csv(af, "annual_frequency_illustrative", float_format="%.6g")
     fig2 = Figure(figsize=(10.0, 3.6), layout="constrained")
     a1, a2 = fig2.subplots(1, 2)
-    a1.loglog(him / G, hr, color="k", lw=1.2)
+    a1.loglog(him, hr, color="k", lw=1.2)
     a1.set_xlabel("PGA (g)")
     a1.set_ylabel("annual rate of exceedance (1/yr)")
     a1.set_title(f"ILLUSTRATIVE hazard: λ = {HAZARD_K0:g} (PGA / {HAZARD_A0:g} g)^-{HAZARD_K:g}"

@@ -33,6 +33,20 @@ PAPER_LF = (1.1, 1.3)
 THETA0_STD = math.radians(0.1)  # rad: initial tilt of a block set on the table by hand
 AMP_STD = 0.03  # table amplitude factor ~ N(1, 3 %)
 NOISE_STD = 0.05  # m/s^2 of white noise added to the table acceleration
+UNITS = {"alpha": "rad", "p": "1/s", "mu": "", "theta0": "rad", "amplitude": "",
+         "noise": "m/s²"}
+"""Units of the uncertain parameters (for the table of their distributions)."""
+
+
+def describe(name: str, dist: dict) -> str:
+    """``normal, std 0.0025 rad``: a distribution in words, numbers to 3 significant
+    figures (the std of alpha is a difference of Table II values, 0.0025000000000000022
+    in floating point) with the parameter's unit."""
+    unit = f" {UNITS[name]}" if UNITS.get(name) else ""
+    parts = [str(dist.get("dist", "?"))]
+    parts += [f"{k} {v:.3g}{unit}" if isinstance(v, float | int) else f"{k} {v}"
+              for k, v in dist.items() if k != "dist"]
+    return ", ".join(parts)
 
 
 def parameter_uncertainty() -> dict:
@@ -90,8 +104,7 @@ def build(ctx) -> str:
     df = probability_table(ctx.quick)
     ctx.save_csv(df, "p_overturn", float_format="%.6g")
     unc = sources()["block and table"]
-    spec_rows = [[H.Cell(k, "l"), H.Cell(", ".join(f"{a} {v}" for a, v in d.items()), "l")]
-                 for k, d in unc.items()]
+    spec_rows = [[H.Cell(k, "l"), H.Cell(describe(k, d), "l")] for k, d in unc.items()]
     fig = Figure(figsize=(8.0, 4.2), layout="constrained")
     ax = fig.add_subplot()
     for i, (src, d) in enumerate(df.groupby("source", sort=False)):
