@@ -19,7 +19,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import rocking
-from rocking._validate import PlausibilityWarning
+from rocking import PlausibilityWarning
 from rocking.cli import main
 from rocking.errors import RecordError
 from rocking.motions import HanningSine, Record, Sine

@@ -24,6 +24,7 @@ from .errors import (
     IdentificationError,
     OutputTooLargeError,
     ParameterError,
+    PlausibilityWarning,
     RecordError,
     RockingError,
     SimulationError,
@@ -91,5 +92,5 @@ __all__ = [
     "Block", "Stack", "housner_mu", "specimen", "simulate", "simulate_many", "Response",
     "BatchResponse", "DEMResponse", "MODELS", "G", "RockingError", "ParameterError",
     "RecordError", "SpecimenError", "UnitError", "OutputTooLargeError", "IdentificationError",
-    "SimulationError", "SpecError", "StoreError", "__version__",
+    "SimulationError", "SpecError", "StoreError", "PlausibilityWarning", "__version__",
 ]

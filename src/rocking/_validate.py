@@ -20,13 +20,7 @@ import warnings
 
 import numpy as np
 
-from .errors import ParameterError
-
-
-class PlausibilityWarning(UserWarning):
-    """A valid but implausible input (a 6 g record, a 60 m block): most likely a unit
-    mistake. A warning, not an error: the run goes on."""
-
+from .errors import ParameterError, PlausibilityWarning
 
 _PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__)) + os.sep
 

@@ -54,6 +54,12 @@ class SimulationError(RuntimeError):
     """A numerical failure of a model on valid input (not bad input)."""
 
 
+class PlausibilityWarning(UserWarning):
+    """A valid but implausible input (a 6 g record, a 60 m block): most likely a unit
+    mistake. A warning, not an error: the run goes on (the CLI prints one ``warning:``
+    line)."""
+
+
 __all__ = ["RockingError", "ParameterError", "SpecimenError", "RecordError", "UnitError",
            "OutputTooLargeError", "IdentificationError", "SimulationError",
-           "SpecError", "StoreError"]
+           "SpecError", "StoreError", "PlausibilityWarning"]

@@ -30,6 +30,7 @@ code 2 (the output guard, :class:`~rocking.errors.OutputTooLargeError`, names
 from __future__ import annotations
 
 import sys
+import warnings
 
 import click
 
@@ -61,6 +62,11 @@ for _command in (params_cmd, simulate_cmd, reproduce_cmd, identify, dem_params, 
 _NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())
 
 
+def _show_warning(message, category, filename, lineno, file=None, line=None):
+    """Our warnings (plausibility, unsettled runs, ...) as one ``warning: ...`` line."""
+    click.echo(f"warning: {one_line(str(message))}", err=True)
+
+
 def main(argv=None) -> None:
     """Console entry point: run :func:`cli`, turning errors into one ``error: ...`` line.
 
@@ -68,6 +74,7 @@ def main(argv=None) -> None:
     130 interrupted (Ctrl-C).
     Exits with ``sys.exit(code)``; ``argv`` defaults to ``sys.argv[1:]``.
     """
+    shown, warnings.showwarning = warnings.showwarning, _show_warning
     try:
         rv = cli.main(args=argv, prog_name="rocking", standalone_mode=False)
         code = rv if isinstance(rv, int) else 0
@@ -99,6 +106,8 @@ def main(argv=None) -> None:
             report = (one_line(e), 1)
         msg, code = report
         click.echo(f"error: {msg}", err=True)
+    finally:
+        warnings.showwarning = shown
     sys.exit(code)
 
 

@@ -269,8 +269,9 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, r
                 peak = max(peak, amp)
                 decided = True
                 break
-            # it will overturn: follow it there (once more the cap at most)
-            t_end = t + max(free_time, 1.0 / p)
+            # it will overturn: follow it there. Near the top the motion is slow, ~ (1/p)
+            # ln(1/(E - p^2)): 100/p covers any margin above double precision
+            t_end = t + max(free_time, 100.0 / p)
             extended = True
             continue
         if resting:
