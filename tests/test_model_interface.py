@@ -223,7 +223,8 @@ def test_batch_rows_equal_single_runs_and_do_not_depend_on_the_batch(name):
     whole = rocking.simulate_many(blk, ms, model=name, return_histories=True)
     parts = [rocking.simulate_many(blk, ms[:2], model=name),
              rocking.simulate_many(blk, ms[2:], model=name)]
-    for key in ("max_abs_theta", "overturned", "overturn_time", "uplift_time", "n_impacts"):
+    for key in ("max_abs_theta", "overturned", "overturn_time", "uplift_time", "n_impacts",
+                "settled"):
         chunked = np.concatenate([getattr(p, key) for p in parts])
         np.testing.assert_array_equal(getattr(whole, key), chunked)
     assert whole.max_abs_theta.max() > 0.1 * blk.alpha
@@ -232,6 +233,7 @@ def test_batch_rows_equal_single_runs_and_do_not_depend_on_the_batch(name):
         assert whole.max_abs_theta[i] == r.max_abs_theta
         assert whole.n_impacts[i] == r.n_impacts
         assert whole.overturned[i] == r.overturned
+        assert whole.settled[i] == r.settled
         n = min(r.t.size, whole.t.size) - (1 if r.overturned else 0)
         np.testing.assert_array_equal(whole.theta[i, :n], r.theta[:n])
 
