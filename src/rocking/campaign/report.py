@@ -43,7 +43,8 @@ import pandas as pd
 from ..analysis import DEFAULT_THRESHOLDS, fragility, fragility_curves, wilson_interval
 from ..analysis.damage import state_labels
 from ..errors import ParameterError, SimulationError
-from ..plot import PALETTE, _style, figure, save_figure
+from ..plot import PALETTE, _style, figure, im_label, save_figure, unit_label
+from ..units import G
 
 #: Columns the table must have.
 REQUIRED_COLUMNS = (
@@ -248,14 +249,37 @@ def _pelicun(curves, im: dict, ident: str):
 
 # --------------------------------------------------------------------------- plots
 
-def _plot_model(model: str, groups: list, im: dict, path: Path) -> Path:
-    """P(overturn) vs IM of one model: stripes with Wilson bars, fits with bands."""
-    fig, ax = figure(figsize=(6.0, 3.6))
+def _plot_name(name: str, blocks) -> str:
+    """A block's name for a legend. The spec's default ``block i`` (no ``name`` key) says
+    nothing to a reader: it becomes the block's size from the manifest's ``alpha`` and
+    ``p`` (Eqs 2-3: ``R = 3 g / 4 p^2``, width ``2 R sin(alpha)``, height
+    ``2 R cos(alpha)``; for a block given by ``alpha, p, mu`` the rectangle with the same
+    parameters) and its place in the spec, e.g. ``0.2 × 1 m block (blocks[0])``."""
+    m = re.fullmatch(r"block (\d+)", str(name))
+    if m is None or not blocks or int(m[1]) >= len(blocks):
+        return str(name)
+    i = int(m[1])
+    try:
+        a, p = float(blocks[i]["alpha"]), float(blocks[i]["p"])
+    except (KeyError, TypeError, ValueError):
+        return str(name)
+    if not (math.isfinite(a) and math.isfinite(p) and p > 0):
+        return str(name)
+    r = 3.0 * G / (4.0 * p * p)
+    return f"{2 * r * math.sin(a):.3g} × {2 * r * math.cos(a):.3g} m block (blocks[{i}])"
+
+
+def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> Path:
+    """P(overturn) vs IM of one model: stripes with Wilson bars, fits with bands; the IM's
+    unit in mathtext (``m/s$^2$``), the blocks named by :func:`_plot_name`, the legend
+    beside the axes (it covered the curves of the weaker blocks)."""
+    fig, ax = figure(figsize=(8.6, 3.8))
+    unit = unit_label(im["unit"])
     for i, (name, pt, fit) in enumerate(groups):
         c = PALETTE[i % len(PALETTE)]
         d = pt[(pt["n"] > 0) & pt["im"].notna()]
         yerr = np.vstack([d["p_overturn"] - d["ci_lower"], d["ci_upper"] - d["p_overturn"]])
-        lab = str(name)
+        lab = _plot_name(name, blocks)
         if fit is not None:
             lo = np.nanmin(d["im"]) if len(d) else fit.median
             hi = np.nanmax(d["im"]) if len(d) else fit.median
@@ -265,14 +289,15 @@ def _plot_model(model: str, groups: list, im: dict, path: Path) -> Path:
             if fit.n_boot:
                 b = fit.band(x)
                 ax.fill_between(x, b["lower"], b["upper"], color=c, alpha=0.18, lw=0)
-            lab += f": median {_g(fit.median)}, beta {_g(fit.beta, 2)}"
+            lab += f"\nmedian {_g(fit.median)}{' ' + unit if unit else ''}, beta {_g(fit.beta, 2)}"
         ax.errorbar(d["im"], d["p_overturn"], yerr=np.clip(yerr, 0, None), fmt="o", ms=4,
                     mfc="none", color=c, capsize=2, lw=0.8, label=lab)
-    _style(ax, _im_label(im), "P(overturn)")
+    _style(ax, im_label(im["name"], im["unit"]), "P(overturn)")
     ax.set_ylim(-0.03, 1.03)
-    ax.set_title(f"{model}: P(overturn) per level, 95% Wilson bars; fits with 95% bands",
-                 fontsize=8)
-    ax.legend(frameon=False, fontsize="x-small")
+    ax.set_title(f"{model}: P(overturn) per level (95% Wilson bars), lognormal fits "
+                 "(95% bands)", fontsize=10)
+    ax.legend(frameon=False, fontsize="small", loc="upper left", bbox_to_anchor=(1.02, 1.0),
+              borderaxespad=0.0, labelspacing=0.9)
     return save_figure(fig, path, dpi=DPI)
 
 
@@ -407,7 +432,8 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         files.append(out / "pelicun.csv")
     images = []
     for model, groups in by_model.items():
-        p = _plot_model(model, groups, im, out / f"p_overturn_{_safe(model)}.png")
+        p = _plot_model(model, groups, im, out / f"p_overturn_{_safe(model)}.png",
+                        blocks=manifest.get("blocks"))
         images.append((model, p))
         files.append(p)
     md = _markdown(manifest, im, len(t), n_excl, fr, po, images, notes, n_states,
