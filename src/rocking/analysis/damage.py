@@ -22,7 +22,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import ParameterError, SimulationError
-from ..plot import PALETTE, figure
+from ..plot import PALETTE, figure, unit_label
 from ..results import jsonable
 from .fragility import (
     FragilityFit,
@@ -164,7 +164,8 @@ class FragilityCurves:
         hi = max(f.median * math.exp(2.5 * f.beta) for f in self.fits)
         lo, hi = min(lo, self.fits[0].im_range[0]), max(hi, self.fits[0].im_range[1])
         x = np.geomspace(lo, hi, 200)
-        unit = f" {self.fits[0].im_unit}" if self.fits[0].im_unit else ""
+        unit = unit_label(self.fits[0].im_unit)
+        unit = f" {unit}" if unit else ""
         for i, f in enumerate(self.fits):
             f.plot(ax, level=level, band=band, data=data, im=x,
                    color=PALETTE[i % len(PALETTE)],

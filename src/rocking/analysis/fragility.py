@@ -37,7 +37,7 @@ from scipy.stats import norm
 
 from .._validate import in_range
 from ..errors import ParameterError, SimulationError
-from ..plot import PALETTE, _style, figure, im_label
+from ..plot import PALETTE, _style, figure, im_label, unit_label
 from ..results import jsonable
 from ..units import ACCELERATION, G
 
@@ -394,8 +394,10 @@ class FragilityFit:
         x = (_as_im("im", im) if im is not None else
              np.geomspace(min(lo, self.median * math.exp(-2.5 * self.beta)),
                           max(hi, self.median * math.exp(2.5 * self.beta)), 200))
+        unit = unit_label(self.im_unit)
         ax.plot(x, self.probability(x), color=color,
-                label=label or f"{self.label}: median {self.median:.3g}, beta {self.beta:.2f}")
+                label=label or f"{self.label}: median {self.median:.3g}"
+                               f"{' ' + unit if unit else ''}, beta {self.beta:.2f}")
         if band and self.n_boot:
             b = self.band(x, level)
             ax.fill_between(x, b["lower"], b["upper"], color=color, alpha=0.2, lw=0,
