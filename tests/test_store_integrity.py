@@ -495,3 +495,15 @@ levels = [1.0, 2.0]
     code, _, err = run_main(capsys, "campaign", "run", spec, "--out", tmp_path / "s")
     assert code == 2 and len(err.strip().splitlines()) == 1
     assert not (tmp_path / "s").exists()
+
+
+def test_quarantine_never_overwrites(clean, store):
+    """Two repairs of the same chunk within a second keep both bad files."""
+    spec = clean[0]
+    contents = []
+    for byte in (100, 200):
+        flip(chunk(store, 2), byte)
+        contents.append(chunk(store, 2).read_bytes())
+        campaign.run(spec, store, progress=False)
+    kept = sorted(p.read_bytes() for p in (store / "quarantine").rglob("chunk-000002.parquet*"))
+    assert kept == sorted(contents)

@@ -186,6 +186,7 @@ class Store:
         self.path = Path(path)
         self._lock = None
         self._manifest: dict | None = None
+        self._q: Path | None = None  # quarantine folder of this object
 
     # ------------------------------------------------------------------ opening
     @property
@@ -309,12 +310,11 @@ class Store:
         if evidence is None:
             raise StoreError(f"{why}; nothing in {self.path} shows it holds this spec "
                              "(and version): use another --out")
-        q = self._quarantine_dir()
-        replace(self.manifest_path, q / MANIFEST)
+        q = self._move_aside(self.manifest_path).parent
         sp = self.path / SPEC
         if not sp.is_file() or sp.read_text(encoding="utf-8", errors="replace") != spec.text:
             if sp.exists():
-                replace(sp, q / SPEC)
+                self._move_aside(sp)
             atomic_write(sp, spec.text)
         atomic_write(self.manifest_path, json.dumps(manifest_for(spec), indent=1, default=str))
         self._manifest = None
@@ -547,10 +547,31 @@ class Store:
 
     # ------------------------------------------------------------------ repair
     def _quarantine_dir(self) -> Path:
-        q = self.path / QUARANTINE / (time.strftime("%Y%m%dT%H%M%S", time.gmtime())
-                                      + f"-{os.getpid()}")
-        q.mkdir(parents=True, exist_ok=True)
-        return q
+        """This object's folder in ``quarantine/``: made once, a name never used before."""
+        if self._q is None:
+            stamp = f"{time.strftime('%Y%m%dT%H%M%S', time.gmtime())}-{os.getpid()}"
+            (self.path / QUARANTINE).mkdir(exist_ok=True)
+            i = 0
+            while True:
+                q = self.path / QUARANTINE / (stamp + (f"-{i}" if i else ""))
+                try:
+                    q.mkdir()
+                    break
+                except FileExistsError:
+                    i += 1
+            fsync_dir(q.parent)
+            fsync_dir(self.path)
+            self._q = q
+        return self._q
+
+    def _move_aside(self, f: Path) -> Path:
+        """Move ``f`` into the quarantine folder, never over another file."""
+        q = self._quarantine_dir()
+        dst, i = q / f.name, 1
+        while dst.exists():
+            dst, i = q / f"{f.name}.{i}", i + 1
+        replace(f, dst)
+        return dst
 
     def repair(self, log: Callable = print) -> list[Problem]:
         """Move every problem file into ``quarantine/`` (never deleted), saying so with
@@ -564,8 +585,7 @@ class Store:
             moved = []
             for f in p.paths:
                 if f.exists():
-                    replace(f, q / f.name)
-                    moved.append(f.name)
+                    moved.append(self._move_aside(f).name)
             what = ("to be recomputed" if p.chunk is not None else "not part of the campaign")
             log(f"{p}: moved to {q.relative_to(self.path)}/ ({', '.join(moved)}); {what}")
         return problems
@@ -612,8 +632,7 @@ class Store:
                     atomic_write(self.record_path(k), json.dumps(rec, indent=1))
                     adopted.append(k)
                 else:
-                    q = q or self._quarantine_dir()
-                    replace(d / name, q / name)
+                    q = self._move_aside(d / name).parent
                     moved.append(name)
                     log(f"{CHUNKS}/{name}: {why}: moved to {q.relative_to(self.path)}/")
             atomic_write(self.manifest_path, json.dumps(new, indent=1, default=str))
