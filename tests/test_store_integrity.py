@@ -507,3 +507,17 @@ def test_quarantine_never_overwrites(clean, store):
         campaign.run(spec, store, progress=False)
     kept = sorted(p.read_bytes() for p in (store / "quarantine").rglob("chunk-000002.parquet*"))
     assert kept == sorted(contents)
+
+
+def test_ctrl_c_before_the_store_exists(clean, tmp_path, capsys, monkeypatch):
+    """An interrupt while the motions are being built (before any store) exits 130 with
+    the interrupt message, not 'error: aborted'."""
+    import rocking.campaign as rc
+
+    def interrupted(*a, **kw):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(rc, "run", interrupted)
+    code, out, err = run_main(capsys, "campaign", "run", clean[0], "--out", tmp_path / "s")
+    assert code == 130 and "interrupted before any chunk was kept" in err
+    assert "error" not in err and not (tmp_path / "s").exists()

@@ -233,9 +233,9 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
     try:
         store.open_for(spec, log=log)
         store.repair(log=log)  # problem files moved aside, their chunks recomputed
-        done = store.done()
-        todo = [k for k in range(spec.n_chunks) if k not in done]
-        status = store.status()
+        check = store.check()
+        todo = [k for k in range(spec.n_chunks) if k not in check.ok]
+        status = store.status(check)
         from tqdm.auto import tqdm
         bar = tqdm(total=spec.n_sims, initial=status["sims_done"], unit="sim",
                    disable=not progress, dynamic_ncols=True, smoothing=0.1,

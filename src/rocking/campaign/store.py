@@ -439,8 +439,8 @@ class Store:
         ok, adopted = set(), 0
         for k in sorted(files | set(records)):
             r, cname = records.get(k), f"{CHUNKS}/{chunk_name(k)}"
-            paths = ((self.chunk_path(k),) if k in files else ()) + (
-                (self.record_path(k),) if k in records else ())
+            paths = ((self.record_path(k),) if k in records else ()) + (
+                (self.chunk_path(k),) if k in files else ())  # the record moves first
             if r is None:
                 if not running:  # else: in progress, its record comes next
                     problems.append(Problem(cname, "unrecorded", "no record: not finished",
@@ -456,7 +456,11 @@ class Store:
                                         f"sim_ids {r['sim_id_first']}-{r['sim_id_last']}",
                                         k, paths))
                 continue
-            sha, size = _sha256(self.chunk_path(k))
+            try:
+                sha, size = _sha256(self.chunk_path(k))
+            except OSError as e:
+                problems.append(Problem(cname, "unreadable", e.strerror or str(e), k, paths))
+                continue
             if sha != r["sha256"]:
                 j = by_sha.get(sha)
                 if j is not None and j != k:
