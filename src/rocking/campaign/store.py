@@ -57,7 +57,6 @@ import json
 import math
 import os
 import re
-import shutil
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -331,13 +330,11 @@ class Store:
             raise StoreError(f"another run is writing to {self.path}") from None
         self._lock = f
         for d in (self.path, self.path / CHUNKS):  # temporary files of a killed run
-            for tmp in d.iterdir() if d.is_dir() else ():
-                if is_temporary(tmp.name) or (tmp.name.startswith(".")
-                                              and tmp.name.endswith(".tmp")):
-                    if tmp.is_dir():
-                        shutil.rmtree(tmp, ignore_errors=True)
-                    else:
-                        tmp.unlink(missing_ok=True)
+            for tmp in d.iterdir() if d.is_dir() else ():  # (not a report's folder)
+                if (is_temporary(tmp.name) or (tmp.name.startswith(".")
+                                               and tmp.name.endswith(".tmp"))) \
+                        and tmp.is_file():
+                    tmp.unlink(missing_ok=True)
 
     def unlock(self) -> None:
         if self._lock is not None:
