@@ -217,8 +217,8 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
 
 @motion.command("spectrum")
 @click.argument("file", type=click.Path(dir_okay=False))
-@click.option("--units", default="g", show_default=True, metavar="U",
-              help="Units of the acceleration column: g, m/s^2, cm/s^2 (gal).")
+@click.option("--units", metavar="U",
+              help="Units of the acceleration column: g, m/s^2, cm/s^2 (gal); default g.")
 @click.option("--dt", metavar="DT", help="Time step of a one-column file (s).")
 @click.option("--damping", default="5%", show_default=True, metavar="Z",
               help="Damping ratio: 5% or 0.05.")
@@ -241,8 +241,8 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
     """
     from matplotlib.figure import Figure
 
+    from .. import motions as M
     from ..motions.ec8 import paper_target
-    from ..motions.records import Record
     from ..motions.spectra import log_periods, plot_spectra, response_spectra
 
     zeta = _damping(damping)
@@ -250,13 +250,13 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
     n = integer(npts, "n", 2, 10000)
     step = _time(dt, "dt")
     p = Path(file)
-    rec = Record.from_file(p, units=units, dt=step)  # (.AT2 files are in g: the default)
+    rec, _ = read_record_arg(M, p, "file", units, step)  # messages in option words
     T = log_periods(t_lo, t_hi, n)
     s = response_spectra(rec, T, zeta)
     im = rec.intensity_measures()
     if as_json:
         click.echo(json.dumps({
-            "file": str(p), "units_in_file": units, "dt": rec.dt,
+            "file": str(p), "units_in_file": units or "g", "dt": rec.dt,
             "npts": len(rec), "damping": zeta, "intensity_measures": im,
             "period_s": T.tolist(), "psa_ms2": s["psa"].tolist(), "sa_ms2": s["sa"].tolist(),
             "sd_m": s["sd"].tolist(), "psv_ms": s["psv"].tolist()}, indent=1))
@@ -287,8 +287,8 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
 @click.argument("file")
 @click.option("--vertical", metavar="V", help="Vertical component (positive upwards), a file "
               "or a built-in record's name.")
-@click.option("--units", default="g", show_default=True, metavar="U",
-              help="Units of the records: g, m/s^2, cm/s^2 (gal).")
+@click.option("--units", metavar="U",
+              help="Units of the records: g, m/s^2, cm/s^2 (gal); default g.")
 @click.option("--dt", metavar="DT", help="Time step of one-column files (s).")
 @click.option("--plot", "plot_path", type=click.Path(dir_okay=False),
               help="PNG of both components (default: <file stem>_motion.png here).")
