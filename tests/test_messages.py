@@ -295,6 +295,10 @@ def test_record_units_message_without_units(tmp_path, capsys):
     code, _, err = run_main(capsys, "simulate", "--specimen", "2", "--record", f,
                             "--units", "g")
     assert "--units g was given" in one_error_line(err)
+    for cmd in (("motion", "spectrum"), ("motion", "show")):
+        code, _, err = run_main(capsys, *cmd, f, "--no-plot")
+        line = one_error_line(err)
+        assert code == 2 and "units='g'" not in line and "--units was not given" in line
 
 
 def test_spec_message_has_one_prefix():
