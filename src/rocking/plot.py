@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ._atomic import atomic_path
 from ._validate import positive
 from .errors import ParameterError
 from .motions import Motion, Record
@@ -252,5 +253,6 @@ def save_figure(fig, path, dpi: int = 120) -> Path:
     fig = getattr(fig, "figure", fig)  # accept an Axes
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=dpi, bbox_inches="tight", facecolor="white")
+    with atomic_path(path) as tmp:  # never a half-written PNG under its name
+        fig.savefig(tmp, dpi=dpi, bbox_inches="tight", facecolor="white")
     return path

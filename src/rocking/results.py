@@ -29,6 +29,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ._atomic import atomic_path, atomic_write
+
 DEFAULT_DT_OUT = 0.002
 """Default output interval (s) of the time histories, for single runs and batches."""
 
@@ -180,13 +182,14 @@ class Response:
     def to_csv(self, path) -> Path:
         """Write ``t, theta, omega`` (s, rad, rad/s) to ``path`` as CSV."""
         path = Path(path)
-        self.to_dataframe().to_csv(path, index=False, float_format="%.10g")
+        with atomic_path(path) as tmp:
+            self.to_dataframe().to_csv(tmp, index=False, float_format="%.10g")
         return path
 
     def to_json(self, path) -> Path:
         """Write :meth:`summary` to ``path``."""
         path = Path(path)
-        path.write_text(json.dumps(self.summary(), indent=2))
+        atomic_write(path, json.dumps(self.summary(), indent=2))
         return path
 
     def plot(self, ax=None, **kw):

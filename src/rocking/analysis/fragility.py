@@ -35,6 +35,7 @@ from scipy import stats
 from scipy.integrate import quad
 from scipy.stats import norm
 
+from .._atomic import atomic_path
 from .._validate import in_range
 from ..errors import ParameterError, SimulationError
 from ..plot import PALETTE, _style, figure, im_label, unit_label
@@ -461,7 +462,8 @@ def pelicun_table(fits, *, id: str, demand_type: str, demand_unit: str,
         row[f"LS{k}-Theta_1"] = f.beta
     df = pd.DataFrame([row], index=pd.Index([str(id)], name="ID"))
     if path is not None:
-        df.to_csv(path)
+        with atomic_path(path) as tmp:
+            df.to_csv(tmp)
     return df
 
 

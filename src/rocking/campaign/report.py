@@ -40,6 +40,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from .._atomic import atomic_path, atomic_write
 from ..analysis import DEFAULT_THRESHOLDS, fragility, fragility_curves, wilson_interval
 from ..analysis.damage import state_labels
 from ..errors import ParameterError, SimulationError
@@ -425,10 +426,12 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     fr = pd.DataFrame(fr_rows)
     files = []
     for fname, df in (("p_overturn.csv", po), ("fragility.csv", fr)):
-        df.to_csv(out / fname, index=False, float_format="%.6g")
+        with atomic_path(out / fname) as tmp:
+            df.to_csv(tmp, index=False, float_format="%.6g")
         files.append(out / fname)
     if pel_rows:
-        pd.concat(pel_rows).to_csv(out / "pelicun.csv", float_format="%.6g")
+        with atomic_path(out / "pelicun.csv") as tmp:
+            pd.concat(pel_rows).to_csv(tmp, float_format="%.6g")
         files.append(out / "pelicun.csv")
     images = []
     for model, groups in by_model.items():
@@ -438,7 +441,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         files.append(p)
     md = _markdown(manifest, im, len(t), n_excl, fr, po, images, notes, n_states,
                    counts=run_lines)
-    (out / "report.md").write_text(md, encoding="utf-8")
+    atomic_write(out / "report.md", md)
     files.append(out / "report.md")
     return {"files": files, "fragility": fr, "p_overturn": po, "notes": notes, "im": im,
             "n_runs": len(t), "n_excluded": n_excl, "run_notes": run_lines,

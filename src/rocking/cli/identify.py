@@ -23,6 +23,7 @@ from pathlib import Path
 import click
 import numpy as np
 
+from .._atomic import atomic_path, atomic_write
 from .._validate import as_float
 from ..blocks import Block, housner_mu
 from ..errors import ParameterError
@@ -126,9 +127,10 @@ def identify(record, units, block_width, block_height, time_col, angle_col, offs
         summary["difference_pct"] = {k: (summary[k] - theo[k]) / theo[k] * 100.0
                                      for k in ("alpha", "p", "mu") if math.isfinite(theo[k])}
     summary = jsonable(summary)  # NaN (e.g. mu of a squat block) -> null
-    (folder / "fit.json").write_text(json.dumps(summary, indent=2, allow_nan=False,
-                                                default=json_default))
-    fit.table().to_csv(folder / "half_cycles.csv", index=False, float_format="%.10g")
+    atomic_write(folder / "fit.json", json.dumps(summary, indent=2, allow_nan=False,
+                                                 default=json_default))
+    with atomic_path(folder / "half_cycles.csv") as tmp:
+        fit.table().to_csv(tmp, index=False, float_format="%.10g")
     _plots(fit, block, folder)
 
     if as_json:

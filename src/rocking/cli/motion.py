@@ -21,6 +21,7 @@ from pathlib import Path
 import click
 import numpy as np
 
+from .._atomic import atomic_path, atomic_write
 from .._validate import as_float
 from ..errors import ParameterError
 from ..units import G, parse_quantity
@@ -68,7 +69,8 @@ def _target(ag, ground, stype, damping: float):
 # ----------------------------------------------------------------------------- figures
 def _save(fig, path: Path, dpi: int = 110) -> None:
     try:
-        fig.savefig(path, dpi=dpi)
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, dpi=dpi)
     except OSError as e:
         raise click.ClickException(f"cannot write {path}: {e.strerror or e}") from None
 
@@ -186,12 +188,13 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
             fig = _record_figure(rec, periods, sa, target, PERIOD_RANGE, 0.05)
             _save(fig, folder / f"{stem}_spectrum.png")
     table = pd.DataFrame(rows)
-    table.to_csv(folder / "summary.csv", index=False, float_format="%.6g")
+    with atomic_path(folder / "summary.csv") as tmp:
+        table.to_csv(tmp, index=False, float_format="%.6g")
     fig = Figure(figsize=(8.0, 5.0), layout="constrained")
     plot_spectra(fig.add_subplot(), periods, comp.spectra, target, period_range=PERIOD_RANGE,
                  title=f"{len(recs)} synthetic records vs target (5 % damping)")
     _save(fig, folder / "spectra.png")
-    (folder / "compatibility.txt").write_text(comp.summary() + "\n")
+    atomic_write(folder / "compatibility.txt", comp.summary() + "\n")
 
     click.echo(f"target      {target.describe()}")
     click.echo(f"records     {len(recs)} x {recs[0].duration:g} s at dt = {recs[0].dt:g} s, "

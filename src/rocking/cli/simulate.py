@@ -22,6 +22,7 @@ from pathlib import Path
 
 import click
 
+from .._atomic import atomic_write
 from .._validate import as_float, in_range
 from ..errors import ParameterError
 from ..units import ACCELERATION, LENGTH, G, split_quantity
@@ -371,7 +372,8 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
         folder = Path(out)
         folder.mkdir(parents=True, exist_ok=True)
         resp.to_csv(folder / "response.csv")
-        (folder / "summary.json").write_text(json.dumps(summary, indent=2, default=json_default))
+        atomic_write(folder / "summary.json",
+                     json.dumps(summary, indent=2, default=json_default))
         _theta_png(resp, block, mdesc, folder / "theta.png")
         click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
 

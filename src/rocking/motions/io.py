@@ -51,6 +51,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._atomic import atomic_path
 from .._validate import positive
 from ..errors import RecordError
 from ..units import (
@@ -168,7 +169,8 @@ def write_csv(record, path) -> Path:
     ])
     data = np.column_stack([record.t, record.values])
     try:
-        np.savetxt(p, data, fmt="%.17g", delimiter=",", header=header, comments="")
+        with atomic_path(p) as tmp:
+            np.savetxt(tmp, data, fmt="%.17g", delimiter=",", header=header, comments="")
     except OSError as e:
         raise RecordError(f"cannot write {p}: {e.strerror or e}") from None
     return p

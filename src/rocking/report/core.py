@@ -43,6 +43,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .. import __version__
+from .._atomic import atomic_path, atomic_write
 from ..blocks import paper_data
 from ..models import MODELS
 from . import html as H
@@ -149,13 +150,15 @@ class Context:
         """Write a pandas DataFrame as ``<id>_<name>.csv``; returns the relative name."""
         kw.setdefault("index", False)
         p = self.path(f"{name}.csv")
-        df.to_csv(p, **kw)
+        with atomic_path(p) as tmp:
+            df.to_csv(tmp, **kw)
         return p.name
 
     def save_figure(self, fig, name: str, caption: str, alt: str = "") -> str:
         """Save a matplotlib Figure as ``<id>_<name>.png``; returns the ``<figure>`` HTML."""
         p = self.path(f"{name}.png")
-        fig.savefig(p, dpi=self.dpi)
+        with atomic_path(p) as tmp:
+            fig.savefig(tmp, dpi=self.dpi)
         return H.figure(p.name, caption, alt)
 
     def files_html(self) -> str:
@@ -312,7 +315,7 @@ def reproduce(out, quick: bool = False, full: bool = False, progress: bool = Tru
                   head, "<ol>" + "".join(toc) + "</ol>",
                   "\n".join(bodies) + _provenance(now, total, timings))
     index = out / "index.html"
-    index.write_text(page, encoding="utf-8")
+    atomic_write(index, page)  # last: a complete index.html means a complete report
     _log(progress, f"rocking report: wrote {index} in {total:.1f} s"
                    + (f"; FAILED: {', '.join(failed)}" if failed else ""))
     if failed:
