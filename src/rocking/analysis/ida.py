@@ -133,7 +133,7 @@ def plot_ida(table: pd.DataFrame, ax=None):
     ov = table[table["overturned"]]
     ax.plot(ov["im"], np.full(len(ov), top), "x", color="#C00000", label="overturned")
     ax.axhline(1.0, color="0.3", linestyle=":", linewidth=0.8)
-    ax.legend(loc="upper left", fontsize=8)
+    ax.legend(loc="lower right", fontsize=8)  # upper left hid the crosses of the first levels
     _style(ax, im_label(table.attrs.get("im"), table.attrs.get("unit")),
            r"max $|\theta|/\alpha$")
     return ax
