@@ -116,6 +116,7 @@ def manifest_for(spec: CampaignSpec) -> dict:
         "samples": spec.samples,
         "thresholds": list(spec.thresholds),
         "duration": spec.duration,
+        "max_free_time": spec.max_free_time,
         "seeds": {
             "campaign_seed": spec.seed,
             "simulation": f"SeedSequence({spec.seed}, spawn_key=({STREAM}, sim_id))",
