@@ -106,7 +106,7 @@ def _direct_threshold(wr, grid, tol):
             hi, imp = mid, i
         else:
             lo = mid
-    return hi, (1 if imp == 0 else 2)
+    return hi, (1 if imp > 0 else 2)  # Zhang and Makris (2001): 1 after an impact
 
 
 def test_thresholds_equal_a_direct_bisection_with_simulate():
@@ -131,12 +131,12 @@ def test_thresholds_equal_a_direct_bisection_with_simulate():
 
 
 def test_safe_region_between_the_two_modes_for_the_one_sine_pulse():
-    """Zhang and Makris (2001): above the minimum (mode 2, after an impact) lies a band of
-    amplitudes that do not overturn, below the mode-1 boundary."""
+    """Zhang and Makris (2001): above the minimum (mode 1, after an impact) lies a band of
+    amplitudes that do not overturn, below the mode-2 boundary (no impact)."""
     wr = 8.0
     spec = overturning_spectrum(BLOCK, "sine", [wr], tol=TOL, accel_ratio=GRID)
     r_min = float(spec["min_overturn_ratio"].iloc[0])
-    assert spec["mode"].iloc[0] == 2
+    assert spec["mode"].iloc[0] == 1
     ar = r_min * np.geomspace(1.0, 3.0, 40)
     m = outcome_map(BLOCK, "sine", [wr], ar)
     assert len(m) == 40 and set(m.columns) >= {"omega_ratio", "accel_ratio", "overturned",
@@ -145,10 +145,10 @@ def test_safe_region_between_the_two_modes_for_the_one_sine_pulse():
     safe = np.flatnonzero(modes == 0)
     assert safe.size, "no safe amplitude above the minimum"
     s = safe[0]
-    assert modes[0] == 2 and (modes[:s] == 2).all()  # the mode-2 tongue
-    assert (modes[s:] != 2).any() and modes[-1] == 1  # the mode-1 region above
-    first_mode1 = np.flatnonzero(modes == 1)[0]
-    assert s < first_mode1
+    assert modes[0] == 1 and (modes[:s] == 1).all()  # the mode-1 tongue
+    assert (modes[s:] != 1).any() and modes[-1] == 2  # the mode-2 region above
+    first_mode2 = np.flatnonzero(modes == 2)[0]
+    assert s < first_mode2
     # a single run confirms the safe amplitude: it rocks hard, without overturning
     r = rocking.simulate(BLOCK, _one_sine(BLOCK.p, wr, ar[s], 60.0))
     assert not r.overturned and r.max_abs_theta > 0.5 * ALPHA

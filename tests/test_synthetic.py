@@ -273,7 +273,7 @@ class TestSynthCommand:
         (["--seed", "-3"], "seed must be >= 0"),
         (["--ground", "C"], "--ground/--type need --ag"),
         (["--dt", "0.05"], "too coarse"),
-        (["--ag", "0.3"], "ag needs a acceleration unit"),
+        (["--ag", "0.3"], "ag needs an acceleration unit"),
     ])
     def test_errors(self, tmp_path, args, words):
         from click.testing import CliRunner
