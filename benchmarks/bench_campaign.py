@@ -485,18 +485,25 @@ print(json.dumps({"maxrss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrs
         th_a = a["max_abs_theta"].to_numpy(float)[up]
         th_b = b["max_abs_theta"].to_numpy(float)[up]
         grew = int(np.sum(th_b > th_a))
+        imp_a, imp_b = a["n_impacts"].to_numpy(), b["n_impacts"].to_numpy()
+        moving = int(np.sum(imp_b > imp_a))  # impacts in the tail: rocking at the record's end
         print(f"outcomes, {n:,} runs: overturned old {int(ov_a.sum()):,}, new "
               f"{int(ov_b.sum()):,}: {to_over:,} survivors at the record's end overturn in "
               f"the tail, {to_up} the other way; of {int(up.sum()):,} standing in both, "
               f"{grew:,} reach a larger max|theta| in the tail")
+        print(f"impacts: old {int(imp_a.sum()):,}, new {int(imp_b.sum()):,} "
+              f"({imp_b.sum() / max(imp_a.sum(), 1) - 1:+.0%}); {moving:,} runs have impacts "
+              "in the tail (still rocking at the record's end)")
         flips = f"{to_over:,} survivor -> overturned, {to_up} back"
         if "settled" in a.columns and "settled" in b.columns:
-            s_a = int(a["settled"].to_numpy(bool).sum())
-            s_b = int(b["settled"].to_numpy(bool).sum())
-            print(f"settled (at rest or overturned) at the run's end: old {s_a:,} of {n:,} "
-                  f"({n - s_a:,} still rocking at the record's end), new {s_b:,} "
-                  f"({n - s_b:,} still rocking at the cap)")
-            settled = f"old {s_a:,}, new {s_b:,} of {n:,}"
+            set_a = a["settled"].to_numpy(bool)
+            s_a, s_b = int(set_a.sum()), int(b["settled"].to_numpy(bool).sum())
+            odd = int(np.sum(set_a & (imp_b > imp_a)))
+            print(f"settled flag (at rest or overturned at the run's end): old {s_a:,} of "
+                  f"{n:,}, new {s_b:,} (unsettled at the cap: {n - s_b:,})"
+                  + (f"; {odd:,} runs flagged settled at the record's end have impacts "
+                     "after it" if odd else ""))
+            settled = f"old {s_a:,}, new {s_b:,} of {n:,}" + (f" ({odd:,} odd)" if odd else "")
         else:
             print("no settled column in the rows")
             settled = "no settled column"
@@ -505,6 +512,8 @@ print(json.dumps({"maxrss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrs
             (f"tail: {n:,} sims, new default s", spread(times["new"]),
              f"new/old {ratio:.3f}: {'ok' if ratio <= 1.15 else 'MISSED'} (<= 1.15)"),
             ("tail: overturning flips", flips, ""),
+            ("tail: runs with impacts in the tail", f"{moving:,} of {n:,}",
+             f"impacts {imp_b.sum() / max(imp_a.sum(), 1) - 1:+.0%}"),
             ("tail: settled runs", settled, ""),
         ]
 
