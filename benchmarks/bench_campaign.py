@@ -501,9 +501,9 @@ print(json.dumps({"maxrss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrs
             odd = int(np.sum(set_a & (imp_b > imp_a)))
             print(f"settled flag (at rest or overturned at the run's end): old {s_a:,} of "
                   f"{n:,}, new {s_b:,} (unsettled at the cap: {n - s_b:,})"
-                  + (f"; {odd:,} runs flagged settled at the record's end have impacts "
-                     "after it" if odd else ""))
-            settled = f"old {s_a:,}, new {s_b:,} of {n:,}" + (f" ({odd:,} odd)" if odd else "")
+                  + (f"; {odd:,} runs flagged settled at the record's end rock after it "
+                     "(outcome decided there, not at rest)" if odd else ""))
+            settled = f"old {s_a:,}, new {s_b:,} of {n:,}"
         else:
             print("no settled column in the rows")
             settled = "no settled column"
