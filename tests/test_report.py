@@ -185,7 +185,9 @@ def test_figure7_csv(report):
     assert ours == pytest.approx(math.degrees(r.max_abs_theta), rel=1e-5)
     hist = pd.read_csv(out / "figure7_theta_history.csv")
     assert list(hist.columns) == ["t_s", "theta_deg"]
-    assert hist["t_s"].iloc[-1] == pytest.approx(25.0)
+    # the 25 s test, then the free rocking after the table stopped, until at rest
+    assert hist["t_s"].iloc[-1] > 25.0
+    assert hist["theta_deg"].iloc[-1] == pytest.approx(0.0, abs=1e-6)
 
 
 def test_failing_section_is_reported_and_raises(tmp_path):
