@@ -202,7 +202,9 @@ levels = {start = 1.0, stop = 8.0, num = 6, spacing = "log"}
     assert ax.get_xlabel() == "PGA (m/s$^2$)"
     labels = [t.get_text() for t in ax.get_legend().get_texts()]
     assert not any(lab.startswith("block 0") for lab in labels), labels
-    assert any(lab.startswith("0.2 × 1 m block (blocks[0])") for lab in labels), labels
+    assert any(lab.startswith("0.2 x 1 m block (blocks[0])") for lab in labels), labels
+    md = (tmp_path / "rep" / "report.md").read_text()
+    assert "block 0" not in md and "0.2 x 1 m block (blocks[0])" in md
     assert any(lab.startswith("specimen 2 (experimental)") for lab in labels), labels
     assert ax.title.get_fontsize() >= 10
 

@@ -176,13 +176,14 @@ def _p_overturn(g: pd.DataFrame, im_col: str, n_states: int) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def _fit_group(ok: pd.DataFrame, im_col: str, labels: list[str], n_boot: int, seed):
+def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed):
     """Overturning fit and damage-state curves of one group: ``(rows, fit, curves,
     notes)``; a fit that cannot be made leaves a row with a note."""
     n_states = len(labels)
     base = {"n": len(ok)}
     rows, notes = [], []
-    x = ok[im_col].to_numpy(float)
+    x = ok[im["column"]].to_numpy(float)
+    units = {"im_name": im["name"], "im_unit": im["unit"] or None}  # carried by the fits
     good = np.isfinite(x) & (x > 0)
     if not good.all():
         notes.append(f"{int((~good).sum())} run(s) without a finite IM > 0 left out of the "
@@ -204,7 +205,7 @@ def _fit_group(ok: pd.DataFrame, im_col: str, labels: list[str], n_boot: int, se
             return None, str(e)
 
     fit, why = attempt(lambda: fragility(x, ov, n_boot=n_boot, seed=seed,
-                                         label="overturning"))
+                                         label="overturning", **units))
     row = {"fit": "overturning", "state": n_states, "label": labels[-1], **base,
            "n_exceed": int(ov.sum())}
     if fit is None:
@@ -215,7 +216,7 @@ def _fit_group(ok: pd.DataFrame, im_col: str, labels: list[str], n_boot: int, se
             "standard errors not finite (nearly separated data)"
         rows.append({**row, "median": fit.median, "median_se": fit.median_se,
                      "beta": fit.beta, "beta_se": fit.beta_se, "note": note})
-    curves, why = attempt(lambda: fragility_curves(x, ds, n_boot=n_boot, seed=seed))
+    curves, why = attempt(lambda: fragility_curves(x, ds, n_boot=n_boot, seed=seed, **units))
     if curves is None:
         rows.append({"fit": "damage_states", "state": -1, "label": "all states", **base,
                      "n_exceed": -1, "median": math.nan, "median_se": math.nan,
@@ -409,7 +410,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         pt = _p_overturn(g, im["column"], n_states)
         po_parts.append(pt.assign(**key)[[*key, *pt.columns]])
         ok = g[g["status"] == 0]
-        rows, fit, curves, gnotes = _fit_group(ok, im["column"], labels, n_boot, seed)
+        rows, fit, curves, gnotes = _fit_group(ok, im, labels, n_boot, seed)
         fr_rows += [{**key, **r} for r in rows]
         notes += [f"{model}, {name}: {n}" for n in gnotes]
         notes += [f"{model}, {name}: {r['note']}" for r in rows

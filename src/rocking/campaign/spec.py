@@ -210,15 +210,15 @@ def _block(i: int, t) -> Block:
             b = specimen(n, params)
         elif "width" in f:
             mass = _number(f"{key}.mass", t["mass"], 0, lo_open=True) if "mass" in t else None
-            b = Block.rectangular(_number(f"{key}.width", t["width"], 0, lo_open=True),
-                                  _number(f"{key}.height", t["height"], 0, lo_open=True),
-                                  mass=mass, name=f"block {i}")
+            w = _number(f"{key}.width", t["width"], 0, lo_open=True)
+            h = _number(f"{key}.height", t["height"], 0, lo_open=True)
+            # without a name: what the block is, and where it stands in the spec
+            b = Block.rectangular(w, h, mass=mass, name=f"{w:g} x {h:g} m block ({key})")
         else:
-            b = Block.from_params(_number(f"{key}.alpha", t["alpha"], 0, math.pi / 2,
-                                          lo_open=True),
-                                  _number(f"{key}.p", t["p"], 0, lo_open=True),
-                                  _number(f"{key}.mu", t["mu"], 0, 1, lo_open=True),
-                                  name=f"block {i}")
+            a = _number(f"{key}.alpha", t["alpha"], 0, math.pi / 2, lo_open=True)
+            p = _number(f"{key}.p", t["p"], 0, lo_open=True)
+            b = Block.from_params(a, p, _number(f"{key}.mu", t["mu"], 0, 1, lo_open=True),
+                                  name=f"alpha {a:.4g} rad, p {p:.4g} 1/s block ({key})")
     except SpecError:
         raise
     except RockingError as e:
