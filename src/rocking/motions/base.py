@@ -47,7 +47,8 @@ class Motion:
         """The time (s) from which the ground acceleration is zero for good: a run with
         the default ``duration`` goes on past ``max(duration, quiet_time)`` only while the
         block still moves (:func:`rocking.simulate`)."""
-        raise NotImplementedError
+        raise NotImplementedError(f"{type(self).__name__} does not say when it ends "
+                                  "(quiet_time); pass an explicit duration")
 
     # ---- shared behaviour
     def spec(self) -> tuple[int, np.ndarray, np.ndarray]:
