@@ -5,9 +5,9 @@ Each script runs in a fresh interpreter from a temporary working directory, with
 ``TMPDIR`` in the test's temporary directory (the scripts' stores, specs and caches go
 there) and the session's record cache (``ROCKING_CACHE_DIR``, see ``conftest.py``); the
 test checks the exit status, that no traceback was printed and that the script's last
-section printed its figures. About 50 s for all of them on 2 idle cores with numba's
-cache warm (``bench_campaign.py``, with its Dask cluster and fresh processes, is the
-longest: about 20 s).
+section printed its figures. About 40-50 s for all of them on 2 cores (with other jobs,
+load 2.5) and numba's cache warm; ``bench_campaign.py``, with its Dask cluster and fresh
+processes, is the longest (about 12 s).
 """
 
 from __future__ import annotations
