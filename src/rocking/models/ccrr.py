@@ -60,7 +60,9 @@ term as in Eq 10 and the sign convention of Eq 1 (see :mod:`rocking.models.housn
 * Return to rest: with ``l > 0`` the block never quite stops; it settles on a small
   circular orbit of radius ``chi_c = (l^2 alpha / sin(alpha))^(1/3)``. After each passage,
   if the amplitude that the energy allows is below ``rest_chi = max(rest_tol, 2 chi_c)``
-  (in units of alpha) and ``|a| <= g tan(alpha)``, the block is put to rest.
+  (in units of alpha) and ``|a| <= g tan(alpha)``, the block is put to rest; once the
+  ground is still (after the motion) the threshold is at least ``free_rest_tol``
+  (1e-3, as in :mod:`rocking.models.housner`).
 * Overturning: ``r = alpha chi`` reaches ``pi/2``.
 
 **Integration.** Runge-Kutta-Fehlberg 4(5) as in the paper: with a constant step ``dt``
@@ -91,6 +93,7 @@ from ..motions._kernel import (
 from ..units import G
 from ._numerics import events as E
 from .base import Model, ModelOptions, option, row_args, store_row
+from .housner import DEFAULT_FREE_REST_TOL
 
 HALF_PI = 0.5 * math.pi
 INV_G = 1.0 / G
@@ -200,7 +203,8 @@ def _amp_chi_g(x, v, alpha, l, gf):
 
 @njit(cache=True)
 def integrate(alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, dt_fixed,
-              rest_chi, chi_start, h_max, h_scan, dt_out, out_th, out_om, imp):
+              rest_chi, free_rest_chi, chi_start, h_max, h_scan, dt_out, out_th, out_om,
+              imp):
     """Integrate one CCRR simulation. Returns
     (n_out, n_impacts, max_abs_theta, overturned, overturn_time, uplift_time, n_steps, ok,
     lift_off_time, settled).
@@ -342,7 +346,7 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rto
             break
         amp = (_amp_chi_g(x, v, alpha, l, 1.0 + vertical_acc(prm, samples, t) * INV_G) if hv
                else _amp_chi(x, v, alpha, l)) if passed else math.inf
-        if amp < rest_chi:
+        if amp < (rest_chi if t < t_quiet else max(rest_chi, free_rest_chi)):
             if abs(ground_acc(kind, prm, samples, t)) <= E.threshold(thr, ct, prm, samples, t):
                 resting = True
         if not fixed:
@@ -356,21 +360,21 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rto
 def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th, out_om,
            imp, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
-    alpha, p, mu, l, rtol, dt_fixed, rest_tol = mp
+    alpha, p, mu, l, rtol, dt_fixed, rest_tol, free_rest_tol = mp
     chi_c = (l * l * alpha / math.sin(alpha)) ** (1.0 / 3.0)  # orbit that l sustains
     rest_chi = max(rest_tol, 2.0 * chi_c)
     chi_start = math.sqrt(l)
     h_max = min(0.05 / p, 8.0 * h_scan)
     k, n_imp, peak, over, t_over, t_up, n_steps, ok, t_lift, settled = integrate(
         alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, dt_fixed,
-        rest_chi, chi_start, h_max, h_scan, dt_out, out_th, out_om, imp)
+        rest_chi, free_rest_tol, chi_start, h_max, h_scan, dt_out, out_th, out_om, imp)
     return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, t_lift, settled
 
 
 @njit(cache=True)
 def with_block(mp, b):
     """``mp`` with the block parameters ``b = (alpha, p, mu)`` of a batch row."""
-    return (b[0], b[1], b[2], mp[3], mp[4], mp[5], mp[6])
+    return (b[0], b[1], b[2], mp[3], mp[4], mp[5], mp[6], mp[7])
 
 
 @njit(cache=True, parallel=True)
@@ -397,6 +401,9 @@ class CCRROptions(ModelOptions):
     rest_tol: float = option(DEFAULT_REST_TOL, lo=0.0, hi=1e-2,
                              help="rest threshold (fraction of alpha); at least twice the "
                                   "radius of the orbit that l sustains")
+    free_rest_tol: float = option(DEFAULT_FREE_REST_TOL, lo=0.0, hi=1.0,
+                                  help="rest threshold once the ground is still (after "
+                                       "the motion), as in the classical model")
 
 
 class CCRR(Model):
@@ -414,7 +421,7 @@ class CCRR(Model):
 
     def kernel_params(self, dt_out, theta0, omega0) -> tuple:
         b, o = self.block, self.options
-        return (b.alpha, b.p, b.mu, o.l, o.rtol, o.dt or 0.0, o.rest_tol)
+        return (b.alpha, b.p, b.mu, o.l, o.rtol, o.dt or 0.0, o.rest_tol, o.free_rest_tol)
 
     def failure(self, status, t) -> str:
         at = f" at t = {t:.4g} s" if t == t else ""

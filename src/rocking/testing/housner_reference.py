@@ -56,7 +56,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from .._validate import positive
 from ..errors import ParameterError
-from ..models.housner import DEFAULT_REST_TOL, Housner
+from ..models.housner import DEFAULT_FREE_REST_TOL, DEFAULT_REST_TOL, Housner
 from ..models.run import check_run
 from ..motions import (
     HalfSine,
@@ -335,7 +335,8 @@ def _free_amplitude(om, alpha, p, linear):
 def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0,
                        linear=False, rtol=1e-8, atol=None, method="DOP853",
                        rest_tol=DEFAULT_REST_TOL,
-                       dt_out=None, max_free_time=None):
+                       dt_out=None, max_free_time=None,
+                       free_rest_tol=DEFAULT_FREE_REST_TOL):
     """Classical model integrated with :func:`scipy.integrate.solve_ivp` and events.
 
     Parameters
@@ -359,6 +360,8 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         ``solve_ivp`` method, ``"DOP853"`` by default.
     rest_tol : float
         Zeno rule: rest when the post-impact free amplitude is below ``rest_tol * alpha``.
+    free_rest_tol : float
+        The same once the ground is still (after ``t_quiet``), as in the compiled model.
     dt_out : float, optional
         If given, the history is sampled on ``k * dt_out`` from the dense output; by
         default it holds the solver's own points (impact times appear twice, with the
@@ -370,8 +373,9 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         ``info`` holds ``n_solve_ivp`` (number of calls) and ``nfev``.
     """
     # input validation is shared with the compiled model (the physics below is not)
-    opts = Housner.from_kwargs(block, rtol=rtol, rest_tol=rest_tol).options
-    rtol, rest_tol = opts.rtol, opts.rest_tol
+    opts = Housner.from_kwargs(block, rtol=rtol, rest_tol=rest_tol,
+                               free_rest_tol=free_rest_tol).options
+    rtol, rest_tol, free_rest_tol = opts.rtol, opts.rest_tol, opts.free_rest_tol
     t_end, t_quiet, theta0, omega0 = check_run(motion, duration, theta0, omega0,
                                                max_free_time)
     if method not in METHODS:
@@ -506,8 +510,9 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             t = te
             gf = 1.0 + exc.vertical(t) / G
             thr_t = c_up * G * gf if has_v else thr
+            rt = rest_tol if t < t_quiet else max(rest_tol, free_rest_tol)
             if om == 0.0 or (_free_amplitude(om, alpha, p * math.sqrt(max(gf, 1e-300)),
-                                             linear) < rest_tol * alpha
+                                             linear) < rt * alpha
                              and abs(exc(t)) <= thr_t):
                 resting = True  # uplift test again from here (immediate if |a| > thr)
                 om = 0.0
