@@ -433,8 +433,9 @@ print(json.dumps({"maxrss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrs
 
         from rocking import campaign
         from rocking.errors import SpecError
+        # the old behaviour exactly: every run stops at its record's end (20 s records)
         old_text = stochastic_spec(self.n_rec, self.n_lev, self.chunk, name="bench-tail",
-                                   extra="max_free_time = 0.0")
+                                   extra="duration = 20.0")
         new_text = stochastic_spec(self.n_rec, self.n_lev, self.chunk, name="bench-tail")
         try:
             campaign.parse_spec(old_text)
@@ -449,8 +450,8 @@ print(json.dumps({"maxrss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrs
                  "new": self.spec_file(new_text, "tail-new")}
         n = campaign.read_spec(specs["new"]).n_sims
         print(f"\n== tail: the local campaign ({n:,} simulations, no duration) stopped at the "
-              "record's end (old: max_free_time = 0) and with the default free motion after "
-              "it (new), interleaved")
+              "record's end (old: duration = 20 s, the records' length) and with the "
+              "default free motion after it (new), interleaved")
         print(f"{'run':>4} {'case':>4} {'loadavg':>16} {'wall s':>8} {'sims/s':>8} "
               f"{'cpu s':>8}")
         times = {"old": [], "new": []}
