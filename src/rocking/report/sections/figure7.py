@@ -57,11 +57,11 @@ def summarize(r, window=STEADY) -> dict:
 
 
 LABELS = {
-    "max_abs_theta_deg": "max |θ| over the record (deg)",
+    "max_abs_theta_deg": "max |θ|, the test and the free rocking after it (deg)",
     "time_of_max_s": "time of the maximum (s)",
     "uplift_time_s": "first uplift (s)",
     "overturned": "overturned",
-    "n_impacts": "impacts in the record",
+    "n_impacts": "impacts until at rest",
     "steady_mean_half_cycle_peak_deg": "steady state: mean half-cycle peak (deg)",
     "steady_impacts_per_s": "steady state: impacts per second",
     "steady_rocking_freq_hz": "steady state: rocking cycles per second (Hz)",
@@ -214,7 +214,8 @@ def build(ctx) -> str:
     text.append(f"Changing the amplitude slightly gives maxima of {ens_txt}.")
     text.append(
         f"The block uplifts at t = {sE['uplift_time_s']:.3f} s and makes "
-        f"{sE['n_impacts']} impacts in {DURATION:g} s; in the steady state it makes "
+        f"{sE['n_impacts']} impacts until it is at rest again after the {DURATION:g} s test; "
+        "in the steady state it makes "
         f"{sE['steady_impacts_per_s']:.1f} impacts per second, i.e. it rocks at "
         f"{sE['steady_rocking_freq_hz']:.2f} cycles per second for a {FREQ:g} Hz excitation"
         + (" (one rocking cycle per excitation cycle)."
