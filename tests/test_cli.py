@@ -118,7 +118,8 @@ def test_simulate_writes_files_and_matches_library(tmp_path):
     assert list(df.columns) == ["t", "theta", "omega"]
     # the 5 s sine, then free rocking until the block is at rest
     assert df["t"].iloc[0] == 0.0 and df["t"].iloc[-1] > 5.0
-    assert df["theta"].iloc[-1] == pytest.approx(0.0, abs=1e-9)
+    alpha = rocking.specimen(2, "experimental").alpha  # at rest below 1e-3 alpha
+    assert abs(df["theta"].iloc[-1]) < 1e-3 * alpha
     s = json.loads((out / "summary.json").read_text())
     assert {"max_abs_theta", "overturned", "n_impacts", "model", "specimen", "params",
             "inputs", "motion"} <= set(s)
