@@ -60,7 +60,7 @@ def figure(figsize=(7.0, 3.6)):
     return fig, fig.add_subplot()
 
 
-def _style(ax, xlabel: str | None = None, ylabel: str | None = None):
+def style_axes(ax, xlabel: str | None = None, ylabel: str | None = None):
     """Publication-style axes: light grid, no top/right spines, labels with units."""
     ax.grid(True, which="major", color="0.85", linewidth=0.7)
     ax.set_axisbelow(True)
@@ -165,7 +165,7 @@ def plot_response(resp, ax=None, deg: bool = True, label: str | None = None, *,
                     xytext=(2, 0), textcoords="offset points", va="center", fontsize=8,
                     color="0.35")
     ax.axhline(0.0, color="0.3", linewidth=0.6)
-    _style(ax, "time t (s)", _angle_label(deg))
+    style_axes(ax, "time t (s)", _angle_label(deg))
     t = np.asarray(resp.t, dtype=float)
     if t.size > 1:
         ax.set_xlim(0.0, float(t[-1]))
@@ -198,7 +198,7 @@ def plot_responses(responses, labels=None, ax=None, deg: bool = True, *,
         if len(r.t):
             t_end = max(t_end, float(r.t[-1]))
     ax.axhline(0.0, color="0.3", linewidth=0.6)
-    _style(ax, "time t (s)", _angle_label(deg))
+    style_axes(ax, "time t (s)", _angle_label(deg))
     if t_end > 0:
         ax.set_xlim(0.0, t_end)
     if responses:
@@ -238,7 +238,7 @@ def plot_motion(motion, ax=None, duration: float | None = None, *, title: str | 
     kw.setdefault("color", "0.2")
     ax.plot(t, a, **kw)
     ax.axhline(0.0, color="0.3", linewidth=0.6)
-    _style(ax, "time t (s)", r"ground acceleration $a$ (m/s$^2$)")
+    style_axes(ax, "time t (s)", r"ground acceleration $a$ (m/s$^2$)")
     ax.set_xlim(0.0, float(dur))
     if title:
         ax.set_title(title, fontsize=10)

@@ -26,16 +26,16 @@ from ..plot import PALETTE, figure, unit_label
 from ..results import jsonable
 from .fragility import (
     FragilityFit,
-    _as_bool,
-    _bootstrap,
-    _check_separation,
-    _make_fit,
-    _n_boot,
-    _rng,
-    _stripes,
+    as_bool_array,
+    check_bootstrap,
+    check_n_boot,
+    check_separation,
     fragility,
+    make_fit,
+    make_rng,
     pelicun_table,
     records,
+    stripe_counts,
 )
 
 #: Default thresholds on ``max |theta| / alpha`` (states 1 and 2); overturning is the
@@ -66,7 +66,7 @@ def damage_state(max_abs_theta, alpha, overturned, thresholds=DEFAULT_THRESHOLDS
     """
     t = _thresholds(thresholds)
     th = np.atleast_1d(np.asarray(max_abs_theta, dtype=float))
-    ov = _as_bool("overturned", overturned)
+    ov = as_bool_array("overturned", overturned)
     if th.ndim != 1 or th.size != ov.size:
         raise ParameterError(f"max_abs_theta and overturned must have the same length, got "
                              f"{th.size} and {ov.size}")
@@ -252,7 +252,7 @@ def fragility_curves(im, state=None, *, ratio=None, overturned=None,
                              "(change the thresholds or the IM levels)")
     labels = tuple(state_labels(t) if t is not None else
                    [f"DS{k}" for k in range(1, n_states + 1)])
-    n_boot, rng, bootstrap = _n_boot(n_boot), _rng(seed), _bootstrap(bootstrap)
+    n_boot, rng, bootstrap = check_n_boot(n_boot), make_rng(seed), check_bootstrap(bootstrap)
     thr = None if t is None else tuple(t.tolist())
     if method == "separate":
         fits = tuple(fragility(x, s >= k, n_boot=n_boot, seed=seed, bootstrap=bootstrap,
@@ -265,12 +265,12 @@ def fragility_curves(im, state=None, *, ratio=None, overturned=None,
     splits_ok = 0
     for k in range(1, n_states + 1):
         try:
-            _check_separation(x, s >= k)
+            check_separation(x, s >= k)
             splits_ok += 1
         except ParameterError:
             pass
     if splits_ok == 0:
-        _check_separation(x, s >= 1, what=f"state >= 1 (of {n_states})")
+        check_separation(x, s >= 1, what=f"state >= 1 (of {n_states})")
     _, params, pcov, llf = _ordered_probit(x, s, n_states)
     b = params[0]
     if b <= 0:
@@ -279,7 +279,7 @@ def fragility_curves(im, state=None, *, ratio=None, overturned=None,
     draws = rng.multivariate_normal(params, pcov, size=n_boot) if n_boot else \
         np.empty((0, params.size))
     boot_cuts = _cuts(draws) if n_boot else np.empty((0, n_states))
-    levels, n, _, _ = _stripes(x, s >= 1)
+    levels, n, _, _ = stripe_counts(x, s >= 1)
     fits = []
     for k in range(1, n_states + 1):
         j = k - 1
@@ -293,9 +293,9 @@ def fragility_curves(im, state=None, *, ratio=None, overturned=None,
         data = pd.DataFrame({"im": levels, "n": n, "n_failed": kk.astype(int)})
         boot = np.column_stack([-boot_cuts[:, j], draws[:, 0]]) if n_boot else \
             np.empty((0, 2))
-        fits.append(_make_fit(coef, jac @ pcov @ jac.T, "ordered probit, common beta",
-                              data, boot, bootstrap, seed, 0, llf, labels[j], im_name,
-                              im_unit))
+        fits.append(make_fit(coef, jac @ pcov @ jac.T, "ordered probit, common beta",
+                             data, boot, bootstrap, seed, 0, llf, labels[j], im_name,
+                             im_unit))
     return FragilityCurves(tuple(fits), thr, method, labels)
 
 

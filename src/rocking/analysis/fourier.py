@@ -32,7 +32,7 @@ from scipy.signal import find_peaks, get_window
 
 from .._validate import in_range
 from ..errors import ParameterError
-from ..plot import PALETTE, _style, new_axes
+from ..plot import PALETTE, new_axes, style_axes
 from ..results import jsonable
 
 _DETREND = ("constant", "linear", None)
@@ -153,7 +153,7 @@ class FourierSpectrum:
             for f, a in zip(self.peaks["freq"], self.peaks["amplitude"], strict=True):
                 ax.annotate(f"{f:.3g} Hz", xy=(f, a), xytext=(4, 4),
                             textcoords="offset points", fontsize=8, color="#C00000")
-        _style(ax, "frequency f (Hz)", f"Fourier amplitude, {self.label}")
+        style_axes(ax, "frequency f (Hz)", f"Fourier amplitude, {self.label}")
         ax.set_xlim(0.0, float(fmax) if fmax else float(self.freq[-1]))
         ax.set_ylim(bottom=0.0)
         if label:

@@ -38,7 +38,7 @@ from scipy.stats import norm
 from .._atomic import atomic_path
 from .._validate import in_range
 from ..errors import ParameterError, SimulationError
-from ..plot import PALETTE, _style, figure, im_label, unit_label
+from ..plot import PALETTE, figure, im_label, style_axes, unit_label
 from ..results import jsonable
 from ..units import ACCELERATION, G
 
@@ -127,7 +127,7 @@ def _as_im(name: str, value) -> np.ndarray:
     return x
 
 
-def _as_bool(name: str, value) -> np.ndarray:
+def as_bool_array(name: str, value) -> np.ndarray:
     """A 1-D boolean array from booleans or 0/1 numbers (NaN and strings refused)."""
     arr = np.atleast_1d(np.asarray(value))
     if arr.ndim != 1:
@@ -172,21 +172,21 @@ def records(im, failed, *, names=("im", "failed")) -> tuple[np.ndarray, np.ndarr
                                  "levels: give one sequence of outcomes per IM level")
         ims, fs = [], []
         for j, s in enumerate(stripes):
-            f = _as_bool(f"{n_f}[{j}]", s)
+            f = as_bool_array(f"{n_f}[{j}]", s)
             if f.size == 0:
                 raise ParameterError(f"{n_f}[{j}] (the stripe at {n_im} = {x[j]:g}) is "
                                      "empty: every stripe needs at least one record")
             ims.append(np.full(f.size, x[j]))
             fs.append(f)
         return np.concatenate(ims), np.concatenate(fs)
-    f = _as_bool(n_f, failed)
+    f = as_bool_array(n_f, failed)
     if f.size != x.size:
         raise ParameterError(f"{n_im} and {n_f} must have the same length, got {x.size} "
                              f"and {f.size}")
     return x, f
 
 
-def _check_separation(x: np.ndarray, y: np.ndarray, what: str = "failed") -> None:
+def check_separation(x: np.ndarray, y: np.ndarray, what: str = "failed") -> None:
     """Refuse outcomes for which the probit MLE does not exist."""
     n1 = int(y.sum())
     if n1 == 0:
@@ -206,20 +206,23 @@ def _check_separation(x: np.ndarray, y: np.ndarray, what: str = "failed") -> Non
                              "a fragility curve must increase with the IM")
 
 
-def _rng(seed):
+def make_rng(seed):
+    """The bootstrap's random generator from ``seed`` (an int, a SeedSequence or None)."""
     if seed is not None and not isinstance(seed, int | np.integer | np.random.SeedSequence):
         raise ParameterError(f"seed must be an int, a numpy SeedSequence or None, got "
                              f"{seed!r}")
     return np.random.default_rng(seed)
 
 
-def _n_boot(n_boot) -> int:
+def check_n_boot(n_boot) -> int:
+    """``n_boot`` checked: an integer >= 0 (the number of bootstrap draws)."""
     if isinstance(n_boot, bool) or not isinstance(n_boot, int | np.integer) or n_boot < 0:
         raise ParameterError(f"n_boot must be an integer >= 0, got {n_boot!r}")
     return int(n_boot)
 
 
-def _bootstrap(method) -> str:
+def check_bootstrap(method) -> str:
+    """``method`` checked: one of :data:`BOOTSTRAP_METHODS`."""
     if method not in BOOTSTRAP_METHODS:
         raise ParameterError(f"bootstrap must be one of {BOOTSTRAP_METHODS}, got {method!r}")
     return method
@@ -405,7 +408,7 @@ class FragilityFit:
                             label=f"{100 * level:g}% band ({_BAND_NAME[self.bootstrap]})")
         if data:
             self._plot_data(ax, color)
-        _style(ax, self.im_axis_label, "probability of exceedance")
+        style_axes(ax, self.im_axis_label, "probability of exceedance")
         ax.set_ylim(-0.02, 1.02)
         ax.legend(frameon=False, fontsize="small")
         return ax
@@ -478,7 +481,9 @@ def _glm(x: np.ndarray, k: np.ndarray, n: np.ndarray):
     return model.fit()
 
 
-def _stripes(x: np.ndarray, y: np.ndarray):
+def stripe_counts(x: np.ndarray, y: np.ndarray):
+    """``(levels, n, k, inv)``: the distinct IM levels, the records and failures at each,
+    and each record's level index."""
     levels, inv = np.unique(x, return_inverse=True)
     n = np.bincount(inv, minlength=levels.size)
     k = np.bincount(inv, weights=y, minlength=levels.size).astype(int)
@@ -515,9 +520,9 @@ def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
 
     im_unit = _unit("im_unit", im_unit)
     x, y = records(im, failed)
-    n_boot, rng, bootstrap = _n_boot(n_boot), _rng(seed), _bootstrap(bootstrap)
-    _check_separation(x, y)
-    levels, n, k, inv = _stripes(x, y)
+    n_boot, rng, bootstrap = check_n_boot(n_boot), make_rng(seed), check_bootstrap(bootstrap)
+    check_separation(x, y)
+    levels, n, k, inv = stripe_counts(x, y)
     res = _glm(levels, k, n)
     coef = np.asarray(res.params, dtype=float)
     coef_cov = np.asarray(res.cov_params(), dtype=float)
@@ -531,9 +536,9 @@ def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
         boot = rng.multivariate_normal(coef, coef_cov, size=n_boot)
     else:
         boot, n_fail = _resample_glm(levels, n, k, x, y, inv, n_boot, rng)
-    return _make_fit(coef, coef_cov, "glm-probit (Baker 2015)",
-                     pd.DataFrame({"im": levels, "n": n, "n_failed": k}), boot, bootstrap,
-                     seed, n_fail, float(res.llf), label, im_name, im_unit)
+    return make_fit(coef, coef_cov, "glm-probit (Baker 2015)",
+                    pd.DataFrame({"im": levels, "n": n, "n_failed": k}), boot, bootstrap,
+                    seed, n_fail, float(res.llf), label, im_name, im_unit)
 
 
 def _resample_glm(levels, n, k, x, y, inv, n_boot, rng):
@@ -546,11 +551,11 @@ def _resample_glm(levels, n, k, x, y, inv, n_boot, rng):
             kb, nb, xb = rng.binomial(n, k / n), n, levels
         else:
             idx = rng.integers(0, x.size, x.size)
-            xb, nb, kb, _ = _stripes(x[idx], y[idx])
+            xb, nb, kb, _ = stripe_counts(x[idx], y[idx])
         yb = np.concatenate([np.r_[np.ones(a, bool), np.zeros(b - a, bool)]
                              for a, b in zip(kb, nb, strict=True)])
         try:
-            _check_separation(np.repeat(xb, nb), yb)
+            check_separation(np.repeat(xb, nb), yb)
             r = _glm(xb, kb, nb)
         except (ParameterError, ValueError, np.linalg.LinAlgError):
             failed += 1
@@ -559,8 +564,10 @@ def _resample_glm(levels, n, k, x, y, inv, n_boot, rng):
     return (np.array(out) if out else np.empty((0, 2))), failed
 
 
-def _make_fit(coef, coef_cov, method, data, boot, bootstrap, seed, n_fail, llf, label,
-              im_name="im", im_unit=None):
+def make_fit(coef, coef_cov, method, data, boot, bootstrap, seed, n_fail, llf, label,
+             im_name="im", im_unit=None):
+    """A :class:`FragilityFit` from the probit coefficients ``(b0, b1)`` and their
+    covariance (median, beta and their standard errors by the delta method)."""
     cov = _delta(coef, coef_cov)
     return FragilityFit(
         median=math.exp(-coef[0] / coef[1]), beta=1.0 / coef[1],
@@ -610,11 +617,11 @@ def fragility_ida(capacity, censored=None, *, n_boot: int = 1000, seed: int | No
 
     im_unit = _unit("im_unit", im_unit)
     cap = _as_im("capacity", capacity)
-    cens = (np.zeros(cap.size, bool) if censored is None else _as_bool("censored", censored))
+    cens = (np.zeros(cap.size, bool) if censored is None else as_bool_array("censored", censored))
     if cens.size != cap.size:
         raise ParameterError(f"capacity and censored must have the same length, got "
                              f"{cap.size} and {cens.size}")
-    n_boot, rng, bootstrap = _n_boot(n_boot), _rng(seed), _bootstrap(bootstrap)
+    n_boot, rng, bootstrap = check_n_boot(n_boot), make_rng(seed), check_bootstrap(bootstrap)
     unc = cap[~cens]
     if unc.size < 2 or np.unique(unc).size < 2:
         raise ParameterError("capacity: at least two distinct uncensored capacities are "
@@ -653,9 +660,9 @@ def fragility_ida(capacity, censored=None, *, n_boot: int = 1000, seed: int | No
     bb = np.exp(draws[:, 1])
     boot = np.column_stack([-draws[:, 0] / bb, 1.0 / bb])
     llf = _censored_loglike(mu, math.log(beta), cap, cens)
-    return _make_fit(coef, coef_cov, "censored lognormal MLE (IDA)",
-                     pd.DataFrame({"capacity": cap, "censored": cens}), boot, bootstrap,
-                     seed, n_fail, llf, label, im_name, im_unit)
+    return make_fit(coef, coef_cov, "censored lognormal MLE (IDA)",
+                    pd.DataFrame({"capacity": cap, "censored": cens}), boot, bootstrap,
+                    seed, n_fail, llf, label, im_name, im_unit)
 
 
 # --------------------------------------------------------------------------- hazard

@@ -16,7 +16,7 @@ from .._validate import positive
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import HanningSine, Sine
-from ..plot import _style, figure
+from ..plot import figure, style_axes
 from ..units import G
 
 KINDS = {"sine": Sine, "hanning": HanningSine}
@@ -99,5 +99,5 @@ def plot_motion_space(df: pd.DataFrame, ax=None):
     ax.set_xticks(range(freqs.size), [f"{v:g}" for v in freqs])
     ax.set_yticks(range(amps.size), [f"{1e3 * v:g}" for v in amps])
     ax.figure.colorbar(mesh, ax=ax, label=r"max $|\theta|/\alpha$")
-    _style(ax, "frequency (Hz)", "table amplitude (mm)")
+    style_axes(ax, "frequency (Hz)", "table amplitude (mm)")
     return ax

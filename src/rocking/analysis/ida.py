@@ -14,7 +14,7 @@ import pandas as pd
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import Record
-from ..plot import _style, figure, im_label
+from ..plot import figure, im_label, style_axes
 from .damage import DEFAULT_THRESHOLDS, damage_state, state_labels
 
 IMS = {"pga": ("m/s^2", 1), "pgv": ("m/s", 1), "pgd": ("m", 1), "arias": ("m/s", 2),
@@ -134,6 +134,6 @@ def plot_ida(table: pd.DataFrame, ax=None):
     ax.plot(ov["im"], np.full(len(ov), top), "x", color="#C00000", label="overturned")
     ax.axhline(1.0, color="0.3", linestyle=":", linewidth=0.8)
     ax.legend(loc="lower right", fontsize=8)  # upper left hid the crosses of the first levels
-    _style(ax, im_label(table.attrs.get("im"), table.attrs.get("unit")),
+    style_axes(ax, im_label(table.attrs.get("im"), table.attrs.get("unit")),
            r"max $|\theta|/\alpha$")
     return ax

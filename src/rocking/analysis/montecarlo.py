@@ -38,7 +38,7 @@ from ..blocks import Block
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import Motion, Record, sample
-from ..plot import _style, figure
+from ..plot import figure, style_axes
 from ..results import jsonable
 from .distributions import MAX_OUTSIDE, check_mass, draw, draw_counted, frozen, mass_beyond
 
@@ -204,7 +204,7 @@ class MonteCarloResult:
         lo, hi = self.ci
         ax.set_title(f"P(overturn) = {self.p_overturn:.3f} "
                      f"[{lo:.3f}, {hi:.3f}] ({100 * self.level:g}% Wilson), n = {self.n}")
-        _style(ax, r"max $|\theta|/\alpha$ (samples that did not overturn)", "samples")
+        style_axes(ax, r"max $|\theta|/\alpha$ (samples that did not overturn)", "samples")
         return ax
 
 

@@ -60,7 +60,7 @@ from .._validate import as_float, in_range, positive
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import MavroeidisPapageorgiou, OneCosine, OneSine, Ricker
-from ..plot import PALETTE, _style, new_axes
+from ..plot import PALETTE, new_axes, style_axes
 from ..units import G
 
 PULSES = ("sine", "cosine", "ricker", "mp")
@@ -385,7 +385,7 @@ def plot_overturning_spectrum(df, ax=None, *, label: str | None = None, **kw):
         if sel.any():
             ax.plot(x[sel], y[sel], linestyle="none", marker=marker, markersize=4, color=col,
                     label=_MODE_LABELS[md])
-    _style(ax, _XLABEL, _YLABEL)
+    style_axes(ax, _XLABEL, _YLABEL)
     ax.set_ylim(bottom=0.0)
     ax.legend(frameon=False, fontsize=8)
     ax.set_title(_title(df.attrs), fontsize=10)
@@ -426,7 +426,7 @@ def plot_outcome_map(df, ax=None, *, spectrum=None):
         (line,) = ax.plot(spectrum["omega_ratio"], spectrum["min_overturn_ratio"], color="k",
                           linewidth=1.2, label="overturning spectrum")
         handles.append(line)
-    _style(ax, _XLABEL, _YLABEL)
+    style_axes(ax, _XLABEL, _YLABEL)
     ax.grid(False)
     ax.legend(handles=handles, fontsize=8, loc="lower right", framealpha=0.9)
     ax.set_title(_title(df.attrs), fontsize=10)

@@ -44,7 +44,7 @@ from .._atomic import atomic_path, atomic_write
 from ..analysis import DEFAULT_THRESHOLDS, fragility, fragility_curves, wilson_interval
 from ..analysis.damage import state_labels
 from ..errors import ParameterError, SimulationError
-from ..plot import PALETTE, _style, figure, im_label, save_figure, unit_label
+from ..plot import PALETTE, figure, im_label, save_figure, style_axes, unit_label
 from ..units import G
 
 #: Columns the table must have.
@@ -294,7 +294,7 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
             lab += f"\nmedian {_g(fit.median)}{' ' + unit if unit else ''}, beta {_g(fit.beta, 2)}"
         ax.errorbar(d["im"], d["p_overturn"], yerr=np.clip(yerr, 0, None), fmt="o", ms=4,
                     mfc="none", color=c, capsize=2, lw=0.8, label=lab)
-    _style(ax, im_label(im["name"], im["unit"]), "P(overturn)")
+    style_axes(ax, im_label(im["name"], im["unit"]), "P(overturn)")
     ax.set_ylim(-0.03, 1.03)
     ax.set_title(f"{model}: P(overturn) per level (95% Wilson bars), lognormal fits "
                  "(95% bands)", fontsize=10)

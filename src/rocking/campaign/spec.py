@@ -282,7 +282,7 @@ def _motions(t: dict, base_dir: Path) -> dict:
         if "record_duration" in out:
             _number("motions.record_duration", out["record_duration"], 0,
                     MAX_RECORD_DURATION, lo_open=True)
-        from ..motions.stochastic import _HP_DECAY, DEFAULTS, _model, modulating_parameters
+        from ..motions.stochastic import DEFAULTS, HP_DECAY, modulating_parameters, record_model
         kw = {**DEFAULTS, **{k: v for k, v in out.items() if k in DEFAULTS}}
         if "record_duration" in out:
             kw["duration"] = out["record_duration"]
@@ -290,20 +290,20 @@ def _motions(t: dict, base_dir: Path) -> dict:
             _number("motions.dt", kw["dt"], 0, lo_open=True)
             if kw.get("duration") is not None:
                 length, key = kw["duration"], "motions.record_duration"
-            else:  # the generator's default length (rocking.motions.stochastic._model)
+            else:  # the generator's default length (rocking.motions.stochastic.record_model)
                 tail = modulating_parameters(kw["Ia"], kw["D5_95"], kw["t_mid"])["t_tail"]
-                hp = _HP_DECAY / kw["omega_c"] if kw["omega_c"] > 0 else 0.0
+                hp = HP_DECAY / kw["omega_c"] if kw["omega_c"] > 0 else 0.0
                 length, key = tail + hp, "motions.dt"
                 if not length <= MAX_RECORD_DURATION:
                     _fail("motions.omega_c" if hp > tail else "motions.t_mid",
                           f"the records would last {length:g} s (t_tail {tail:g} s + "
-                          f"{_HP_DECAY:g} / omega_c); at most {MAX_RECORD_DURATION:g} s "
+                          f"{HP_DECAY:g} / omega_c); at most {MAX_RECORD_DURATION:g} s "
                           "(or give record_duration)")
             if not length / kw["dt"] + 1 <= MAX_RECORD_SAMPLES:
                 _fail(key, f"a record of {length:g} s at dt = {kw['dt']:g} s would have "
                            f"{length / kw['dt']:.3g} samples; at most {MAX_RECORD_SAMPLES:.0e} "
                            "(raise dt or shorten record_duration)")
-            _model(**kw)
+            record_model(**kw)
         except RockingError as e:
             if isinstance(e, SpecError):
                 raise

@@ -174,15 +174,15 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
     comp = check_compatibility(recs, target, PERIOD_RANGE, periods=periods)
     width = max(2, len(str(max(r.number for r in recs))))
     rows = []
-    for rec, sa in zip(recs, comp.spectra, strict=True):
+    dev = comp.record_deviation()
+    for rec, sa, d in zip(recs, comp.spectra, dev, strict=True):
         stem = f"earthquake_{rec.number:0{width}d}"
         write_csv(rec, folder / f"{stem}.csv")
         im = rec.intensity_measures()
-        inr = comp._in_range()
         rows.append({"number": rec.number, "file": f"{stem}.csv", "pga_ms2": im["pga"],
                      "pgv_ms": im["pgv"], "pgd_m": im["pgd"], "arias_ms": im["arias"],
                      "d5_95_s": im["d5_95"],
-                     "max_dev_in_range": float(np.max(np.abs(sa[inr] / comp.target[inr] - 1))),
+                     "max_dev_in_range": float(d),
                      "seed": rec.meta.get("seed")})
         if not no_plots:
             fig = _record_figure(rec, periods, sa, target, PERIOD_RANGE, 0.05)

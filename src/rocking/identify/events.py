@@ -79,7 +79,10 @@ def _peak(t, sz, lo, hi):
 
 
 @dataclass
-class _Events:
+class Events:
+    """The half-cycles of a record found by :func:`detect_events`: per lobe its sign, first
+    and last sample, coarse amplitude and peak time; per crossing its time and variance."""
+
     sign: np.ndarray  # (L,) lobe signs
     first: np.ndarray
     last: np.ndarray
@@ -89,7 +92,7 @@ class _Events:
     cvar: np.ndarray  # (L-1,) its variance (s^2)
 
 
-def _events(t, z, sigma, h, frac=0.3) -> _Events:
+def detect_events(t, z, sigma, h, frac=0.3) -> Events:
     """Half-cycles (hysteresis), coarse peaks and coarse crossings of ``z``.
 
     A crossing is the zero of a straight line fitted to the samples on both sides of it
@@ -136,15 +139,15 @@ def _events(t, z, sigma, h, frac=0.3) -> _Events:
         v = np.array([1.0, xr])
         cross[k] = tc + xr
         cvar[k] = sigma * sigma * float(v @ inv @ v) / (c1 * c1)
-    return _Events(sign, first, last, amp, tpk, cross, cvar)
+    return Events(sign, first, last, amp, tpk, cross, cvar)
 
 
-def find_events(rec: Record, z, c: float) -> _Events:
+def find_events(rec: Record, z, c: float) -> Events:
     """Coarse events of the despiked record centred on ``c``; at least four impacts.
 
     ``z`` is the centred record (it sets the hysteresis of the crossing detector).
     """
-    ev = _events(rec.t, rec.ym - c, rec.sig, rec.hysteresis(z))
+    ev = detect_events(rec.t, rec.ym - c, rec.sig, rec.hysteresis(z))
     L = ev.sign.size
     if L < 2:
         raise IdentificationError("no impact: the record never crosses its rest level, so "
@@ -156,7 +159,7 @@ def find_events(rec: Record, z, c: float) -> _Events:
     return ev
 
 
-def amplitude_threshold(rec: Record, ev: _Events, min_amplitude) -> float:
+def amplitude_threshold(rec: Record, ev: Events, min_amplitude) -> float:
     """Smallest amplitude used (rad): ``min_amplitude`` (in the record's units) or, by
     default, ``max(15 noise std, 2 % of the largest amplitude)``."""
     if min_amplitude is not None:
@@ -165,7 +168,7 @@ def amplitude_threshold(rec: Record, ev: _Events, min_amplitude) -> float:
     return max(15.0 * rec.sig, 0.02 * big)
 
 
-def usable_run(rec: Record, ev: _Events, r_min: float) -> tuple[int, int]:
+def usable_run(rec: Record, ev: Events, r_min: float) -> tuple[int, int]:
     """``(k0, k1)``: the longest run ``k0 <= k < k1`` of consecutive usable half-cycles.
 
     Usable: complete (crossings on both sides, located around the peak), at least five

@@ -23,7 +23,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from ..errors import IdentificationError
-from .time_model import _abc, _g, _g_dalpha
+from .time_model import scaled_quarter_time, scaled_quarter_time_dalpha, sigma_coefficients
 from .timing import HalfCycleTimes
 
 _NOT_IDENTIFIABLE = (
@@ -46,7 +46,7 @@ def _fit_alpha_p(r, d, v, loss: str, x0=None):
                                   "pi/2: this is not free rocking")
     if x0 is None or not a_lo < x0[0] < a_hi:
         grid = r_max + (a_hi - r_max) * np.logspace(-4, 0, 160)
-        A, B, C = _abc(r, d, v * v, grid)
+        A, B, C = sigma_coefficients(r, d, v * v, grid)
         with np.errstate(divide="ignore", invalid="ignore"):
             prof = np.where(B > 0, A - B * B / C, np.inf)
         j = int(np.argmin(prof))
@@ -58,11 +58,12 @@ def _fit_alpha_p(r, d, v, loss: str, x0=None):
     x0 = np.asarray(x0, dtype=float)
 
     def fun(x):
-        return v * (d - _g(r, x[0]) / x[1])
+        return v * (d - scaled_quarter_time(r, x[0]) / x[1])
 
     def jac(x):
-        G = _g(r, x[0])
-        return np.column_stack((-v * _g_dalpha(r, x[0]) / x[1], v * G / (x[1] * x[1])))
+        G = scaled_quarter_time(r, x[0])
+        return np.column_stack((-v * scaled_quarter_time_dalpha(r, x[0]) / x[1],
+                                v * G / (x[1] * x[1])))
 
     lb, ub = np.array([a_lo, 1e-9]), np.array([a_hi, np.inf])
     x0 = np.clip(x0, lb + 1e-12, ub - 1e-12)
@@ -95,7 +96,8 @@ def coarse_alpha_p(amp, tpk, cross) -> tuple[float, float]:
         return float(sol.x[0]), float(sol.x[1])
     except IdentificationError:  # rough: twice the largest amplitude, p from small swings
         alpha = min(2.0 * float(np.max(amp)), 0.5 * math.pi - 1e-6)
-        return alpha, float(np.median(_g(amp, alpha) / (0.5 * np.diff(cross))))
+        half = 0.5 * np.diff(cross)
+        return alpha, float(np.median(scaled_quarter_time(amp, alpha) / half))
 
 
 def fit_times(times: HalfCycleTimes, loss: str, x0=None):
@@ -109,8 +111,8 @@ def covariance(times: HalfCycleTimes, alpha: float, p: float) -> np.ndarray:
     ``D_k = 2 T(r_k)`` (the fall ``T(r_0)`` for the release); the rise-minus-fall part of
     the residuals does not depend on ``alpha``, ``p``."""
     amp, rise, fall, s_k, half = times.amp, times.rise, times.fall, times.s_k, times.half
-    G = _g(amp, alpha)
-    dG = _g_dalpha(amp, alpha)
+    G = scaled_quarter_time(amp, alpha)
+    dG = scaled_quarter_time_dalpha(amp, alpha)
     mult = np.where(half, 1.0, 2.0)
     D = np.where(half, fall, rise + fall)
     u = (D - mult * G / p) / s_k

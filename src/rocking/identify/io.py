@@ -9,7 +9,7 @@ from pathlib import Path
 
 from ..errors import RecordError
 from .pipeline import free_rocking
-from .record import _angle_factor
+from .record import angle_factor
 from .result import FreeRockingFit
 
 _T_NAMES = ("t", "time", "time_s", "t_s", "time (s)", "t (s)", "seconds", "s")
@@ -26,7 +26,7 @@ def read_record_csv(path, units: str = "rad", time_col=None, angle_col=None):
     """
     import pandas as pd
 
-    factor = _angle_factor(units)
+    factor = angle_factor(units)
     path = Path(path)
     if not path.is_file():
         raise RecordError(f"record file not found: {path}")
@@ -97,5 +97,5 @@ def from_csv(path, units: str = "rad", time_col=None, angle_col=None, **kw) -> F
     ``min_amplitude`` in ``kw`` is in the same units.
     """
     t, a = read_record_csv(path, units=units, time_col=time_col, angle_col=angle_col)
-    f = _angle_factor(units)
+    f = angle_factor(units)
     return free_rocking(t, a / f, units=units, **kw)

@@ -11,7 +11,7 @@ import numpy as np
 
 from .._validate import as_float
 from ..errors import IdentificationError, ParameterError
-from .events import _events
+from .events import detect_events
 from .record import Record
 
 
@@ -75,7 +75,7 @@ def _symmetric_offset(t, y, c0, sigma, h_of):
     c = c0
     for _ in range(4):
         z = y - c
-        ev = _events(t, z, sigma, h_of(z))
+        ev = detect_events(t, z, sigma, h_of(z))
         m = ev.sign * ev.amp + c  # signed peak levels in the record
         good = np.isfinite(m)
         good[0] = False

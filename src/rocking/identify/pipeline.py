@@ -18,14 +18,14 @@ import math
 import numpy as np
 
 from ..errors import IdentificationError, ParameterError
-from .events import _Events, amplitude_threshold, find_events, usable_run
+from .events import Events, amplitude_threshold, find_events, usable_run
 from .fits import coarse_alpha_p, covariance, fit_times, restitution, uncertainties
 from .offset import remove_offset
-from .record import Record, _as_record
+from .record import Record, check_record
 from .release import Release, find_release
 from .result import FreeRockingFit
-from .shape import LobeFit, _Lobe, _shape_fits
-from .time_model import _g
+from .shape import Lobe, LobeFit, shape_fits
+from .time_model import scaled_quarter_time
 from .timing import HalfCycleTimes
 
 _LOSSES = ("linear", "soft_l1", "huber", "cauchy", "arctan")
@@ -92,7 +92,7 @@ def free_rocking(t, theta, *, units: str = "rad", offset="auto", min_amplitude=N
     cov, how = uncertainties(times, alpha, p, n_boot, seed)
     nimp, mu_n, mu, mu_std = restitution(times.amp, times.ks, alpha)
     alpha_std, p_std = (float(math.sqrt(max(cov[i, i], 0.0))) for i in range(2))
-    Tm = _g(times.amp, alpha) / p
+    Tm = scaled_quarter_time(times.amp, alpha) / p
     return FreeRockingFit(
         alpha=alpha, p=p, mu=mu, alpha_std=alpha_std, p_std=p_std, mu_std=mu_std,
         mu_n=mu_n, peak_times=times.tpk, peak_values=ev.sign[times.ks] * times.amp,
@@ -107,14 +107,14 @@ def free_rocking(t, theta, *, units: str = "rad", offset="auto", min_amplitude=N
 
 def _read_input(t, theta, units: str, loss: str, n_boot) -> tuple[Record, int]:
     """Stage 1: the checked record in rad with its noise level, and the checked options."""
-    t, y = _as_record(t, theta, units)
+    t, y = check_record(t, theta, units)
     if loss not in _LOSSES:
         raise ParameterError(f"loss must be one of {', '.join(_LOSSES)}; got {loss!r}")
     n_boot = int(n_boot)
     return Record.measure(t, y, units), n_boot
 
 
-def _refine(rec: Record, z, ev: _Events, run: range, release: Release | None, r_min: float,
+def _refine(rec: Record, z, ev: Events, run: range, release: Release | None, r_min: float,
             alpha: float, p: float, loss: str) -> tuple[HalfCycleTimes, float, float]:
     """Stage 5: alternate the exact half-cycle fits at the current ``alpha`` with the
     weighted Eq 13 fit of the times they give, until ``alpha`` and ``p`` settle (two or
@@ -140,16 +140,16 @@ def _refine(rec: Record, z, ev: _Events, run: range, release: Release | None, r_
     return times, alpha, p
 
 
-def _run_lobe(ev: _Events, k: int, p: float, dt: float) -> _Lobe:
+def _run_lobe(ev: Events, k: int, p: float, dt: float) -> Lobe:
     """The window of half-cycle ``k`` for its shape fit: between its coarse crossings, kept
     3 of their std (and 0.1 sample) away from them; started at its coarse peak."""
     dl = 3.0 * math.sqrt(ev.cvar[k - 1]) + 0.1 * dt
     dh = 3.0 * math.sqrt(ev.cvar[k]) + 0.1 * dt
-    return _Lobe(int(ev.sign[k]), ev.cross[k - 1] + dl, ev.cross[k] - dh, float(ev.tpk[k]),
+    return Lobe(int(ev.sign[k]), ev.cross[k - 1] + dl, ev.cross[k] - dh, float(ev.tpk[k]),
                  float(ev.amp[k]), p)
 
 
-def _fit_half_cycles(rec: Record, z, ev: _Events, run: range, lobes: list[_Lobe],
+def _fit_half_cycles(rec: Record, z, ev: Events, run: range, lobes: list[Lobe],
                      release: Release | None, alpha: float, r_min: float) -> dict[int, LobeFit]:
     """Exact-shape fits at ``alpha`` of the run and the release: ``{lobe index: fit}``.
 
@@ -158,7 +158,7 @@ def _fit_half_cycles(rec: Record, z, ev: _Events, run: range, lobes: list[_Lobe]
     half-cycles of the run are needed.
     """
     extra = release.lobes if release is not None else []
-    res = _shape_fits(rec.t, z, lobes + extra, alpha, rec.sig)
+    res = shape_fits(rec.t, z, lobes + extra, alpha, rec.sig)
     fits = {k: f for k, f in zip(run, res[:len(lobes)], strict=True)
             if f is not None and abs(f.r / ev.amp[k] - 1.0) < 0.2}
     if len(fits) < 3:

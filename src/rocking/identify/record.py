@@ -31,12 +31,12 @@ class Record:
 
     @classmethod
     def measure(cls, t, y, units: str) -> Record:
-        """The noise level and despiked copy of a checked record (see :func:`_as_record`)."""
+        """The noise level and despiked copy of a checked record (see :func:`check_record`)."""
         span = float(np.max(y) - np.min(y))
         if span == 0.0:
             raise IdentificationError("the record is constant: the block never rocks")
         sigma = _noise_sigma(y)
-        return cls(t=t, y=y, ym=_median5(y), units=units, factor=_angle_factor(units),
+        return cls(t=t, y=y, ym=_median5(y), units=units, factor=angle_factor(units),
                    sigma=sigma, sig=max(sigma, 1e-7 * span), span=span,
                    dt=float(np.median(np.diff(t))))
 
@@ -45,10 +45,10 @@ class Record:
         return 5.0 * self.sig + 1e-5 * float(np.max(np.abs(z)))
 
 
-def _as_record(t, theta, units: str):
+def check_record(t, theta, units: str):
     """``(t, theta in rad)`` as checked float arrays: 1-D, of the same length (at least 20
     samples), finite, ``t`` strictly increasing."""
-    factor = _angle_factor(units)
+    factor = angle_factor(units)
     try:
         t = np.asarray(t, dtype=float)
         y = np.asarray(theta, dtype=float)
@@ -77,7 +77,8 @@ def _as_record(t, theta, units: str):
     return t, y * factor
 
 
-def _angle_factor(units) -> float:
+def angle_factor(units) -> float:
+    """The factor from ``units`` (``"rad"`` or ``"deg"``) to rad."""
     key = str(units).strip().lower()
     if key in ("rad", "radian", "radians"):
         return 1.0

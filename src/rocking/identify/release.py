@@ -14,16 +14,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .events import _Events
+from .events import Events
 from .record import Record
-from .shape import LobeFit, _Lobe
+from .shape import Lobe, LobeFit
 
 
 @dataclass
 class Release:
     """The windows of the release's two fits (free, held) and the limits of its peak."""
 
-    lobes: list[_Lobe]  # fitted free, then as a release after a hold
+    lobes: list[Lobe]  # fitted free, then as a release after a hold
     t_top: float  # last sample within 3 noise std of the maximum (s)
     t_cross: float  # the coarse crossing after the release (s)
 
@@ -46,7 +46,7 @@ class Release:
         return None
 
 
-def find_release(rec: Record, zm, ev: _Events, k0: int, p: float) -> Release | None:
+def find_release(rec: Record, zm, ev: Events, k0: int, p: float) -> Release | None:
     """The release before the run starting at lobe ``k0`` (1: right after the first lobe),
     or None. ``zm`` is the despiked record centred on its offset, ``p`` the current one."""
     if k0 != 1 or not np.isfinite(ev.cross[0]):
@@ -57,7 +57,7 @@ def find_release(rec: Record, zm, ev: _Events, k0: int, p: float) -> Release | N
     ia = int(np.flatnonzero(sz0 >= top - 3.0 * rec.sig)[0])
     wend = int(np.flatnonzero(sz0 >= top - 3.0 * rec.sig)[-1])
     dh = 3.0 * math.sqrt(ev.cvar[0]) + 0.1 * dt
-    lobes = [_Lobe(int(ev.sign[0]), t[ia] - 1e-9 * dt, ev.cross[0] - dh,
+    lobes = [Lobe(int(ev.sign[0]), t[ia] - 1e-9 * dt, ev.cross[0] - dh,
                    float(t[wend if hold else int(np.argmax(sz0))]), top, p, hold)
              for hold in (False, True)]
     return Release(lobes, float(t[wend]), float(ev.cross[0]))

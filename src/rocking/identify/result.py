@@ -16,10 +16,10 @@ import numpy as np
 from ..blocks import Block
 from ..errors import IdentificationError, ParameterError
 from ..models import simulate
-from ..plot import PALETTE, _style, figure
+from ..plot import PALETTE, figure, style_axes
 from ..results import jsonable
-from .time_model import _abc, quarter_time, sigma_surface
-from .timing import _intervals
+from .time_model import quarter_time, sigma_coefficients, sigma_surface
+from .timing import flatten_intervals
 
 
 @dataclass
@@ -134,7 +134,7 @@ class FreeRockingFit:
 
     def _intervals(self):
         """The measured intervals: (amplitude, duration, weight, half-cycle index)."""
-        return _intervals(self.amplitudes, self.rise_times, self.fall_times, self.weights)
+        return flatten_intervals(self.amplitudes, self.rise_times, self.fall_times, self.weights)
 
     def summary(self) -> dict:
         """JSON-ready summary (SI units; NaN as None)."""
@@ -223,7 +223,7 @@ class FreeRockingFit:
         cb.set_label(r"$\log_{10}\,\Sigma/\Sigma_{\min}$")
         # valley: best p for each alpha
         r, d, w, _ = self._intervals()
-        _, B, C = _abc(r, d, w * w, alphas)
+        _, B, C = sigma_coefficients(r, d, w * w, alphas)
         pv = C / B
         ok = (pv >= ps[0]) & (pv <= ps[-1])
         ax.plot(alphas[ok], pv[ok], color="white", ls="--", lw=1.0,
@@ -239,7 +239,7 @@ class FreeRockingFit:
                     ms=10, color="#E69F00", mec="k", mew=0.6, ls="none", zorder=5,
                     label=f"theoretical α={th['alpha']:.4f}, p={th['p']:.3f}"
                     + ("" if inside else " (outside)"))
-        _style(ax, r"$\alpha$ (rad)", r"$p$ (1/s)")
+        style_axes(ax, r"$\alpha$ (rad)", r"$p$ (1/s)")
         ax.grid(False)
         ax.set_title(f"Error surface Σ(α, p), Eq 13 ({self.n_half_cycles} half-cycles)",
                      fontsize=10)
@@ -288,7 +288,7 @@ class FreeRockingFit:
         for a in axs:
             a.plot(self.peak_times, k * self.peak_values, ls="none", marker="o", ms=2.8,
                    mfc="none", mec="k", mew=0.6, label="peaks used")
-            _style(a, None, r"$\theta$ (deg)" if deg else r"$\theta$ (rad)")
+            style_axes(a, None, r"$\theta$ (deg)" if deg else r"$\theta$ (rad)")
             a.legend(loc="upper right", fontsize=7.5, framealpha=0.85)
             a.set_xlim(self.t[0], t_end)
         axs[-1].set_xlabel("time (s)")

@@ -17,7 +17,7 @@ from typing import NamedTuple
 import numpy as np
 from scipy.special import ellipj
 
-from .time_model import _g
+from .time_model import scaled_quarter_time
 
 
 class LobeFit(NamedTuple):
@@ -51,7 +51,10 @@ def _shape(s, r, alpha, p):
 
 
 @dataclass
-class _Lobe:
+class Lobe:
+    """One half-cycle to fit with :func:`shape_fits`: its sign, fitting window, first guess
+    of the peak time ``tp``, amplitude ``r`` and local ``p``."""
+
     sign: int
     t_lo: float  # samples strictly inside (t_lo, t_hi) are fitted
     t_hi: float
@@ -82,7 +85,7 @@ def _normal(lab, J, res, L):
     return A, b
 
 
-def _shape_fits(t, z, lobes, alpha, sigma, iters: int = 40):
+def shape_fits(t, z, lobes, alpha, sigma, iters: int = 40):
     """Fit each half-cycle with the exact shape :func:`_shape` at the given ``alpha``.
 
     Per half-cycle the unknowns are the peak time ``tp``, the amplitude ``r`` and a local
@@ -136,8 +139,8 @@ def _shape_fits(t, z, lobes, alpha, sigma, iters: int = 40):
     th2 = _lobe_shape(s, P[lab, 1] + eps[lab], alpha, P[lab, 2], hold)[0]
     J = np.column_stack((-dth, (th2 - th) / eps[lab], s / P[lab, 2] * dth))
     A, _ = _normal(lab, J, y - th, L)
-    G = _g(P[:, 1], alpha)
-    dG = (_g(P[:, 1] + eps, alpha) - G) / eps
+    G = scaled_quarter_time(P[:, 1], alpha)
+    dG = (scaled_quarter_time(P[:, 1] + eps, alpha) - G) / eps
     for j in range(L):
         if cnt[j] < 5 or not np.isfinite(P[j]).all():
             continue
@@ -156,7 +159,7 @@ def _shape_fits(t, z, lobes, alpha, sigma, iters: int = 40):
 
 
 def _lm(P, tt, y, lab, hold, alpha, r_hi, s2, L, iters):
-    """Batched Levenberg-Marquardt for :func:`_shape_fits`; returns the parameters."""
+    """Batched Levenberg-Marquardt for :func:`shape_fits`; returns the parameters."""
     P = P.copy()
     cnt = np.bincount(lab, minlength=L)
     th = _lobe_shape(tt - P[lab, 0], P[lab, 1], alpha, P[lab, 2], hold)[0]

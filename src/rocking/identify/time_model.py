@@ -30,7 +30,7 @@ _WU = 0.5 * _gw * _U  # weights with the Jacobian factor u of x = r (1 - u^2)
 _HALF_U2 = 0.5 * _U * _U
 
 
-def _g(r, alpha):
+def scaled_quarter_time(r, alpha):
     """``p * T(r)``: the quarter-period integral without the 1/p (broadcasting).
 
     With ``x = r (1 - u^2)``, ``cos(alpha - r) - cos(alpha - x)`` becomes
@@ -49,8 +49,8 @@ def _g(r, alpha):
     return np.where(rr == 0.0, 0.0, val)
 
 
-def _g_dalpha(r, alpha):
-    """``d(p T)/d alpha`` (same broadcasting as :func:`_g`)."""
+def scaled_quarter_time_dalpha(r, alpha):
+    """``d(p T)/d alpha`` (same broadcasting as :func:`scaled_quarter_time`)."""
     r = np.asarray(r, dtype=float)[..., None]
     a = np.asarray(alpha, dtype=float)[..., None]
     s = r * _HALF_U2
@@ -71,7 +71,7 @@ def quarter_time(r, alpha, p):
     """
     r = np.abs(np.asarray(r, dtype=float))
     p = np.asarray(p, dtype=float)
-    return _g(r, alpha) / p
+    return scaled_quarter_time(r, alpha) / p
 
 
 def sigma_surface(amplitudes, durations, alpha, p, weights=None):
@@ -91,19 +91,19 @@ def sigma_surface(amplitudes, durations, alpha, p, weights=None):
     w2 = np.ones_like(d) if weights is None else np.asarray(weights, float).ravel() ** 2
     alpha, p = np.broadcast_arrays(np.asarray(alpha, float), np.asarray(p, float))
     ua, inv = np.unique(alpha, return_inverse=True)
-    A, B, C = _abc(r, d, w2, ua)
+    A, B, C = sigma_coefficients(r, d, w2, ua)
     inv = inv.reshape(alpha.shape)
     q = 1.0 / p
     return A - 2.0 * B[inv] * q + C[inv] * q * q
 
 
-def _abc(r, d, w2, alphas, chunk: int = 64):
+def sigma_coefficients(r, d, w2, alphas, chunk: int = 64):
     """Coefficients of ``Sigma(alpha, p) = A - 2 B / p + C / p^2`` for each alpha."""
     A = float(np.sum(w2 * d * d))
     B = np.empty(alphas.size)
     C = np.empty(alphas.size)
     for i in range(0, alphas.size, chunk):
-        G = _g(r[None, :], alphas[i:i + chunk, None])
+        G = scaled_quarter_time(r[None, :], alphas[i:i + chunk, None])
         B[i:i + chunk] = np.sum(w2 * d * G, axis=1)
         C[i:i + chunk] = np.sum(w2 * G * G, axis=1)
     return A, B, C

@@ -68,8 +68,8 @@ class HalfCycleTimes:
 
     def intervals(self):
         """The Eq 13 data: (amplitude, duration, weight, half-cycle index), see
-        :func:`_intervals`."""
-        return _intervals(self.amp, self.rise, self.fall, self.wk)
+        :func:`flatten_intervals`."""
+        return flatten_intervals(self.amp, self.rise, self.fall, self.wk)
 
 
 def _crossing(fits: dict[int, LobeFit], j: int):
@@ -83,7 +83,7 @@ def _crossing(fits: dict[int, LobeFit], j: int):
     return float(np.sum(w * np.array([e[0] for e in est])) / np.sum(w)), float(1.0 / np.sum(w))
 
 
-def _intervals(amp, rise, fall, wk):
+def flatten_intervals(amp, rise, fall, wk):
     """Flatten the measured rise and fall times into (r, d, weight, half-cycle index)."""
     n = amp.size
     r2 = np.concatenate((amp, amp))

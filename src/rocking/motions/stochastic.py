@@ -114,9 +114,13 @@ DEFAULTS = {
 """Default parameters (SI units): a moderate earthquake, PGA ~ 0.2 g."""
 
 _P5, _P45, _P95 = 0.05, 0.45, 0.95
-_TAIL = 0.9999            # the default duration covers this fraction of the expected Ia
-_HP_DECAY = 10.0          # ... plus this many 1/omega_c for the high-pass to die out
+_TAIL = 0.9999            # the default duration covers this fraction of the expected Ia,
+                          # plus HP_DECAY / omega_c
 _DROP = math.log(1e16)    # a pulse is dropped when its envelope has decayed by this (log)
+
+HP_DECAY = 10.0
+"""The default duration is ``t_tail`` plus this many ``1/omega_c``, for the high-pass to
+die out."""
 
 STREAM = 2
 """Tag of this generator's random streams (``SeedSequence`` spawn key ``(STREAM, i)``), so
@@ -336,8 +340,11 @@ def _check_seed(seed):
     return int(seed)
 
 
-def _model(Ia, D5_95, t_mid, omega_mid, omega_prime, zeta_f, omega_c, dt, duration) -> dict:
-    """Validated parameters and everything that does not depend on the noise."""
+def record_model(Ia, D5_95, t_mid, omega_mid, omega_prime, zeta_f, omega_c, dt,
+                 duration) -> dict:
+    """Validated parameters and everything that does not depend on the noise (raises
+    :class:`~rocking.ParameterError` as :func:`stochastic_records` does: the campaign spec
+    calls it to check a stochastic motion before any record is generated)."""
     alpha = modulating_parameters(Ia, D5_95, t_mid)
     omega_mid = positive("omega_mid", omega_mid, "rad/s")
     omega_prime = as_float("omega_prime", omega_prime)
@@ -345,7 +352,7 @@ def _model(Ia, D5_95, t_mid, omega_mid, omega_prime, zeta_f, omega_c, dt, durati
     omega_c = non_negative("omega_c", omega_c, "rad/s")
     dt = positive("dt", dt, "s")
     if duration is None:
-        duration = alpha["t_tail"] + (_HP_DECAY / omega_c if omega_c > 0.0 else 0.0)
+        duration = alpha["t_tail"] + (HP_DECAY / omega_c if omega_c > 0.0 else 0.0)
         N = int(math.ceil(duration / dt - 1e-9)) + 1
     else:
         duration = positive("duration", duration, "s")
@@ -449,7 +456,7 @@ def stochastic_records(n: int, seed: int | None = 0, *, start: int = 0,
     n = _check_n("n", n, 1)
     start = _check_n("start", start, 0)
     seed = _check_seed(seed)
-    m = _model(Ia, D5_95, t_mid, omega_mid, omega_prime, zeta_f, omega_c, dt, duration)
+    m = record_model(Ia, D5_95, t_mid, omega_mid, omega_prime, zeta_f, omega_c, dt, duration)
     N = m["N"]
     u = np.empty((n, N))
     for j in range(n):
