@@ -13,7 +13,16 @@ from numba import njit, prange
 import rocking
 from rocking import G, ParameterError, SimulationError
 from rocking.errors import OutputTooLargeError
-from rocking.models import MODELS, Model, ModelOptions, option, row_args, same_block, store_row
+from rocking.models import (
+    MODELS,
+    KernelResult,
+    Model,
+    ModelOptions,
+    option,
+    row_args,
+    same_block,
+    store_row,
+)
 from rocking.models._numerics.events import rest_advance
 from rocking.motions import HalfSine, Sine
 from rocking.motions._kernel import ground_acc, next_breakpoint
@@ -106,7 +115,8 @@ def _linear_kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_
             over, peak = True, 0.5 * math.pi
             t_over = t - h * (abs(th) - 0.5 * math.pi) / max(abs(th) - abs(th_prev), 1e-300)
             break
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0, math.nan, over or resting
+    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0, math.nan,
+                        over or resting)
 
 
 @njit(cache=True, parallel=True)

@@ -13,9 +13,19 @@ element model of Section 2.3: rigid polygons on contact springs, also for stacks
 
 from __future__ import annotations
 
-from .base import Model, ModelOptions, option, row_args, same_block, store_row
+from .base import (
+    Batch,
+    KernelResult,
+    Model,
+    ModelOptions,
+    option,
+    row_args,
+    same_block,
+    store_row,
+)
 from .registry import MODELS, available
 from .run import get_model, pack_motions, simulate, simulate_many
 
-__all__ = ["Model", "ModelOptions", "option", "row_args", "same_block", "store_row", "MODELS",
+__all__ = ["Model", "ModelOptions", "option", "row_args", "same_block", "store_row",
+           "KernelResult", "Batch", "MODELS",
            "available", "get_model", "pack_motions", "simulate", "simulate_many"]

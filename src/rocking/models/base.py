@@ -22,8 +22,9 @@ A subclass of :class:`Model` provides
     allowed range; unknown options are rejected too.
 ``kernel`` : a compiled (numba) function, the single-run kernel
     ``kernel(mp, kind, prm, samples, t_end, t_quiet, theta0, omega0, h_scan, dt_out,
-    out_th, out_om, imp, extra) -> (n_out, n_impacts, max_abs_theta, overturned,
-    overturn_time, uplift_time, n_steps, status, lift_off_time, settled)``.
+    out_th, out_om, imp, extra) -> KernelResult(n_out, n_impacts, max_abs_theta,
+    overturned, overturn_time, uplift_time, n_steps, status, lift_off_time, settled)``
+    (:data:`KernelResult`, a named tuple that numba compiles).
 
     * ``mp`` is the model's own parameter tuple (:meth:`Model.kernel_params`);
     * ``(kind, prm, samples)`` is the motion spec (:mod:`rocking.motions._kernel`; evaluate
@@ -85,6 +86,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+from collections import namedtuple
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -275,16 +277,32 @@ class Model:
 
 
 # ====================================================================== shared batch rows
+KernelResult = namedtuple("KernelResult", [
+    "n_out", "n_impacts", "max_abs_theta", "overturned", "overturn_time", "uplift_time",
+    "n_steps", "status", "lift_off_time", "settled"])
+"""What a kernel returns (compiled by numba as a named tuple): the number of history
+samples written, the impacts, ``max |theta|`` (rad), whether and when (s) it overturned,
+the first uplift (s), the steps taken, the status (0: success), the lift-off time (s) and
+whether the block had settled. A new output is one field here, one array in
+:data:`Batch` and one line in :func:`store_row`."""
+
+BATCH_INPUTS = ("kinds", "prms", "samples", "nsamp", "t_ends", "t_quiets", "h_scans",
+                "theta0", "omega0", "dt_out")
+"""The inputs of a batch: the packed motions (:func:`rocking.models.run.pack_motions`),
+each row's window and initial state, and the output interval."""
+BATCH_OUTPUTS = ("theta", "omega", "max_abs_theta", "overturned", "overturn_time",
+                 "uplift_time", "n_impacts", "n_steps", "status", "lift_off_time", "settled")
+"""The outputs of a batch, one array per row (``theta``, ``omega``: the histories)."""
+Batch = namedtuple("Batch", BATCH_INPUTS + BATCH_OUTPUTS)
+"""A batch as the compiled batch kernels see it: named arrays, one entry per row."""
+
+
 @njit(cache=True)
 def row_args(i, rows, extra0):
-    """The kernel arguments (after ``mp``) of row ``i`` of a batch.
-
-    ``rows = (kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, res_f,
-    res_i, theta0, omega0, t_quiets)`` as built by :func:`rocking.models.run.simulate_many`."""
-    kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om = rows[:9]
-    th0, om0, t_quiets = rows[11], rows[12], rows[13]
-    return (kinds[i], prms[i], samples[i, : nsamp[i]], t_ends[i], t_quiets[i], th0[i], om0[i],
-            h_scans[i], dt_out, out_th[i], out_om[i], np.empty(0), extra0)
+    """The kernel arguments (after ``mp``) of row ``i`` of the :data:`Batch` ``rows``."""
+    return (rows.kinds[i], rows.prms[i], rows.samples[i, : rows.nsamp[i]], rows.t_ends[i],
+            rows.t_quiets[i], rows.theta0[i], rows.omega0[i], rows.h_scans[i], rows.dt_out,
+            rows.theta[i], rows.omega[i], np.empty(0), extra0)
 
 
 @njit(cache=True)
@@ -295,20 +313,16 @@ def same_block(mp, b):
 
 @njit(cache=True)
 def store_row(i, res, rows):
-    """Store the kernel result ``res`` of row ``i``:
-    ``res_f[i] = (max_abs_theta, overturn_time, uplift_time, lift_off_time)``,
-    ``res_i[i] = (n_impacts, overturned, n_steps, status, settled)``; the history past the
-    written samples is NaN."""
-    k, n_imp, peak, over, t_over, t_up, n_steps, status, t_lift, settled = res
-    out_th, out_om, res_f, res_i = rows[7], rows[8], rows[9], rows[10]
-    out_th[i, k:] = math.nan
-    out_om[i, k:] = math.nan
-    res_f[i, 0] = peak
-    res_f[i, 1] = t_over
-    res_f[i, 2] = t_up
-    res_f[i, 3] = t_lift
-    res_i[i, 0] = n_imp
-    res_i[i, 1] = 1 if over else 0
-    res_i[i, 2] = n_steps
-    res_i[i, 3] = status
-    res_i[i, 4] = 1 if settled else 0
+    """Store the :data:`KernelResult` ``res`` of row ``i`` in the :data:`Batch` ``rows``;
+    the history past the written samples is NaN."""
+    rows.theta[i, res.n_out:] = math.nan
+    rows.omega[i, res.n_out:] = math.nan
+    rows.max_abs_theta[i] = res.max_abs_theta
+    rows.overturned[i] = res.overturned
+    rows.overturn_time[i] = res.overturn_time
+    rows.uplift_time[i] = res.uplift_time
+    rows.n_impacts[i] = res.n_impacts
+    rows.n_steps[i] = res.n_steps
+    rows.status[i] = res.status
+    rows.lift_off_time[i] = res.lift_off_time
+    rows.settled[i] = res.settled

@@ -92,7 +92,7 @@ from ..motions._kernel import (
 )
 from ..units import G
 from ._numerics import events as E
-from .base import Model, ModelOptions, option, row_args, store_row
+from .base import KernelResult, Model, ModelOptions, option, row_args, store_row
 from .housner import DEFAULT_FREE_REST_TOL
 
 HALF_PI = 0.5 * math.pi
@@ -368,7 +368,8 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
     k, n_imp, peak, over, t_over, t_up, n_steps, ok, t_lift, settled = integrate(
         alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, dt_fixed,
         rest_chi, free_rest_tol, chi_start, h_max, h_scan, dt_out, out_th, out_om, imp)
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, t_lift, settled
+    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, t_lift,
+                        settled)
 
 
 @njit(cache=True)

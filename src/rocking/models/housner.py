@@ -93,7 +93,7 @@ from ..motions._kernel import (
 from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
-from .base import Model, ModelOptions, option, row_args, store_row
+from .base import KernelResult, Model, ModelOptions, option, row_args, store_row
 
 HALF_PI = 0.5 * math.pi
 INV_G = 1.0 / G
@@ -404,7 +404,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
     k, n_imp, peak, over, t_over, t_up, n_steps, t_lift, settled = integrate(
         alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, rest_tol,
         free_rest_tol, h_max, h_scan, dt_out, out_th, out_om, imp)
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled
+    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled)
 
 
 @njit(cache=True)

@@ -13,13 +13,13 @@ import math
 import numba
 import numpy as np
 
-from .._validate import as_float, in_range, non_negative, positive, sequence_of
+from .._validate import as_float, as_int, in_range, non_negative, positive, sequence_of
 from ..blocks import Block, Stack
 from ..errors import OutputTooLargeError, ParameterError, SimulationError
 from ..motions import Motion
 from ..motions._kernel import NPRM
 from ..results import DEFAULT_DT_OUT, BatchResponse
-from .base import Model
+from .base import BATCH_OUTPUTS, Batch, Model
 from .registry import MODELS
 
 HALF_PI = 0.5 * math.pi
@@ -174,12 +174,7 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     duration, t_quiet, theta0, omega0 = check_run(motion, duration, theta0, omega0,
                                                   max_free_time)
     dt_out = positive("dt_out", dt_out, "s")
-    if isinstance(max_impacts, bool | np.bool_) or not isinstance(max_impacts,
-                                                                   int | np.integer):
-        raise ParameterError(f"max_impacts must be a whole number in [0, 1e7], "
-                             f"got {max_impacts!r}")
-    cap = in_range("max_impacts", max_impacts, 0, 1e7, lo_open=False, hi_open=False,
-                   shown="[0, 1e7]")
+    cap = as_int("max_impacts", max_impacts, 0, 10 ** 7)
     if motion is None:
         kind, prm, samples, h_scan = 0, np.zeros(NPRM), np.empty(0), max(duration, 1.0)
     else:
@@ -191,26 +186,27 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     imp = np.empty(max(1, int(cap)))
     extra = m.extra_buffers(n_out)
     mp = m.kernel_params(dt_out, theta0, omega0)
-    k, n_imp, peak, over, t_over, t_up, n_steps, status, t_lift, settled = type(m).kernel(
-        mp, kind, prm, samples, duration, t_quiet, theta0, omega0, h_scan, dt_out, out_th,
-        out_om, imp, extra)
-    if status != 0:
-        raise SimulationError(m.failure(int(status), k * dt_out))
+    r = type(m).kernel(mp, kind, prm, samples, duration, t_quiet, theta0, omega0, h_scan,
+                       dt_out, out_th, out_om, imp, extra)
+    k = int(r.n_out)
+    if r.status != 0:
+        raise SimulationError(m.failure(int(r.status), k * dt_out))
     t = np.arange(k) * dt_out
     th, om = out_th[:k], out_om[:k]
+    over, t_over = bool(r.overturned), float(r.overturn_time)
     if over and m.append_overturn and (k == 0 or t[-1] < t_over):  # end on the overturn
         t = np.append(t, t_over)
         th = np.append(th, math.copysign(HALF_PI, th[-1] if k else 1.0))
         om = np.append(om, om[-1] if k else 0.0)
     fields = m.extra_fields(k, extra)
-    info = {**m.info(), "n_steps": int(n_steps), **fields.pop("info", {})}
+    info = {**m.info(), "n_steps": int(r.n_steps), **fields.pop("info", {})}
     return m.response_class(
-        t=t, theta=th.copy(), omega=om.copy(), impact_times=imp[: min(n_imp, int(cap))].copy(),
-        max_abs_theta=float(peak), overturned=bool(over),
-        overturn_time=float(t_over) if over else math.nan, uplift_time=float(t_up),
-        n_impacts=int(n_imp), model=m.result_name, block=block, motion=motion, info=info,
-        lift_off_time=float(t_lift), settled=bool(settled),
-        **fields)
+        t=t, theta=th.copy(), omega=om.copy(),
+        impact_times=imp[: min(int(r.n_impacts), cap)].copy(),
+        max_abs_theta=float(r.max_abs_theta), overturned=over,
+        overturn_time=t_over if over else math.nan, uplift_time=float(r.uplift_time),
+        n_impacts=int(r.n_impacts), model=m.result_name, block=block, motion=motion,
+        info=info, lift_off_time=float(r.lift_off_time), settled=bool(r.settled), **fields)
 
 
 # ================================================================================= batch
@@ -311,12 +307,14 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     # the rows in flight (one per thread) may hold the model's extra buffers too
     _guard(2 * n * n_out, numba.get_num_threads() * m.extra_bytes(n_out), dt_out,
            float(t_ends.max()))
-    out_th = np.empty((n, n_out))
-    out_om = np.empty((n, n_out))
-    res_f = np.empty((n, 4))
-    res_i = np.zeros((n, 5), dtype=np.int64)
-    rows = (kinds, prms, samples, nsamp, t_ends, h_scans, dt_out, out_th, out_om, res_f, res_i,
-            th0, om0, t_quiets)
+    rows = Batch(kinds=kinds, prms=prms, samples=samples, nsamp=nsamp, t_ends=t_ends,
+                 t_quiets=t_quiets, h_scans=h_scans, theta0=th0, omega0=om0, dt_out=dt_out,
+                 theta=np.empty((n, n_out)), omega=np.empty((n, n_out)),
+                 max_abs_theta=np.empty(n), overturned=np.zeros(n, dtype=np.bool_),
+                 overturn_time=np.empty(n), uplift_time=np.empty(n),
+                 n_impacts=np.zeros(n, dtype=np.int64), n_steps=np.zeros(n, dtype=np.int64),
+                 status=np.zeros(n, dtype=np.int64), lift_off_time=np.empty(n),
+                 settled=np.zeros(n, dtype=np.bool_))
     nb = len(cls.block_row(blocks[0]))
     if nb or len({id(b) for b in blocks}) == 1:
         bp = np.array([cls.block_row(b) for b in blocks], dtype=np.float64).reshape(n, nb)
@@ -324,27 +322,29 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     else:  # one assembly per distinct block (DEM): one batch each, results in place
         for b in dict.fromkeys(blocks):
             idx = np.array([i for i, x in enumerate(blocks) if x is b or x == b])
-            sub = tuple(a[idx] if isinstance(a, np.ndarray) else a for a in rows)
+            sub = Batch(*(a[idx] if isinstance(a, np.ndarray) else a for a in rows))
             mb = m if b is blocks[0] else type(m)(b, m.options)
             type(mb).batch_kernel(mb.kernel_params(dt_out, 0.0, 0.0), mb.extra_buffers(0), sub,
                                   np.empty((idx.size, 0)))
-            for full, part in zip(rows[7:11], sub[7:11], strict=True):
-                full[idx] = part
-    status = res_i[:, 3].copy()
+            for name in BATCH_OUTPUTS:
+                getattr(rows, name)[idx] = getattr(sub, name)
+    status = rows.status
     bad = np.flatnonzero(status)
     if bad.size:
         if errors == "raise":
             i = int(bad[0])
             raise SimulationError(f"{bad.size} of {n} runs failed; motions[{i}]: "
                                   + m.failure(int(status[i]), math.nan))
-        res_f[bad, :] = math.nan  # max_abs_theta and the event times of the failed runs
+        for name in ("max_abs_theta", "overturn_time", "uplift_time", "lift_off_time"):
+            getattr(rows, name)[bad] = math.nan  # the failed runs
+        rows.settled[bad] = False
     return BatchResponse(
-        max_abs_theta=res_f[:, 0].copy(), overturned=res_i[:, 1].astype(bool),
-        overturn_time=res_f[:, 1].copy(), uplift_time=res_f[:, 2].copy(),
-        n_impacts=res_i[:, 0].copy(), n_steps=res_i[:, 2].copy(), status=status,
+        max_abs_theta=rows.max_abs_theta, overturned=rows.overturned,
+        overturn_time=rows.overturn_time, uplift_time=rows.uplift_time,
+        n_impacts=rows.n_impacts, n_steps=rows.n_steps, status=status,
         t=np.arange(n_out) * dt_out if return_histories else None,
-        theta=out_th if return_histories else None,
-        omega=out_om if return_histories else None,
-        model=m.result_name, block=block, info=m.info(), lift_off_time=res_f[:, 3].copy(),
-        settled=res_i[:, 4].astype(bool) & (status == 0),
+        theta=rows.theta if return_histories else None,
+        omega=rows.omega if return_histories else None,
+        model=m.result_name, block=block, info=m.info(), lift_off_time=rows.lift_off_time,
+        settled=rows.settled,
     )

@@ -81,10 +81,11 @@ def _free_run(md, b, K, Ks, friction_angle, theta0, duration, dt_out):
     n, vmax = md.n, md.lv.shape[1]
     extra = (np.empty((n_out, n, 3)), np.empty((n_out, n, 3)), np.empty((0, 3)),
              np.empty((0, n * vmax * (n + 1), 4)))
-    k, n_imp, _peak, over, _to, _tu, _ns, _st, _tl, _set = kernel(
-        mp, 0, np.zeros(NPRM), np.empty(0), duration, math.inf, theta0, 0.0, duration, dt_out,
-        out_th, out_om, imp, extra)
-    return np.arange(k) * dt_out, out_th[:k], imp[: min(n_imp, imp.size)], bool(over)
+    res = kernel(mp, 0, np.zeros(NPRM), np.empty(0), duration, math.inf, theta0, 0.0,
+                 duration, dt_out, out_th, out_om, imp, extra)
+    k = res.n_out
+    return (np.arange(k) * dt_out, out_th[:k], imp[: min(res.n_impacts, imp.size)],
+            bool(res.overturned))
 
 
 def damping_cap(block, K: float | None = None, geometry: str = "auto",

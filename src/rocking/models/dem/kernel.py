@@ -10,7 +10,7 @@ from numba import njit, prange
 
 from ...motions._kernel import ground_acc, ground_acc_hv, has_vertical
 from ...units import G
-from ..base import row_args, same_block, store_row
+from ..base import KernelResult, row_args, same_block, store_row
 
 HALF_PI = 0.5 * math.pi
 
@@ -399,7 +399,8 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
     for j in range(k):
         out_th[j] = op[j, iout, 2]
         out_om[j] = ov[j, iout, 2]
-    return k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, math.nan, ok and settled
+    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, math.nan,
+                        ok and settled)
 
 
 @njit(cache=True, parallel=True)
