@@ -258,21 +258,24 @@ class Model:
         """Memory of :meth:`extra_buffers` for ``n_out`` samples (bytes)."""
         return 0
 
-    def extra_fields(self, n_out: int, extra: tuple) -> dict:
+    def extra_fields(self, n_out: int, extra: tuple, dt_out: float) -> dict:
         """Fields of :attr:`response_class` beyond those of :class:`Response` (an ``"info"``
-        entry is merged into ``Response.info``)."""
+        entry is merged into ``Response.info``), from ``n_out`` samples at ``dt_out`` (s)."""
         return {}
 
     def check_batch(self) -> None:
         """Refuse options that a batch cannot honour (raise ParameterError); default: none."""
 
-    def info(self) -> dict:
-        """Options and derived settings recorded in ``Response.info``."""
+    def info(self, dt_out: float | None = None) -> dict:
+        """Options and derived settings recorded in ``Response.info`` (of a run at the
+        output interval ``dt_out``, s, when given). No hook may change the model: the
+        same model runs any number of times (:func:`rocking.testing.check_model`)."""
         return {k: v for k, v in self.options.to_dict().items()
                 if isinstance(v, int | float | str | bool) or v is None}
 
-    def failure(self, status: int, t: float) -> str:
-        """Message of a numerical failure with code ``status`` near time ``t`` (s)."""
+    def failure(self, status: int, t: float, dt_out: float | None = None) -> str:
+        """Message of a numerical failure with code ``status`` near time ``t`` (s), in a
+        run at the output interval ``dt_out`` (s)."""
         return f"model {self.name!r} failed (status {status}) near t = {t:.4g} s"
 
 

@@ -424,7 +424,7 @@ class CCRR(Model):
         b, o = self.block, self.options
         return (b.alpha, b.p, b.mu, o.l, o.rtol, o.dt or 0.0, o.rest_tol, o.free_rest_tol)
 
-    def failure(self, status, t) -> str:
+    def failure(self, status, t, dt_out=None) -> str:
         at = f" at t = {t:.4g} s" if t == t else ""
         return (f"ccrr integration failed near the origin{at}: the constant step dt = "
                 f"{self.options.dt} s is too large for l = {self.options.l:g}; use a smaller "

@@ -190,7 +190,7 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
                        dt_out, out_th, out_om, imp, extra)
     k = int(r.n_out)
     if r.status != 0:
-        raise SimulationError(m.failure(int(r.status), k * dt_out))
+        raise SimulationError(m.failure(int(r.status), k * dt_out, dt_out))
     t = np.arange(k) * dt_out
     th, om = out_th[:k], out_om[:k]
     over, t_over = bool(r.overturned), float(r.overturn_time)
@@ -198,8 +198,8 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
         t = np.append(t, t_over)
         th = np.append(th, math.copysign(HALF_PI, th[-1] if k else 1.0))
         om = np.append(om, om[-1] if k else 0.0)
-    fields = m.extra_fields(k, extra)
-    info = {**m.info(), "n_steps": int(r.n_steps), **fields.pop("info", {})}
+    fields = m.extra_fields(k, extra, dt_out)
+    info = {**m.info(dt_out), "n_steps": int(r.n_steps), **fields.pop("info", {})}
     return m.response_class(
         t=t, theta=th.copy(), omega=om.copy(),
         impact_times=imp[: min(int(r.n_impacts), cap)].copy(),
@@ -334,7 +334,7 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
         if errors == "raise":
             i = int(bad[0])
             raise SimulationError(f"{bad.size} of {n} runs failed; motions[{i}]: "
-                                  + m.failure(int(status[i]), math.nan))
+                                  + m.failure(int(status[i]), math.nan, dt_out))
         for name in ("max_abs_theta", "overturn_time", "uplift_time", "lift_off_time"):
             getattr(rows, name)[bad] = math.nan  # the failed runs
         rows.settled[bad] = False
@@ -345,6 +345,6 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
         t=np.arange(n_out) * dt_out if return_histories else None,
         theta=rows.theta if return_histories else None,
         omega=rows.omega if return_histories else None,
-        model=m.result_name, block=block, info=m.info(), lift_off_time=rows.lift_off_time,
+        model=m.result_name, block=block, info=m.info(dt_out), lift_off_time=rows.lift_off_time,
         settled=rows.settled,
     )

@@ -105,13 +105,17 @@ class DEM(Model):
             self.b, self.damping_source = float(o.damping), "given"
         self.th_tol = o.impact_tol * min(bd.alpha for bd in md.bodies)
 
+    def step(self, dt_out: float) -> tuple[float, int]:
+        """``(dt, every)``: the time step (s) for the output interval ``dt_out`` (s), and
+        the steps per output sample (:func:`rocking.models.dem.statics.time_step`)."""
+        return ST.time_step(self.assembly, self.K, self.Ks, self.b, self.options.dt, dt_out)
+
     def kernel_params(self, dt_out, theta0, omega0) -> tuple:
         o = self.options
-        self.dt, every = ST.time_step(self.assembly, self.K, self.Ks, self.b, o.dt, dt_out)
-        self.dt_out = dt_out
+        dt, every = self.step(dt_out)
         return ST.kernel_params(self.assembly, self.K, self.Ks, self.b,
                                 math.tan(math.radians(o.friction_angle)), o.cohesion,
-                                self.dt, every, self.th_tol, theta0, omega0, o.settled)
+                                dt, every, self.th_tol, theta0, omega0, o.settled)
 
     def check_batch(self) -> None:
         for name in ("return_forces", "return_energy"):
@@ -134,7 +138,7 @@ class DEM(Model):
         per += 4 * n * vmax * (n + 1) if self.options.return_forces else 0
         return 8 * per * n_out
 
-    def extra_fields(self, k: int, extra: tuple) -> dict:
+    def extra_fields(self, k: int, extra: tuple, dt_out: float) -> dict:
         md = self.assembly
         out_pos, out_vel, out_e, out_f = extra
         rel = out_pos[:k] - md.nominal[None, :, :]
@@ -143,7 +147,7 @@ class DEM(Model):
         y_all = rel[:, :, 1].T.copy()
         info = {"max_abs_theta_all": [float(np.max(np.abs(th_all[i]))) if k else 0.0
                                       for i in range(md.n)]}
-        t = np.arange(k) * self.dt_out
+        t = np.arange(k) * dt_out
         forces = None
         if self.options.return_energy or self.options.return_forces:
             if self.options.return_energy:
@@ -160,9 +164,9 @@ class DEM(Model):
         return {"x": x_all[-1].copy(), "y": y_all[-1].copy(), "theta_all": th_all,
                 "x_all": x_all, "y_all": y_all, "contact_forces": forces, "info": info}
 
-    def info(self) -> dict:
+    def info(self, dt_out: float | None = None) -> dict:
         md = self.assembly
-        return {"dt": getattr(self, "dt", math.nan), "stiffness": self.K,
+        return {"dt": self.step(dt_out)[0] if dt_out else math.nan, "stiffness": self.K,
                 "shear_stiffness": self.Ks, "damping": self.b,
                 "damping_source": self.damping_source,
                 "friction_angle": float(self.options.friction_angle), "n_blocks": md.n,
@@ -170,7 +174,7 @@ class DEM(Model):
                 "xi_max": 0.5 * self.b * ST.omega_max(md, self.K, self.Ks),
                 "settlement": md.total_mass * G / (2.0 * self.K)}
 
-    def failure(self, status, t) -> str:
+    def failure(self, status, t, dt_out=None) -> str:
         at = f" at t = {t:.4g} s" if t == t else ""
-        return (f"the DEM integration became unstable{at} (dt = {self.dt:.3g} s); "
-                "use a smaller dt")
+        dt = f" (dt = {self.step(dt_out)[0]:.3g} s)" if dt_out else ""
+        return f"the DEM integration became unstable{at}{dt}; use a smaller dt"
