@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import hashlib
 import importlib
+import importlib.util
 import os
 from importlib import resources
 from pathlib import Path
@@ -17,6 +19,84 @@ synthetic = importlib.import_module("rocking.motions.synthetic")
 
 def pytest_configure(config):
     config.addinivalue_line("markers", "slow: a test that takes more than ~20 s on 2 cores")
+
+
+# --------------------------------------------------------------------------- numba's cache
+SHARED_KERNEL_SOURCES = ("motions/_kernel.py", "models/_numerics", "models/base.py")
+"""The compiled helpers that kernels in other files call (relative to the package).
+numba caches a compiled function per source file and checks only that file, so a change
+here leaves every caller's cache stale (old code, or a type mismatch about tuples)."""
+
+KERNEL_STAMP = Path("__pycache__") / ".shared-kernels.sha256"
+"""Where the hash of the shared helpers is kept, relative to the package (git-ignored)."""
+
+
+def shared_kernels_hash(package: Path) -> str:
+    """sha256 of the shared helpers' sources (content and relative paths, not mtimes)."""
+    h = hashlib.sha256()
+    for rel in SHARED_KERNEL_SOURCES:
+        path = package / rel
+        for f in sorted(path.rglob("*.py")) if path.is_dir() else [path]:
+            h.update(f.relative_to(package).as_posix().encode() + b"\0")
+            h.update(f.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+def _numba_cache_dirs(root: Path):
+    """Every directory where numba may cache the functions of the sources under ``root``:
+    ``__pycache__`` beside them, or their mirror in ``NUMBA_CACHE_DIR`` when it is set."""
+    user = os.environ.get("NUMBA_CACHE_DIR")
+    for d in sorted({p.parent for p in root.rglob("*.py")}):
+        yield d / "__pycache__"
+        if user:  # numba's UserProvidedCacheLocator: <parent name>_<sha1 of the abspath>
+            absd = os.path.abspath(d)
+            yield Path(user) / f"{d.name}_{hashlib.sha1(absd.encode()).hexdigest()}"
+
+
+def clear_stale_kernel_caches(package: Path, *others: Path) -> int | None:
+    """Delete numba's cached machine code (``*.nbi``, ``*.nbc``) of ``package`` and of the
+    ``others`` trees (the tests' own kernels) when the shared helpers changed since the
+    last call (or were never seen); return the number of files deleted, or None when they
+    are unchanged. The hash is kept in ``package / KERNEL_STAMP``."""
+    digest = shared_kernels_hash(package)
+    stamp = package / KERNEL_STAMP
+    try:
+        if stamp.read_text().strip() == digest:
+            return None
+    except OSError:
+        pass  # first run (or unreadable): the caches cannot be trusted
+    n = 0
+    for root in (package, *others):
+        for d in _numba_cache_dirs(root):
+            for f in (*d.glob("*.nbi"), *d.glob("*.nbc")) if d.is_dir() else ():
+                try:
+                    f.unlink()
+                    n += 1
+                except FileNotFoundError:  # another session removed it first
+                    pass
+    try:
+        stamp.parent.mkdir(exist_ok=True)
+        tmp = stamp.with_name(f"{stamp.name}.{os.getpid()}.tmp")
+        tmp.write_text(digest + "\n")
+        os.replace(tmp, stamp)
+    except OSError:
+        pass  # a read-only install: the caches are cleared again next time
+    return n
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_sessionstart(session):
+    """Before any test runs a kernel: clear numba's cache if a shared helper changed."""
+    package = Path(importlib.util.find_spec("rocking").origin).parent
+    n = clear_stale_kernel_caches(package, Path(__file__).parent)
+    if n:
+        msg = (f"numba cache: a shared kernel helper ({', '.join(SHARED_KERNEL_SOURCES)}) "
+               f"changed; {n} cached files deleted, the kernels compile again")
+        reporter = session.config.pluginmanager.get_plugin("terminalreporter")
+        if reporter is not None:
+            reporter.write_line(msg)
+        else:
+            print(msg)
 
 
 @pytest.fixture(scope="session")
