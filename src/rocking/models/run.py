@@ -9,6 +9,7 @@ output buffers and the memory guard, the parallel batch, and building
 from __future__ import annotations
 
 import math
+import warnings
 
 import numba
 import numpy as np
@@ -133,10 +134,27 @@ def check_linear(linear) -> bool:
     return bool(linear)
 
 
-def simulate(block, motion=None, model="housner", duration: float | None = None,
-             theta0: float = 0.0, omega0: float = 0.0, linear: bool = False, *,
-             max_free_time: float | None = None, dt_out: float = DEFAULT_DT_OUT,
-             max_impacts: int = MAX_IMPACTS, **options):
+def _positional(func: str, args: tuple, names: tuple, given: dict) -> dict:
+    """Arguments after ``duration`` given by position (deprecated: keywords only, so that
+    :func:`simulate` and :func:`simulate_many` take their arguments in one order)."""
+    if not args:
+        return {}
+    if len(args) > len(names):
+        raise TypeError(f"{func}() takes at most {4 + len(names)} positional arguments")
+    out = dict(zip(names, args, strict=False))
+    for k in out:
+        if given.get(k) is not None:
+            raise TypeError(f"{func}() got multiple values for argument {k!r}")
+    warnings.warn(f"{func}(): passing {', '.join(out)} by position is deprecated; pass "
+                  f"{'them' if len(out) > 1 else 'it'} by keyword", DeprecationWarning,
+                  stacklevel=3)
+    return out
+
+
+def simulate(block, motion=None, model="housner", duration: float | None = None, *args,
+             theta0: float | None = None, omega0: float | None = None,
+             linear: bool | None = None, max_free_time: float | None = None,
+             dt_out: float = DEFAULT_DT_OUT, max_impacts: int = MAX_IMPACTS, **options):
     """Simulate one block under one base motion and return a :class:`~rocking.Response`.
 
     Parameters
@@ -159,6 +177,10 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
         Initial angle (rad, in (-pi/2, pi/2)) and angular velocity (rad/s).
     linear : bool
         The small-angle form of Eq 1 (models with a ``linear`` option); a bool.
+
+        ``theta0``, ``omega0`` and ``linear`` are keywords, as in :func:`simulate_many`
+        (both take ``block, motion(s), model, duration`` by position, the rest by
+        keyword); by position they still work, with a ``DeprecationWarning``.
     max_free_time : float, optional
         Cap (s) of the free motion after the ground motion ends, with ``duration=None``
         (default :data:`DEFAULT_MAX_FREE_TIME`, 60 s; see there why).
@@ -170,6 +192,11 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
         The model's options (``rocking.models.MODELS[name].Options``), e.g. ``rtol`` and
         ``rest_tol`` for ``"housner"``. Unknown options are an error.
     """
+    pos = _positional("simulate", args, ("theta0", "omega0", "linear"),
+                      {"theta0": theta0, "omega0": omega0, "linear": linear})
+    theta0 = pos.get("theta0", 0.0 if theta0 is None else theta0)
+    omega0 = pos.get("omega0", 0.0 if omega0 is None else omega0)
+    linear = pos.get("linear", False if linear is None else linear)
     m = _make(model, block, linear, options)
     duration, t_quiet, theta0, omega0 = check_run(motion, duration, theta0, omega0,
                                                   max_free_time)
@@ -259,8 +286,8 @@ def _blocks(cls: type[Model], block, n: int) -> list:
     return blocks
 
 
-def simulate_many(block, motions, model="housner", duration: float | None = None,
-                  linear: bool = False, *, theta0=0.0, omega0=0.0,
+def simulate_many(block, motions, model="housner", duration: float | None = None, *args,
+                  theta0=0.0, omega0=0.0, linear: bool | None = None,
                   max_free_time: float | None = None, return_histories: bool = False,
                   dt_out: float = DEFAULT_DT_OUT, errors: str = "raise", **options):
     """Simulate blocks under many motions in one compiled, parallel call.
@@ -285,6 +312,8 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     that had not); an explicit ``duration`` is every run's length exactly. Other
     arguments as in :func:`simulate`.
     """
+    linear = _positional("simulate_many", args, ("linear",), {"linear": linear}).get(
+        "linear", False if linear is None else linear)
     if errors not in ("raise", "nan"):
         raise ParameterError(f"errors must be 'raise' or 'nan', got {errors!r}")
     if not isinstance(return_histories, bool | np.bool_):
