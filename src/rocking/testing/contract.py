@@ -65,9 +65,11 @@ depends on its batch. Symmetry is checked to a tolerance: a kernel written with 
 of ``theta`` as a factor (the classical model, the fourth model of the tests) mirrors
 exactly, but one whose arithmetic is not mirrored (the CCRR's phase ``psi + pi``, the
 DEM's vertex sums) differs by rounding, which an adaptive step control turns into
-different steps and so into differences of the order of its tolerance (measured: the
-CCRR at ``rtol = 1e-6``, up to 2e-4 ``alpha`` over 3 s of a sine; the DEM, 1e-10
-``alpha``). A sign error is of the order of ``alpha``.
+different steps and so into differences of the order of its tolerance (measured on the
+checks' motions: the CCRR at ``rtol = 1e-6``, up to 2e-4 ``alpha`` with ``quick=True``
+and 7e-4 ``alpha`` with ``quick=False``, 1e-15 ``alpha`` in free rocking; the DEM,
+1e-20 ``alpha``; the classical and fourth models, 0). A sign error is of the order of
+``alpha``.
 
 Cost. The checks run short motions with ``dt_out = 0.01`` s; a model with ``slow = True``
 (the DEM) gets fewer and shorter motions and runs at most 0.5 s past each motion.
@@ -97,9 +99,9 @@ rigid contacts; the DEM's contact springs (settlement 1e-7 of the height) tilt s
 by 7e-6 ``alpha`` under half the uplift acceleration."""
 FREE_SYMMETRY_TOL = 1e-9
 """Mirror symmetry of free rocking: largest ``|theta(x) + theta(-x)|`` (fraction of alpha)."""
-MOTION_SYMMETRY_TOL = 1e-3
+MOTION_SYMMETRY_TOL = 1e-2
 """Mirror symmetry under ``-motion``: largest ``|theta + theta_mirror|`` (fraction of
-alpha) over the motion's duration."""
+alpha) over the motion's duration (times: this over ``p``)."""
 DT_OUT = 0.01
 """Output interval (s) of the checks' runs."""
 
