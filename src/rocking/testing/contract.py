@@ -234,7 +234,8 @@ def _check(fn):
     @functools.wraps(fn)
     def check(cls, *, quick: bool = True) -> None:
         cls = cls if isinstance(cls, type) else get_model(cls)
-        where = f"{fn.__name__} failed for model {cls.name!r} ({cls.__name__})"
+        where = (f"{fn.__name__} failed for model {getattr(cls, 'name', '?')!r} "
+                 f"({getattr(cls, '__name__', cls)})")
         try:
             fn(cls, _plan_of(cls, quick))
         except AssertionError as e:
@@ -311,7 +312,10 @@ def _inside(f) -> list:
 @_check
 def check_options(cls, plan):
     """Options refuse values outside their declared range and accept their defaults."""
-    cls.Options()  # every default at once
+    try:
+        cls.Options()  # every default at once
+    except ParameterError as e:
+        raise AssertionError(f"the default options are refused: {e}") from None
     ranges = {}
     for d in cls.Options.describe():
         assert d["help"], f"option {d['name']!r} has no help text"
@@ -333,7 +337,7 @@ def check_options(cls, plan):
                     f"the error for {f.name}={v!r} does not name the option: {e}"
             else:
                 raise AssertionError(f"option {f.name}={v!r} was accepted (declared: "
-                                     f"{ranges[f.name] or f.metadata.get('kind')})")
+                                     f"{ranges[f.name] or f.metadata['kind'].__name__})")
     bogus = "no_such_option"
     try:
         cls.from_kwargs(plan.block, **{bogus: 1})
@@ -352,7 +356,7 @@ def _equal_state(a, b, path: str = "", depth: int = 0) -> str | None:
     if depth > 8:
         return None
     if isinstance(a, dict) and isinstance(b, dict):
-        for k in a.keys() | b.keys():
+        for k in sorted(a.keys() | b.keys(), key=str):
             if k not in b:
                 return f"{path}{k} removed"
             if k not in a:
