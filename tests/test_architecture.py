@@ -125,11 +125,7 @@ def test_layers_point_one_way():
 # ``motions/_kernel.py``, ``models/_numerics/``) is package-internal: any module of the
 # package may import it and use its public names (not its private ones).
 
-PRIVATE_ALLOWED = {
-    # models/dem/kernel.py is being reworked by the lead (issue 17); its ``_probe`` gets a
-    # public name there and this entry goes.
-    ("rocking.models.dem.statics", "rocking.models.dem.kernel._probe"),
-}
+PRIVATE_ALLOWED: set[tuple[str, str]] = set()
 """Known exceptions: (importing module, owner module.private name)."""
 
 _NAMEDTUPLE_API = {"_replace", "_asdict", "_fields", "_make", "_field_defaults"}

@@ -344,7 +344,7 @@ def _row(out, c, i, k, j, e, px, py, nx, ny):
 
 
 @njit(cache=True)
-def _probe(pos, lv, lvn, len_, nv, rad, rr, tol, out):
+def probe_contacts(pos, lv, lvn, len_, nv, rad, rr, tol, out):
     """Contacts with signed distance < ``tol`` at ``pos``: rows (i, k, j, e, px, py, nx, ny)
     in ``out`` (j = N: the base). Returns their number."""
     n = nv.shape[0]

@@ -11,7 +11,7 @@ import numpy as np
 from ...errors import ParameterError
 from ...units import G
 from .geometry import Assembly
-from .kernel import _probe
+from .kernel import probe_contacts
 
 SAFETY = 0.8
 """Fraction of the stability limit of central differences used as the time step."""
@@ -23,7 +23,7 @@ the closing and opening of contacts (resolved to first order only) cost little e
 def contacts_at(model: Assembly, pos: np.ndarray, tol: float) -> np.ndarray:
     """Contacts (rows i, k, j, e, px, py, nx, ny) with signed distance below ``tol``."""
     out = np.empty((model.n * model.lv.shape[1] * (model.n + 1), 8))
-    c = _probe(np.ascontiguousarray(pos, dtype=np.float64), model.lv, model.lvn, model.len_,
+    c = probe_contacts(np.ascontiguousarray(pos, dtype=np.float64), model.lv, model.lvn, model.len_,
                model.nv, model.rad, model.rr, tol, out)
     return out[:c]
 
