@@ -14,10 +14,10 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from cli_helpers import run_main
 
 import rocking
 from rocking import campaign
-from rocking.cli import main
 from rocking.errors import SpecError, StoreError
 from rocking.motions import Sine, load_builtin
 
@@ -63,14 +63,6 @@ def cli(*args, **kw):
     """The real command in a subprocess (exit code, one-line errors, signals)."""
     return subprocess.run([*ROCKING, *map(str, args)], capture_output=True, text=True,
                           timeout=300, **kw)
-
-
-def run_main(capsys, *args):
-    """:func:`rocking.cli.main` in-process: ``(exit code, stdout, stderr)``."""
-    with pytest.raises(SystemExit) as exc:
-        main([str(a) for a in args])
-    out, err = capsys.readouterr()
-    return exc.value.code, out, err
 
 
 # ------------------------------------------------------------------ reproducibility

@@ -12,10 +12,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from cli_helpers import run_main
 from click.testing import CliRunner
 
 import rocking
-from rocking.cli import cli, main
+from rocking.cli import cli
 from rocking.motions import OneSine, Sine
 from rocking.units import G
 
@@ -27,14 +28,6 @@ def invoke(*args):
     res = CliRunner().invoke(cli, [str(a) for a in args], catch_exceptions=False)
     assert res.exit_code == 0, res.output
     return res
-
-
-def run_main(capsys, *args):
-    """Run :func:`rocking.cli.main` in-process; returns (exit code, stdout, stderr)."""
-    with pytest.raises(SystemExit) as exc:
-        main([str(a) for a in args])
-    out, err = capsys.readouterr()
-    return exc.value.code, out, err
 
 
 def rocking_command() -> list[str]:

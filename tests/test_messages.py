@@ -17,21 +17,13 @@ import click
 import numpy as np
 import pandas as pd
 import pytest
+from cli_helpers import run_main
 
 import rocking
 import rocking.analysis as A
 from rocking.analysis.overturning import pulse_motion
-from rocking.cli import main
 from rocking.errors import ParameterError
 from rocking.units import G
-
-
-def run_main(capsys, *args):
-    """:func:`rocking.cli.main` in-process: (exit code, stdout, stderr)."""
-    with pytest.raises(SystemExit) as exc:
-        main([str(a) for a in args])
-    out, err = capsys.readouterr()
-    return exc.value.code, out, err
 
 
 def one_error_line(err: str) -> str:

@@ -15,12 +15,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_helpers import run_main
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import rocking
 from rocking import PlausibilityWarning
-from rocking.cli import main
 from rocking.errors import RecordError
 from rocking.motions import HanningSine, Record, Sine
 from rocking.motions.io import read_record, write_csv
@@ -453,11 +453,6 @@ def test_round_trip_every_layout(tmp_path, layout, unit, n, dt, data):
 
 
 # ------------------------------------------------------------------------------- CLI
-def run_main(capsys, *args):
-    with pytest.raises(SystemExit) as exc:
-        main([str(a) for a in args])
-    out, err = capsys.readouterr()
-    return exc.value.code, out, err
 
 
 def assert_one_line_error(code, err, *words):

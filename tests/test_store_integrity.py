@@ -19,10 +19,10 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from cli_helpers import run_main
 
 from rocking import _atomic, campaign
 from rocking.campaign.store import Store
-from rocking.cli import main
 from rocking.errors import StoreError
 
 SPEC = """
@@ -49,13 +49,6 @@ alpha = {dist = "normal", cov = 0.03}
 [run]
 chunk_size = 50
 """  # 300 classical runs in 6 chunks
-
-
-def run_main(capsys, *args):
-    with pytest.raises(SystemExit) as exc:
-        main([str(a) for a in args])
-    out, err = capsys.readouterr()
-    return exc.value.code, out, err
 
 
 @pytest.fixture(scope="module")

@@ -7,6 +7,7 @@ import math
 
 import numpy as np
 import pytest
+from cli_helpers import run_main
 from scipy.optimize import brentq
 
 import rocking
@@ -274,12 +275,6 @@ def test_flipping_horizontal_flips_the_response_but_flipping_vertical_does_not()
 
 
 # ------------------------------------------------------------------ CLI
-def run_main(capsys, *args):
-    from rocking.cli import main
-    with pytest.raises(SystemExit) as exc:
-        main([str(a) for a in args])
-    out, err = capsys.readouterr()
-    return exc.value.code, out, err
 
 
 def test_cli_simulate_with_a_vertical_record(capsys, tmp_path):
