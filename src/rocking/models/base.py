@@ -93,51 +93,17 @@ from typing import Any, ClassVar
 import numpy as np
 from numba import njit
 
-from .._validate import as_float, in_range
 from ..blocks import Block, Stack
 from ..errors import ParameterError
+from ..options import Options, option  # noqa: F401 (option: re-exported for the models)
 from ..results import Response
 
 
 # ================================================================================= options
-def option(default, *, help: str, unit: str = "", lo: float | None = None,
-           hi: float | None = None, lo_open: bool = True, hi_open: bool = False,
-           choices: tuple | None = None, kind: type | None = None):
-    """A documented model option: a dataclass field with its default, unit and range.
-
-    ``lo``/``hi`` bound a number (open or closed ends); ``choices`` lists allowed strings;
-    ``kind`` is ``bool``, ``int``, ``float`` (default for numbers) or ``str``. ``None`` is
-    accepted when it is the default (meaning "automatic").
-    """
-    meta = {"help": help, "unit": unit, "lo": lo, "hi": hi, "lo_open": lo_open,
-            "hi_open": hi_open, "choices": choices,
-            "kind": kind or (type(default) if default is not None else float)}
-    return dataclasses.field(default=default, metadata=meta)
-
-
-def _range_text(m: dict) -> str:
-    lo = "-inf" if m["lo"] is None else f"{m['lo']:g}"
-    hi = "inf" if m["hi"] is None else f"{m['hi']:g}"
-    a = "(" if m["lo_open"] or m["lo"] is None else "["
-    b = ")" if m["hi_open"] or m["hi"] is None else "]"
-    return f"{a}{lo}, {hi}{b}"
-
-
 @dataclass(frozen=True)
-class ModelOptions:
-    """Base of the option dataclasses of the models (validated when built)."""
-
-    def __post_init__(self):
-        for f in dataclasses.fields(self):
-            value = getattr(self, f.name)
-            m = f.metadata
-            if not m or (value is None and f.default is None):
-                continue
-            object.__setattr__(self, f.name, _check_option(f.name, value, m))
-        self.check()
-
-    def check(self) -> None:
-        """Checks that involve several options (override)."""
+class ModelOptions(Options):
+    """Base of the option dataclasses of the models (validated when built; declare each
+    field with :func:`rocking.options.option`)."""
 
     @classmethod
     def build(cls, model_name: str, **values) -> ModelOptions:
@@ -149,49 +115,6 @@ class ModelOptions:
             raise ParameterError(f"unknown option(s) for model {model_name!r}: "
                                  f"{', '.join(unknown)} (allowed: {allowed})")
         return cls(**values)
-
-    @classmethod
-    def describe(cls) -> list[dict]:
-        """One dict per option: ``name``, ``default``, ``unit``, ``range``, ``help``."""
-        out = []
-        for f in dataclasses.fields(cls):
-            m = f.metadata
-            rng = ", ".join(m["choices"]) if m.get("choices") else (
-                _range_text(m) if m.get("kind") in (int, float) else "")
-            out.append({"name": f.name, "default": f.default, "unit": m.get("unit", ""),
-                        "range": rng, "help": m.get("help", ""), "kind": m.get("kind")})
-        return out
-
-    def to_dict(self) -> dict:
-        return dataclasses.asdict(self)
-
-
-def _check_option(name: str, value, m: dict):
-    kind = m["kind"]
-    if kind is object:  # free-form: the options' check() validates it
-        return value
-    if kind is bool:
-        if not isinstance(value, bool | np.bool_):
-            raise ParameterError(f"{name} must be True or False, got {value!r}")
-        return bool(value)
-    if kind is str or m.get("choices"):
-        if m.get("choices") and value not in m["choices"]:
-            raise ParameterError(f"{name} must be one of {', '.join(m['choices'])}; "
-                                 f"got {value!r}")
-        return value
-    x = as_float(name, value)
-    if m["lo"] is not None or m["hi"] is not None:
-        lo = -math.inf if m["lo"] is None else m["lo"]
-        hi = math.inf if m["hi"] is None else m["hi"]
-        unit = f" {m['unit']}" if m.get("unit") else ""
-        x = in_range(name, x, lo, hi, lo_open=m["lo_open"] or m["lo"] is None,
-                     hi_open=m["hi_open"] or m["hi"] is None,
-                     shown=_range_text(m) + unit)
-    if kind is int:
-        if x != int(x):
-            raise ParameterError(f"{name} must be a whole number, got {value!r}")
-        return int(x)
-    return x
 
 
 # =================================================================================== model
