@@ -6,7 +6,10 @@ records). ``ground_acc`` evaluates the horizontal acceleration at one time;
 ``next_breakpoint`` gives the next time at which the acceleration (of either component)
 has a kink or a jump, so that integrators can step exactly onto it.
 
-A vertical component (:class:`rocking.motions.GroundMotion`) travels in the same spec:
+A vertical component (:class:`rocking.motions.GroundMotion`) travels in the same spec,
+written by :func:`with_vertical` only and read by the named accessors :func:`has_vertical`,
+:func:`vertical_is_record`, :func:`vertical_acc` and :func:`ground_acc_hv` (no other module
+indexes ``prm`` beyond the horizontal parameters):
 ``prm[:NPRM1]`` is the horizontal motion, ``prm[V_KIND]`` the vertical motion's kind
 (``NONE``: no vertical component), ``prm[V_OFFSET]`` the index where its samples start in
 ``samples`` (after the horizontal record's), ``prm[V0:V0 + NPRM1]`` its parameters and
@@ -116,6 +119,27 @@ def ground_acc(kind, prm, samples, t):
 def has_vertical(prm):
     """Whether the spec carries a vertical component."""
     return prm.shape[0] > V_KIND and prm[V_KIND] != 0.0
+
+
+@njit(cache=True)
+def vertical_is_record(prm):
+    """Whether the vertical component is a sampled record (linear between samples)."""
+    return has_vertical(prm) and prm[V_KIND] == RECORD
+
+
+def with_vertical(kind, prm, samples, v_kind, v_prm, v_samples):
+    """``(prm, samples)`` of the horizontal spec ``(kind, prm, samples)`` carrying the
+    vertical spec ``(v_kind, v_prm, v_samples)``: the one place that writes the layout of
+    the module docstring (the kernels read it through :func:`has_vertical`,
+    :func:`vertical_is_record`, :func:`vertical_acc` and :func:`ground_acc_hv`)."""
+    prm = prm.copy()
+    prm[V_KIND] = v_kind
+    prm[V_OFFSET] = samples.size
+    prm[V0:V0 + NPRM1] = v_prm[:NPRM1]
+    if (kind == RECORD and v_kind == RECORD and v_prm[1] == prm[1] and v_prm[2] == prm[2]
+            and samples.size == int(prm[2])):
+        prm[V_SAME] = 1.0
+    return prm, np.ascontiguousarray(np.concatenate([samples, v_samples]))
 
 
 @njit(cache=True)

@@ -94,22 +94,15 @@ class GroundMotion(Motion):
         return h if self.vertical is None else min(h, self.vertical.scan_step)
 
     def spec(self) -> tuple[int, np.ndarray, np.ndarray]:
-        """The horizontal spec, with the vertical component in ``prm[V_KIND:]``
-        (:mod:`rocking.motions._kernel`)."""
+        """The horizontal spec carrying the vertical one (:func:`rocking.motions._kernel.
+        with_vertical`)."""
         h = self.horizontal if self.scale == 1.0 else self.horizontal.scaled(self.scale)
         kind, prm, samples = h.spec()
         if self.vertical is None:
             return kind, prm, samples
         v = self.vertical if self.scale == 1.0 else self.vertical.scaled(self.scale)
-        vk, vprm, vs = v.spec()
-        prm = prm.copy()
-        prm[K.V_KIND] = vk
-        prm[K.V_OFFSET] = samples.size
-        prm[K.V0:K.V0 + K.NPRM1] = vprm[:K.NPRM1]
-        if (kind == K.RECORD and vk == K.RECORD and vprm[1] == prm[1] and vprm[2] == prm[2]
-                and samples.size == int(prm[2])):
-            prm[K.V_SAME] = 1.0
-        return kind, prm, np.ascontiguousarray(np.concatenate([samples, vs]))
+        prm, samples = K.with_vertical(kind, prm, samples, *v.spec())
+        return kind, prm, samples
 
     def acceleration(self, t):
         """Horizontal acceleration (m/s^2) at ``t`` (s)."""

@@ -7,12 +7,11 @@ import math
 from numba import njit
 
 from ...motions._kernel import (
-    RECORD,
-    V_KIND,
     ground_acc,
     has_vertical,
     next_breakpoint,
     vertical_acc,
+    vertical_is_record,
 )
 from ...units import G
 
@@ -68,7 +67,7 @@ def first_lift_off(prm, samples, t0, t1, h_scan):
     ``h_scan / 4`` (a dip below ``-g`` narrower than that may be missed)."""
     if not has_vertical(prm):
         return math.nan
-    if prm[V_KIND] == RECORD:
+    if vertical_is_record(prm):
         return lift_off_time(prm, samples, t0, t1) if lifts_off(prm, samples, t1) else math.nan
     n = max(1, int(math.ceil((t1 - t0) / (0.25 * h_scan) - 1e-9)))
     a = t0
@@ -111,7 +110,7 @@ def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c, dt_out, k, out_th
                 k += 1
             return t, k, 0.0, t_up
         t1 = min(t + h_scan, next_breakpoint(kind, prm, samples, t), t_end)
-        if has_vertical(prm) and prm[V_KIND] != RECORD:  # a dip below -g inside the step
+        if has_vertical(prm) and not vertical_is_record(prm):  # a dip below -g inside the step
             tl = first_lift_off(prm, samples, t, t1, h_scan)
             if tl == tl:
                 t1 = tl
