@@ -202,4 +202,5 @@ def make_block(mapping: dict, *, name: str | None = None):
 
 def table() -> list[dict]:
     """Every form and key, one dict each (``form``, ``name``, ``unit``, ``range``, ...)."""
-    return [{"form": f.name, **d} for f in FORMS.values() for d in f.describe()]
+    return [{"form": f.name, **d, "type": d["kind"]} for f in FORMS.values()
+            for d in f.describe()]

@@ -384,7 +384,7 @@ class MotionKind:
         self.Params.unknown(values, f"motion kind {self.name!r}")
         return self.Params(**values)
 
-    def build(self, ctx: Context | None = None, **values) -> Motion:
+    def build(self, ctx: Context | None = None, /, **values) -> Motion:
         """The motion of these parameters."""
         return self.make(self.params(**values), ctx or Context())
 
@@ -462,7 +462,7 @@ def kind(name: str, *, param: str = "kind") -> MotionKind:
     return KINDS[name]
 
 
-def build(name: str, ctx: Context | None = None, **params) -> Motion:
+def build(name: str, ctx: Context | None = None, /, **params) -> Motion:
     """The motion of kind ``name`` with ``params`` (numbers in SI units, or strings with a
     unit such as ``"0.3g"``).
 
@@ -486,11 +486,13 @@ def expand_files(pattern: str, ctx: Context) -> list[str]:
 
 
 def table() -> list[dict]:
-    """Every kind and parameter, one dict each: ``kind``, ``name``, ``unit``, ``default``,
-    ``range``, ``required``, ``help`` (what ``rocking motions`` prints and the README's
-    table is made from)."""
+    """Every kind and parameter, one dict each: ``kind`` (the motion kind), ``name``,
+    ``unit``, ``default``, ``range``, ``required``, ``help``, ``type`` (the Python type of
+    the value) and ``sweep`` (what ``rocking motions`` prints and the README's table is
+    made from)."""
     rows = []
     for k in KINDS.values():
         for d in k.describe():
-            rows.append({"kind": k.name, **d, "sweep": d["name"] in k.sweep})
+            rows.append({**d, "type": d["kind"], "kind": k.name,
+                         "sweep": d["name"] in k.sweep})
     return rows
