@@ -176,24 +176,59 @@ def _squat():
     return Block.rectangular(1.0, 0.4, mass=500.0, mu=0.5)
 
 
-def test_coulomb_sliding_rate():
+@pytest.mark.parametrize("phi", ["30deg", 0.5])
+def test_coulomb_sliding_rate(phi):
+    """The block slides at a - g tan(phi), phi the friction angle in rad (or with its unit)."""
     blk, a = _squat(), 0.8 * G
-    r = simulate(blk, Rectangular(a, 2.0, duration=1.2), model="dem", friction_angle=30.0,
+    r = simulate(blk, Rectangular(a, 2.0, duration=1.2), model="dem", friction_angle=phi,
                  damping=1e-4, dt_out=1e-3)
     m = (r.t >= 0.3) & (r.t <= 1.2)
     acc = 2.0 * np.polyfit(r.t[m], r.x[m], 2)[0]
-    expected = a - G * math.tan(math.radians(30.0))
+    rad = math.radians(30.0) if phi == "30deg" else phi
+    expected = a - G * math.tan(rad)
     assert acc < 0.0  # the block lags behind the table: x decreases
     assert abs(acc) == pytest.approx(expected, rel=0.01)
     assert r.max_abs_theta < 1e-5  # it slides, it does not rock
+    assert r.info["friction_angle"] == rad
 
 
 def test_no_sliding_below_the_friction_threshold():
     blk = _squat()
     a = 0.9 * G * math.tan(math.radians(30.0))
-    r = simulate(blk, Rectangular(a, 2.0, duration=1.2), model="dem", friction_angle=30.0,
-                 damping=1e-4)
+    r = simulate(blk, Rectangular(a, 2.0, duration=1.2), model="dem",
+                 friction_angle=math.radians(30.0), damping=1e-4)
     assert np.abs(r.x).max() < 1e-6  # elastic shear deformation only (~1e-7 m)
+
+
+def test_friction_angle_is_in_rad_with_a_deprecated_reading_in_degrees():
+    """Default 30 degrees in rad; "30deg" is the same number; a bare number >= pi/2 cannot
+    be rad: it is read as degrees with a DeprecationWarning (same run as in rad)."""
+    opts = D.DEMOptions()
+    assert opts.friction_angle == math.radians(30.0) == D.DEFAULT_FRICTION_ANGLE
+    assert D.DEMOptions(friction_angle="30deg").friction_angle == math.radians(30.0)
+    assert D.DEMOptions(friction_angle=0.3).friction_angle == 0.3  # < pi/2: rad
+    unit = {d["name"]: d["unit"] for d in D.DEMOptions.describe()}
+    assert unit["friction_angle"] == "rad"
+    blk, a = _squat(), 0.8 * G
+    motion = Rectangular(a, 2.0, duration=0.3)
+    want = simulate(blk, motion, model="dem", friction_angle=math.radians(25.0), damping=1e-4)
+    with pytest.warns(DeprecationWarning, match="friction_angle is in rad") as rec:
+        got = simulate(blk, motion, model="dem", friction_angle=25.0, damping=1e-4)
+    assert all(w.filename == __file__ for w in rec)  # attributed to the caller
+    np.testing.assert_array_equal(got.x, want.x)
+    np.testing.assert_array_equal(got.theta, want.theta)
+    spec = rocking.specimen(2, "theoretical")
+    with pytest.warns(DeprecationWarning, match="radians"):
+        assert D.calibrate_damping(spec, friction_angle=30.0) == D.calibrate_damping(spec)
+
+
+@pytest.mark.parametrize("phi", [95.0, 90, "100deg", -0.1, "2 rad", "30mm", math.inf])
+def test_friction_angle_out_of_range(phi, recwarn):
+    with pytest.raises(ParameterError, match="friction_angle"):
+        D.DEMOptions(friction_angle=phi)
+    with pytest.raises(ParameterError, match="friction_angle"):
+        D.check_friction_angle(phi)
+    assert not [w for w in recwarn if issubclass(w.category, DeprecationWarning)]
 
 
 # ====================================================================== energy

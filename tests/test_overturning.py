@@ -74,9 +74,9 @@ def test_similarity_theta_over_alpha_is_a_function_of_pt(make, wr, ar):
 
 def test_spectrum_is_the_same_for_blocks_of_any_size():
     wr = [1.5, 4.0, 7.0]
-    small = overturning_spectrum(BLOCK, "sine", wr, tol=TOL, accel_ratio=GRID)
-    big = overturning_spectrum(rocking.Block(alpha=ALPHA, p=0.9, mu=MU), "sine", wr, tol=TOL,
-                               accel_ratio=GRID)
+    small = overturning_spectrum(BLOCK, "one_sine", wr, tol=TOL, accel_ratio=GRID)
+    big = overturning_spectrum(rocking.Block(alpha=ALPHA, p=0.9, mu=MU), "one_sine", wr,
+                               tol=TOL, accel_ratio=GRID)
     np.testing.assert_allclose(small["min_overturn_ratio"], big["min_overturn_ratio"],
                                rtol=TOL)
     assert list(small["mode"]) == list(big["mode"])
@@ -111,7 +111,7 @@ def _direct_threshold(wr, grid, tol):
 
 def test_thresholds_equal_a_direct_bisection_with_simulate():
     wr = np.array([1.0, 3.5, 8.0])
-    df = overturning_spectrum(BLOCK, "sine", wr, tol=TOL, accel_ratio=GRID)
+    df = overturning_spectrum(BLOCK, "one_sine", wr, tol=TOL, accel_ratio=GRID)
     assert list(df.columns[:3]) == ["omega_ratio", "min_overturn_ratio", "mode"]
     np.testing.assert_array_equal(df["omega_ratio"], wr)
     for row in df.itertuples():
@@ -134,11 +134,11 @@ def test_safe_region_between_the_two_modes_for_the_one_sine_pulse():
     """Zhang and Makris (2001): above the minimum (mode 1, after an impact) lies a band of
     amplitudes that do not overturn, below the mode-2 boundary (no impact)."""
     wr = 8.0
-    spec = overturning_spectrum(BLOCK, "sine", [wr], tol=TOL, accel_ratio=GRID)
+    spec = overturning_spectrum(BLOCK, "one_sine", [wr], tol=TOL, accel_ratio=GRID)
     r_min = float(spec["min_overturn_ratio"].iloc[0])
     assert spec["mode"].iloc[0] == 1
     ar = r_min * np.geomspace(1.0, 3.0, 40)
-    m = outcome_map(BLOCK, "sine", [wr], ar)
+    m = outcome_map(BLOCK, "one_sine", [wr], ar)
     assert len(m) == 40 and set(m.columns) >= {"omega_ratio", "accel_ratio", "overturned",
                                                "mode", "max_abs_theta_over_alpha"}
     modes = m["mode"].to_numpy()
@@ -158,12 +158,13 @@ def test_safe_region_between_the_two_modes_for_the_one_sine_pulse():
 
 
 def test_other_pulses_and_plots(tmp_path):
-    for pulse, opts in (("cosine", {}), ("ricker", {}), ("mp", {"gamma": 2.0, "nu": 0.5})):
+    for pulse, prm in (("one_cosine", None), ("ricker", None),
+                       ("mavroeidis_papageorgiou", {"gamma": 2.0, "nu": 0.5})):
         df = overturning_spectrum(BLOCK, pulse, [1.0, 2.0], tol=0.02, accel_ratio=GRID,
-                                  **opts)
+                                  pulse_params=prm)
         assert (df["min_overturn_ratio"] > 1.0).all()
         assert df.attrs["pulse"] == pulse
-    m = outcome_map(BLOCK, "sine", [2.0, 4.0, 8.0], [1.5, 5.0, 12.0])
+    m = outcome_map(BLOCK, "one_sine", [2.0, 4.0, 8.0], [1.5, 5.0, 12.0])
     assert len(m) == 9 and m["mode"].isin([0, 1, 2]).all()
     assert (m.loc[~m["overturned"], "mode"] == 0).all()
     ax = plot_overturning_spectrum(df)
@@ -174,13 +175,107 @@ def test_other_pulses_and_plots(tmp_path):
 
 
 def test_pulse_motion_uses_the_dimensionless_definitions():
-    m = pulse_motion(BLOCK, "sine", 4.0, 2.0)
+    m = pulse_motion(BLOCK, "one_sine", 4.0, 2.0)
     assert isinstance(m, OneSine)
     assert m.length == pytest.approx(2.0 * math.pi / (4.0 * BLOCK.p))
     assert m.amplitude == pytest.approx(2.0 * G * math.tan(ALPHA))
-    mp = pulse_motion(BLOCK, "mp", 4.0, 2.0, gamma=3.0, nu=0.0)
+    mp = pulse_motion(BLOCK, "mavroeidis_papageorgiou", 4.0, 2.0,
+                      pulse_params={"gamma": 3.0, "nu": "0deg"})
     assert 2.0 * math.pi * mp.fp == pytest.approx(4.0 * BLOCK.p)
     assert mp.pga == pytest.approx(2.0 * G * math.tan(ALPHA), rel=1e-3)
+
+
+# ------------------------------------------------------------------ one vocabulary
+def test_pulses_are_catalog_kinds_built_by_the_catalog():
+    """Every pulse is a motion kind of rocking.motions.catalog, and the motion of a point
+    is the catalog's motion of the same parameters."""
+    from rocking.analysis import PULSES
+    from rocking.motions import catalog
+
+    assert set(PULSES) <= set(catalog.KINDS)
+    p, t_free = BLOCK.p, 60.0 / BLOCK.p
+    ag = G * math.tan(ALPHA)
+    tp = 2.0 * math.pi / (3.0 * p)
+    fp = 3.0 * p / (2.0 * math.pi)
+    expected = {
+        "one_sine": catalog.build("one_sine", amplitude=2.0 * ag, period=tp,
+                                  duration=tp + t_free),
+        "one_cosine": catalog.build("one_cosine", amplitude=2.0 * ag, period=tp,
+                                    duration=tp + t_free),
+        "ricker": catalog.build("ricker", amplitude=2.0 * ag, frequency=fp,
+                                duration=3.0 / fp + t_free),
+        "mavroeidis_papageorgiou": catalog.build(
+            "mavroeidis_papageorgiou", amplitude=2.0 * ag, frequency=fp, gamma=2.5, nu=0.3,
+            duration=2.5 / fp + t_free),
+    }
+    for name, want in expected.items():
+        prm = {"gamma": 2.5, "nu": 0.3} if name == "mavroeidis_papageorgiou" else None
+        got = pulse_motion(BLOCK, name, 3.0, 2.0, pulse_params=prm)
+        assert got == want
+        assert got.duration == pytest.approx(want.duration)
+
+
+@pytest.mark.parametrize("old, new, prm", [
+    ("sine", "one_sine", None),
+    ("cosine", "one_cosine", None),
+    ("mp", "mavroeidis_papageorgiou", {"gamma": 2.0, "nu": 0.5}),
+])
+def test_old_pulse_names_warn_and_give_identical_results(old, new, prm):
+    wr, ar = [1.5, 5.0], [1.3, 3.0, 9.0]
+    want_s = overturning_spectrum(BLOCK, new, wr, tol=0.02, accel_ratio=GRID, pulse_params=prm)
+    want_m = outcome_map(BLOCK, new, wr, ar, pulse_params=prm)
+    with pytest.warns(DeprecationWarning, match=f"write '{new}'"):
+        got_s = overturning_spectrum(BLOCK, old, wr, tol=0.02, accel_ratio=GRID,
+                                     pulse_params=prm)
+    with pytest.warns(DeprecationWarning, match=f"write '{new}'"):
+        got_m = outcome_map(BLOCK, old, wr, ar, pulse_params=prm)
+    with pytest.warns(DeprecationWarning, match=f"write '{new}'"):
+        assert pulse_motion(BLOCK, old, 2.0, 3.0, pulse_params=prm) == pulse_motion(
+            BLOCK, new, 2.0, 3.0, pulse_params=prm)
+    for got, want in ((got_s, want_s), (got_m, want_m)):
+        for col in want.columns:
+            np.testing.assert_array_equal(got[col].to_numpy(), want[col].to_numpy())
+        assert got.attrs["pulse"] == new
+
+
+def test_old_option_spellings_warn_and_give_identical_results():
+    """options={...} and gamma=/nu= as keywords still work (one release), with a
+    DeprecationWarning, and give the same spectrum as **options and pulse_params."""
+    prm = {"gamma": 2.0, "nu": 0.5}
+    kw = {"tol": 0.02, "accel_ratio": GRID}
+    want = overturning_spectrum(BLOCK, "mavroeidis_papageorgiou", [2.0], rtol=1e-9,
+                                pulse_params=prm, **kw)
+    with pytest.warns(DeprecationWarning) as rec:
+        got = overturning_spectrum(BLOCK, "mavroeidis_papageorgiou", [2.0],
+                                   options={"rtol": 1e-9}, gamma=2.0, nu=0.5, **kw)
+    text = " ".join(str(w.message) for w in rec)
+    assert "rtol=" in text and "pulse_params=" in text
+    assert all(w.filename == __file__ for w in rec)  # attributed to the caller
+    np.testing.assert_array_equal(got["min_overturn_ratio"], want["min_overturn_ratio"])
+    assert got.attrs["gamma"] == 2.0 and got.attrs["nu"] == 0.5
+    with pytest.warns(DeprecationWarning, match="pulse_params"):
+        m = outcome_map(BLOCK, "mavroeidis_papageorgiou", [2.0], [3.0], gamma=2.0, nu=0.5)
+    np.testing.assert_array_equal(
+        m["max_abs_theta_over_alpha"],
+        outcome_map(BLOCK, "mavroeidis_papageorgiou", [2.0], [3.0],
+                    pulse_params=prm)["max_abs_theta_over_alpha"])
+    with pytest.warns(DeprecationWarning, match="pulse_params"):
+        pulse_motion(BLOCK, "mavroeidis_papageorgiou", 2.0, 3.0, gamma=2.0, nu=0.5)
+    with pytest.raises(ParameterError, match="rtol"), \
+            pytest.warns(DeprecationWarning, match="options"):
+        outcome_map(BLOCK, "one_sine", [2.0], [3.0], options={"rtol": 1e-9}, rtol=1e-8)
+
+
+def test_model_options_reach_the_model():
+    """**options are the model's options: a tighter rtol changes nothing in the outcome
+    (and the default is what simulate_many uses)."""
+    a = outcome_map(BLOCK, "one_sine", [3.0], [1.35, 2.0])
+    b = outcome_map(BLOCK, "one_sine", [3.0], [1.35, 2.0], rtol=1e-12)
+    r = rocking.simulate(BLOCK, pulse_motion(BLOCK, "one_sine", 3.0, 1.35), rtol=1e-12)
+    assert b["max_abs_theta_over_alpha"].iloc[0] == r.max_abs_theta / ALPHA
+    np.testing.assert_array_equal(a["overturned"], b["overturned"])
+    np.testing.assert_allclose(a["max_abs_theta_over_alpha"], b["max_abs_theta_over_alpha"],
+                               rtol=1e-5)
 
 
 # ------------------------------------------------------------------ bad input
@@ -193,13 +288,22 @@ def test_pulse_motion_uses_the_dimensionless_definitions():
     ({"tol": 0.5}, "tol"),
     ({"tol": -0.01}, "tol"),
     ({"accel_ratio": [1.0, -3.0]}, "accel_ratio"),
-    ({"pulse": "mp"}, "gamma"),
-    ({"pulse": "mp", "gamma": 0.8, "nu": 0.0}, "gamma"),
-    ({"pulse": "sine", "gamma": 2.0}, "gamma"),
+    ({"pulse": "sine_wave"}, "pulse"),
+    ({"pulse": "mavroeidis_papageorgiou"}, "gamma"),
+    ({"pulse": "mavroeidis_papageorgiou", "pulse_params": {"gamma": 0.8, "nu": 0.0}},
+     "gamma"),
+    ({"pulse": "mavroeidis_papageorgiou", "pulse_params": {"gamma": 2.0, "nu": "1m"}},
+     "nu"),
+    ({"pulse_params": {"gamma": 2.0}}, "gamma"),
+    ({"pulse_params": {"duration": 2.0}}, "duration"),
+    ({"pulse_params": [("gamma", 2.0)]}, "pulse_params"),
+    ({"gamma": 2.0}, "gamma"),  # not a parameter of the one-sine pulse, nor of the model
+    ({"rtol": -1.0}, "rtol"),
+    ({"model": "udec"}, "model"),
     ({"tail": 0.0}, "tail"),
 ])
 def test_bad_input_names_the_parameter(kwargs, name):
-    kw = {"pulse": "sine", "omega_ratio": [1.0], **kwargs}
+    kw = {"pulse": "one_sine", "omega_ratio": [1.0], **kwargs}
     with pytest.raises(ParameterError, match=name):
         overturning_spectrum(BLOCK, **kw)
 
@@ -208,9 +312,9 @@ def test_outcome_map_bad_input():
     with pytest.raises(ParameterError, match="pulse"):
         outcome_map(BLOCK, "triangle", [1.0], [2.0])
     with pytest.raises(ParameterError, match="omega_ratio"):
-        outcome_map(BLOCK, "sine", [0.0], [2.0])
+        outcome_map(BLOCK, "one_sine", [0.0], [2.0])
     with pytest.raises(ParameterError, match="accel_ratio"):
-        outcome_map(BLOCK, "sine", [1.0], [])
+        outcome_map(BLOCK, "one_sine", [1.0], [])
 
 
 # ------------------------------------------------------------------ the M&P pulse
@@ -297,12 +401,12 @@ def test_a_narrow_overturning_tongue_is_not_missed():
     a safe gap (found on a fine outcome map). The spectrum must return the tongue's lower
     edge to ``tol``, not the upper boundary of the gap."""
     wr = 1.0
-    fine = outcome_map(BLOCK, pulse="cosine", omega_ratio=[wr],
+    fine = outcome_map(BLOCK, pulse="one_cosine", omega_ratio=[wr],
                        accel_ratio=np.linspace(1.05, 1.25, 401))
     first = float(fine.loc[fine["overturned"], "accel_ratio"].min())
     # the map has a safe gap above the first overturning level (non-monotonic boundary)
     above = fine[fine["accel_ratio"] > first]
     assert (~above["overturned"]).any(), "no safe gap: the case no longer tests the scan"
-    df = overturning_spectrum(BLOCK, pulse="cosine", omega_ratio=[wr], tol=TOL)
+    df = overturning_spectrum(BLOCK, pulse="one_cosine", omega_ratio=[wr], tol=TOL)
     got = float(df["min_overturn_ratio"].iloc[0])
     assert abs(got / first - 1.0) <= TOL + 0.2 / 400 / first

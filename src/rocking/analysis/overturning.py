@@ -18,16 +18,26 @@ free motion (default ``tail = 60``, i.e. about ten free rocking periods of a sma
 block; a block that has not overturned by then cannot any more, its energy only decreasing
 at impacts). ``tests/test_overturning.py`` checks the similarity to 1e-6.
 
-**Pulses** (``pulse=``), each of peak ground acceleration ``a_p`` (``amplitude``):
+**Pulses** (``pulse=``, the names of :mod:`rocking.motions.catalog`), each of peak ground
+acceleration ``a_p`` (``amplitude``):
 
-* ``"sine"``: :class:`~rocking.motions.OneSine`, one full sine cycle of period
-  ``Tp = 2 pi / omega_p``;
-* ``"cosine"``: :class:`~rocking.motions.OneCosine`, one full cosine cycle, ``Tp = 2 pi /
-  omega_p``;
+* ``"one_sine"`` (default): :class:`~rocking.motions.OneSine`, one full sine cycle of
+  period ``Tp = 2 pi / omega_p``;
+* ``"one_cosine"``: :class:`~rocking.motions.OneCosine`, one full cosine cycle, ``Tp = 2 pi
+  / omega_p``;
 * ``"ricker"``: :class:`~rocking.motions.Ricker` of peak frequency ``fp = omega_p / (2
   pi)`` (the frequency where its Fourier amplitude peaks), centred at ``1.5 / fp``;
-* ``"mp"``: :class:`~rocking.motions.MavroeidisPapageorgiou` with ``fp = omega_p / (2
-  pi)``; it needs ``gamma`` (> 1) and ``nu`` (rad) as ``pulse_options``.
+* ``"mavroeidis_papageorgiou"``: :class:`~rocking.motions.MavroeidisPapageorgiou` with
+  ``fp = omega_p / (2 pi)``; it needs ``gamma`` (> 1) and ``nu`` (rad) in
+  ``pulse_params``.
+
+The pulse is built by :func:`rocking.motions.catalog.build`; ``pulse_params`` holds the
+catalog parameters that the point of the plane does not set (``gamma``, ``nu``): the
+amplitude, the frequency or period and the window come from ``accel_ratio``,
+``omega_ratio`` and ``tail``. The model's options are keywords (``rtol=1e-10``), as in
+:func:`rocking.simulate_many`. The old names ``"sine"``, ``"cosine"`` and ``"mp"``, the
+``options={...}`` dict and ``gamma=``/``nu=`` as keywords still work for one release, with
+a :class:`DeprecationWarning`.
 
 **Overturning modes** (Zhang and Makris 2001, J. Eng. Mech. 127(5)): *mode 1* overturns
 after an impact (``n_impacts >= 1`` at overturning: under a one-sine pulse the block
@@ -51,20 +61,31 @@ Every step (one chunk of grid levels, the fine scan, one bisection step) is one
 
 from __future__ import annotations
 
+import dataclasses
 import math
+import warnings
 
 import numpy as np
 import pandas as pd
 
-from .._validate import as_float, in_range, positive
+from .._validate import in_range, positive
 from ..errors import ParameterError
-from ..models import simulate_many
-from ..motions import MavroeidisPapageorgiou, OneCosine, OneSine, Ricker
+from ..models import get_model, simulate_many
+from ..motions import catalog
 from ..plot import PALETTE, new_axes, style_axes
 from ..units import G
 
-PULSES = ("sine", "cosine", "ricker", "mp")
-"""The pulse names accepted by :func:`overturning_spectrum` and :func:`outcome_map`."""
+PULSES = ("one_sine", "one_cosine", "ricker", "mavroeidis_papageorgiou")
+"""The pulses of :func:`overturning_spectrum` and :func:`outcome_map`: names of
+:data:`rocking.motions.catalog.KINDS`."""
+
+_OLD_PULSES = {"sine": "one_sine", "cosine": "one_cosine", "mp": "mavroeidis_papageorgiou"}
+"""Old names, accepted for one release with a DeprecationWarning (in the catalog
+``"sine"`` is the harmonic motion, not a one-sine pulse)."""
+
+_SET_HERE = ("amplitude", "frequency", "period", "t0", "tc", "duration")
+"""Catalog parameters set by the point of the plane and the window (not ``pulse_params``):
+the pulses start at rest at t = 0 (their default ``t0``, ``tc``)."""
 
 TAIL = 60.0
 """Default free motion simulated after the pulse, in units of ``1/p``."""
@@ -99,69 +120,140 @@ def _check_block(block):
     return block
 
 
-def _pulse_factory(block, pulse: str, pulse_options: dict, tail: float):
-    """A function ``(omega_ratio, accel_ratio) -> Motion`` for ``block`` (validated once)."""
-
-    if pulse not in PULSES:
+def _pulse_name(pulse) -> str:
+    """The catalog name of ``pulse`` (an old name gives a DeprecationWarning, attributed to
+    the caller of the public function)."""
+    if isinstance(pulse, str) and pulse in _OLD_PULSES:
+        new = _OLD_PULSES[pulse]
+        warnings.warn(f"pulse={pulse!r} is deprecated: write {new!r} (the catalog's name; "
+                      "removed in the next release)", DeprecationWarning, stacklevel=4)
+        return new
+    if not isinstance(pulse, str) or pulse not in PULSES:
         raise ParameterError(f"pulse must be one of {', '.join(map(repr, PULSES))}, "
                              f"got {pulse!r}")
-    allowed = ("gamma", "nu") if pulse == "mp" else ()
-    for k in pulse_options:
-        if k not in allowed:
-            shown = ", ".join(allowed) if allowed else "none"
-            raise ParameterError(f"unknown pulse option {k!r} for pulse={pulse!r} "
-                                 f"(allowed: {shown})")
+    return pulse
+
+
+def _free_params(name: str) -> tuple[str, ...]:
+    """The catalog parameters of pulse ``name`` that ``pulse_params`` may set."""
+    return tuple(k for k in catalog.KINDS[name].Params.names() if k not in _SET_HERE)
+
+
+def _resolve(func: str, pulse, model, pulse_params, options: dict):
+    """``(pulse name, pulse_params, model options)`` with the deprecated spellings
+    (old pulse names, ``options={...}``, ``gamma=``/``nu=`` as keywords) moved to their
+    place, each with a DeprecationWarning. ``model=None``: no model options (pulse_motion)."""
+    name = _pulse_name(pulse)
+    if pulse_params is None:
+        pulse_params = {}
+    elif not isinstance(pulse_params, dict):
+        raise ParameterError(f"pulse_params must be a dict of the pulse's parameters, got "
+                             f"{pulse_params!r}")
+    options = dict(options)
+    if model is not None and "options" in options:
+        old = options.pop("options")
+        warnings.warn(f"{func}(options={{...}}) is deprecated: pass the model's options as "
+                      f"keywords, {func}(..., rtol=1e-10) (removed in the next release)",
+                      DeprecationWarning, stacklevel=3)
+        if old is not None and not isinstance(old, dict):
+            raise ParameterError(f"options must be a dict of the model's options, got {old!r}")
+        both = sorted(set(old or {}) & set(options))
+        if both:
+            raise ParameterError(f"{', '.join(both)}: given both in options={{...}} and as "
+                                 "a keyword")
+        options = {**(old or {}), **options}
+    model_names = () if model is None else get_model(model).Options.names()
+    moved = {k: options.pop(k) for k in list(options)
+             if k in _free_params(name) and k not in model_names}
+    if moved:
+        shown = ", ".join(f"{k!r}: {v!r}" for k, v in moved.items())
+        warnings.warn(f"{func}({', '.join(f'{k}=' for k in moved)}) is deprecated: pass the "
+                      f"pulse's parameters as pulse_params={{{shown}}} (removed in the next "
+                      "release)", DeprecationWarning, stacklevel=3)
+        both = sorted(set(moved) & set(pulse_params))
+        if both:
+            raise ParameterError(f"{', '.join(both)}: given both in pulse_params and as a "
+                                 "keyword")
+        pulse_params = {**moved, **pulse_params}
+    if model is None and options:
+        raise ParameterError(f"unknown parameter(s) of {func}: {', '.join(options)} (the "
+                             f"pulse's parameters go in pulse_params)")
+    return name, pulse_params, options
+
+
+def _axes(name: str, wr: float, p: float, t_free: float, prm: dict) -> dict:
+    """The catalog parameters that the point ``omega_p / p = wr`` sets: the period or the
+    frequency, and the window (the pulse plus ``t_free``, s)."""
+    if name in ("one_sine", "one_cosine"):
+        tp = 2.0 * math.pi / (wr * p)
+        return {"period": tp, "duration": tp + t_free}
+    fp = wr * p / (2.0 * math.pi)
+    length = 3.0 / fp if name == "ricker" else prm["gamma"] / fp
+    return {"frequency": fp, "duration": length + t_free}
+
+
+def _pulse_factory(block, name: str, pulse_params: dict, tail: float):
+    """A function ``(omega_ratio, accel_ratio) -> Motion`` for ``block`` (validated once)."""
+    kind = catalog.KINDS[name]
+    free = _free_params(name)
+    bad = [k for k in pulse_params if k not in free]
+    if bad:
+        raise ParameterError(
+            f"pulse_params: unknown parameter(s) {', '.join(map(repr, bad))} for pulse "
+            f"{name!r} (allowed: {', '.join(free) or 'none'}; the amplitude, the frequency "
+            "or period and the window are set by accel_ratio, omega_ratio and tail)")
+    fields = {f.name: f for f in dataclasses.fields(kind.Params)}
+    missing = [k for k in free if fields[k].metadata.get("required") and k not in pulse_params]
+    if missing:
+        need = "; ".join(f"{k}: {fields[k].metadata['help']}" for k in missing)
+        raise ParameterError(f"pulse={name!r} needs pulse_params {', '.join(missing)} "
+                             f"({need})")
     tail = positive("tail", tail, "(units of 1/p)")
     p = float(block.p)
     ag = G * math.tan(block.alpha)
     t_free = tail / p
-    if pulse in ("sine", "cosine"):
-        cls = OneSine if pulse == "sine" else OneCosine
+    # validated once (ranges, "30deg" strings): the checked values are used at every point
+    axis = "period" if name in ("one_sine", "one_cosine") else "frequency"
+    probe = kind.params(amplitude=ag, **{axis: 1.0}, **pulse_params)
+    prm = {k: getattr(probe, k) for k in pulse_params}
 
-        def make(wr, ar):
-            tp = 2.0 * math.pi / (wr * p)
-            return cls(ar * ag, tp, duration=tp + t_free)
-    elif pulse == "ricker":
-        def make(wr, ar):
-            fp = wr * p / (2.0 * math.pi)
-            return Ricker(ar * ag, fp, duration=3.0 / fp + t_free)
-    else:
-        missing = [k for k in ("gamma", "nu") if k not in pulse_options]
-        if missing:
-            raise ParameterError(f"pulse='mp' needs the pulse option(s) {', '.join(missing)} "
-                                 "(gamma > 1, nu in rad)")
-        gamma = in_range("gamma", pulse_options["gamma"], 1.0, math.inf, shown="(1, inf)")
-        nu = as_float("nu", pulse_options["nu"])
-
-        def make(wr, ar):
-            fp = wr * p / (2.0 * math.pi)
-            return MavroeidisPapageorgiou(ar * ag, fp, gamma, nu, duration=gamma / fp + t_free)
+    def make(wr, ar):
+        try:
+            return kind.build(None, amplitude=ar * ag, **_axes(name, wr, p, t_free, prm),
+                              **prm)
+        except ParameterError as e:
+            raise ParameterError(f"the pulse at omega_ratio = {wr:g}, accel_ratio = {ar:g} "
+                                 f"(window: the pulse and tail / p = {t_free:g} s): {e}"
+                                 ) from None
+    make.pulse_params = {k: float(v) for k, v in prm.items()}  # for df.attrs
     return make
 
 
 def pulse_motion(block, pulse: str, omega_ratio: float, accel_ratio: float, *,
-                 tail: float = TAIL, **pulse_options):
+                 tail: float = TAIL, pulse_params: dict | None = None, **deprecated):
     """The pulse of the dimensionless point ``(omega_ratio, accel_ratio)`` for ``block``.
 
     ``omega_p = omega_ratio * p`` and peak ground acceleration ``a_p = accel_ratio * g *
-    tan(alpha)``; the window is the pulse plus ``tail / p`` (s). This is the motion that
-    :func:`overturning_spectrum` and :func:`outcome_map` simulate at that point.
+    tan(alpha)``; the window is the pulse plus ``tail / p`` (s); ``pulse`` is a name of
+    :data:`PULSES` and ``pulse_params`` its other catalog parameters (``gamma``, ``nu``).
+    This is the motion that :func:`overturning_spectrum` and :func:`outcome_map` simulate
+    at that point.
     """
+    name, pulse_params, _ = _resolve("pulse_motion", pulse, None, pulse_params, deprecated)
     _check_block(block)
     wr = positive("omega_ratio", omega_ratio)
     ar = positive("accel_ratio", accel_ratio)
-    return _pulse_factory(block, pulse, pulse_options, tail)(wr, ar)
+    return _pulse_factory(block, name, pulse_params, tail)(wr, ar)
 
 
 def _run(block, motions, model, options):
-
-    return simulate_many(block, motions, model=model, **(options or {}))
+    return simulate_many(block, motions, model=model, **options)
 
 
 # ---------------------------------------------------------------- overturning spectrum
-def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="housner", *,
-                         tol: float = 0.005, accel_ratio=None, tail: float = TAIL,
-                         options: dict | None = None, **pulse_options):
+def overturning_spectrum(block, pulse: str = "one_sine", omega_ratio=None, model="housner",
+                         *, tol: float = 0.005, accel_ratio=None, tail: float = TAIL,
+                         pulse_params: dict | None = None, **options):
     """The overturning spectrum: the minimum ``a_p / (g tan alpha)`` that overturns the
     block, for each ``omega_p / p``.
 
@@ -171,8 +263,9 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
     Parameters
     ----------
     block : Block
-    pulse : {"sine", "cosine", "ricker", "mp"}
-        The pulse family (module docstring: what ``omega_p`` is for each).
+    pulse : {"one_sine", "one_cosine", "ricker", "mavroeidis_papageorgiou"}
+        The pulse, a name of :mod:`rocking.motions.catalog` (module docstring: what
+        ``omega_p`` is for each).
     omega_ratio : float or array of float
         The frequency ratios ``omega_p / p`` (> 0).
     model : str or Model class
@@ -187,10 +280,12 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
         scan of the step below it at spacing ``tol`` and then by bisection.
     tail : float
         Free motion simulated after the pulse, in units of ``1/p`` (default 60).
-    options : dict, optional
-        The model's options (e.g. ``{"rtol": 1e-10}``).
-    **pulse_options
-        ``gamma`` and ``nu`` for ``pulse="mp"``.
+    pulse_params : dict, optional
+        The pulse's other catalog parameters: ``gamma`` (> 1) and ``nu`` (rad) for
+        ``"mavroeidis_papageorgiou"``.
+    **options
+        The model's options (e.g. ``rtol=1e-10``) and the other keywords of
+        :func:`rocking.simulate_many`.
 
     Returns
     -------
@@ -205,6 +300,8 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
         :func:`plot_overturning_spectrum`.
     """
 
+    name, pulse_params, options = _resolve("overturning_spectrum", pulse, model, pulse_params,
+                                           options)
     _check_block(block)
     if omega_ratio is None:
         raise ParameterError("omega_ratio must be given: the frequency ratios omega_p/p > 0")
@@ -212,7 +309,7 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
     tol = in_range("tol", tol, 1e-6, 0.2, lo_open=False, hi_open=False, shown="[1e-6, 0.2]")
     grid = _ratios("accel_ratio", DEFAULT_ACCEL_RATIO if accel_ratio is None else accel_ratio,
                    sort=True)
-    make = _pulse_factory(block, pulse, pulse_options, tail)
+    make = _pulse_factory(block, name, pulse_params, tail)
     n, m = w.size, grid.size
     first = np.full(n, -1)
     imp_hi = np.zeros(n, dtype=np.int64)
@@ -279,10 +376,10 @@ def overturning_spectrum(block, pulse: str = "sine", omega_ratio=None, model="ho
         "n_impacts": pd.array(np.where(found, imp_hi, 0), dtype="Int64"),
     })
     df.loc[~found, "n_impacts"] = pd.NA
-    df.attrs.update({"pulse": pulse, "alpha": float(block.alpha), "p": float(block.p),
+    df.attrs.update({"pulse": name, "alpha": float(block.alpha), "p": float(block.p),
                      "mu": float(block.mu), "tol": tol, "model": _model_name(model),
                      "n_simulations": int(n_sim), "accel_ratio_max": float(grid[-1]),
-                     "tail": float(tail), **{k: float(v) for k, v in pulse_options.items()}})
+                     "tail": float(tail), **make.pulse_params})
     return df
 
 
@@ -296,9 +393,9 @@ def _model_name(model) -> str:
 
 
 # ---------------------------------------------------------------- outcome map
-def outcome_map(block, pulse: str = "sine", omega_ratio=None, accel_ratio=None,
-                model="housner", *, tail: float = TAIL, options: dict | None = None,
-                **pulse_options):
+def outcome_map(block, pulse: str = "one_sine", omega_ratio=None, accel_ratio=None,
+                model="housner", *, tail: float = TAIL, pulse_params: dict | None = None,
+                **options):
     """The outcome of every cell of an ``(omega_p / p, a_p / (g tan alpha))`` grid.
 
     The axes are dimensionless (Dimitrakopoulos and DeJong 2012; module docstring). All the
@@ -306,7 +403,7 @@ def outcome_map(block, pulse: str = "sine", omega_ratio=None, accel_ratio=None,
 
     Parameters
     ----------
-    block, pulse, model, tail, options, **pulse_options
+    block, pulse, model, tail, pulse_params, **options
         As in :func:`overturning_spectrum`.
     omega_ratio, accel_ratio : array of float
         The frequency ratios ``omega_p / p`` and amplitude ratios ``a_p / (g tan alpha)``
@@ -324,13 +421,15 @@ def outcome_map(block, pulse: str = "sine", omega_ratio=None, accel_ratio=None,
         :func:`plot_outcome_map`.
     """
 
+    name, pulse_params, options = _resolve("outcome_map", pulse, model, pulse_params,
+                                           options)
     _check_block(block)
     if omega_ratio is None or accel_ratio is None:
         raise ParameterError("omega_ratio and accel_ratio must be given (arrays of numbers "
                              "> 0)")
     w = _ratios("omega_ratio", omega_ratio)
     a = _ratios("accel_ratio", accel_ratio)
-    make = _pulse_factory(block, pulse, pulse_options, tail)
+    make = _pulse_factory(block, name, pulse_params, tail)
     ww, aa = np.repeat(w, a.size), np.tile(a, w.size)
     res = _run(block, [make(x, y) for x, y in zip(ww, aa, strict=True)], model, options)
     over = np.asarray(res.overturned, dtype=bool)
@@ -344,10 +443,10 @@ def outcome_map(block, pulse: str = "sine", omega_ratio=None, accel_ratio=None,
         "rocked": np.asarray(res.rocked, dtype=bool),
         "max_abs_theta_over_alpha": np.asarray(res.max_abs_theta) / block.alpha,
     })
-    df.attrs.update({"pulse": pulse, "alpha": float(block.alpha), "p": float(block.p),
+    df.attrs.update({"pulse": name, "alpha": float(block.alpha), "p": float(block.p),
                      "mu": float(block.mu), "model": _model_name(model),
                      "n_simulations": len(res), "tail": float(tail),
-                     **{k: float(v) for k, v in pulse_options.items()}})
+                     **make.pulse_params})
     return df
 
 
@@ -359,7 +458,7 @@ _COLORS = {"no rocking": "#F2F2F2", "rocking, safe": "#BFD7EA",
 
 
 def _title(attrs) -> str:
-    bits = [f"{attrs.get('pulse', '')} pulse"]
+    bits = [f"{attrs.get('pulse', '').replace('_', '-')} pulse"]
     if "alpha" in attrs:
         bits.append(f"alpha = {attrs['alpha']:.3g} rad")
     if "mu" in attrs:

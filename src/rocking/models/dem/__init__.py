@@ -59,7 +59,10 @@ at the corners"). Each contact point has
 * a normal spring ``K`` (N/m), linear in compression, no tension;
 * a shear spring ``Ks = K`` (default), incremental (the shear force is history, kept per
   (vertex, edge) pair), elastic-perfectly plastic with the Coulomb limit
-  ``|Fs| <= Fn tan(phi) + c`` (``c``: cohesion, N per contact point, 0 by default);
+  ``|Fs| <= Fn tan(phi) + c`` (``phi``: the option ``friction_angle``, in rad like every
+  angle of the package, default 30 degrees = ``math.radians(30.0)``, or a string such as
+  ``"30deg"``; a bare number ``>= pi/2`` cannot be an angle in rad and is read as degrees,
+  deprecated, :mod:`.friction`; ``c``: cohesion, N per contact point, 0 by default);
 * viscous dashpots ``C = b K`` and ``b Ks`` (stiffness-proportional Rayleigh damping,
   no mass-proportional part, as in the paper's Section 4.4), only while the contact is
   closed: the normal force ``K d - b K d_dot`` is clipped at zero (no tension), and a
@@ -110,13 +113,15 @@ corner. By default the blocks start at static equilibrium (``settled=True``: the
 springs already carry the weights).
 
 **Package layout.** :mod:`.geometry` (bodies, Eq 18, the packed assembly),
-:mod:`.kernel` (compiled contact law and central differences), :mod:`.statics` (stiffness,
-stable step, static equilibrium), :mod:`.parameters` (the paper's Eqs 14-22 and Table III),
+:mod:`.friction` (the friction angle, rad), :mod:`.kernel` (compiled contact law and
+central differences), :mod:`.statics` (stiffness, stable step, static equilibrium),
+:mod:`.parameters` (the paper's Eqs 14-22 and Table III),
 :mod:`.calibration` (the damping that gives ``mu``), :mod:`.model` (the model class
 :class:`DEM` behind :func:`rocking.simulate`).
 """
 
 from .calibration import XI_CAP, calibrate_damping, damping_cap, free_rocking_restitution
+from .friction import DEFAULT_FRICTION_ANGLE, check_friction_angle
 from .geometry import (
     DEFAULT_SETTLEMENT,
     GEOMETRIES,
@@ -154,4 +159,5 @@ __all__ = [
     "refit_eq20", "settlement", "settlement_table", "table3", "contacts_at", "initial_state",
     "omega_max", "stable_dt", "static_state", "stiffness_matrix", "DEFAULT_SETTLEMENT",
     "GEOMETRIES", "ROUNDING", "EQ20", "READINGS", "XI_CAP", "ACCURACY", "SAFETY",
+    "DEFAULT_FRICTION_ANGLE", "check_friction_angle",
 ]

@@ -20,6 +20,7 @@ from ...errors import ParameterError
 from ...motions._kernel import NPRM
 from . import geometry as GEO
 from . import statics as ST
+from .friction import DEFAULT_FRICTION_ANGLE, check_friction_angle
 from .kernel import kernel
 
 XI_CAP = 4.0
@@ -28,13 +29,15 @@ XI_CAP = 4.0
 
 def free_rocking_restitution(block, b: float, K: float | None = None, *,
                              theta0_frac: float = 0.5, geometry: str = "auto",
-                             friction_angle: float = 30.0,
+                             friction_angle: float = DEFAULT_FRICTION_ANGLE,
                              shear_stiffness: float | None = None) -> float:
     """Apparent coefficient of restitution of the DEM: release ``block`` from
     ``theta0 = theta0_frac * alpha`` with damping ``b`` (s) and stiffness ``K`` and
     compare the amplitude ``r1`` after the first impact with ``r0 = theta0`` through the
     energy (Eq 12 with n = 1): ``sqrt((cos(alpha - r1) - cos alpha) / (cos(alpha - r0) -
-    cos alpha))``, with the DEM body's alpha."""
+    cos alpha))``, with the DEM body's alpha. ``friction_angle`` is in rad
+    (:func:`rocking.models.dem.friction.check_friction_angle`)."""
+    friction_angle = check_friction_angle(friction_angle)
     md = GEO.build_assembly(block, geometry)
     bd = md.bodies[0]
     al, p = bd.alpha, bd.p
@@ -74,7 +77,7 @@ def _free_run(md, b, K, Ks, friction_angle, theta0, duration, dt_out):
     Ks = K if Ks is None else float(Ks)
     dt, every = ST.time_step(md, K, Ks, b, None, dt_out)
     th_tol = 1e-3 * min(bd.alpha for bd in md.bodies)
-    mp = ST.kernel_params(md, K, Ks, b, math.tan(math.radians(friction_angle)), 0.0, dt,
+    mp = ST.kernel_params(md, K, Ks, b, math.tan(friction_angle), 0.0, dt,
                           every, th_tol, theta0, 0.0, True)
     n_out = int(math.floor(duration / dt_out + 1e-9)) + 1
     out_th, out_om, imp = np.empty(n_out), np.empty(n_out), np.empty(16)
@@ -126,11 +129,12 @@ def _calibrate(block, mu, K, geometry, friction_angle, Ks):
 
 
 def calibrate_damping(block, mu: float | None = None, K: float | None = None, *,
-                      geometry: str = "auto", friction_angle: float = 30.0,
+                      geometry: str = "auto", friction_angle: float = DEFAULT_FRICTION_ANGLE,
                       shear_stiffness: float | None = None, full: bool = False):
     """Damping factor ``b`` (s, ``C = b K`` at every closed contact) for which the DEM's
     apparent coefficient of restitution (:func:`free_rocking_restitution`) equals ``mu``
-    (default: the block's). ``K`` defaults to the DEM's default stiffness.
+    (default: the block's). ``K`` defaults to the DEM's default stiffness; ``friction_angle``
+    is in rad (default 30 degrees; :func:`rocking.models.dem.friction.check_friction_angle`).
 
     Brent's method on ``b`` in ``[0, b_cap]`` (:func:`damping_cap`). The apparent
     restitution falls monotonically as ``b`` grows, from its undamped value (the landing
@@ -154,7 +158,7 @@ def calibrate_damping(block, mu: float | None = None, K: float | None = None, *,
     K = float(f"{positive('K', K, 'N/m'):.9g}")
     Ks = None if shear_stiffness is None else float(f"{shear_stiffness:.9g}")
     b, mu_dem, b_cap, note = _calibrate(block, float(f"{mu:.9g}"), K, geometry,
-                                        float(friction_angle), Ks)
+                                        check_friction_angle(friction_angle), Ks)
     if full:
         return {"b": b, "mu_dem": mu_dem, "b_cap": b_cap, "note": note}
     return b

@@ -17,6 +17,7 @@ from ..base import Model, ModelOptions, option
 from . import geometry as GEO
 from . import statics as ST
 from .calibration import calibrate_damping
+from .friction import DEFAULT_FRICTION_ANGLE, HALF_PI, degrees_if_bare
 from .kernel import batch_kernel, kernel
 from .parameters import paper_parameters
 
@@ -25,15 +26,18 @@ from .parameters import paper_parameters
 class DEMOptions(ModelOptions):
     """Options of the discrete element model."""
 
-    friction_angle: float = option(30.0, unit="deg", lo=0.0, hi=90.0, lo_open=False,
-                                   hi_open=True, help="friction angle phi of every contact")
+    friction_angle: float = option(
+        DEFAULT_FRICTION_ANGLE, unit="rad", quantity="angle", lo=0.0, hi=HALF_PI,
+        lo_open=False, hi_open=True,
+        help="friction angle phi of every contact (default 30 degrees; '30deg' accepted; "
+             "a bare number >= pi/2 is read as degrees, deprecated)")
     stiffness: float | None = option(None, unit="N/m", lo=0.0,
                                      help="normal stiffness K of one contact point "
                                           "(default: settlement 1e-7 of the height)")
     shear_stiffness: float | None = option(None, unit="N/m", lo=0.0,
                                            help="shear stiffness Ks (default K)")
     damping: float | str | None = option(
-        None, kind=object, help="stiffness-proportional damping b (s, C = b K), "
+        None, kind=object, unit="s", help="stiffness-proportional damping b (s, C = b K), "
                                 "'calibrated' (default: matches mu) or 'paper' (Eq 20)")
     cohesion: float = option(0.0, unit="N", lo=0.0, lo_open=False,
                              help="cohesive shear strength of one contact point")
@@ -49,6 +53,11 @@ class DEMOptions(ModelOptions):
     return_forces: bool = option(False, help="record the contact forces (single runs)")
     return_energy: bool = option(False, help="record kinetic, potential and spring "
                                              "energies (single runs)")
+
+    def __post_init__(self):
+        # a bare number >= pi/2 is an angle in degrees (deprecated), before the range check
+        object.__setattr__(self, "friction_angle", degrees_if_bare(self.friction_angle))
+        super().__post_init__()
 
     def check(self):
         d = self.damping
@@ -114,7 +123,7 @@ class DEM(Model):
         o = self.options
         dt, every = self.step(dt_out)
         return ST.kernel_params(self.assembly, self.K, self.Ks, self.b,
-                                math.tan(math.radians(o.friction_angle)), o.cohesion,
+                                math.tan(o.friction_angle), o.cohesion,
                                 dt, every, self.th_tol, theta0, omega0, o.settled)
 
     def check_batch(self) -> None:

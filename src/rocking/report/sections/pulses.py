@@ -21,8 +21,8 @@ from .. import html as H
 from ..core import section
 
 SPECIMENS = (1, 2, 3, 4)
-PULSES = ("sine", "cosine")
-PULSE_LABELS = {"sine": "one-sine", "cosine": "one-cosine"}
+PULSES = ("one_sine", "one_cosine")  # names of rocking.motions.catalog
+PULSE_LABELS = {"one_sine": "one-sine", "one_cosine": "one-cosine"}
 MAP_SPECIMEN = 1
 W_RANGE = (0.5, 12.0)  # omega_p / p
 
@@ -64,7 +64,7 @@ def build(ctx) -> str:
     spec = spectra_table(ctx.quick)
     ctx.save_csv(spec, "spectra", float_format="%.6g")
     bmap = specimen(MAP_SPECIMEN, "experimental")
-    omap = outcome_map(bmap, "sine", mw, ma, model="housner")
+    omap = outcome_map(bmap, "one_sine", mw, ma, model="housner")
     ctx.save_csv(omap, "outcome_map", float_format="%.6g")
 
     fig = Figure(figsize=(10.0, 3.8), layout="constrained")
@@ -100,7 +100,7 @@ def build(ctx) -> str:
     fig2 = Figure(figsize=(7.5, 4.6), layout="constrained")
     ax = fig2.add_subplot()
     plot_outcome_map(omap, ax, spectrum=spec[(spec.specimen == MAP_SPECIMEN)
-                                             & (spec.pulse == "sine")].reset_index(drop=True))
+                                             & (spec.pulse == "one_sine")].reset_index(drop=True))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_title(f"Specimen {MAP_SPECIMEN} (α = {bmap.alpha:.3f}, μ = {bmap.mu:.3f}), "
@@ -138,7 +138,7 @@ def build(ctx) -> str:
         o = g.sort_values("accel_ratio")["overturned"].to_numpy()
         if o.any() and (~o[np.argmax(o):]).any():
             safe_above.append(w)
-    sine, cos = s[s.pulse == "sine"], s[s.pulse == "cosine"]
+    sine, cos = s[s.pulse == "one_sine"], s[s.pulse == "one_cosine"]
     g = spec.groupby(["pulse", "omega_ratio"]).min_overturn_ratio
     rel = 100.0 * ((g.max() - g.min()) / g.mean()).dropna()
     spread, spread_max = float(rel.median()), float(rel.max())
