@@ -15,11 +15,13 @@ import pandas as pd
 from .._validate import positive
 from ..errors import ParameterError
 from ..models import simulate_many
-from ..motions import HanningSine, Sine
+from ..motions import catalog
 from ..plot import figure, style_axes
 from ..units import G
 
-KINDS = {"sine": Sine, "hanning": HanningSine}
+KINDS = ("sine", "hanning")
+"""The table motions of :func:`motion_space`: names of :data:`rocking.motions.catalog.KINDS`
+(the constant sine and the Hanning-windowed one)."""
 
 
 def _grid(name: str, values) -> np.ndarray:
@@ -47,6 +49,8 @@ def motion_space(block, freqs, amplitudes, kind: str = "sine", duration: float =
         Table displacement amplitudes (m); the acceleration amplitude is
         ``(2 pi f)^2 X``.
     kind : ``"sine"`` (constant) or ``"hanning"`` (Hanning-windowed sine)
+        The catalog's motion kind (:mod:`rocking.motions.catalog`), built from its
+        ``frequency``, ``displacement`` and ``duration``.
     duration : float
         Length of each motion (s).
     model, **options
@@ -65,8 +69,8 @@ def motion_space(block, freqs, amplitudes, kind: str = "sine", duration: float =
     x = _grid("amplitudes", amplitudes)
     duration = positive("duration", duration, "s")
     ff, xx = np.meshgrid(f, x, indexing="ij")
-    motions = [KINDS[kind](fi, xi, duration) for fi, xi in zip(ff.ravel(), xx.ravel(),
-                                                               strict=True)]
+    motions = [catalog.build(kind, frequency=fi, displacement=xi, duration=duration)
+               for fi, xi in zip(ff.ravel(), xx.ravel(), strict=True)]
     res = simulate_many(block, motions, model=model, **options)
     acc = (2.0 * math.pi * ff.ravel()) ** 2 * xx.ravel()
     alpha = block.alpha
