@@ -355,7 +355,7 @@ def test_overturning_spectra_no_overturning_below_uplift(report):
     df = pd.read_csv(out / "pulses_spectra.csv")
     assert {"specimen", "pulse", "omega_ratio", "min_overturn_ratio", "mode",
             "safe_ratio"} <= set(df.columns)
-    assert set(df["specimen"]) == {1, 2, 3, 4} and set(df["pulse"]) == {"sine", "cosine"}
+    assert set(df["specimen"]) == {1, 2, 3, 4} and set(df["pulse"]) == {"one_sine", "one_cosine"}
     found = df["min_overturn_ratio"].dropna()
     assert len(found) > 0.7 * len(df)
     assert (found >= 1.0).all()
