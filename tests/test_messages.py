@@ -324,7 +324,7 @@ def test_identify_non_rocking_file_is_one_line(tmp_path):
 @pytest.mark.parametrize("size", [("1e308", "1"), ("0.2", "1e308"), ("1e200", "1e200")])
 def test_huge_block_names_width_not_p(capsys, size):
     code, _, err = run_main(capsys, "simulate", "--width", size[0], "--height", size[1],
-                            "--motion", "one-sine", "--amp", "0.3g", "--tp", "0.5")
+                            "--motion", "one_sine", "--amp", "0.3g", "--tp", "0.5")
     errors = [x for x in err.splitlines() if x.startswith("error:")]  # (and a warning)
     assert len(errors) == 1, err
     line = errors[0]

@@ -7,6 +7,8 @@
     rocking simulate --specimen 2 --params experimental --motion sine --freq 5 --amp 5mm \\
         --duration 25 [--model ccrr --option rtol=1e-9] --out out/
     rocking models [--json]
+    rocking motions [KIND] [--json]
+    rocking blocks [FORM] [--json]
     rocking motion synth|spectrum ...
     rocking dem-params --specimen 2
     rocking identify RECORD.csv
@@ -15,7 +17,8 @@
     rocking campaign status|report STORE
 
 Modules: :mod:`~rocking.cli.params`, :mod:`~rocking.cli.simulate`,
-:mod:`~rocking.cli.models`, :mod:`~rocking.cli.motion`, :mod:`~rocking.cli.dem`,
+:mod:`~rocking.cli.models`, :mod:`~rocking.cli.catalog` (``motions``, ``blocks``),
+:mod:`~rocking.cli.motion`, :mod:`~rocking.cli.dem`,
 :mod:`~rocking.cli.identify`, :mod:`~rocking.cli.reproduce`,
 :mod:`~rocking.cli.campaign`; each imports only
 :mod:`~rocking.cli.common` (and the library), and this module registers them.
@@ -25,6 +28,8 @@ library or a usage error from click -- as one line ``error: <message>`` on stder
 code 2 (the output guard, :class:`~rocking.errors.OutputTooLargeError`, names
 ``--dt-out``/``--duration``); a numerical failure on valid input
 (:class:`~rocking.errors.SimulationError`) as one line with exit code 1. Never a traceback.
+Warnings of the package (:class:`~rocking.errors.PlausibilityWarning`, a
+:class:`DeprecationWarning` such as ``--motion one-sine``) are one line ``warning: ...``.
 """
 
 from __future__ import annotations
@@ -36,6 +41,7 @@ import click
 
 from .. import __version__
 from .campaign import campaign
+from .catalog import blocks_cmd, motions_cmd
 from .common import CONTEXT, error_report, one_line
 from .dem import dem_params
 from .identify import identify
@@ -56,7 +62,7 @@ def cli():
 
 
 for _command in (params_cmd, simulate_cmd, reproduce_cmd, identify, dem_params, motion,
-                 models_cmd, campaign):
+                 models_cmd, motions_cmd, blocks_cmd, campaign):
     cli.add_command(_command)
 
 _NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())
@@ -74,7 +80,22 @@ def main(argv=None) -> None:
     130 interrupted (Ctrl-C).
     Exits with ``sys.exit(code)``; ``argv`` defaults to ``sys.argv[1:]``.
     """
-    shown, warnings.showwarning = warnings.showwarning, _show_warning
+    with warnings.catch_warnings():  # restores the filters and showwarning
+        warnings.showwarning = _show_warning
+        for module in _DEPRECATION_FROM:
+            warnings.filterwarnings("default", category=DeprecationWarning, module=module)
+        code = _run(argv)
+    sys.exit(code)
+
+
+_DEPRECATION_FROM = ("rocking", "click")
+"""Modules whose DeprecationWarnings the command line shows (hidden by default): ours, and
+click's frames, where a warning of the package attributed to its first caller outside the
+package lands."""
+
+
+def _run(argv) -> int:
+    """:func:`cli` on ``argv``: its exit code, errors printed as one line."""
     try:
         rv = cli.main(args=argv, prog_name="rocking", standalone_mode=False)
         code = rv if isinstance(rv, int) else 0
@@ -106,9 +127,7 @@ def main(argv=None) -> None:
             report = (one_line(e), 1)
         msg, code = report
         click.echo(f"error: {msg}", err=True)
-    finally:
-        warnings.showwarning = shown
-    sys.exit(code)
+    return code
 
 
 __all__ = ["cli", "main"]

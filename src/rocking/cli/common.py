@@ -19,8 +19,7 @@ from pathlib import Path
 import click
 
 from .._validate import as_float
-from ..blocks import PARAM_SETS, Block, specimen_ids
-from ..blocks import specimen as get_specimen
+from ..blocks import PARAM_SETS, specimen_ids
 from ..errors import (
     OutputTooLargeError,
     ParameterError,
@@ -130,67 +129,87 @@ def block_options(classical: bool = False, mass: bool = False):
     return decorate
 
 
+BLOCK_FLAGS = {"specimen": "--specimen", "rectangular": "--width/--height",
+               "classical": "--alpha"}
+"""The block forms of :mod:`rocking.blocks.factory` that the flags give, by the flag that
+tells them."""
+_BLOCK_USAGE = {"specimen": "--specimen N", "rectangular": "--width W --height H",
+                "classical": "--alpha A --p P --mu MU"}
+_BLOCK_UNITS = {"mass": ("kg",), "p": ("1/s", "rad/s")}
+"""Units a bare-number key may carry on the command line (taken off before the factory)."""
+
+
+def _block_form(specimen, width, height, alpha, allow_classical: bool) -> str:
+    """The factory form that the flags describe (exactly one)."""
+    given = [f for f, v in (("specimen", specimen), ("rectangular", width or height),
+                            ("classical", alpha)) if v is not None]
+    if len(given) > 1:
+        raise ParameterError(f"block: give only one of "
+                             f"{' or '.join(BLOCK_FLAGS[f] for f in given)}")
+    if not given:
+        forms = ("specimen", "rectangular", "classical")[:3 if allow_classical else 2]
+        raise ParameterError(f"block: give {', or '.join(_BLOCK_USAGE[f] for f in forms)}")
+    return given[0]
+
+
+def _bare(text, units: tuple[str, ...]) -> str:
+    """``text`` without one of ``units`` at its end (``228kg`` -> ``228``)."""
+    s = str(text).strip()
+    for u in units:
+        if s.lower().endswith(u):
+            return s[: -len(u)].strip()
+    return s
+
+
 def make_block(specimen=None, params=None, width=None, height=None, mass=None, alpha=None,
                p=None, mu=None, allow_classical: bool = False):
-    """``(block, info)`` from exactly one of: specimen, width/height, alpha/p/mu."""
-    sources = [s for s, given in (("--specimen", specimen is not None),
-                                  ("--width/--height", width is not None or height is not None),
-                                  ("--alpha", alpha is not None)) if given]
-    if len(sources) > 1:
-        raise ParameterError(f"block: give only one of {' or '.join(sources)}")
-    if not sources:
-        what = ("--specimen N, --width W --height H, or --alpha A --p P --mu M"
-                if allow_classical else "--specimen N or --width W --height H")
-        raise ParameterError(f"block: give {what}")
-    if params is not None and specimen is None:
-        raise ParameterError("params applies to --specimen only")
-    if mass is not None and specimen is not None:
-        raise ParameterError("mass applies to --width/--height only (the specimens "
-                             "have their Table I mass)")
+    """``(block, info)`` from exactly one of: specimen, width/height, alpha/p/mu, built by
+    :func:`rocking.blocks.factory.make_block` (which checks the values)."""
+    from ..blocks.factory import FORMS
+    from ..blocks.factory import make_block as build
 
-    info: dict = {}
-    if specimen is not None:
-        n = specimen_number(specimen)
-        ps = params or "theoretical"
-        block = get_specimen(n, params=ps)
-        info.update(specimen=n, params=ps)
-    elif width is not None or height is not None:
-        if width is None or height is None:
-            missing = "width" if width is None else "height"
-            raise ParameterError(f"{missing} is required with --width/--height "
-                                 f"(full size, e.g. 0.17 or 170mm)")
-        w = quantity(width, "length", "width", default_unit="m")
-        h = quantity(height, "length", "height", default_unit="m")
-        try:
-            block = Block.rectangular(w, h, mass=number(mass, "mass", ("kg",)),
-                                      mu=None if mu is None else number(mu, "mu"),
-                                      name="rectangular block")
-        except ParameterError as e:  # name what the user gave, not p or the vertices
-            raise ParameterError(_size_problem(width, height, w, h, e)) from None
-        info.update(width=block.width, height=block.height, mass=block.mass)
+    form = _block_form(specimen, width, height, alpha, allow_classical)
+    texts = {k: v for k, v in (("specimen", specimen), ("params", params), ("width", width),
+                               ("height", height), ("mass", mass), ("alpha", alpha),
+                               ("p", p), ("mu", mu)) if v is not None}
+    keys = FORMS[form].Params.names()
+    for k in texts:
+        if k not in keys:
+            where = " or ".join(flag for f, flag in BLOCK_FLAGS.items()
+                                if k in FORMS[f].Params.names())
+            raise ParameterError(f"{k} does not apply to {BLOCK_FLAGS[form]} (only to "
+                                 f"{where})")
+    given = {k: _bare(v, _BLOCK_UNITS.get(k, ())) for k, v in texts.items()}
+    words = {k: (k, v) for k, v in texts.items()}
+    try:
+        checked = FORMS[form].Params(**given)  # the factory's checks, for the info below
+    except ParameterError as e:
+        msg = one_line(in_flag_words(e, words))
+        if " is required" in msg:
+            msg += f"; give {_BLOCK_USAGE[form]}"
+        raise type(e)(msg) from None
+    try:
+        block = build(given)
+    except ParameterError as e:  # valid keys, but no block (sizes beyond floating point)
+        if form != "rectangular":
+            raise
+        raise ParameterError(_size_problem(width, height, e)) from None
+    return block, _block_info(form, checked, block, texts)
+
+
+def _block_info(form: str, checked, block, texts: dict) -> dict:
+    """What summary.json records of the block's source (and the overrides)."""
+    if form == "classical":
+        return {"alpha": block.alpha, "p": block.p, "mu": block.mu}
+    if form == "specimen":
+        info = {"specimen": checked.specimen, "params": checked.params}
     else:
-        if p is None or mu is None:
-            missing = [n for n, v in (("p", p), ("mu", mu)) if v is None]
-            raise ParameterError(f"{' and '.join(missing)} required with --alpha "
-                                 f"(give --alpha A --p P --mu M)")
-        a = quantity(alpha, "angle", "alpha", default_unit="rad")
-        block = Block.from_params(a, number(p, "p", ("1/s", "rad/s")), number(mu, "mu"),
-                                  name="block")
-        info.update(alpha=block.alpha, p=block.p, mu=block.mu)
-        return block, info
-    # overrides on a specimen or a rectangle
-    changes = {}
-    if p is not None:
-        changes["p"] = number(p, "p", ("1/s", "rad/s"))
-    if mu is not None:
-        changes["mu"] = number(mu, "mu")
-    if changes:
-        block = block.with_params(**changes)
-        info.update({f"{k}_override": v for k, v in changes.items()})
-    return block, info
+        info = {"width": block.width, "height": block.height, "mass": block.mass}
+    info.update({f"{k}_override": getattr(checked, k) for k in ("p", "mu") if k in texts})
+    return info
 
 
-def _size_problem(width, height, w: float, h: float, e: ParameterError) -> str:
+def _size_problem(width, height, e: ParameterError) -> str:
     """The message of a block that ``--width``/``--height`` cannot make, in their words.
 
     Sizes so large that ``R``, ``p = sqrt(3 g / 4 R)`` or the area leave floating point
@@ -198,13 +217,41 @@ def _size_problem(width, height, w: float, h: float, e: ParameterError) -> str:
     enclose no area``, naming what the user never gave."""
     given = f"--width {width} --height {height}"
     msg = one_line(e)
-    if msg.startswith(("width", "height", "mass")):
-        return msg
+    w = quantity(width, "length", "width", default_unit="m")
+    h = quantity(height, "length", "height", default_unit="m")
     with_r = math.hypot(w / 2.0, h / 2.0)
     if not (math.isfinite(w * h) and math.isfinite(with_r * with_r) and with_r * with_r > 0):
         return (f"{given}: too large (or too small) a block for floating point ({w:g} m x "
                 f"{h:g} m): give the sizes in m, e.g. --width 0.17 --height 1 or 170mm")
     return f"{given}: {msg}"
+
+
+_HEAD = re.compile(r"([A-Za-z_]\w*(?: or [A-Za-z_]\w*)*)(?=[ :,]|$)")
+
+
+def in_flag_words(e: ParameterError, words: dict) -> ParameterError:
+    """``e`` with the parameter names that start its message in the command line's words.
+
+    ``words`` maps a library name to ``(flag, text typed or None)``: ``period must be in
+    (0, 10000] s, got 0.0`` becomes ``tp must be in (0, 10000] s, got '0'``. Other
+    messages are returned unchanged."""
+    msg = one_line(e)
+    m = _HEAD.match(msg)
+    names = m.group(1).split(" or ") if m else []
+    if not any(n in words for n in names):
+        return e
+    flags = dict.fromkeys(words[n][0] if n in words else n for n in names)
+    head = " or ".join(flags)
+    if len(flags) < len(names):  # amplitude or displacement: both --amp
+        head += f" ({m.group(1)})"
+    out = head + msg[m.end():]
+    text = words[names[0]][1] if len(names) == 1 else None
+    if text is not None:  # the value as typed
+        out = re.sub(r", got [^,;]*$", lambda _: f", got {str(text)!r}", out)
+    elif len(names) > 1:  # "got frequency, period": the names given, as flags
+        out = re.sub(r"; got ([\w, ]+)$", lambda g: "; got " + ", ".join(
+            dict.fromkeys(words.get(n, (n,))[0] for n in g.group(1).split(", "))), out)
+    return type(e)(out)
 
 
 # ----------------------------------------------------------------------------- models
@@ -250,18 +297,18 @@ def option_value(text: str):
     return s
 
 
-def parse_options(pairs) -> dict:
-    """``("KEY=VALUE", ...)`` of a repeatable ``--option`` as a dict (values parsed by
-    :func:`option_value`; names may use ``-`` for ``_``)."""
+def parse_options(pairs, flag: str = "option", example: str = "rtol=1e-8") -> dict:
+    """``("KEY=VALUE", ...)`` of a repeatable ``--option`` (or ``--param``: ``flag``) as a
+    dict (values parsed by :func:`option_value`; names may use ``-`` for ``_``)."""
     out: dict = {}
     for pair in pairs or ():
         key, sep, value = str(pair).partition("=")
         key = key.strip().replace("-", "_")
         if not sep or not key:
-            raise ParameterError(f"option must be KEY=VALUE (e.g. --option rtol=1e-8), "
+            raise ParameterError(f"{flag} must be KEY=VALUE (e.g. --{flag} {example}), "
                                  f"got {pair!r}")
         if key in out:
-            raise ParameterError(f"option {key} given twice")
+            raise ParameterError(f"{flag} {key} given twice")
         out[key] = option_value(value)
     return out
 
@@ -280,19 +327,25 @@ def models_with_option(name: str) -> list[str]:
 
 def options_table(cls) -> list[str]:
     """The options of a model class as text lines (from ``Options.describe()``)."""
-    rows = [(d["name"], _shown(d["default"]), d["unit"] or "-", d["range"] or "-",
-             d["help"]) for d in cls.Options.describe()]
-    if not rows:
+    return describe_table(cls.Options.describe())
+
+
+def describe_table(rows: list[dict], head: str = "option", unset: str = "auto") -> list[str]:
+    """Declared parameters (:func:`rocking.options.describe_field` dicts) as text lines:
+    name, default (``required``, or ``unset`` for None), unit, range, help."""
+    cells = [(d["name"], "required" if d.get("required") else _shown(d["default"], unset),
+              d["unit"] or "-", d["range"] or "-", d["help"]) for d in rows]
+    if not cells:
         return ["  (no options)"]
-    head = ("option", "default", "unit", "range", "help")
-    widths = [max(len(r[i]) for r in (head, *rows)) for i in range(4)]
+    top = (head, "default", "unit", "range", "help")
+    widths = [max(len(r[i]) for r in (top, *cells)) for i in range(4)]
     return ["  " + "  ".join(f"{c:<{w}}" for c, w in zip(r[:4], widths, strict=True))
-            + f"  {r[4]}" for r in (head, *rows)]
+            + f"  {r[4]}" for r in (top, *cells)]
 
 
-def _shown(value) -> str:
+def _shown(value, unset: str = "auto") -> str:
     if value is None:
-        return "auto"
+        return unset
     if isinstance(value, float):
         return f"{value:g}"
     return str(value)
@@ -313,31 +366,34 @@ def _option_words(msg: str, units, dt) -> str:
     return msg
 
 
-def read_record_arg(M, path, name: str, units, dt):
-    """``(record, source)`` from a file, or from the records shipped with the package by
-    name (``M`` is :mod:`rocking.motions`, passed in to keep numba out of this module).
+def read_record_arg(path, name: str, units, dt):
+    """``(record, source)`` from a file (catalog kind ``record``), or from the records
+    shipped with the package by name (kind ``builtin``).
 
     ``units`` None: the user gave no ``--units``; a file is read in g (the default) and a
-    message says so rather than naming a ``units='g'`` the user never wrote."""
-    from ..units import ACCELERATION
+    message says so rather than naming a ``units='g'`` the user never wrote. ``dt`` may be
+    text (``10ms``) or seconds."""
+    from ..motions import catalog  # lazy: the motions import numba
+    from ..motions.io import builtin_records
 
-    if units is not None and units not in ACCELERATION:
-        raise ParameterError(f"units must be one of {', '.join(ACCELERATION)}, got {units!r}")
+    record = catalog.KINDS["record"]
+    checked = record.params(file=str(path), units="g" if units is None else units, dt=dt)
     p = Path(path)
     if not p.exists():
-        known = M.builtin_records(three_component=True)
+        known = builtin_records(three_component=True)
         stem = p.name[:-4] if p.name.upper().endswith(".AT2") else p.name
-        if stem.upper() in (k.upper() for k in known):
+        match = [k for k in known if k.upper() == stem.upper()]
+        if match:
             if units not in (None, "g") or dt is not None:
                 raise ParameterError(f"{name}: {stem} is a built-in record (PEER .AT2, in g): "
                                      "--units and --dt apply to record files only")
-            return M.load_builtin(stem), f"{stem} (built-in)"
+            return catalog.build("builtin", name=match[0]), f"{stem} (built-in)"
         raise RecordError(f"{name}: no such file or built-in record: {path} (built-in: "
                           f"{', '.join(known)})")
     if p.is_dir():
         raise RecordError(f"{name}: {path} is a directory, not a record file")
     try:
-        return M.Record.from_file(p, units="g" if units is None else units, dt=dt), str(path)
+        return record.make(checked, catalog.Context()), str(path)
     except RockingError as e:
         msg = _option_words(str(e), units, dt)
         if msg == str(e):
@@ -384,5 +440,6 @@ def error_report(e: BaseException) -> tuple[str, int] | None:
 __all__ = ["CONTEXT", "quantity", "number", "check_positive", "positive_quantity", "integer",
            "specimen_number", "json_default", "block_options", "make_block", "model_classes",
            "ModelChoice", "option_value", "parse_options", "validate_options",
-           "models_with_option", "options_table", "one_line", "read_record_arg",
-           "output_too_large_message", "error_report"]
+           "models_with_option", "options_table", "describe_table", "one_line",
+           "read_record_arg", "output_too_large_message", "error_report", "in_flag_words",
+           "BLOCK_FLAGS"]

@@ -244,7 +244,6 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
     """
     from matplotlib.figure import Figure
 
-    from .. import motions as M
     from ..motions.ec8 import paper_target
     from ..motions.spectra import log_periods, plot_spectra, response_spectra
 
@@ -253,7 +252,7 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
     n = integer(npts, "n", 2, 10000)
     step = _time(dt, "dt")
     p = Path(file)
-    rec, _ = read_record_arg(M, p, "file", units, step)  # messages in option words
+    rec, _ = read_record_arg(p, "file", units, step)  # messages in option words
     T = log_periods(t_lo, t_hi, n)
     s = response_spectra(rec, T, zeta)
     im = rec.intensity_measures()
@@ -305,13 +304,11 @@ def show_cmd(file, vertical, units, dt, plot_path, no_plot):
     """
     from matplotlib.figure import Figure
 
-    from .. import motions as M
-
     step = _time(dt, "dt")
-    h, hs = read_record_arg(M, file, "file", units, step)
+    h, hs = read_record_arg(file, "file", units, step)
     comps = [("horizontal", h, hs)]
     if vertical is not None:
-        v, vs = read_record_arg(M, vertical, "vertical", units, step)
+        v, vs = read_record_arg(vertical, "vertical", units, step)
         comps.append(("vertical", v, vs))
     for label, rec, src in comps:
         im = rec.intensity_measures()

@@ -16,25 +16,31 @@ the model validates the options. The DEM flags ``--friction-angle``, ``--stiffne
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
+import warnings
 from pathlib import Path
 
 import click
 
 from .._atomic import atomic_write
-from .._validate import as_float, in_range
+from .._validate import as_float
 from ..errors import ParameterError
+from ..options import check_option
 from ..units import ACCELERATION, LENGTH, G, split_quantity
 from .common import (
     CONTEXT,
     ModelChoice,
     block_options,
     check_positive,
+    in_flag_words,
     json_default,
     make_block,
+    model_classes,
     models_with_option,
     number,
+    one_line,
     parse_options,
     positive_quantity,
     quantity,
@@ -42,176 +48,250 @@ from .common import (
     validate_options,
 )
 
-PULSES = ("one-sine", "one-cosine", "half-sine", "rectangular", "ricker")
 HARMONIC = ("sine", "hanning")
-MOTION_CHOICES = (*HARMONIC, *PULSES, "free", "record")
+PULSES = ("one_sine", "one_cosine", "half_sine", "rectangular")
+CATALOG_MOTIONS = (*HARMONIC, *PULSES, "ricker", "mavroeidis_papageorgiou")
+"""The kinds of :data:`rocking.motions.catalog.KINDS` that ``--motion`` names (``record``
+too, with ``--record``; ``earthquake`` with ``--earthquake``)."""
+MOTION_CHOICES = (*CATALOG_MOTIONS, "record", "free")
+FLAG_OF = {"frequency": "freq", "period": "tp", "amplitude": "amp", "displacement": "amp",
+           "duration": "duration"}
+"""The catalog parameters that have a flag of their own (the others: ``--param``)."""
 UNITS_HELP = "g, m/s^2 or cm/s^2"
 
 
+class MotionChoice(click.ParamType):
+    """``--motion``: a name of :data:`MOTION_CHOICES`, or an old spelling of one
+    (``one-sine``; resolved by the catalog, with a warning)."""
+
+    name = "motion"
+
+    def get_metavar(self, param, ctx=None):  # click >= 8.2 passes ctx
+        return "[" + "|".join(MOTION_CHOICES) + "]"
+
+    def convert(self, value, param, ctx):
+        if value in MOTION_CHOICES:
+            return value
+        from ..motions.catalog import ALIASES  # lazy: the motions import numba
+
+        if ALIASES.get(value) in MOTION_CHOICES:
+            return value
+        self.fail(f"{value!r} is not one of {', '.join(MOTION_CHOICES)}", param, ctx)
+
+
 # ----------------------------------------------------------------------------- motions
-def amplitude(text, motion: str) -> tuple[str, float]:
-    """``--amp`` as ``("length", m)`` or ``("acceleration", m/s^2)``, checked >= 0."""
+def _amp_param(text, kind: str) -> str:
+    """The catalog parameter that ``--amp`` sets: ``displacement`` (a length, sine and
+    hanning) or ``amplitude`` (an acceleration). A unit is required: ``--amp 5`` could be
+    5 m or 5 mm."""
     parts = split_quantity(text)
-    if parts is None:  # not a number: let parse_quantity word the error
-        quantity(text, "length" if motion in HARMONIC else "acceleration", "amp")
-    unit = parts[1]
-    if motion in HARMONIC:
-        hint = ("a table displacement with a length unit such as 5mm "
-                "(or an acceleration such as 0.3g)")
-        if unit in ACCELERATION:
-            kind = "acceleration"
-        elif not unit:
-            raise ParameterError(f"amp needs a unit for --motion {motion}: {hint}; got {text!r}")
-        else:
-            kind = "length"
-    else:
-        hint = "an acceleration with a unit such as 0.3g or 2.8m/s2"
-        if unit in LENGTH:
-            raise ParameterError(f"amp for --motion {motion} is a peak acceleration, not a "
-                                 f"length: give {hint}; got {text!r}")
+    unit = "?" if parts is None else parts[1]  # "?": not a number, the catalog says so
+    if kind in HARMONIC:
         if not unit:
-            raise ParameterError(f"amp needs a unit for --motion {motion}: {hint}; got {text!r}")
-        kind = "acceleration"
-    value = quantity(text, kind, "amp")
-    if value < 0:
-        raise ParameterError(f"amp must be >= 0: {hint}; got {text!r}")
-    return kind, value
+            raise ParameterError(f"amp needs a unit for --motion {kind}: a table displacement "
+                                 "with a length unit such as 5mm (or an acceleration such as "
+                                 f"0.3g); got {text!r}")
+        return "amplitude" if unit in ACCELERATION else "displacement"
+    hint = "an acceleration with a unit such as 0.3g or 2.8m/s2"
+    if unit in LENGTH:
+        raise ParameterError(f"amp for --motion {kind} is a peak acceleration, not a length: "
+                             f"give {hint}; got {text!r}")
+    if not unit:
+        raise ParameterError(f"amp needs a unit for --motion {kind}: {hint}; got {text!r}")
+    return "amplitude"
 
 
-def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
-                earthquake=None, vertical=None, vertical_factor=None):
-    """``(motion or None, description dict, duration for simulate)``."""
-    from .. import motions as M  # lazy: the motions import numba
+def _catalog_values(kind: str, freq, amp, tp, duration, pairs) -> tuple[dict, dict]:
+    """The catalog parameters of ``kind`` from the flags and the ``--param`` pairs, and
+    the words of messages (:func:`~rocking.cli.common.in_flag_words`)."""
+    from ..motions.catalog import KINDS
 
+    names = KINDS[kind].Params.names()
+    flags = {"frequency": freq, "period": tp, "duration": duration}
+    if amp is not None:
+        flags[_amp_param(amp, kind)] = amp
+    values = {k: v for k, v in flags.items() if v is not None}
+    for key in values:
+        if key not in names:
+            raise ParameterError(f"{FLAG_OF[key]} does not apply to --motion {kind}")
+    extra = parse_options(pairs, flag="param", example="gamma=2")
+    for key in extra:
+        if key in values:
+            raise ParameterError(f"{key} given twice (--{FLAG_OF[key]} and --param "
+                                 f"{key}=...)")
+    words = {k: (f, flags.get(k)) for k, f in FLAG_OF.items() if k not in extra}
+    return {**values, **extra}, words
+
+
+def _build(kind: str, values: dict, words: dict):
+    """``(checked parameters, motion)`` of a catalog kind; errors in the flags' words."""
+    from ..motions import catalog
+
+    entry = catalog.KINDS[kind]
+    try:
+        p = entry.params(**values)
+        return p, entry.make(p, catalog.Context())
+    except ParameterError as e:
+        msg = one_line(in_flag_words(e, words))
+        name = msg.split(" ", 1)[0]
+        if msg.startswith(f"{name} is required") and name not in FLAG_OF.values():
+            msg += f"; give --param {name}=VALUE"  # a parameter without a flag of its own
+        raise type(e)(msg) from None
+
+
+def _describe(kind: str, m) -> dict:
+    """The summary.json description of a catalog motion (SI units)."""
+    d: dict = {"type": kind}
+    if kind in HARMONIC:
+        d.update(freq=m.freq, amplitude=m.amplitude,
+                 acc_amplitude=m.amplitude * (2.0 * math.pi * m.freq) ** 2)
+        if getattr(m, "phase", 0.0):
+            d["phase"] = m.phase
+    elif kind in PULSES:
+        d.update(amplitude=m.amplitude, tp=m.length)
+        if m.t0:
+            d["t0"] = m.t0
+    elif kind == "ricker":
+        d.update(amplitude=m.amplitude, fp=m.fp, tc=m.tc)
+    else:  # mavroeidis_papageorgiou
+        d.update(amplitude=m.amplitude, fp=m.fp, gamma=m.gamma, nu=m.nu, t0=m.t0)
+    d["duration"] = m.duration
+    return d
+
+
+def _catalog_motion(kind: str, freq, amp, tp, duration, pairs):
+    """``(motion, description, duration for simulate)`` of a catalog kind: for sine and
+    hanning ``--duration`` is the motion's length, for pulses the run's."""
+    values, words = _catalog_values(kind, freq, amp, tp, duration, pairs)
+    _, m = _build(kind, values, words)
+    run = m.duration if values.get("duration") is not None and kind not in HARMONIC \
+        else None
+    return m, _describe(kind, m), run
+
+
+def _earthquake(text):
+    """One of the paper's earthquakes (catalog kind ``earthquake``)."""
+    p, m = _build("earthquake", {"number": text}, {"number": ("earthquake", text)})
+    return m, {"type": "earthquake", "number": p.number, "dt": m.dt, "pga": m.pga}
+
+
+def _record(record, units, dt):
+    """A record file or a built-in record (catalog kinds ``record``, ``builtin``)."""
+    rec, src = read_record_arg(record, "record", units, dt)
+    return rec, {"type": "record", "file": src, "units": "g" if units is None else units,
+                 "dt": rec.dt, "n": len(rec), "pga": rec.pga}
+
+
+def _ground(rec, desc: dict, vertical, vertical_factor, units, dt, lf: float):
+    """``--record`` and ``--vertical`` as a GroundMotion: the horizontal component times the
+    load factor, the vertical one times ``--vertical-factor`` (default the load factor)."""
+    from ..motions import GroundMotion
+
+    vrec, vsrc = read_record_arg(vertical, "vertical", units, dt)
+    fv = None if vertical_factor is None else as_float("vertical-factor", vertical_factor)
+    m = GroundMotion(rec, vrec).scaled(lf, vertical=fv)
+    desc.update(vertical=vsrc, vertical_factor=lf if fv is None else fv,
+                pga=m.pga, pga_vertical=m.pga_vertical,  # as run (scaled)
+                repr=f"{m.horizontal!r} + vertical {m.vertical!r}", load_factor=lf)
+    return m, desc
+
+
+def _scaled(m, desc: dict, lf: float):
+    """The motion times the load factor, and its description as run."""
+    if lf != 1.0:
+        m = m.scaled(lf)
+    if "pga" in desc:
+        desc["pga"] = m.pga
+    desc.update(load_factor=lf, repr=repr(m))
+    return m, desc
+
+
+def _kind_name(motion: str) -> str:
+    """The catalog's name of ``--motion`` (an old spelling warns)."""
+    from ..motions.catalog import kind
+
+    return kind(motion, param="motion").name
+
+
+def _source(motion, record, earthquake, vertical, vertical_factor) -> str:
+    """What the flags ask for: a catalog kind, ``record``, ``free`` or ``earthquake``."""
     if vertical is None and vertical_factor is not None:
         raise ParameterError("vertical-factor applies with --vertical V.AT2 only")
     if vertical is not None and record is None:
         raise ParameterError("vertical: --vertical needs the horizontal --record FILE")
-
     if earthquake is not None:
         if motion is not None or record is not None:
             raise ParameterError("earthquake: --earthquake cannot be combined with --motion "
                                  "or --record")
-        for name, val in (("freq", freq), ("amp", amp), ("tp", tp), ("units", units),
-                          ("dt", dt)):
-            if val is not None:
-                raise ParameterError(f"{name} does not apply to --earthquake")
-        from ..motions.synthetic import earthquake_motion
-
-        try:
-            n = int(str(earthquake))
-        except ValueError:
-            raise ParameterError(f"earthquake must be a whole number from 1 to 30, "
-                                 f"got {earthquake!r}") from None
-        lf = 1.0 if load_factor is None else as_float("load-factor", load_factor)
-        m = earthquake_motion(n, lf)
-        # default (None): the run goes on after the record until the block has settled
-        dur = positive_quantity(duration, "time", "duration", "s", "s")
-        desc = {"type": "earthquake", "number": n, "load_factor": lf, "dt": m.dt,
-                "pga": m.pga, "repr": repr(m)}
-        return m, desc, dur
-
+        return "earthquake"
     if motion is None:
         if record is None:
-            raise ParameterError(f"motion: give --motion ({', '.join(MOTION_CHOICES[:-1])}) "
+            raise ParameterError(f"motion: give --motion ({', '.join(MOTION_CHOICES)}) "
                                  f"or --record FILE")
-        motion = "record"
-    if motion == "record" and record is None:
+        return "record"
+    name = "free" if motion == "free" else _kind_name(motion)
+    if name == "record" and record is None:
         raise ParameterError("record: --motion record needs --record FILE")
-    if record is not None and motion != "record":
-        raise ParameterError(f"record: --record cannot be combined with --motion {motion}")
-    if motion != "record":
-        for name, val in (("units", units), ("dt", dt)):
-            if val is not None:
-                raise ParameterError(f"{name} applies to --record only")
+    if record is not None and name != "record":
+        raise ParameterError(f"record: --record cannot be combined with --motion {name}")
+    return name
 
-    f = positive_quantity(freq, "frequency", "freq", "hz", "Hz")
-    tpv = positive_quantity(tp, "time", "tp", "s", "s")
-    dur = positive_quantity(duration, "time", "duration", "s", "s")
+
+def _refuse(source: str, given: dict) -> None:
+    """An error for a flag that does not apply to the motion."""
+    applies = {"free": (), "earthquake": (), "record": ("units", "dt")}.get(
+        source, ("freq", "amp", "tp", "param"))
+    label = "--earthquake" if source == "earthquake" else f"--motion {source}"
+    for flag, value in given.items():
+        if value is None or flag in applies:
+            continue
+        if flag in ("units", "dt"):
+            raise ParameterError(f"{flag} applies to --record only")
+        raise ParameterError(f"{flag} does not apply to {label}")
+
+
+def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
+                earthquake=None, vertical=None, vertical_factor=None, params=()):
+    """``(motion or None, description dict, duration for simulate)`` from the flags, built
+    by :mod:`rocking.motions.catalog` (``params``: the ``--param KEY=VALUE`` pairs)."""
+    source = _source(motion, record, earthquake, vertical, vertical_factor)
+    _refuse(source, {"freq": freq, "amp": amp, "tp": tp, "param": params or None,
+                     "units": units, "dt": dt})
     lf = 1.0 if load_factor is None else as_float("load-factor", load_factor)
-
-    def unused(*names):
-        given = {"freq": freq, "amp": amp, "tp": tp}
-        for n in names:
-            if given[n] is not None:
-                raise ParameterError(f"{n} does not apply to --motion {motion}")
-
-    def need(name, value, example):
-        if value is None:
-            raise ParameterError(f"{name} is required for --motion {motion} (e.g. {example})")
-
-    desc: dict = {"type": motion}
-    if motion == "free":
-        unused("freq", "amp", "tp")  # no --duration: until at rest or overturned
-        desc["load_factor"] = lf
-        return None, desc, dur
-
-    if motion == "record":
-        unused("freq", "amp", "tp")
-        dtv = positive_quantity(dt, "time", "dt", "s", "s")
-        u = "g" if units is None else units
-        rec, src = read_record_arg(M, record, "record", units, dtv)
-        m = rec
-        desc.update(file=src, units=u, dt=rec.dt, n=len(rec), pga=rec.pga)
-        if vertical is not None:
-            vrec, vsrc = read_record_arg(M, vertical, "vertical", units, dtv)
-            fv = (None if vertical_factor is None
-                  else as_float("vertical-factor", vertical_factor))
-            lf0 = 1.0 if load_factor is None else as_float("load-factor", load_factor)
-            m = M.GroundMotion(rec, vrec).scaled(lf0, vertical=fv)
-            desc.update(vertical=vsrc, vertical_factor=lf0 if fv is None else fv,
-                        pga=m.pga, pga_vertical=m.pga_vertical,  # as run (scaled)
-                        repr=f"{m.horizontal!r} + vertical {m.vertical!r}")
-            desc["load_factor"] = lf0
-            return m, desc, dur
-    elif motion in HARMONIC:
-        unused("tp")
-        need("freq", f, "--freq 5Hz")
-        need("amp", amp, "--amp 5mm")
-        if dur is None:
-            raise ParameterError(f"duration is required for --motion {motion} (s > 0), "
-                                 f"e.g. --duration 25")
-        kind, a = amplitude(amp, motion)
-        cls = M.Sine if motion == "sine" else M.HanningSine
-        if kind == "acceleration":
-            X = a / (2.0 * math.pi * f) ** 2
-        else:
-            X = a
-        m = cls(f, X, dur)
-        desc.update(freq=f, amplitude=X, acc_amplitude=X * (2.0 * math.pi * f) ** 2,
-                    duration=dur)
-        dur = None
+    if source in CATALOG_MOTIONS:
+        m, desc, run = _catalog_motion(source, freq, amp, tp, duration, params)
+        return (*_scaled(m, desc, lf), run)
+    # default (None): the run goes on after the motion until the block has settled
+    run = positive_quantity(duration, "time", "duration", "s", "s")
+    if source == "free":
+        return None, {"type": "free", "load_factor": lf}, run
+    if source == "earthquake":
+        m, desc = _earthquake(earthquake)
     else:
-        need("amp", amp, "--amp 0.3g")
-        _, a = amplitude(amp, motion)
-        if motion == "ricker":
-            if f is not None and tpv is not None:
-                raise ParameterError("ricker: give --freq (peak frequency) or --tp (= 1/freq), "
-                                     "not both")
-            if f is None and tpv is None:
-                raise ParameterError("freq is required for --motion ricker (peak frequency, "
-                                     "e.g. --freq 2Hz; or --tp 0.5s)")
-            fp = f if f is not None else 1.0 / tpv
-            m = M.Ricker(a, fp, duration=dur)
-            desc.update(amplitude=a, fp=fp, tc=m.tc, duration=m.duration)
-        else:
-            unused("freq")
-            need("tp", tpv, "--tp 0.5s")
-            cls = {"one-sine": M.OneSine, "one-cosine": M.OneCosine,
-                   "half-sine": M.HalfSine, "rectangular": M.Rectangular}[motion]
-            m = cls(a, tpv, duration=dur)
-            desc.update(amplitude=a, tp=tpv, duration=m.duration)
-        # a pulse's --duration is the run's length exactly (None: until settled)
-    if lf != 1.0:
-        m = m.scaled(lf)
-    if "pga" in desc:
-        desc["pga"] = m.pga  # as run, with the load factor
-    desc["load_factor"] = lf
-    desc["repr"] = repr(m)
-    return m, desc, dur
+        m, desc = _record(record, units, dt)
+        if vertical is not None:
+            return (*_ground(m, desc, vertical, vertical_factor, units, dt, lf), run)
+    return (*_scaled(m, desc, lf), run)
 
 
 # ----------------------------------------------------------------------------- model options
+def _friction_angle(model: str, text) -> float:
+    """``--friction-angle 30deg`` (or ``0.52rad``) in rad, checked by the model's declared
+    option; a bare number is read in degrees, deprecated (a warning)."""
+    s = str(text).strip()
+    parts = split_quantity(s)
+    if parts is not None and not parts[1]:
+        warnings.warn(f"friction-angle: a bare number is read in degrees, which is "
+                      f"deprecated: write {s}deg (or the angle in rad, e.g. "
+                      f"{math.radians(parts[0]):.4g}rad)", DeprecationWarning, stacklevel=3)
+        s += "deg"
+    meta = {f.name: f.metadata for f in dataclasses.fields(model_classes()[model].Options)}
+    try:
+        return check_option("friction_angle", s, meta["friction_angle"])
+    except ParameterError as e:
+        raise in_flag_words(e, {"friction_angle": ("friction-angle", text)}) from None
+
+
 def flag_options(model: str, friction_angle, stiffness, damping) -> dict:
     """The options given by their own flags, parsed; an error for a model without them."""
     given = {"friction_angle": friction_angle, "stiffness": stiffness, "damping": damping}
@@ -224,8 +304,7 @@ def flag_options(model: str, friction_angle, stiffness, damping) -> dict:
         if model not in owners:
             raise ParameterError(f"{flag} applies to --model {' or '.join(owners)} only")
         if key == "friction_angle":
-            opts[key] = in_range(flag, number(val, flag, ("deg",)), 0.0, 90.0,
-                                 shown="[0, 90) degrees", lo_open=False)
+            opts[key] = _friction_angle(model, val)
         elif key == "stiffness":
             opts[key] = check_positive(number(val, flag, ("n/m",)), flag, "N/m")
         else:
@@ -262,13 +341,18 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
 @click.option("--option", "model_opts", multiple=True, metavar="KEY=VALUE",
               help="A model option, repeatable (e.g. --option rtol=1e-9); "
                    "'rocking models' lists them.")
-@click.option("--motion", type=click.Choice(MOTION_CHOICES),
-              help="Base motion (--record FILE implies record).")
-@click.option("--freq", metavar="F", help="Frequency (Hz): sine/hanning; ricker peak frequency.")
+@click.option("--motion", type=MotionChoice(),
+              help="Base motion, a kind of 'rocking motions' (--record FILE implies record).")
+@click.option("--freq", metavar="F",
+              help="Frequency (Hz): sine, hanning, mavroeidis_papageorgiou; ricker: peak "
+                   "frequency.")
 @click.option("--amp", metavar="AMP",
-              help="sine/hanning: table displacement with a unit (5mm); "
-                   "pulses: peak acceleration (0.3g, 2.8m/s2).")
-@click.option("--tp", metavar="T", help="Pulse period/length (s).")
+              help="sine/hanning: table displacement with a unit (5mm) or peak acceleration "
+                   "(0.3g); pulses: peak acceleration (0.3g, 2.8m/s2).")
+@click.option("--tp", metavar="T", help="Pulse period/length (s); ricker: 1 / peak frequency.")
+@click.option("--param", "motion_params", multiple=True, metavar="KEY=VALUE",
+              help="A parameter of the motion kind, repeatable (e.g. --param gamma=2 --param "
+                   "nu=0); 'rocking motions KIND' lists them.")
 @click.option("--duration", metavar="T",
               help="Simulated time (s), exactly. Default: the motion, then free motion "
                    "until the block is at rest or has overturned (at most --max-free-time "
@@ -292,8 +376,9 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
 @click.option("--omega0", metavar="W", help="Initial angular velocity (rad/s).")
 @click.option("--linear", is_flag=True, help="Small-angle (linearised) equation of motion.")
 @click.option("--dt-out", metavar="DT", help="Output time step (s; default 0.002).")
-@click.option("--friction-angle", metavar="DEG",
-              help="dem: contact friction angle (degrees, default 30).")
+@click.option("--friction-angle", metavar="ANGLE",
+              help="dem: contact friction angle with its unit, e.g. 30deg or 0.52rad "
+                   "(default 30deg; a bare number is degrees, deprecated).")
 @click.option("--stiffness", metavar="K",
               help="dem: normal contact stiffness per contact point (N/m; default physical, "
                    "a settlement of 1e-7 of the height).")
@@ -303,16 +388,17 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
 @click.option("--out", type=click.Path(file_okay=False),
               help="Write response.csv, summary.json and theta.png to this folder.")
 def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model_opts, motion,
-                 freq, amp, tp, duration, max_free_time, record, vertical, vertical_factor,
-                 units, dt, earthquake, load_factor, theta0, omega0, linear, friction_angle,
-                 stiffness, damping, dt_out, out):
+                 freq, amp, tp, motion_params, duration, max_free_time, record, vertical,
+                 vertical_factor, units, dt, earthquake, load_factor, theta0, omega0, linear,
+                 friction_angle, stiffness, damping, dt_out, out):
     """Simulate one block under one base motion."""
     from ..models import simulate  # lazy: the models import numba
 
     block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
                               allow_classical=True)
     mot, mdesc, sim_dur = make_motion(motion, freq, amp, tp, duration, record, units, dt,
-                                      load_factor, earthquake, vertical, vertical_factor)
+                                      load_factor, earthquake, vertical, vertical_factor,
+                                      params=motion_params)
     options = model_options(model, model_opts, friction_angle, stiffness, damping)
     linear = bool(linear) or bool(options.pop("linear", False))  # --linear = --option linear=1
     th0 = quantity(theta0, "angle", "theta0", default_unit="rad")
@@ -389,8 +475,11 @@ def _motion_title(d: dict) -> str:
                 f"({d['acc_amplitude'] / G:.3g} g){tail}")
     if kind == "ricker":
         return f"Ricker pulse {d['amplitude'] / G:.3g} g, fp {d['fp']:g} Hz{tail}"
+    if kind == "mavroeidis_papageorgiou":
+        return (f"Mavroeidis-Papageorgiou pulse {d['amplitude'] / G:.3g} g, fp {d['fp']:g} Hz, "
+                f"gamma {d['gamma']:g}{tail}")
     if kind in PULSES:
-        return f"{kind} pulse {d['amplitude'] / G:.3g} g, {d['tp']:g} s{tail}"
+        return f"{kind.replace('_', '-')} pulse {d['amplitude'] / G:.3g} g, {d['tp']:g} s{tail}"
     if kind == "record" and "vertical" in d:
         vf = d.get("vertical_factor", lf)
         tail = (f", load factor {lf:g}" + (f" ({vf:g} vertical)" if vf != lf else "")
@@ -413,4 +502,4 @@ def _theta_png(resp, block, mdesc, path):
     save_figure(fig, path)
 
 
-__all__ = ["simulate_cmd", "make_motion", "amplitude", "model_options", "MOTION_CHOICES"]
+__all__ = ["simulate_cmd", "make_motion", "model_options", "MOTION_CHOICES", "MotionChoice"]

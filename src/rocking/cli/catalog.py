@@ -1,0 +1,87 @@
+"""``rocking motions`` and ``rocking blocks``: the motion kinds of
+:mod:`rocking.motions.catalog` and the block forms of :mod:`rocking.blocks.factory`, with
+their declared parameters (name, default, unit, range, help).
+
+::
+
+    rocking motions              # every kind and its parameters
+    rocking motions ricker       # one kind
+    rocking blocks [FORM] [--json]
+"""
+
+from __future__ import annotations
+
+import json
+
+import click
+
+from ..errors import ParameterError
+from .common import CONTEXT, describe_table, json_default
+
+
+def _jsonable(rows: list[dict]) -> list[dict]:
+    """Declarations with the Python type as its name (``float``)."""
+    return [{**d, "kind": getattr(d.get("kind"), "__name__", str(d.get("kind")))}
+            for d in rows]
+
+
+def motions_dict(name: str | None = None) -> list[dict]:
+    """One dict per motion kind (or the kind ``name``): ``name``, ``summary``, ``aliases``,
+    ``sweep``, ``parameters``."""
+    from ..motions import catalog  # lazy: the motions import numba
+
+    kinds = [catalog.kind(name)] if name is not None else list(catalog.KINDS.values())
+    return [{"name": k.name, "summary": k.summary, "aliases": list(k.aliases),
+             "sweep": list(k.sweep), "parameters": _jsonable(k.describe())} for k in kinds]
+
+
+def blocks_dict(name: str | None = None) -> list[dict]:
+    """One dict per block form (or the form ``name``): ``name``, ``key``, ``summary``,
+    ``keys``."""
+    from ..blocks.factory import FORMS
+
+    if name is not None and name not in FORMS:
+        raise ParameterError(f"form must be one of {', '.join(FORMS)}; got {name!r}")
+    forms = [FORMS[name]] if name is not None else list(FORMS.values())
+    return [{"name": f.name, "key": f.key, "summary": f.summary,
+             "keys": _jsonable(f.describe())} for f in forms]
+
+
+def _text(title: str, rows: list[dict], head: str) -> str:
+    return "\n".join([title, *describe_table(rows, head, unset="-")])
+
+
+@click.command("motions", context_settings=CONTEXT)
+@click.argument("kind", required=False)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+def motions_cmd(kind, as_json):
+    """List the motion kinds and their parameters (or those of KIND)."""
+    kinds = motions_dict(kind)
+    if as_json:
+        click.echo(json.dumps(kinds, indent=2, default=json_default))
+        return
+    click.echo("\n\n".join(
+        _text(f"{k['name']}: {k['summary']}"
+              + (f" (old spelling: {', '.join(k['aliases'])})" if k["aliases"] else ""),
+              k["parameters"], "parameter") for k in kinds))
+    click.echo("\nsimulate: --motion KIND, with --amp, --freq, --tp, --duration or --param "
+               "KEY=VALUE (numbers in the unit shown, or with a unit: 0.3g, 5mm, 2Hz); "
+               "a campaign spec: [motions] kind = KIND and the parameters by name")
+
+
+@click.command("blocks", context_settings=CONTEXT)
+@click.argument("form", required=False)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+def blocks_cmd(form, as_json):
+    """List the block forms and their keys (or those of FORM)."""
+    forms = blocks_dict(form)
+    if as_json:
+        click.echo(json.dumps(forms, indent=2, default=json_default))
+        return
+    click.echo("\n\n".join(_text(f"{f['name']}: {f['summary']} (told by the key {f['key']})",
+                                 f["keys"], "key") for f in forms))
+    click.echo("\nsimulate/params: --specimen N, --width W --height H or --alpha A --p P "
+               "--mu MU; a campaign spec: [[blocks]] with the keys by name")
+
+
+__all__ = ["motions_cmd", "blocks_cmd", "motions_dict", "blocks_dict"]
