@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-from cli_helpers import run_main
+from cli_helpers import assert_one_line_error, run_main
 from click.testing import CliRunner
 
 import rocking
@@ -39,15 +39,6 @@ def rocking_command() -> list[str]:
 def run_subprocess(*args):
     return subprocess.run([*rocking_command(), *map(str, args)], capture_output=True,
                           text=True, timeout=120)
-
-
-def assert_one_line_error(code, err, name):
-    assert code == 2, err
-    assert "Traceback" not in err
-    lines = err.strip("\n").splitlines()
-    assert len(lines) == 1, err
-    assert lines[0].startswith("error: "), err
-    assert name.lower() in lines[0].lower(), (name, err)
 
 
 SINE = ["--motion", "sine", "--freq", "5", "--amp", "5mm", "--duration", "2"]

@@ -64,9 +64,11 @@ def motions_cmd(kind, as_json):
         _text(f"{k['name']}: {k['summary']}"
               + (f" (old spelling: {', '.join(k['aliases'])})" if k["aliases"] else ""),
               k["parameters"], "parameter") for k in kinds))
-    click.echo("\nsimulate: --motion KIND, with --amp, --freq, --tp, --duration or --param "
-               "KEY=VALUE (numbers in the unit shown, or with a unit: 0.3g, 5mm, 2Hz); "
-               "a campaign spec: [motions] kind = KIND and the parameters by name")
+    click.echo("\nsimulate --motion KIND: --amp is amplitude (for sine and hanning, "
+               "displacement if a length: 5mm), --freq frequency, --tp period, --duration "
+               "duration, --param KEY=VALUE any parameter; numbers in the unit shown or "
+               "with a unit (0.3g, 5mm, 2Hz). A campaign spec: [motions] kind = KIND and the "
+               "parameters by name.")
 
 
 @click.command("blocks", context_settings=CONTEXT)

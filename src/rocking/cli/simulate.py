@@ -7,6 +7,17 @@
     rocking simulate --specimen 2 --record quake.AT2 --units g --load-factor 1.2 --out out/
     rocking simulate --specimen 2 --model ccrr --option rtol=1e-9 --motion free \\
         --theta0 0.05 --duration 5
+    rocking simulate --specimen 1 --motion mavroeidis_papageorgiou --amp 0.3g --freq 1 \\
+        --param gamma=2 --param nu=0
+
+Motions are built by :mod:`rocking.motions.catalog` (``rocking motions`` lists the kinds):
+``--motion`` is a kind's name, ``--amp``, ``--freq``, ``--tp`` and ``--duration`` set its
+``amplitude`` (or ``displacement``), ``frequency``, ``period`` and ``duration``, and
+``--param KEY=VALUE`` any of its parameters. ``--record`` is the kind ``record`` (or
+``builtin``, by name), ``--earthquake N`` the kind ``earthquake``; ``--record`` with
+``--vertical`` is a GroundMotion of two such records (for two files, the kind
+``ground_motion``). Blocks are built by :func:`rocking.blocks.factory.make_block`
+(:func:`rocking.cli.common.make_block`).
 
 ``--model`` is a name of :data:`rocking.models.MODELS` and ``--option KEY=VALUE``
 (repeatable) passes an option of that model's ``Options`` (``rocking models`` lists them);
