@@ -40,7 +40,7 @@ mu = 0.95
 
 [motions]
 kind = "builtin"
-names = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]
+name = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]
 load_factors = [0.4, 0.9, 1.6]
 
 [uncertain]
@@ -151,8 +151,9 @@ model = "housner"
 specimen = 3
 params = "experimental"
 [motions]
-kind = "sine_grid"
-frequencies = [1.0, 2.5]
+kind = "sine"
+frequency = [1.0, 2.5]
+amplitude = 1.0
 cycles = 4
 load_factors = {start = 0.5, stop = 3.0, num = 6}
 """
@@ -184,7 +185,7 @@ height = 0.8
 [motions]
 kind = "stochastic"
 n = 3
-record_duration = 20.0
+duration = 20.0
 im = "pga"
 levels = [1.0, 2.0, 4.0]
 """
@@ -288,8 +289,8 @@ BAD = {
     "negative load factor": (SMALL.replace("[0.4, 0.9, 1.6]", "[0.4, -0.9]"),
                              "motions.load_factors[1]"),
     "unknown specimen": (SMALL.replace("specimen = 2", "specimen = 9"), "blocks[0].specimen"),
-    "empty motion set": (SMALL.replace('names = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]',
-                                       "names = []"), "motions.names"),
+    "empty motion set": (SMALL.replace('name = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]',
+                                       "name = []"), "motions.name"),
     "unknown model": (SMALL.replace('["housner", "ccrr"]', '"houser"'), "campaign.model"),
     "unknown distribution": (SMALL.replace('dist = "normal"', 'dist = "gauss"'),
                              "uncertain.alpha"),
@@ -382,15 +383,15 @@ height = 1.2
 load_factors = [0.3, 1.0]
 """
     path = next(_builtin_dir().glob(name + "*"))
-    a = campaign.parse_spec(base.format(motion=f'kind = "builtin"\nnames = ["{name}"]'))
-    b = campaign.parse_spec(base.format(motion=f'kind = "files"\npaths = ["{path}"]\n'
+    a = campaign.parse_spec(base.format(motion=f'kind = "builtin"\nname = ["{name}"]'))
+    b = campaign.parse_spec(base.format(motion=f'kind = "record"\nfile = ["{path}"]\n'
                                                'units = "g"'))
     ra, rb = campaign.Campaign(a).run_ids([0, 1]), campaign.Campaign(b).run_ids([0, 1])
     np.testing.assert_array_equal(ra["max_abs_theta"], rb["max_abs_theta"])
     np.testing.assert_array_equal(ra["n_impacts"], rb["n_impacts"])
 
 
-def test_pulse_grid_rows_are_the_pulses(tmp_path):
+def test_pulse_rows_are_the_pulses(tmp_path):
     """One-sine pulses: the load factor is the peak acceleration, and the block lifts off
     exactly for the pulses whose peak exceeds g tan(alpha) (Housner's uplift condition)."""
     text = """
@@ -402,9 +403,9 @@ model = "housner"
 specimen = 3
 params = "experimental"
 [motions]
-kind = "pulse_grid"
-pulse = "one_sine"
-periods = [0.5, 1.0]
+kind = "one_sine"
+period = [0.5, 1.0]
+amplitude = 1.0
 load_factors = {start = 0.5, stop = 6.0, num = 12}
 """
     spec = campaign.parse_spec(text)
@@ -456,8 +457,8 @@ def test_files_resume_after_moving_and_refuse_an_edited_record(tmp_path):
     from rocking.motions.io import _builtin_dir
     src = (_builtin_dir() / name).read_bytes()
     text = SMALL.format(chunk=8).replace(
-        'kind = "builtin"\nnames = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]',
-        f'kind = "files"\npaths = ["recs/{name}"]\nunits = "g"')
+        'kind = "builtin"\nname = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]',
+        f'kind = "record"\nfile = ["recs/{name}"]\nunits = "g"')
     for d in ("a", "b"):
         (tmp_path / d / "recs").mkdir(parents=True)
         (tmp_path / d / "recs" / name).write_bytes(src)
@@ -483,6 +484,6 @@ def test_store_out_that_is_a_file_is_refused(tmp_path, capsys):
 
 def test_builtin_three_component_records_in_a_campaign():
     text = SMALL.format(chunk=8).replace(
-        'names = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]', 'names = ["Rinaldi228"]')
+        'name = ["RSN126_GAZLI_GAZ000", "RSN982_NORTHR_JEN292"]', 'name = ["Rinaldi228"]')
     spec = campaign.parse_spec(text)
     assert spec.n_motions == 1

@@ -62,11 +62,10 @@ specimen = 2
 params = "experimental"
 
 [motions]
-kind = "pulse_grid"
-pulse = "one_sine"
-periods = [{TP!r}]
+kind = "one_sine"
+period = [{TP!r}]
 amplitude = {AMP!r}
-record_duration = {TP!r}
+duration = {TP!r}
 load_factors = [1.0, 0.2]
 """
 

@@ -32,7 +32,7 @@ params = "experimental"
 [uncertain]
 {uncertain}
 """
-BUILTIN = 'kind = "builtin"\nnames = ["RSN126_GAZLI_GAZ000"]\nload_factors = [0.5]'
+BUILTIN = 'kind = "builtin"\nname = ["RSN126_GAZLI_GAZ000"]\nload_factors = [0.5]'
 
 
 def spec(campaign="", blocks="", motions=BUILTIN, uncertain=""):
@@ -42,25 +42,25 @@ def spec(campaign="", blocks="", motions=BUILTIN, uncertain=""):
 
 def _garbage(d):
     (d / "garbage.csv").write_bytes(b"time,acc\n0.0,0.1\n0.01,zero point two\n")
-    return spec(motions='kind = "files"\npaths = ["garbage.csv"]')
+    return spec(motions='kind = "record"\nfile = ["garbage.csv"]')
 
 
 def _binary(d):
     (d / "binary.at2").write_bytes(bytes(range(256)) * 8)
-    return spec(motions='kind = "files"\npaths = ["binary.at2"]')
+    return spec(motions='kind = "record"\nfile = ["binary.at2"]')
 
 
 def _directory(d):
     (d / "folder.csv").mkdir()
-    return spec(motions='kind = "files"\npaths = ["folder.csv"]')
+    return spec(motions='kind = "record"\nfile = ["folder.csv"]')
 
 
 # case: (spec text, or a function of the spec's folder returning it; the key named;
 #        a pattern the message must also match: the allowed range or the reason)
 CASES = {
-    "record file that cannot be parsed": (_garbage, "motions.paths[0]", "garbage.csv"),
-    "record file that is not text": (_binary, "motions.paths[0]", "binary.at2"),
-    "record path that is a folder": (_directory, "motions.paths[0]", "no such file"),
+    "record file that cannot be parsed": (_garbage, "motions.file[0]", "garbage.csv"),
+    "record file that is not text": (_binary, "motions.file[0]", "binary.at2"),
+    "record path that is a folder": (_directory, "motions.file[0]", "no such file"),
     "noise < 0 (fixed)": (spec(uncertain='noise = {dist = "fixed", value = -0.05}'),
                           "uncertain.noise", r"100% .*outside \[0, inf\) m/s\^2"),
     "noise < 0 (uniform)": (spec(uncertain='noise = {dist = "uniform", low = -0.1, '
@@ -84,25 +84,27 @@ CASES = {
         spec(blocks="[[blocks]]\nalpha = 0.05\np = 3.0\nmu = 0.9",
              uncertain='theta0 = {dist = "uniform", low = -0.06, high = 0.06}'),
         "uncertain.theta0", r"blocks\[1\] = 0\.05 rad"),
-    "stochastic record_duration 1e9": (
-        spec(motions='kind = "stochastic"\nn = 2\nrecord_duration = 1e9'),
-        "motions.record_duration", r"must be in \(0, 10000\]"),
+    "stochastic duration 1e9": (
+        spec(motions='kind = "stochastic"\nn = 2\nduration = 1e9'),
+        "motions.duration", r"must be in \(0, 10000\]"),
     "stochastic dt that would allocate too much": (
         spec(motions='kind = "stochastic"\nn = 2\ndt = 1e-7'),
         "motions.dt", r"samples; at most 1e\+07"),
     "stochastic high-pass that lasts for ever": (
         spec(motions='kind = "stochastic"\nn = 2\nomega_c = 1e-7'),
         "motions.omega_c", r"at most 10000 s"),
-    "sine record_duration 1e9": (
-        spec(motions='kind = "sine_grid"\nfrequencies = [2.0]\nrecord_duration = 1e9'),
-        "motions.record_duration", r"must be in \(0, 10000\]"),
+    "sine duration 1e9": (
+        spec(motions='kind = "sine"\nfrequency = [2.0]\namplitude = 1.0\nduration = 1e9'),
+        "motions.duration", r"must be in \(0, 10000\]"),
     "sine cycles 1e9": (
-        spec(motions='kind = "sine_grid"\nfrequencies = [2.0]\ncycles = 1e9'),
+        spec(motions='kind = "sine"\nfrequency = [2.0]\namplitude = 1.0\ncycles = 1e9'),
         "motions.cycles", r"at most 10000 s"),
-    "pulse record_duration 1e9": (
-        spec(motions='kind = "pulse_grid"\npulse = "one_sine"\nperiods = [0.5]\n'
-                     'record_duration = 1e9'),
-        "motions.record_duration", r"must be in \(0, 10000\]"),
+    "pulse duration 1e9": (
+        spec(motions='kind = "one_sine"\nperiod = [0.5]\namplitude = 1.0\nduration = 1e9'),
+        "motions.duration", r"must be in \(0, 10000\]"),
+    "record glob that matches nothing": (
+        spec(motions='kind = "record"\nfile = "recs/*.AT2"'),
+        "motions.file", "no file matches"),
     "simulation count beyond int64": (
         spec(campaign="samples = 1000000000",
              motions='kind = "stochastic"\nn = 10000000\n'
@@ -166,8 +168,8 @@ def test_a_record_file_without_read_permission(tmp_path):
     src = tmp_path / "r.csv"
     src.write_text("# dt = 0.01 s\n0.0\n0.1\n-0.1\n0.0\n")
     src.chmod(0)
-    text = spec(motions='kind = "files"\npaths = ["r.csv"]')
-    with pytest.raises(SpecError, match=r"^spec: motions\.paths\[0\]: cannot read"):
+    text = spec(motions='kind = "record"\nfile = ["r.csv"]')
+    with pytest.raises(SpecError, match=r"^spec: motions\.file\[0\]: cannot read"):
         campaign.parse_spec(text, base_dir=tmp_path)
 
 
@@ -176,9 +178,9 @@ def test_the_bounds_themselves_are_accepted(tmp_path):
     duration, a simulation count near (not beyond) the int64 limit, max_free_time 0."""
     s = campaign.parse_spec(spec(uncertain='p = {dist = "normal", cov = 0.42}'))
     assert "p" in s.uncertain
-    s = campaign.parse_spec(spec(motions='kind = "sine_grid"\nfrequencies = [2.0]\n'
-                                         f'record_duration = {MAX_RECORD_DURATION}'))
-    assert s.motions["record_duration"] == MAX_RECORD_DURATION
+    s = campaign.parse_spec(spec(motions='kind = "sine"\nfrequency = [2.0]\namplitude = 1.0\n'
+                                         f'duration = {MAX_RECORD_DURATION}'))
+    assert s.motions["params"]["duration"] == MAX_RECORD_DURATION
     s = campaign.parse_spec(spec(
         campaign="samples = 1000000000",
         motions='kind = "stochastic"\nn = 10000000\nload_factors = {start = 0.5, stop = 1.5, '
@@ -191,5 +193,5 @@ def test_the_bounds_themselves_are_accepted(tmp_path):
     # a record file that reads is accepted and hashed by its content
     from rocking.motions.io import _builtin_dir
     rec = next(_builtin_dir().glob("RSN126_GAZLI_GAZ000*"))
-    s = campaign.parse_spec(spec(motions=f'kind = "files"\npaths = ["{rec}"]'))
+    s = campaign.parse_spec(spec(motions=f'kind = "record"\nfile = ["{rec}"]'))
     assert len(s.motions["digests"][0]) == 16

@@ -38,9 +38,9 @@ p = 2.2
 mu = 0.95
 
 [motions]
-kind = "pulse_grid"
-pulse = "one_sine"
-periods = [0.5, 1.0]
+kind = "one_sine"
+period = [0.5, 1.0]
+amplitude = 1.0
 load_factors = [1.0, 2.5, 4.0, 6.0, 9.0]
 
 [uncertain]
@@ -474,8 +474,8 @@ alpha = 0.2
 p = 2.0
 mu = 0.9
 [motions]
-kind = "files"
-paths = ["{tmp_path / 'zero.csv'}"]
+kind = "record"
+file = ["{tmp_path / 'zero.csv'}"]
 units = "m/s^2"
 im = "pga"
 levels = [1.0, 2.0]

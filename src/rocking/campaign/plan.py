@@ -22,7 +22,9 @@ report counts them.
 
 from __future__ import annotations
 
+import copy
 from functools import cached_property
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -33,21 +35,8 @@ from ..analysis.montecarlo import PARAMETERS, distributions, draw_parameters, pe
 from ..blocks import Block
 from ..errors import ParameterError
 from ..models import simulate_many
-from ..motions import (
-    HalfSine,
-    Motion,
-    OneCosine,
-    OneSine,
-    Record,
-    Rectangular,
-    Ricker,
-    Sine,
-    load_builtin,
-    sample,
-    seed_earthquakes,
-    stochastic_records,
-)
-from .spec import CampaignSpec
+from ..motions import GroundMotion, HanningSine, Motion, Record, Sine, catalog, sample
+from .spec import CampaignSpec, motion_kind, motion_value, nominal
 
 STREAM = 3
 """Tag of the campaign's random streams (Monte Carlo uses 1, stochastic records 2)."""
@@ -55,86 +44,85 @@ KEEP = 2000
 """Motions a worker keeps built between chunks (beyond: only the current chunk's)."""
 RESULT_COLUMNS = ("max_abs_theta", "max_abs_theta_over_alpha", "overturned", "overturn_time",
                   "uplift_time", "n_impacts", "settled", "damage_state", "status")
-PULSE_CLASSES = {"one_sine": OneSine, "one_cosine": OneCosine, "half_sine": HalfSine,
-                 "rectangular": Rectangular}
+VERTICAL_COLUMNS = ("lift_off_time", "lifted_off")
+"""Result columns of motions with a vertical component (``vertical`` kinds of the catalog),
+after ``settled``: ``lift_off_time`` (s, NaN if none) and ``lifted_off``."""
+
+
+def _pga(mo: Motion) -> float | None:
+    """The exact PGA where the motion states it (records, sines, pulses), else None."""
+    if isinstance(mo, Record):
+        return mo.pga
+    if isinstance(mo, Sine):
+        return mo.acc_amplitude
+    if hasattr(mo, "amplitude") and not isinstance(mo, HanningSine):  # a displacement
+        return abs(mo.scale) * mo.amplitude
+    return None
+
+
+def motion_im(mo: Motion, im: str, block: Block | None = None) -> float:
+    """The intensity measure ``im`` of ``mo``; a ground motion's is its horizontal
+    component's."""
+    if isinstance(mo, GroundMotion):
+        mo = mo.horizontal if mo.scale == 1.0 else mo.horizontal.scaled(mo.scale)
+    pga = _pga(mo) if im == "pga" else None
+    if pga is not None:
+        return pga
+    rec = mo if isinstance(mo, Record) else sample(mo, min(mo.scan_step, 0.005))
+    return intensity(rec, im, block)
 
 
 class MotionSet:
-    """The motions of a ``[motions]`` table, built on demand and kept (unscaled) up to
-    :data:`KEEP` of them (then those of the current chunk only: memory follows the chunk
-    size, not the number of motions)."""
+    """The motions of a checked ``[motions]`` table, made by the catalog
+    (:mod:`rocking.motions.catalog`) on demand and kept (unscaled) up to :data:`KEEP` of
+    them (then those of the current chunk only: memory follows the chunk size, not the
+    number of motions)."""
 
-    def __init__(self, m: dict, seed: int):
+    def __init__(self, m: dict, seed: int, base_dir="."):
         self.m, self.seed = m, seed
+        self.kind = motion_kind(m)
+        self.ctx = catalog.Context(Path(base_dir), seed)
         self._cache: dict[int, Motion] = {}
         self._im: dict[tuple, float] = {}
 
     @cached_property
     def n(self) -> int:
-        from .spec import n_motions
-        return n_motions(self.m)
+        return self.m["n"]
+
+    @cached_property
+    def _template(self):
+        """The parameters of motion 0 (checked by the catalog)."""
+        values = dict(self.m["params"])
+        if self.m["sweep"] is not None:
+            values[self.m["sweep"]] = motion_value(self.m, 0)
+        return self.kind.Params(**values)
+
+    def params(self, j: int):
+        """The catalog parameters of motion ``j`` (its value of the swept parameter, checked
+        with the spec, in the checked parameters of motion 0)."""
+        p = self._template
+        if self.m["sweep"] is None or j == 0:
+            return p
+        p = copy.copy(p)
+        object.__setattr__(p, self.m["sweep"], motion_value(self.m, j))
+        return p
 
     def id(self, j: int) -> str:
-        m, kind = self.m, self.m["kind"]
-        if kind == "seed_earthquakes":
-            return f"seed:{m['records'][j]:02d}"
-        if kind == "files":
-            return m["names"][j] if "names" in m else m["paths"][j]
-        if kind == "builtin":
-            return m["names"][j]
-        if kind == "stochastic":
-            return f"stochastic:{j}"
-        if kind == "sine_grid":
-            return f"sine:{m['frequencies'][j]:g}Hz"
-        return f"{m['pulse']}:{m['periods'][j]:g}s"
-
-    def _stochastic(self, js) -> None:
-        kw = {k: v for k, v in self.m.items() if k not in ("kind", "n", "load_factors", "im",
-                                                           "levels", "record_duration")}
-        if "record_duration" in self.m:
-            kw["duration"] = self.m["record_duration"]
-        js = sorted(js)
-        runs, start = [], js[0]  # contiguous runs of indices, one call each
-        for a, b in zip(js, js[1:] + [None], strict=True):
-            if b != a + 1:
-                runs.append((start, a + 1))
-                start = b
-        for lo, hi in runs:
-            for k, r in enumerate(stochastic_records(hi - lo, seed=self.seed, start=lo, **kw)):
-                self._cache[lo + k] = r
+        return self.kind.label(self.params(j))
 
     def prepare(self, js) -> None:
-        """Build the motions ``js`` not built yet (stochastic records in few calls)."""
+        """Build the motions ``js`` not built yet (in one call where the kind makes several
+        at once: stochastic records)."""
         wanted = dict.fromkeys(np.asarray(js).tolist())
-        missing = [int(j) for j in wanted if j not in self._cache]
+        missing = sorted(int(j) for j in wanted if j not in self._cache)
         if missing and len(self._cache) + len(missing) > KEEP:
             self._cache = {j: m for j, m in self._cache.items() if j in wanted}
         if not missing:
             return
-        m, kind = self.m, self.m["kind"]
-        if kind == "stochastic":
-            self._stochastic(missing)
-            return
-        if kind == "seed_earthquakes":
-            recs = seed_earthquakes()
-        for j in missing:
-            if kind == "seed_earthquakes":
-                mo = recs[m["records"][j] - 1]
-            elif kind == "files":
-                mo = Record.from_file(m["paths"][j], units=m["units"], dt=m.get("dt"))
-            elif kind == "builtin":
-                mo = load_builtin(m["names"][j])
-            elif kind == "sine_grid":
-                f = m["frequencies"][j]
-                mo = Sine.from_acceleration(f, m["amplitude"], m.get("record_duration",
-                                                                     m.get("cycles", 10) / f))
-            elif m["pulse"] == "ricker":
-                mo = Ricker(m["amplitude"], 1.0 / m["periods"][j],
-                            duration=m.get("record_duration"))
-            else:
-                mo = PULSE_CLASSES[m["pulse"]](m["amplitude"], m["periods"][j],
-                                               duration=m.get("record_duration"))
-            self._cache[j] = mo
+        ps = [self.params(j) for j in missing]
+        made = (self.kind.make_many(ps, self.ctx) if self.kind.make_many is not None
+                else [self.kind.make(p, self.ctx) for p in ps])
+        self._cache.update(zip(missing, made, strict=True))
 
     def get(self, j: int) -> Motion:
         mo = self._cache.get(j)
@@ -143,24 +131,12 @@ class MotionSet:
             mo = self._cache[j]
         return mo
 
-    def _record(self, j: int) -> Record:
-        mo = self.get(j)
-        return mo if isinstance(mo, Record) else sample(mo, min(mo.scan_step, 0.005))
-
     def im(self, j: int, im: str, block: Block | None = None) -> float:
         """The intensity measure ``im`` of motion ``j`` unscaled (``block`` for the ratio
-        IMs)."""
+        IMs; a ground motion's: its horizontal component's)."""
         key = (j, im, (block.alpha, block.p) if im.endswith("_ratio") else None)
         if key not in self._im:
-            mo = self.get(j)
-            if im == "pga" and isinstance(mo, Record):
-                self._im[key] = mo.pga
-            elif im == "pga" and isinstance(mo, Sine):
-                self._im[key] = mo.acc_amplitude
-            elif im == "pga" and hasattr(mo, "amplitude") and not isinstance(mo, Record):
-                self._im[key] = abs(mo.scale) * mo.amplitude
-            else:
-                self._im[key] = intensity(self._record(j), im, block)
+            self._im[key] = motion_im(self.get(j), im, block)
         return self._im[key]
 
 
@@ -169,9 +145,10 @@ class Campaign:
 
     def __init__(self, spec: CampaignSpec):
         self.spec = spec
-        self.motions = MotionSet(spec.motions, spec.seed)
+        self.motions = MotionSet(spec.motions, spec.seed, spec.base_dir)
         self.levels = np.asarray(spec.levels, dtype=float)
-        self._dists = [distributions(block, spec.uncertain, where=lambda k: f"uncertain.{k}")
+        self._dists = [distributions(nominal(block), spec.uncertain,
+                                     where=lambda k: f"uncertain.{k}")
                        for block in spec.blocks]
 
     @property
@@ -189,7 +166,7 @@ class Campaign:
         s = self.spec
         if s.im is None:
             return float(self.levels[lv])
-        base = self.motions.im(j, s.im, s.blocks[b])
+        base = self.motions.im(j, s.im, nominal(s.blocks[b]))
         if not base > 0:
             raise ParameterError(f"motion {self.motions.id(j)} has {s.im} = 0: it cannot be "
                                  "scaled to an intensity level")
@@ -197,7 +174,8 @@ class Campaign:
 
     def inputs(self, ids):
         """Simulations ``ids``: ``(table, blocks, motions)`` ready for
-        :func:`rocking.simulate_many` (the table holds the inputs, see :meth:`run_ids`)."""
+        :func:`rocking.simulate_many` (the table holds the inputs, see :meth:`run_ids`; a
+        stack's ``alpha``, ``p`` and ``mu`` are its top block's: :func:`.spec.nominal`)."""
         s = self.spec
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         if ids.size and not (ids.min() >= 0 and ids.max() < self.n_sims):
@@ -212,18 +190,19 @@ class Campaign:
         for r in range(n):
             b, j = int(bi[r]), int(ji[r])
             block = s.blocks[b]
+            nom = nominal(block)
             scale = self._scale(j, int(li[r]), b)
             lf[r] = scale
             if uncertain:
                 rng = np.random.default_rng(np.random.SeedSequence(
                     s.seed, spawn_key=(STREAM, int(ids[r]))))
-                v, truncated[r] = draw_parameters(block, self._dists[b], rng)
+                v, truncated[r] = draw_parameters(nom, self._dists[b], rng)
                 if uncertain.keys() & {"alpha", "p", "mu"}:
                     block = Block.from_params(v["alpha"], v["p"], v["mu"], name=block.name)
                 mo = perturbed(self.motions.get(j).scaled(scale), v["amplitude"], v["noise"],
                                rng)
             else:
-                v = {k: PARAMETERS[k][0](block) for k in PARAMETERS}
+                v = {k: PARAMETERS[k][0](nom) for k in PARAMETERS}
                 mo = self.motions.get(j).scaled(scale)
             for k in PARAMETERS:
                 vals[k][r] = v[k]
@@ -258,7 +237,10 @@ class Campaign:
         the angle it reached, flagged here), ``damage_state``
         (:func:`rocking.analysis.damage_state` with the spec's thresholds; -1 for a failed
         run) and ``status`` (0, or the model's failure code: the run failed
-        numerically and its ``max_abs_theta`` is NaN).
+        numerically and its ``max_abs_theta`` is NaN). Motions with a vertical component
+        (a ``vertical`` kind of the catalog) add :data:`VERTICAL_COLUMNS` after
+        ``settled``: ``lift_off_time`` (s, NaN if none: the run stops when the block leaves
+        the ground) and ``lifted_off``.
         """
         table, blocks, motions = self.inputs(ids)
         n = len(table)
@@ -266,6 +248,8 @@ class Campaign:
                "overturn_time": np.full(n, np.nan), "uplift_time": np.full(n, np.nan),
                "n_impacts": np.zeros(n, np.int64), "settled": np.zeros(n, bool),
                "status": np.zeros(n, np.int64)}
+        if self.motions.kind.vertical:
+            out |= {"lift_off_time": np.full(n, np.nan), "lifted_off": np.zeros(n, bool)}
         models = table["model"].to_numpy()
         theta0 = table["theta0"].to_numpy()
         for name in dict.fromkeys(models):
@@ -286,8 +270,11 @@ class Campaign:
                                   table["alpha"].to_numpy()[ok], out["overturned"][ok],
                                   self.spec.thresholds)
         table["damage_state"] = ds
-        return table[[c for c in table.columns if c not in RESULT_COLUMNS]
-                     + list(RESULT_COLUMNS)]
+        results = list(RESULT_COLUMNS)
+        if self.motions.kind.vertical:
+            k = results.index("settled") + 1
+            results[k:k] = VERTICAL_COLUMNS
+        return table[[c for c in table.columns if c not in results] + results]
 
     def run_chunk(self, k: int) -> pd.DataFrame:
         """Simulate chunk ``k`` (:meth:`run_ids` over its range)."""

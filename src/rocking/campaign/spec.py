@@ -8,34 +8,24 @@
     model = "housner"             # or a list: ["housner", "ccrr"]
     duration = 25.0               # s, optional: default each motion's own duration, then
                                   # free rocking until the block has settled
-    max_free_time = 60.0          # s, optional (only without duration): cap of that free
-                                  # rocking (default rocking.models.run.DEFAULT_MAX_FREE_TIME;
-                                  # 0 stops at the end of each motion)
+    max_free_time = 60.0          # s, optional (only without duration)
     samples = 1                   # optional: realizations of [uncertain] per (block, motion, level)
     thresholds = [0.25, 0.5]      # optional: damage states on max|theta|/alpha
 
-    [[blocks]]                    # one table per block, one of three forms
+    [[blocks]]                    # one table per block: any form of rocking.blocks.factory
     specimen = 2
-    params = "experimental"       # theoretical | experimental | geometric
+    params = "experimental"
     [[blocks]]
-    width = 0.25                  # m, full width and height (Eq 2, Eq 3, Eq 4)
-    height = 1.0
-    [[blocks]]
-    alpha = 0.2                   # rad
-    p = 2.1                       # 1/s
-    mu = 0.96
+    stack = [{width = 0.2, height = 0.4, mass = 10}, {width = 0.2, height = 0.4, mass = 10}]
 
     [motions]
-    kind = "stochastic"           # seed_earthquakes | files | builtin | stochastic
-                                  # | sine_grid | pulse_grid
-    n = 100
+    kind = "earthquake"           # any kind of rocking.motions.catalog, with its parameters
+    number = [3, 20]              # one parameter of the kind's sweep may be a list or a grid
     load_factors = {start = 0.5, stop = 3.0, num = 11}   # or a list
-    # or: im = "pga" and levels = [1.0, 2.0, 4.0]          (m/s^2 for pga; pga_ratio and
-    #     pgv_ratio use each block's nominal alpha and p, before any uncertain draw)
+    # or: im = "pga" and levels = [1.0, 2.0, 4.0]
 
     [uncertain]                   # one entry per parameter (rocking.analysis.montecarlo)
     alpha = {dist = "normal", cov = 0.02}
-    theta0 = {dist = "uniform", low = -0.001, high = 0.001}
 
     [run]
     chunk_size = 2000
@@ -43,100 +33,122 @@
     [options.housner]             # optional model options (rocking models)
     rest_tol = 1e-12
 
-Every motion kind and its keys are listed in :data:`MOTION_KEYS`. A malformed spec raises
-:class:`~rocking.errors.SpecError` with one line that names the key and what it allows.
-Everything that a spec can get wrong is found by :func:`parse_spec`, before a store is
-created: every number is a number (never a bool: ``cov = true`` is refused), record files
-are read (an unreadable one is refused), a record's length and sample count are bounded
-before anything is allocated (:data:`MAX_RECORD_DURATION`, :data:`MAX_RECORD_SAMPLES`),
-the number of simulations fits ``sim_id`` (int64), and every ``[uncertain]`` distribution
-has at most 1 % of its mass outside its parameter's range (for ``theta0``: beyond +-alpha
-of each block; :func:`rocking.analysis.montecarlo.distributions`).
+Every key is listed by :func:`keys_table` (the README's table, generated from the motion
+catalog and the block factory). ``[motions]``: ``kind`` names a catalog entry
+(:data:`rocking.motions.catalog.KINDS`) and the other keys are its parameters; one
+parameter of its ``sweep`` may be a list or a grid ``{start, stop, num, spacing}`` and sets
+the motion axis (one motion per value); ``file`` takes paths or glob patterns (relative to
+the spec); ``n = N`` stands for ``index = 0 .. N-1`` (stochastic records); a kind with a
+finite set (``earthquake``, ``builtin``) runs all of it when its parameter is omitted. The
+old spellings (:data:`LEGACY`) still work, with a :class:`DeprecationWarning` that says how
+to write them now, and give the same rows.
+
+A malformed spec raises :class:`~rocking.errors.SpecError` with one line that names the key
+and what it allows. Everything that a spec can get wrong is found by :func:`parse_spec`,
+before a store is created: every number is a number (never a bool), record files are read,
+a motion's length and sample count are bounded (:data:`MAX_RECORD_DURATION`,
+:data:`MAX_RECORD_SAMPLES`), the number of simulations fits ``sim_id`` (int64), each block
+suits each model, and every ``[uncertain]`` distribution has at most 1 % of its mass
+outside its parameter's range (:func:`rocking.analysis.montecarlo.distributions`).
+
+A :class:`~rocking.Stack` stands in the table (``alpha``, ``p``, ``mu``, the ratio IMs,
+``max_abs_theta_over_alpha``, damage states) by its top block, the one whose angle
+``max_abs_theta`` is (:func:`nominal`); its ``block_name`` is the stack's.
 """
 
 from __future__ import annotations
 
+import dataclasses
+import glob
 import hashlib
 import json
 import math
+import re
+import sys
 import tomllib
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple, NoReturn
 
 import numpy as np
 
+from .._validate import as_int, in_range
 from ..analysis.damage import DEFAULT_THRESHOLDS, state_labels
 from ..analysis.ida import IMS
-from ..analysis.montecarlo import PARAMETERS, distributions
-from ..blocks import Block, specimen
-from ..blocks.specimens import PARAM_SETS, specimen_ids
+from ..analysis.montecarlo import PARAMETERS, RANGES, distributions
+from ..blocks import Block, Stack, factory
 from ..errors import ParameterError, RockingError, SpecError
 from ..models.registry import MODELS
-from ..units import ACCELERATION
+from ..motions import catalog
+from ..options import check_option
 
 SECTIONS = {"campaign", "blocks", "motions", "uncertain", "run", "options"}
-CAMPAIGN_KEYS = {"name", "seed", "model", "duration", "max_free_time", "samples",
-                 "thresholds"}
-RUN_KEYS = {"chunk_size", "window"}
-BLOCK_FORMS = ({"specimen", "params"}, {"width", "height", "mass"}, {"alpha", "p", "mu"})
-MOTION_KINDS = ("seed_earthquakes", "files", "builtin", "stochastic", "sine_grid", "pulse_grid")
-STOCHASTIC_KEYS = {"n", "Ia", "D5_95", "t_mid", "omega_mid", "omega_prime", "zeta_f",
-                   "omega_c", "dt", "record_duration"}
-MOTION_KEYS = {
-    "seed_earthquakes": {"records"},
-    "files": {"paths", "units", "dt"},
-    "builtin": {"names"},
-    "stochastic": STOCHASTIC_KEYS,
-    "sine_grid": {"frequencies", "amplitude", "cycles", "record_duration"},
-    "pulse_grid": {"pulse", "periods", "amplitude", "record_duration"},
+CAMPAIGN_KEYS = {
+    "name": "the campaign's name (required)",
+    "seed": "every random draw derives from (seed, sim_id); integer >= 0 (required)",
+    "model": f"a model or a list of them: {', '.join(MODELS)} (required)",
+    "duration": "s, (0, 1e6]: every run lasts exactly this; default: each motion's own "
+                "duration, then free rocking until the block has settled",
+    "max_free_time": "s, [0, 1e4], only without duration: cap of that free rocking "
+                     "(default 60; 0 stops with each motion)",
+    "samples": "realizations of [uncertain] per (block, motion, level); default 1",
+    "thresholds": "damage states on max|theta|/alpha, increasing; default "
+                  f"{list(DEFAULT_THRESHOLDS)}",
 }
-"""Keys of ``[motions]`` for each ``kind`` (besides ``kind``, ``load_factors``, ``im`` and
-``levels``):
-
-* ``seed_earthquakes``: ``records`` (numbers 1-30, default all 30): the paper's
-  spectrum-compatible set (:func:`rocking.motions.seed_earthquakes`).
-* ``files``: ``paths`` (relative to the spec file), ``units`` (``g``, ``m/s^2``,
-  ``cm/s^2``; default ``g``), ``dt`` (s, for one-column files).
-* ``builtin``: ``names`` (default all): the records shipped with the package.
-* ``stochastic``: ``n`` records of :func:`rocking.motions.stochastic_records` with its
-  parameters (``Ia``, ``D5_95``, ``t_mid``, ``omega_mid``, ``omega_prime``, ``zeta_f``,
-  ``omega_c``, ``dt``; ``record_duration`` its ``duration``), seeded from the campaign seed.
-* ``sine_grid``: ``frequencies`` (Hz), ``amplitude`` (peak acceleration, m/s^2, default 1:
-  the load factor is then the amplitude in m/s^2), ``cycles`` (default 10) or
-  ``record_duration`` (s).
-* ``pulse_grid``: ``pulse`` (``one_sine``, ``one_cosine``, ``half_sine``, ``rectangular``,
-  ``ricker``), ``periods`` (s; the Ricker's 1/fp), ``amplitude`` (m/s^2, default 1),
-  ``record_duration`` (s, optional window).
-"""
+RUN_KEYS = {"chunk_size": "simulations per chunk (a Parquet file); default 2000",
+            "window": "chunks in flight with Dask (default 2 per worker thread); not hashed"}
+INTENSITY_KEYS = {
+    "load_factors": "factors on every motion: a list or {start, stop, num, spacing}, > 0; "
+                    "default [1.0]",
+    "im": f"scale each motion to IM levels instead: {', '.join(IMS)} (a ground motion: "
+          "its horizontal component's)",
+    "levels": "the IM levels (units of im): a list or a grid, > 0",
+}
+COUNT, COUNTER = "n", "index"
+"""``n = N`` in ``[motions]`` stands for ``index = 0 .. N-1`` (kinds with an ``index``: the
+stochastic records); the kind's check does not depend on the index, which is checked alone."""
+LEGACY = {
+    "seed_earthquakes": ("earthquake", {"records": "number"}),
+    "files": ("record", {"paths": "file"}),
+    "builtin": ("builtin", {"names": "name"}),
+    "sine_grid": ("sine", {"frequencies": "frequency", "record_duration": "duration"}),
+    "pulse_grid": (None, {"pulse": "kind", "periods": "period", "record_duration": "duration"}),
+    "stochastic": ("stochastic", {"record_duration": "duration"}),
+}
+"""Old spellings of ``[motions]``: old kind -> (new kind, or None: ``pulse`` names it;
+{old key: new key}); read with a DeprecationWarning, and give the same rows."""
+LEGACY_DEFAULTS = {"sine_grid": {"amplitude": 1.0, "cycles": 10},
+                   "pulse_grid": {"amplitude": 1.0}}
+"""Defaults of the old kinds (the catalog has none: write them)."""
 PULSES = ("one_sine", "one_cosine", "half_sine", "rectangular", "ricker")
-MAX_RECORD_DURATION = 1e4
-"""Longest motion a spec may define (s): ``record_duration``, or ``cycles / frequency`` of
-a sine. The longest strong-motion records are a few hundred seconds (long-period records
-of the 2011 Tohoku earthquake: about 300-600 s); 1e4 s (2.8 h) is 15 times more, while a
-sine of 1e9 s would run for days and a stochastic record of 1e9 s would allocate 745 GB."""
-MAX_RECORD_SAMPLES = 10 ** 7
-"""Most samples of one stochastic record (``duration / dt + 1``): 80 MB per array (the
-generator holds a few such arrays per record, and a worker keeps many records)."""
+"""The pulses of the old ``pulse_grid``."""
+MAX_RECORD_DURATION = catalog.MAX_DURATION
+"""Longest motion a spec may define (s): see :data:`rocking.motions.catalog.MAX_DURATION`."""
+MAX_RECORD_SAMPLES = catalog.MAX_SAMPLES
+"""Most samples of one stochastic record (:data:`rocking.motions.catalog.MAX_SAMPLES`)."""
 MAX_SIMS = 2 ** 63 - 1
 """Most simulations of a campaign: ``sim_id`` is an int64."""
 
 
-def _fail(key: str, msg: str):
+def _fail(key: str, msg: str) -> NoReturn:
     raise SpecError(f"spec: {key}: {msg}")
 
 
 def _number(key: str, v, lo: float = -math.inf, hi: float = math.inf, *, lo_open=False,
-            integer: bool = False) -> float:
+            integer: bool = False):
+    """A TOML number (never a bool or a string) in ``[lo, hi]``, checked by
+    :mod:`rocking._validate` (an integer exactly, with ``integer``)."""
     if isinstance(v, bool) or not isinstance(v, int | float):
         _fail(key, f"must be a {'whole number' if integer else 'number'}, "
                    f"got {type(v).__name__} {v!r}")
-    if integer and not isinstance(v, int):
-        _fail(key, f"must be a whole number, got {v!r}")
-    if not math.isfinite(v) or v < lo or v > hi or (lo_open and v == lo):
-        lo_s = "-inf" if lo == -math.inf else f"{lo:g}"
-        hi_s = "inf" if hi == math.inf else f"{hi:g}"
-        _fail(key, f"must be in {'(' if lo_open else '['}{lo_s}, {hi_s}], got {v!r}")
-    return v
+    try:
+        if integer:
+            return as_int(key, v, None if lo == -math.inf else int(lo),
+                          None if hi == math.inf else int(hi))
+        return in_range(key, v, lo, hi, lo_open=lo_open, hi_open=False)
+    except ParameterError as e:
+        _fail(key, str(e).removeprefix(key).strip())
 
 
 def _string(key: str, v, choices=None) -> str:
@@ -161,6 +173,28 @@ def _known(key: str, table: dict, allowed) -> None:
                                       f"{', '.join(sorted(allowed))})")
 
 
+_UNKNOWN = re.compile(r"((?:\w+(?:\[\d+\])?\.)*)unknown parameter\(s\) for ([^:]*): "
+                      r"([^ ,]+)[^(]*\(allowed: ([^)]*)\)")
+_NAMED = re.compile(r"([A-Za-z_]\w*)((?:\[\d+\])?(?:\.\w+(?:\[\d+\])?)*)(:)? (.*)")
+
+
+def _param_fail(prefix: str, e: Exception, names, keys: dict | None = None) -> NoReturn:
+    """A catalog or factory error as a SpecError naming ``prefix.<parameter>`` (the
+    message starts with the parameter's name; ``keys`` overrides a parameter's key)."""
+    msg = (str(e).splitlines() or [""])[0] or type(e).__name__
+    u = _UNKNOWN.match(msg)
+    if u:
+        _fail(f"{prefix}.{u[1]}{u[3]}", f"unknown key (allowed in {u[2]}: {u[4]})")
+    m = _NAMED.match(msg)
+    if m is None or (m[1] not in names and not m[3]):
+        _fail(prefix, msg)
+    if m[1] not in names:  # "block: give exactly one of ..."
+        _fail(prefix, m[4])
+    key = (keys or {}).get(m[1]) or f"{prefix}.{m[1]}{m[2]}"
+    said = m[3] or m[4].startswith(("must ", "is ", "applies ", "has "))
+    _fail(key, m[4] if said else msg)
+
+
 def grid(key: str, v, lo: float = 0.0, *, lo_open: bool = True) -> np.ndarray:
     """A list of numbers, or ``{start, stop, num}`` (linear; ``spacing = "log"`` for log)."""
     if isinstance(v, dict):
@@ -170,7 +204,7 @@ def grid(key: str, v, lo: float = 0.0, *, lo_open: bool = True) -> np.ndarray:
                 _fail(f"{key}.{k}", "missing (a grid is {start, stop, num})")
         a = _number(f"{key}.start", v["start"], lo, lo_open=lo_open)
         b = _number(f"{key}.stop", v["stop"], lo, lo_open=lo_open)
-        n = int(_number(f"{key}.num", v["num"], 1, 1e7, integer=True))
+        n = _number(f"{key}.num", v["num"], 1, 1e7, integer=True)
         spacing = _string(f"{key}.spacing", v.get("spacing", "linear"), ("linear", "log"))
         if spacing == "log":
             if a <= 0:
@@ -186,203 +220,292 @@ def grid(key: str, v, lo: float = 0.0, *, lo_open: bool = True) -> np.ndarray:
 
 
 # ------------------------------------------------------------------------------- blocks
-def _block(i: int, t) -> Block:
+BLOCK_KEYS = {"name", *(k for f in factory.FORMS.values() for k in f.Params.names())}
+
+
+def nominal(block) -> Block:
+    """The block whose ``alpha``, ``p`` and ``mu`` stand for ``block`` in the table: the
+    block itself, or a :class:`~rocking.Stack`'s top block (whose angle is the result)."""
+    return block.top if isinstance(block, Stack) else block
+
+
+def _block(i: int, t):
+    """``[[blocks]]`` table ``i`` through :func:`rocking.blocks.factory.make_block`; without
+    a ``name``, the form's name and the block's place (``0.25 x 1 m block (blocks[1])``),
+    except a specimen's, which says which it is."""
     key = f"blocks[{i}]"
     t = _table(key, t)
-    allowed = set().union(*BLOCK_FORMS) | {"name"}
-    _known(key, t, allowed)
-    forms = [f for f in BLOCK_FORMS if set(t) & f - ({"params"} if "specimen" in f else set())]
-    if len(forms) != 1:
-        _fail(key, "give exactly one of: specimen (+ params), width + height (+ mass), "
-                   f"alpha + p + mu; got keys {', '.join(sorted(t)) or 'none'}")
-    name = _string(f"{key}.name", t["name"]) if "name" in t else None
-    f = forms[0]
-    missing = sorted(f - set(t) - {"params", "mass"})
-    if missing:
-        _fail(f"{key}.{missing[0]}", "missing")
     try:
-        if "specimen" in f:
-            n = t["specimen"]
-            if isinstance(n, bool) or not isinstance(n, int) or n not in specimen_ids():
-                _fail(f"{key}.specimen", f"unknown specimen {n!r} (known: "
-                                         f"{', '.join(map(str, specimen_ids()))})")
-            params = _string(f"{key}.params", t.get("params", "theoretical"), PARAM_SETS)
-            b = specimen(n, params)
-        elif "width" in f:
-            mass = _number(f"{key}.mass", t["mass"], 0, lo_open=True) if "mass" in t else None
-            w = _number(f"{key}.width", t["width"], 0, lo_open=True)
-            h = _number(f"{key}.height", t["height"], 0, lo_open=True)
-            # without a name: what the block is, and where it stands in the spec
-            b = Block.rectangular(w, h, mass=mass, name=f"{w:g} x {h:g} m block ({key})")
-        else:
-            a = _number(f"{key}.alpha", t["alpha"], 0, math.pi / 2, lo_open=True)
-            p = _number(f"{key}.p", t["p"], 0, lo_open=True)
-            b = Block.from_params(a, p, _number(f"{key}.mu", t["mu"], 0, 1, lo_open=True),
-                                  name=f"alpha {a:.4g} rad, p {p:.4g} 1/s block ({key})")
-    except SpecError:
-        raise
-    except RockingError as e:
-        _fail(key, str(e))
-    return b.with_params(name=name) if name else b
+        form = factory.form_of({k: v for k, v in t.items() if k != "name"})
+        b = factory.make_block(t)
+        if "name" not in t and form.name != "specimen":
+            b = factory.make_block(t, name=f"{b.name} ({key})")
+    except (RockingError, TypeError, ValueError) as e:
+        _param_fail(key, e, BLOCK_KEYS)
+    return b
+
+
+def _blocks(raw: dict) -> tuple:
+    if "blocks" not in raw:
+        _fail("blocks", "missing (one [[blocks]] table per block)")
+    if not isinstance(raw["blocks"], list) or not raw["blocks"]:
+        _fail("blocks", "must be one or more [[blocks]] tables")
+    return tuple(_block(i, b) for i, b in enumerate(raw["blocks"]))
 
 
 # ------------------------------------------------------------------------------ motions
-def _motions(t: dict, base_dir: Path) -> dict:
-    t = _table("motions", t)
+def _toml(v) -> str:
+    """``v`` written as a TOML value (for messages)."""
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{k} = {_toml(x)}" for k, x in v.items()) + "}"
+    if isinstance(v, list):
+        return "[" + ", ".join(map(_toml, v)) + "]"
+    if isinstance(v, bool):
+        return str(v).lower()
+    return json.dumps(v) if isinstance(v, str) else repr(v)
+
+
+def _outside() -> int:
+    """The ``stacklevel`` of the caller's first frame outside the package (a warning then
+    shows in the user's script, or the ``rocking`` command's)."""
+    package = str(Path(__file__).resolve().parents[1])
+    level, f = 1, sys._getframe(1)
+    while f is not None and f.f_code.co_filename.startswith(package):
+        f, level = f.f_back, level + 1
+    return level
+
+
+def _legacy(t: dict) -> tuple[dict, dict]:
+    """``[motions]`` in the catalog's vocabulary (an old spelling, :data:`LEGACY`, is
+    translated with a DeprecationWarning), and ``{new key: old key}`` for messages."""
+    old = t.get("kind")
+    if not isinstance(old, str) or old not in LEGACY:
+        return t, {}
+    new, keys = LEGACY[old]
+    if new == old and not set(keys) & set(t):
+        return t, {}
+    if new is None and "pulse" not in t:
+        _fail("motions.pulse", f"missing (one of {', '.join(PULSES)})")
+    out = {"kind": new} if new else {}
+    out.update({keys.get(k, k): v for k, v in t.items() if k != "kind"})
+    for k, v in LEGACY_DEFAULTS.get(old, {}).items():
+        if not (k == "cycles" and "duration" in out):
+            out.setdefault(k, v)
+    now = ", ".join(f"{k} = {_toml(v)}" for k, v in out.items() if k not in INTENSITY_KEYS)
+    warnings.warn(f"spec: [motions] kind = {old!r} is deprecated (removed in the next "
+                  f"release): write {now}", DeprecationWarning, stacklevel=_outside())
+    return out, {v: k for k, v in keys.items()}
+
+
+def _renamed(e: SpecError, renamed: dict) -> SpecError:
+    """``e`` naming the key as the spec wrote it (an old spelling)."""
+    m = re.match(r"spec: motions\.(\w+)", str(e))
+    if not m or m[1] not in renamed:
+        return e
+    return SpecError(str(e)[:m.start(1)] + renamed[m[1]] + str(e)[m.end(1):])
+
+
+class _Axis(NamedTuple):
+    """The motion axis: the swept parameter (None: one motion), the key that gives it, its
+    values (or their number for ``n``), and the key of each value (for messages)."""
+
+    param: str | None
+    key: str
+    values: list | int
+    where: list
+
+
+def _motion_kind(t: dict) -> catalog.MotionKind:
     if "kind" not in t:
-        _fail("motions.kind", f"missing (one of {', '.join(MOTION_KINDS)})")
-    kind = _string("motions.kind", t["kind"], MOTION_KINDS)
-    _known("motions", t, MOTION_KEYS[kind] | {"kind", "load_factors", "im", "levels"})
-    out: dict = {"kind": kind}
-    if kind == "seed_earthquakes":
-        recs = t.get("records", list(range(1, 31)))
-        if not isinstance(recs, list):
-            _fail("motions.records", f"must be a list of record numbers 1-30, got {recs!r}")
-        out["records"] = [int(_number(f"motions.records[{i}]", r, 1, 30, integer=True))
-                          for i, r in enumerate(recs)]
-        if len(set(out["records"])) != len(out["records"]):
-            _fail("motions.records", "has repeated record numbers")
-    elif kind == "files":
-        paths = t.get("paths")
-        if paths is None:
-            _fail("motions.paths", "missing (a list of record files)")
-        if not isinstance(paths, list) or not all(isinstance(p, str) for p in paths):
-            _fail("motions.paths", f"must be a list of file paths, got {paths!r}")
-        units = _string("motions.units", t.get("units", "g"), tuple(ACCELERATION))
-        dt = _number("motions.dt", t["dt"], 0, lo_open=True) if "dt" in t else None
-        resolved, digests = [], []
-        for i, p in enumerate(paths):
-            q = Path(p).expanduser()
-            q = q if q.is_absolute() else base_dir / q
-            if not q.is_file():
-                _fail(f"motions.paths[{i}]", f"no such file: {q}")
-            resolved.append(str(q.resolve()))
-            digests.append(_read_record(f"motions.paths[{i}]", q, units, dt))
-        out["paths"] = resolved
-        out["names"] = list(paths)  # as written: the motion ids
-        out["digests"] = digests
-        out["units"] = units
-        if dt is not None:
-            out["dt"] = dt
-    elif kind == "builtin":
-        from ..motions import builtin_records
-        names = t.get("names", builtin_records())
-        if not isinstance(names, list):
-            _fail("motions.names", f"must be a list of record names, got {names!r}")
-        for i, n in enumerate(names):
-            _string(f"motions.names[{i}]", n, builtin_records(three_component=True))
-        out["names"] = list(names)
-    elif kind == "stochastic":
-        if "n" not in t:
-            _fail("motions.n", "missing (the number of stochastic records)")
-        out["n"] = int(_number("motions.n", t["n"], 0, 1e7, integer=True))
-        for k in sorted(STOCHASTIC_KEYS - {"n"}):
-            if k in t:
-                out[k] = _number(f"motions.{k}", t[k])
-        if "record_duration" in out:
-            _number("motions.record_duration", out["record_duration"], 0,
-                    MAX_RECORD_DURATION, lo_open=True)
-        from ..motions.stochastic import DEFAULTS, HP_DECAY, modulating_parameters, record_model
-        kw = {**DEFAULTS, **{k: v for k, v in out.items() if k in DEFAULTS}}
-        if "record_duration" in out:
-            kw["duration"] = out["record_duration"]
-        try:
-            _number("motions.dt", kw["dt"], 0, lo_open=True)
-            if kw.get("duration") is not None:
-                length, key = kw["duration"], "motions.record_duration"
-            else:  # the generator's default length (rocking.motions.stochastic.record_model)
-                tail = modulating_parameters(kw["Ia"], kw["D5_95"], kw["t_mid"])["t_tail"]
-                hp = HP_DECAY / kw["omega_c"] if kw["omega_c"] > 0 else 0.0
-                length, key = tail + hp, "motions.dt"
-                if not length <= MAX_RECORD_DURATION:
-                    _fail("motions.omega_c" if hp > tail else "motions.t_mid",
-                          f"the records would last {length:g} s (t_tail {tail:g} s + "
-                          f"{HP_DECAY:g} / omega_c); at most {MAX_RECORD_DURATION:g} s "
-                          "(or give record_duration)")
-            if not length / kw["dt"] + 1 <= MAX_RECORD_SAMPLES:
-                _fail(key, f"a record of {length:g} s at dt = {kw['dt']:g} s would have "
-                           f"{length / kw['dt']:.3g} samples; at most {MAX_RECORD_SAMPLES:.0e} "
-                           "(raise dt or shorten record_duration)")
-            record_model(**kw)
-        except RockingError as e:
-            if isinstance(e, SpecError):
-                raise
-            name = str(e).split()[0]
-            _fail("motions." + ("record_duration" if name == "duration" else name), str(e))
-    elif kind == "sine_grid":
-        if "frequencies" not in t:
-            _fail("motions.frequencies", "missing (Hz)")
-        out["frequencies"] = grid("motions.frequencies", t["frequencies"]).tolist()
-        out["amplitude"] = _number("motions.amplitude", t.get("amplitude", 1.0), 0,
-                                   lo_open=True)
-        if "cycles" in t and "record_duration" in t:
-            _fail("motions.cycles", "give cycles or record_duration, not both")
-        if "record_duration" in t:
-            out["record_duration"] = _number("motions.record_duration",
-                                             t["record_duration"], 0, MAX_RECORD_DURATION,
-                                             lo_open=True)
-        else:
-            out["cycles"] = _number("motions.cycles", t.get("cycles", 10), 0, lo_open=True)
-            longest = out["cycles"] / min(out["frequencies"])
-            if longest > MAX_RECORD_DURATION:
-                _fail("motions.cycles", f"{out['cycles']:g} cycles at "
-                                        f"{min(out['frequencies']):g} Hz last {longest:g} s; "
-                                        f"at most {MAX_RECORD_DURATION:g} s")
-    else:  # pulse_grid
-        if "pulse" not in t:
-            _fail("motions.pulse", f"missing (one of {', '.join(PULSES)})")
-        out["pulse"] = _string("motions.pulse", t["pulse"], PULSES)
-        if "periods" not in t:
-            _fail("motions.periods", "missing (s)")
-        out["periods"] = grid("motions.periods", t["periods"]).tolist()
-        out["amplitude"] = _number("motions.amplitude", t.get("amplitude", 1.0), 0,
-                                   lo_open=True)
-        if "record_duration" in t:
-            out["record_duration"] = _number("motions.record_duration",
-                                             t["record_duration"], 0, MAX_RECORD_DURATION,
-                                             lo_open=True)
-    # the intensity axis
-    has_lf, has_im = "load_factors" in t, ("im" in t or "levels" in t)
-    if has_lf and has_im:
-        _fail("motions.load_factors", "give load_factors or im + levels, not both")
-    if has_im:
-        if "im" not in t:
-            _fail("motions.im", f"missing with levels (one of {', '.join(IMS)})")
-        if "levels" not in t:
-            _fail("motions.levels", f"missing with im = {t['im']!r}")
-        out["im"] = _string("motions.im", t["im"], tuple(IMS))
-        out["levels"] = grid("motions.levels", t["levels"]).tolist()
+        _fail("motions.kind", f"missing (one of {', '.join(catalog.KINDS)})")
+    try:
+        kind = catalog.kind(t["kind"])
+    except ParameterError as e:
+        _param_fail("motions", e, {"kind"})
+    counted = {COUNT} if COUNTER in kind.sweep else set()
+    _known("motions", t, {"kind", *INTENSITY_KEYS, *kind.Params.names(), *counted})
+    return kind
+
+
+def _is_glob(v) -> bool:
+    return isinstance(v, str) and glob.has_magic(v)
+
+
+def _files(key: str, v, ctx: catalog.Context) -> _Axis:
+    """A file parameter given as paths or glob patterns: one motion per file."""
+    items = v if isinstance(v, list) else [v]
+    values, where = [], []
+    for i, p in enumerate(items):
+        w = f"{key}[{i}]" if isinstance(v, list) else key
+        if not isinstance(p, str):
+            _fail(w, f"must be a file path or a glob pattern, got {type(p).__name__} {p!r}")
+        hits = catalog.expand_files(p, ctx)
+        if not hits:
+            _fail(w, f"no file matches {p!r} (relative to {ctx.base_dir})")
+        values += hits
+        where += [w] * len(hits)
+    return _Axis(key.split(".")[1], key, values, where)
+
+
+def _swept(kind: catalog.MotionKind, param: str, v, ctx: catalog.Context) -> _Axis:
+    key = f"motions.{param}"
+    if param in kind.files:
+        return _files(key, v, ctx)
+    if isinstance(v, dict):
+        values = grid(key, v, -math.inf).tolist()
+        return _Axis(param, key, values, [key] * len(values))
+    return _Axis(param, key, list(v), [f"{key}[{i}]" for i in range(len(v))])
+
+
+def _axis(kind: catalog.MotionKind, t: dict, ctx: catalog.Context) -> _Axis:
+    """The motion axis of ``[motions]`` (at most one parameter gives several motions)."""
+    given = {k: v for k, v in t.items() if k in kind.Params.names()}
+    swept = [k for k, v in given.items() if isinstance(v, list | dict)
+             or (k in kind.files and _is_glob(v))]
+    for k in swept:
+        if k not in kind.sweep:
+            _fail(f"motions.{k}", "takes one value (a list or grid only for: "
+                                  f"{', '.join(kind.sweep) or 'none'})")
+    if COUNT in t:
+        if COUNTER in given:
+            _fail(f"motions.{COUNT}", f"give {COUNT} or {COUNTER}, not both")
+        swept.append(COUNT)
+    if len(swept) > 1:
+        _fail(f"motions.{swept[1]}", f"only one parameter may give several motions "
+                                     f"(motions.{swept[0]} does)")
+    if swept == [COUNT]:
+        return _Axis(COUNTER, f"motions.{COUNT}",
+                     _number(f"motions.{COUNT}", t[COUNT], 0, 1e7, integer=True), [])
+    if swept:
+        return _swept(kind, swept[0], given[swept[0]], ctx)
+    first = kind.sweep[0] if kind.sweep else None
+    if kind.every is not None and first not in given:
+        values = list(kind.every())
+        return _Axis(first, f"motions.{first}", values, [f"motions.{first}"] * len(values))
+    if COUNTER in kind.sweep and COUNTER not in given:
+        _fail(f"motions.{COUNT}", f"missing (the number of records: {COUNTER} 0 .. n-1)")
+    return _Axis(None, "motions", [None], ["motions"])
+
+
+def _params(kind: catalog.MotionKind, fixed: dict, param, value, where: str):
+    """The checked parameters of one motion (a catalog error names its key)."""
+    values = dict(fixed) if param is None else {**fixed, param: value}
+    try:
+        return kind.Params(**values)
+    except ParameterError as e:
+        _param_fail("motions", e, kind.Params.names(), {param: where})
+
+
+def _digest(key: str, path: Path) -> str:
+    if not path.is_file():
+        _fail(key, f"no such file: {path}")
+    try:
+        data = path.read_bytes()
+    except OSError as e:
+        _fail(key, f"cannot read {path}: {type(e).__name__}: {str(e).splitlines()[0]}")
+    return hashlib.sha256(data).hexdigest()[:16]
+
+
+def _read(kind: catalog.MotionKind, p, ctx: catalog.Context, where: str, param) -> str:
+    """Read the files of motion ``p`` as a run will (refused if they cannot be read or
+    parsed); their content digest (``+`` between files)."""
+    given = [f for f in kind.files if getattr(p, f) is not None]
+    paths = [ctx.path(getattr(p, f)) for f in given]
+    keys = [where if f == param else f"motions.{f}" for f in given]
+    digest = "+".join(_digest(k, q) for k, q in zip(keys, paths, strict=True))
+    try:
+        kind.make(p, ctx)
+    except RockingError as e:
+        _fail(keys[0], f"{', '.join(q.name for q in paths)}: "
+                       f"{(str(e).splitlines() or [type(e).__name__])[0]}")
+    except (OSError, ValueError) as e:  # unreadable, not text, ...
+        _fail(keys[0], f"cannot read {', '.join(map(str, paths))}: {type(e).__name__}: "
+                       f"{(str(e).splitlines() or [''])[0]}")
+    return digest
+
+
+def _checked(kind: catalog.MotionKind, t: dict, axis: _Axis, ctx: catalog.Context) -> dict:
+    """Every motion's parameters checked by the catalog; the normalized ``[motions]``."""
+    fixed = {k: v for k, v in t.items() if k in kind.Params.names() and k != axis.param}
+    n = axis.values if isinstance(axis.values, int) else len(axis.values)
+    if n == 0:
+        _fail(axis.key, "empty motion set (no motion to run)")
+    values = [0] if isinstance(axis.values, int) else axis.values
+    where = axis.where or [axis.key]
+    template = _params(kind, fixed, axis.param, values[0], where[0])
+    out = {"kind": kind.name, "params": {k: getattr(template, k) for k in fixed},
+           "sweep": axis.param, "n": n, "axis": axis.key.removeprefix("motions.")}
+    if axis.param == COUNTER:  # the index alone: the kind's check does not depend on it
+        meta = {f.name: f.metadata for f in dataclasses.fields(kind.Params)}[COUNTER]
+        ps = [template]
+        if not isinstance(axis.values, int):
+            out["values"] = [_index(v, w, meta) for v, w in zip(values, where, strict=True)]
     else:
-        lf = grid("motions.load_factors", t.get("load_factors", [1.0]))
-        out["load_factors"] = lf.tolist()
+        ps = [_params(kind, fixed, axis.param, v, w) for v, w in zip(values, where,
+                                                                        strict=True)]
+        if axis.param is not None:
+            out["values"] = [getattr(p, axis.param) for p in ps]
+    if "values" in out and len(set(out["values"])) != n:
+        _fail(axis.key, "has repeated values (one motion each)")
+    if kind.files:
+        out["digests"] = [_read(kind, p, ctx, w, axis.param)
+                          for p, w in zip(ps, where, strict=True)]
     return out
 
 
-def _read_record(key: str, path: Path, units: str, dt: float | None) -> str:
-    """Read the record file ``path`` as a run will (refused if it cannot be read or
-    parsed); its content digest."""
-    from ..motions import Record
+def _index(v, where: str, meta: dict) -> int:
     try:
-        data = path.read_bytes()
-        Record.from_file(path, units=units, dt=dt)
-    except RockingError as e:
-        _fail(key, f"{path.name}: {str(e).splitlines()[0] if str(e) else type(e).__name__}")
-    except (OSError, ValueError) as e:  # unreadable, not text, ...
-        _fail(key, f"cannot read {path}: {type(e).__name__}: "
-                   f"{str(e).splitlines()[0] if str(e) else ''}")
-    return hashlib.sha256(data).hexdigest()[:16]
+        return check_option(COUNTER, v, meta)
+    except ParameterError as e:
+        _param_fail("motions", e, {COUNTER}, {COUNTER: where})
+
+
+def _intensity(t: dict) -> dict:
+    """The intensity axis: ``load_factors``, or ``im`` + ``levels``."""
+    has_lf, has_im = "load_factors" in t, ("im" in t or "levels" in t)
+    if has_lf and has_im:
+        _fail("motions.load_factors", "give load_factors or im + levels, not both")
+    if not has_im:
+        return {"load_factors": grid("motions.load_factors",
+                                     t.get("load_factors", [1.0])).tolist()}
+    if "im" not in t:
+        _fail("motions.im", f"missing with levels (one of {', '.join(IMS)})")
+    if "levels" not in t:
+        _fail("motions.levels", f"missing with im = {t['im']!r}")
+    return {"im": _string("motions.im", t["im"], tuple(IMS)),
+            "levels": grid("motions.levels", t["levels"]).tolist()}
+
+
+def _motions(t, base_dir: Path, seed: int) -> dict:
+    """The checked ``[motions]``: ``kind`` (the catalog's name), ``params`` (the fixed
+    parameters), ``sweep`` (the swept parameter or None), ``values`` (its values; absent
+    for ``n``), ``n``, ``axis`` (the key that sets it), ``digests`` (of record files), and
+    ``load_factors`` or ``im`` + ``levels``."""
+    t, renamed = _legacy(_table("motions", t))
+    try:
+        kind = _motion_kind(t)
+        ctx = catalog.Context(Path(base_dir), seed)
+        out = _checked(kind, t, _axis(kind, t, ctx), ctx)
+        out.update(_intensity(t))
+    except SpecError as e:
+        raise _renamed(e, renamed) from None
+    out["axis"] = renamed.get(out["axis"], out["axis"])
+    return out
+
+
+def motion_kind(m: dict) -> catalog.MotionKind:
+    """The catalog entry of a checked ``[motions]`` table."""
+    return catalog.KINDS[m["kind"]]
+
+
+def motion_value(m: dict, j: int):
+    """The swept parameter's value of motion ``j`` of a checked ``[motions]`` table."""
+    return m["values"][j] if "values" in m else j
 
 
 def n_motions(m: dict) -> int:
     """Number of motions of a checked ``[motions]`` table."""
-    return len(m.get("records") or m.get("paths") or m.get("names") or m.get("frequencies")
-               or m.get("periods") or []) if m["kind"] != "stochastic" else m["n"]
-
-
-def _motion_axis_key(m: dict) -> str:
-    """The key of ``[motions]`` that sets the number of motions."""
-    return {"seed_earthquakes": "records", "files": "paths", "builtin": "names",
-            "stochastic": "n", "sine_grid": "frequencies", "pulse_grid": "periods"}[m["kind"]]
+    return m["n"]
 
 
 # ------------------------------------------------------------------------------ the spec
@@ -397,7 +520,8 @@ class CampaignSpec:
     duration: float | None
     samples: int
     thresholds: tuple[float, ...]
-    blocks: tuple[Block, ...]
+    blocks: tuple
+    """:class:`~rocking.Block` or :class:`~rocking.Stack` each (:func:`nominal`)."""
     motions: dict
     uncertain: dict
     chunk_size: int
@@ -406,7 +530,7 @@ class CampaignSpec:
     text: str = field(repr=False)
     raw: dict = field(repr=False)
     base_dir: str = "."
-    """The folder that relative record paths (``kind = "files"``) start from."""
+    """The folder that relative record paths start from."""
     max_free_time: float | None = None
     """Cap (s) of the free rocking after each motion (``duration`` unset); None: the
     package's default (:data:`rocking.models.run.DEFAULT_MAX_FREE_TIME`)."""
@@ -432,6 +556,11 @@ class CampaignSpec:
         return self.motions.get("im")
 
     @property
+    def motion_kind(self) -> catalog.MotionKind:
+        """The catalog entry of the motions."""
+        return motion_kind(self.motions)
+
+    @property
     def n_motions(self) -> int:
         return n_motions(self.motions)
 
@@ -451,37 +580,19 @@ class CampaignSpec:
         return -(-self.n_sims // self.chunk_size)
 
 
-def parse_spec(text: str, base_dir=".") -> CampaignSpec:
-    """Check a spec given as TOML text (``files`` paths relative to ``base_dir``)."""
-    try:
-        raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as e:
-        raise SpecError(f"spec: not valid TOML: {e}") from None
-    _known("", raw, SECTIONS)
-    c = _table("campaign", raw.get("campaign", {}))
-    _known("campaign", c, CAMPAIGN_KEYS)
-    for k in ("name", "seed", "model"):
-        if k not in c:
-            _fail(f"campaign.{k}", "missing")
-    name = _string("campaign.name", c["name"])
-    seed = int(_number("campaign.seed", c["seed"], 0, 2**63 - 1, integer=True))
-    models = c["model"] if isinstance(c["model"], list) else [c["model"]]
+def _models(c: dict) -> tuple[str, ...]:
+    listed = isinstance(c["model"], list)
+    models = c["model"] if listed else [c["model"]]
     if not models:
         _fail("campaign.model", "is empty")
-    models = tuple(_string(f"campaign.model[{i}]" if isinstance(c["model"], list)
-                           else "campaign.model", m, tuple(MODELS)) for i, m in enumerate(models))
+    models = tuple(_string(f"campaign.model[{i}]" if listed else "campaign.model", m,
+                           tuple(MODELS)) for i, m in enumerate(models))
     if len(set(models)) != len(models):
         _fail("campaign.model", "has repeated models")
-    duration = (_number("campaign.duration", c["duration"], 0, 1e6, lo_open=True)
-                if "duration" in c else None)
-    max_free_time = None
-    if "max_free_time" in c:
-        max_free_time = _number("campaign.max_free_time", c["max_free_time"], 0,
-                                MAX_RECORD_DURATION)
-        if duration is not None:
-            _fail("campaign.max_free_time", "applies only without campaign.duration (a run "
-                                            "with a duration stops exactly there)")
-    samples = int(_number("campaign.samples", c.get("samples", 1), 1, 1e9, integer=True))
+    return models
+
+
+def _thresholds(c: dict) -> tuple[float, ...]:
     thr = c.get("thresholds", list(DEFAULT_THRESHOLDS))
     if not isinstance(thr, list):
         _fail("campaign.thresholds", f"must be a list of numbers, got {thr!r}")
@@ -491,20 +602,35 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
         state_labels(thr)
     except ParameterError as e:
         _fail("campaign.thresholds", str(e))
-    thresholds = tuple(float(x) for x in thr)
+    return tuple(float(x) for x in thr)
 
-    if "blocks" not in raw:
-        _fail("blocks", "missing (one [[blocks]] table per block)")
-    if not isinstance(raw["blocks"], list) or not raw["blocks"]:
-        _fail("blocks", "must be one or more [[blocks]] tables")
-    blocks = tuple(_block(i, b) for i, b in enumerate(raw["blocks"]))
 
-    if "motions" not in raw:
-        _fail("motions", "missing (a [motions] table with kind)")
-    motions = _motions(raw["motions"], Path(base_dir))
-    if n_motions(motions) == 0:
-        _fail(f"motions.{_motion_axis_key(motions)}", "empty motion set (no motion to run)")
+def _campaign(raw: dict) -> dict:
+    """The checked ``[campaign]`` table."""
+    c = _table("campaign", raw.get("campaign", {}))
+    _known("campaign", c, CAMPAIGN_KEYS)
+    for k in ("name", "seed", "model"):
+        if k not in c:
+            _fail(f"campaign.{k}", "missing")
+    out = {"name": _string("campaign.name", c["name"]),
+           "seed": _number("campaign.seed", c["seed"], 0, MAX_SIMS, integer=True),
+           "models": _models(c),
+           "duration": (_number("campaign.duration", c["duration"], 0, 1e6, lo_open=True)
+                        if "duration" in c else None),
+           "max_free_time": None}
+    if "max_free_time" in c:
+        out["max_free_time"] = _number("campaign.max_free_time", c["max_free_time"], 0,
+                                       MAX_RECORD_DURATION)
+        if out["duration"] is not None:
+            _fail("campaign.max_free_time", "applies only without campaign.duration (a run "
+                                            "with a duration stops exactly there)")
+    out["samples"] = _number("campaign.samples", c.get("samples", 1), 1, 1e9, integer=True)
+    out["thresholds"] = _thresholds(c)
+    return out
 
+
+def _uncertain(raw: dict, c: dict, blocks: tuple, motions: dict) -> dict:
+    """The checked ``[uncertain]`` table (each distribution against each block)."""
     uncertain = _table("uncertain", raw.get("uncertain", {}))
     _known("uncertain", uncertain, PARAMETERS)
     for k, d in uncertain.items():
@@ -512,24 +638,31 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
             _fail(f"uncertain.{k}", f"must be a table with dist, got {d!r}")
     for i, b in enumerate(blocks):
         try:
-            distributions(b, uncertain, where=lambda k: f"uncertain.{k}",
+            distributions(nominal(b), uncertain, where=lambda k: f"uncertain.{k}",
                           of=f" of blocks[{i}]" if len(blocks) > 1 else "")
         except ParameterError as e:  # "uncertain.k.sub must ..." or "uncertain.k: ..."
             key, _, msg = str(e).partition(" ")
             _fail(key.rstrip(":"), msg)
-    if samples > 1 and not uncertain:
-        _fail("campaign.samples", f"is {samples}, but nothing is uncertain: the samples would "
-                                  "be identical runs (give [uncertain] parameters, or samples = 1)")
-    if uncertain and "dem" in models and set(uncertain) & {"alpha", "p", "mu", "theta0"}:
-        bad = sorted(set(uncertain) & {"alpha", "p", "mu", "theta0"})[0]
-        _fail(f"uncertain.{bad}", "not supported with model 'dem' (its geometry and contacts "
-                                  "define alpha, p and mu; it starts at rest)")
+    if c["samples"] > 1 and not uncertain:
+        _fail("campaign.samples", f"is {c['samples']}, but nothing is uncertain: the samples "
+                                  "would be identical runs (give [uncertain] parameters, or "
+                                  "samples = 1)")
+    geometry = sorted(set(uncertain) & {"alpha", "p", "mu", "theta0"})
+    if geometry and "dem" in c["models"]:
+        _fail(f"uncertain.{geometry[0]}", "not supported with model 'dem' (its geometry and "
+                                          "contacts define alpha, p and mu; it starts at rest)")
+    if "noise" in uncertain and motion_kind(motions).vertical:
+        _fail("uncertain.noise", f"not supported with kind {motions['kind']!r} (the noise is "
+                                 "added to samples of the horizontal component only)")
+    return uncertain
 
-    shape = (len(models), len(blocks), n_motions(motions),
-             len(motions.get("levels", motions.get("load_factors", []))), samples)
+
+def _check_size(c: dict, blocks: tuple, motions: dict) -> None:
+    shape = (len(c["models"]), len(blocks), n_motions(motions),
+             len(motions.get("levels", motions.get("load_factors", []))), c["samples"])
     if math.prod(shape) > MAX_SIMS:
         axes = {"campaign.model": shape[0], "blocks": shape[1],
-                f"motions.{_motion_axis_key(motions)}": shape[2],
+                f"motions.{motions['axis']}": shape[2],
                 "motions.levels" if "levels" in motions else "motions.load_factors": shape[3],
                 "campaign.samples": shape[4]}
         key = max(axes, key=axes.get)
@@ -537,12 +670,17 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
                    + " x ".join(f"{v} {k}" for k, v in axes.items())
                    + "); at most 2^63 - 1 (sim_id is an int64)")
 
+
+def _run(raw: dict) -> tuple[int, int | None]:
     r = _table("run", raw.get("run", {}))
     _known("run", r, RUN_KEYS)
-    chunk = int(_number("run.chunk_size", r.get("chunk_size", 2000), 1, 1e7, integer=True))
-    window = (int(_number("run.window", r["window"], 1, 1e5, integer=True))
-              if "window" in r else None)
+    chunk = _number("run.chunk_size", r.get("chunk_size", 2000), 1, 1e7, integer=True)
+    window = _number("run.window", r["window"], 1, 1e5, integer=True) if "window" in r \
+        else None
+    return chunk, window
 
+
+def _options(raw: dict, models: tuple) -> dict:
     opts = _table("options", raw.get("options", {}))
     _known("options", opts, models)
     options = {}
@@ -557,17 +695,42 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
                 _fail(f"options.{m}.{opt}", msg.split(" ", 1)[1])
             _fail(f"options.{m}", msg)
         options[m] = dict(o)
-    for m in models:  # each block must suit each model (the DEM needs a geometry)
+    return options
+
+
+def _usable(models: tuple, blocks: tuple, options: dict) -> None:
+    """Each block must suit each model (the DEM needs a geometry; a stack, the DEM)."""
+    for m in models:
         for i, b in enumerate(blocks):
             try:
                 MODELS[m].from_kwargs(b, **options.get(m, {}))
             except RockingError as e:
                 _fail(f"blocks[{i}]", f"not usable with model {m!r}: {e}")
-    return CampaignSpec(name=name, seed=seed, models=models, duration=duration,
-                        samples=samples, thresholds=thresholds, blocks=blocks, motions=motions,
+
+
+def parse_spec(text: str, base_dir=".") -> CampaignSpec:
+    """Check a spec given as TOML text (record paths relative to ``base_dir``)."""
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise SpecError(f"spec: not valid TOML: {e}") from None
+    _known("", raw, SECTIONS)
+    c = _campaign(raw)
+    blocks = _blocks(raw)
+    if "motions" not in raw:
+        _fail("motions", "missing (a [motions] table with kind)")
+    motions = _motions(raw["motions"], Path(base_dir).resolve(), c["seed"])
+    uncertain = _uncertain(raw, c, blocks, motions)
+    _check_size(c, blocks, motions)
+    chunk, window = _run(raw)
+    options = _options(raw, c["models"])
+    _usable(c["models"], blocks, options)
+    return CampaignSpec(name=c["name"], seed=c["seed"], models=c["models"],
+                        duration=c["duration"], samples=c["samples"],
+                        thresholds=c["thresholds"], blocks=blocks, motions=motions,
                         uncertain=uncertain, chunk_size=chunk, window=window, options=options,
                         text=text, raw=raw, base_dir=str(Path(base_dir).resolve()),
-                        max_free_time=max_free_time)
+                        max_free_time=c["max_free_time"])
 
 
 def read_spec(path) -> CampaignSpec:
@@ -580,3 +743,81 @@ def read_spec(path) -> CampaignSpec:
     except (OSError, UnicodeDecodeError) as e:
         raise SpecError(f"spec: cannot read {p}: {e}") from None
     return parse_spec(text, base_dir=p.resolve().parent)
+
+
+# ------------------------------------------------------------------ the README's table
+KEYS_START, KEYS_END = "<!-- spec-keys:start -->", "<!-- spec-keys:end -->"
+"""The markers of the README's generated table (:func:`write_keys_table`)."""
+
+
+def _cell(x) -> str:
+    return str(x).replace("|", "\\|")
+
+
+def _rows(head: list[str], rows: list[list]) -> list[str]:
+    return (["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+            + ["| " + " | ".join(_cell(x) for x in r) + " |" for r in rows])
+
+
+def _default(d: dict, every=None) -> str:
+    if every is not None:
+        return f"all {len(every())}"
+    if d["required"]:
+        return "required"
+    return "" if d["default"] is None else f"`{_toml(d['default'])}`"
+
+
+def _motion_rows() -> list[list]:
+    rows = [["(all)", f"`{k}`", "", "", "", h] for k, h in
+            {"kind": "the motion kind (below)", **INTENSITY_KEYS}.items()]
+    for k in catalog.KINDS.values():
+        if COUNTER in k.sweep:
+            rows.append([f"`{k.name}`", f"`{COUNT}`", "", "[0, 1e7]", "required",
+                         f"{COUNTER} = 0 .. n-1 (or give {COUNTER})"])
+        for d in k.describe():
+            swept = " (a list or grid: one motion each)" if d["name"] in k.sweep else ""
+            files = "; paths or glob patterns, relative to the spec" \
+                if d["name"] in k.files else ""
+            every = k.every if k.sweep and d["name"] == k.sweep[0] else None
+            rows.append([f"`{k.name}`", f"`{d['name']}`", d["unit"], d["range"],
+                         _default(d, every), d["help"] + files + swept])
+    return rows
+
+
+def keys_table() -> str:
+    """Every spec key as Markdown, generated from the sections' keys, the block factory
+    (:data:`rocking.blocks.factory.FORMS`) and the motion catalog
+    (:data:`rocking.motions.catalog.KINDS`): the README's table."""
+    out = ["**`[campaign]`**", ""] + _rows(["key", "meaning"], [[f"`{k}`", h] for k, h in
+                                                                CAMPAIGN_KEYS.items()])
+    blocks = [["(all)", "`name`", "", "", "the form's name and `(blocks[i])`",
+               "names the block in the table (`block_name`)"]]
+    blocks += [[f"{f.name} (`{f.key}`)", f"`{d['name']}`", d["unit"], d["range"],
+                _default(d), d["help"]] for f in factory.FORMS.values() for d in f.describe()]
+    out += ["", "**`[[blocks]]`**, one table per block; its form is told by its key (a "
+            "stack is stood for by its top block in `alpha`, `p`, `mu`):", ""]
+    out += _rows(["form", "key", "unit", "range", "default", "meaning"], blocks)
+    out += ["", "**`[motions]`**: `kind` and that kind's parameters (one of them may be a "
+            "list or a grid `{start, stop, num, spacing}`):", ""]
+    out += _rows(["kind", "key", "unit", "range", "default", "meaning"], _motion_rows())
+    old = [f"`{o}` → `{n or 'pulse'}` ({', '.join(f'`{a}` → `{b}`' for a, b in k.items())})"
+           for o, (n, k) in LEGACY.items()]
+    out += ["", "Old spellings, still read with a DeprecationWarning: " + "; ".join(old)
+            + "."]
+    out += ["", "**`[uncertain]`**: `{dist = ...}` per parameter "
+            "(`rocking.analysis.montecarlo`):", ""]
+    out += _rows(["key", "range"], [[f"`{k}`", RANGES[k]] for k in PARAMETERS])
+    out += ["", "**`[run]`**", ""] + _rows(["key", "meaning"],
+                                          [[f"`{k}`", h] for k, h in RUN_KEYS.items()])
+    out += ["", "**`[options.<model>]`**: the model's options, as `rocking models` lists "
+            "them."]
+    return "\n".join(out) + "\n"
+
+
+def write_keys_table(readme) -> None:
+    """Rewrite the table between :data:`KEYS_START` and :data:`KEYS_END` in ``readme``."""
+    p = Path(readme)
+    text = p.read_text(encoding="utf-8")
+    head, _, rest = text.partition(KEYS_START)
+    _, _, tail = rest.partition(KEYS_END)
+    p.write_text(f"{head}{KEYS_START}\n{keys_table()}{KEYS_END}{tail}", encoding="utf-8")

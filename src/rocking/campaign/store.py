@@ -68,7 +68,7 @@ import pandas as pd
 from .. import __version__
 from .._atomic import atomic_write, fsync_dir, is_temporary, replace
 from ..errors import ParameterError, StoreError
-from .spec import CampaignSpec, parse_spec
+from .spec import CampaignSpec, nominal, parse_spec
 
 MANIFEST = "manifest.json"
 SPEC = "spec.toml"
@@ -108,8 +108,8 @@ def manifest_for(spec: CampaignSpec) -> dict:
         "axes": ["model", "block", "motion", "level", "sample"],
         "shape": list(spec.shape),
         "models": list(spec.models),
-        "blocks": [{"name": b.name, "alpha": b.alpha, "p": b.p, "mu": b.mu}
-                   for b in spec.blocks],
+        "blocks": [{"name": b.name, "alpha": nominal(b).alpha, "p": nominal(b).p,
+                    "mu": nominal(b).mu} for b in spec.blocks],  # a stack: its top block
         "motions": spec.motions,
         "levels": np.asarray(spec.levels, dtype=float).tolist(),
         "im": ({"name": spec.im, "unit": IMS[spec.im][0]} if spec.im else None),

@@ -219,6 +219,12 @@ class BuiltinParams(Options):
                                  f"{self.name!r}")
 
 
+def _every_builtin() -> tuple[str, ...]:
+    """The horizontal records shipped with the package (not the three-component sets)."""
+    from .io import builtin_records
+    return tuple(builtin_records())
+
+
 def _builtin(p: BuiltinParams, ctx: Context) -> Motion:
     from .records import load_builtin
     return load_builtin(p.name)
@@ -378,6 +384,12 @@ class MotionKind:
     """The motions have a vertical component (``lift_off_time`` is meaningful)."""
     make_many: Callable | None = None
     """Optional: make several motions in one call (the same motions as one by one)."""
+    every: Callable[[], tuple] | None = None
+    """Optional: the values of the swept parameter that a spec which omits it runs (every
+    record of a finite set: the 30 earthquakes, the shipped records)."""
+    files: tuple[str, ...] = ()
+    """Parameters that are file paths (a spec reads them when checked, and hashes their
+    contents into the spec hash)."""
 
     def params(self, **values) -> Options:
         """The checked parameters (unknown names refused)."""
@@ -429,17 +441,20 @@ KINDS: dict[str, MotionKind] = {k.name: k for k in (
                lambda p: f"mavroeidis_papageorgiou:{_fmt(p.frequency)}Hz",
                sweep=("frequency",), aliases=("mp",)),
     MotionKind("record", "a recorded accelerogram from a file (rocking.motions.Record)",
-               RecordParams, _record, lambda p: p.file, sweep=("file",)),
+               RecordParams, _record, lambda p: p.file, sweep=("file",), files=("file",)),
     MotionKind("builtin", "a record shipped with the package (rocking.motions.load_builtin)",
-               BuiltinParams, _builtin, lambda p: p.name, sweep=("name",)),
+               BuiltinParams, _builtin, lambda p: p.name, sweep=("name",),
+               every=_every_builtin),
     MotionKind("earthquake", "the paper's spectrum-compatible earthquakes "
                "(rocking.motions.paper_earthquake)", EarthquakeParams, _earthquake,
-               lambda p: f"seed:{p.number:02d}", sweep=("number",)),
+               lambda p: f"seed:{p.number:02d}", sweep=("number",),
+               every=lambda: tuple(range(1, 31))),
     MotionKind("ground_motion", "horizontal and vertical components "
                "(rocking.motions.GroundMotion)", GroundParams, _ground,
                lambda p: (f"{p.set}:h{p.horizontal}" if p.set is not None
                           else f"{p.file}+{p.vertical_file}"),
-               sweep=("set", "horizontal", "file"), vertical=True),
+               sweep=("set", "horizontal", "file"), vertical=True,
+               files=("file", "vertical_file")),
     MotionKind("stochastic", "stochastic accelerograms of Rezaeian and Der Kiureghian 2008 "
                "(rocking.motions.stochastic_records)", StochasticParams, _stochastic,
                lambda p: f"stochastic:{p.index}", sweep=("index",),
