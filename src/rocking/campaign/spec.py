@@ -410,6 +410,8 @@ def _read(kind: catalog.MotionKind, p, ctx: catalog.Context, where: str, param) 
     """Read the files of motion ``p`` as a run will (refused if they cannot be read or
     parsed); their content digest (``+`` between files)."""
     given = [f for f in kind.files if getattr(p, f) is not None]
+    if not given:
+        return ""
     paths = [ctx.path(getattr(p, f)) for f in given]
     keys = [where if f == param else f"motions.{f}" for f in given]
     digest = "+".join(_digest(k, q) for k, q in zip(keys, paths, strict=True))
@@ -447,9 +449,10 @@ def _checked(kind: catalog.MotionKind, t: dict, axis: _Axis, ctx: catalog.Contex
             out["values"] = [getattr(p, axis.param) for p in ps]
     if "values" in out and len(set(out["values"])) != n:
         _fail(axis.key, "has repeated values (one motion each)")
-    if kind.files:
-        out["digests"] = [_read(kind, p, ctx, w, axis.param)
-                          for p, w in zip(ps, where, strict=True)]
+    digests = ([_read(kind, p, ctx, w, axis.param) for p, w in zip(ps, where, strict=True)]
+               if kind.files else [])
+    if any(digests):  # record files (not a built-in set)
+        out["digests"] = digests
     return out
 
 
@@ -767,21 +770,39 @@ def _default(d: dict, every=None) -> str:
     return "" if d["default"] is None else f"`{_toml(d['default'])}`"
 
 
+def _several(kind: catalog.MotionKind, d: dict) -> str:
+    """How a parameter may give several motions (the README's column)."""
+    if d["name"] == COUNTER and COUNTER in kind.sweep:
+        return f"list, grid, or {COUNT}"
+    if d["name"] not in kind.sweep:
+        return ""
+    return "list, glob" if d["name"] in kind.files else \
+        "list, grid" if d["kind"] in (int, float) else "list"
+
+
 def _motion_rows() -> list[list]:
-    rows = [["(all)", f"`{k}`", "", "", "", h] for k, h in
+    rows = [["(all)", f"`{k}`", "", "", "", "", h] for k, h in
             {"kind": "the motion kind (below)", **INTENSITY_KEYS}.items()]
     for k in catalog.KINDS.values():
         if COUNTER in k.sweep:
-            rows.append([f"`{k.name}`", f"`{COUNT}`", "", "[0, 1e7]", "required",
-                         f"{COUNTER} = 0 .. n-1 (or give {COUNTER})"])
+            rows.append([f"`{k.name}`", f"`{COUNT}`", "", "[0, 1e7]", "required", "",
+                         f"the records {COUNTER} = 0 .. n-1 (or give {COUNTER})"])
         for d in k.describe():
-            swept = " (a list or grid: one motion each)" if d["name"] in k.sweep else ""
-            files = "; paths or glob patterns, relative to the spec" \
-                if d["name"] in k.files else ""
             every = k.every if k.sweep and d["name"] == k.sweep[0] else None
             rows.append([f"`{k.name}`", f"`{d['name']}`", d["unit"], d["range"],
-                         _default(d, every), d["help"] + files + swept])
+                         _default(d, every), _several(k, d), d["help"]])
     return rows
+
+
+def _legacy_text() -> str:
+    old = []
+    for o, (n, keys) in LEGACY.items():
+        renamed = ", ".join(f"`{a}` → `{b}`" for a, b in keys.items() if b != "kind")
+        implied = ", ".join(f"{k} = {v}" for k, v in LEGACY_DEFAULTS.get(o, {}).items())
+        old.append(f"`{o}` → `{n}`" if n else f"`{o}` → the kind its `pulse` names")
+        old[-1] += f" ({renamed}" + (f"; write {implied}, once implied" if implied else "") + ")"
+    return ("Old spellings, still read with a DeprecationWarning that says how to write them: "
+            + "; ".join(old) + ".")
 
 
 def keys_table() -> str:
@@ -797,13 +818,12 @@ def keys_table() -> str:
     out += ["", "**`[[blocks]]`**, one table per block; its form is told by its key (a "
             "stack is stood for by its top block in `alpha`, `p`, `mu`):", ""]
     out += _rows(["form", "key", "unit", "range", "default", "meaning"], blocks)
-    out += ["", "**`[motions]`**: `kind` and that kind's parameters (one of them may be a "
-            "list or a grid `{start, stop, num, spacing}`):", ""]
-    out += _rows(["kind", "key", "unit", "range", "default", "meaning"], _motion_rows())
-    old = [f"`{o}` → `{n or 'pulse'}` ({', '.join(f'`{a}` → `{b}`' for a, b in k.items())})"
-           for o, (n, k) in LEGACY.items()]
-    out += ["", "Old spellings, still read with a DeprecationWarning: " + "; ".join(old)
-            + "."]
+    out += ["", "**`[motions]`**: `kind` and that kind's parameters; at most one parameter "
+            "gives several motions (the motion axis), as a list, a grid `{start, stop, num, "
+            "spacing}` or glob patterns (file paths are relative to the spec):", ""]
+    out += _rows(["kind", "key", "unit", "range", "default", "several", "meaning"],
+                 _motion_rows())
+    out += ["", _legacy_text()]
     out += ["", "**`[uncertain]`**: `{dist = ...}` per parameter "
             "(`rocking.analysis.montecarlo`):", ""]
     out += _rows(["key", "range"], [[f"`{k}`", RANGES[k]] for k in PARAMETERS])
