@@ -82,29 +82,16 @@ def _check(table, manifest) -> tuple[pd.DataFrame, dict, tuple]:
     if len(table) == 0:
         raise ParameterError("table is empty: the store holds no simulation (run the "
                              "campaign first)")
-    im_spec = manifest.get("im")
-    if im_spec:
-        if "im" not in table.columns:
-            raise ParameterError(f"table: missing column im (manifest['im'] = {im_spec!r} "
-                                 "says the motions were scaled to intensity levels)")
-        im = {"name": str(im_spec.get("name", "im")), "unit": str(im_spec.get("unit", "")),
-              "column": "im"}
-    elif "im" in table.columns:
-        im = {"name": "im", "unit": "", "column": "im"}
-    else:
-        im = {"name": "pga", "unit": "m/s^2", "column": "pga"}
+    im = _im_of(table, manifest)
     t = table.copy()
     for col in ("alpha", "load_factor", "pga", "max_abs_theta", "max_abs_theta_over_alpha",
                 *(["im"] if "im" in t else [])):
         t[col] = _numeric(t, col, float)
     for col in ("level", "block", "damage_state", "status"):
         t[col] = _numeric(t, col, int)
-    ov = t["overturned"]
-    if ov.dtype != bool:
-        if not ov.isin([0, 1, True, False]).all():
-            raise ParameterError("table: column overturned must be boolean")
-        t["overturned"] = ov.astype(bool)
-    for col in ("settled", "theta0_truncated"):  # optional: stores of older versions lack them
+    # overturned, and the optional ones (older stores lack settled and theta0_truncated;
+    # lifted_off: motions with a vertical component)
+    for col in ("overturned", "settled", "theta0_truncated", "lifted_off"):
         if col in t.columns and t[col].dtype != bool:
             if not t[col].isin([0, 1, True, False]).all():
                 raise ParameterError(f"table: column {col} must be boolean")
@@ -118,6 +105,20 @@ def _check(table, manifest) -> tuple[pd.DataFrame, dict, tuple]:
         raise ParameterError(f"table: column damage_state must be in 0..{top} (thresholds "
                              f"{list(thresholds)} and overturning), got {int(bad.iloc[0])}")
     return t, im, thresholds
+
+
+def _im_of(table: pd.DataFrame, manifest) -> dict:
+    """The IM ``{"name", "unit", "column"}``: the manifest's, an ``im`` column, or PGA."""
+    im_spec = manifest.get("im")
+    if im_spec:
+        if "im" not in table.columns:
+            raise ParameterError(f"table: missing column im (manifest['im'] = {im_spec!r} "
+                                 "says the motions were scaled to intensity levels)")
+        return {"name": str(im_spec.get("name", "im")), "unit": str(im_spec.get("unit", "")),
+                "column": "im"}
+    if "im" in table.columns:
+        return {"name": "im", "unit": "", "column": "im"}
+    return {"name": "pga", "unit": "m/s^2", "column": "pga"}
 
 
 def _numeric(t: pd.DataFrame, col: str, kind) -> pd.Series:

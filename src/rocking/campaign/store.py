@@ -408,17 +408,12 @@ class Store:
             return "bytes or sha256 malformed"
         return None
 
-    def check(self, deep: bool = False) -> Check:
-        """Verify every chunk against its record (size and sha256; with ``deep`` also
-        read it: Parquet, rows, ``sim_id`` range). Read-only."""
-        m = self.manifest
-        nc = m["n_chunks"]
+    def _scan(self, nc: int) -> tuple[set, dict, list]:
+        """The chunk files and records in ``chunks/`` (records read), and its stray files."""
         d = self.path / CHUNKS
-        running = self.running()
-        names = sorted(os.listdir(d)) if d.is_dir() else []
         problems: list[Problem] = []
         files, records = set(), {}
-        for name in names:
+        for name in sorted(os.listdir(d)) if d.is_dir() else []:
             mt = _CHUNK.match(name)
             if is_temporary(name) or (name.startswith(".") and name.endswith(".tmp")):
                 continue  # a temporary file of a run (removed by the next one)
@@ -432,6 +427,37 @@ class Store:
                 files.add(k)
             else:
                 records[k] = self._record(k)
+        return files, records, problems
+
+    def _checksum_problem(self, k: int, r: dict, by_sha: dict, paths) -> Problem | None:
+        """Chunk ``k``'s file against its record ``r`` (sha256, size), or None if it
+        matches."""
+        cname = f"{CHUNKS}/{chunk_name(k)}"
+        try:
+            sha, size = _sha256(self.chunk_path(k))
+        except OSError as e:
+            return Problem(cname, "unreadable", e.strerror or str(e), k, paths)
+        if sha == r["sha256"]:
+            return None
+        j = by_sha.get(sha)
+        if j is not None and j != k:
+            a, b = self.chunk_range(j)
+            c, e = self.chunk_range(k)
+            return Problem(cname, "duplicate", f"a copy of {chunk_name(j)}: sim_ids "
+                                               f"{a}-{b - 1} twice, {c}-{e - 1} missing", k,
+                           paths)
+        if size < r["bytes"]:
+            return Problem(cname, "truncated", f"{size} of {r['bytes']} bytes", k, paths)
+        return Problem(cname, "altered", "sha256 differs from its record"
+                       + (f", {size} of {r['bytes']} bytes" if size != r["bytes"] else ""),
+                       k, paths)
+
+    def check(self, deep: bool = False) -> Check:
+        """Verify every chunk against its record (size and sha256; with ``deep`` also
+        read it: Parquet, rows, ``sim_id`` range). Read-only."""
+        nc = self.manifest["n_chunks"]
+        running = self.running()
+        files, records, problems = self._scan(nc)
         by_sha = {r["sha256"]: k for k, r in records.items() if isinstance(r, dict)
                   and isinstance(r.get("sha256"), str)}
         ok, adopted = set(), 0
@@ -454,26 +480,9 @@ class Store:
                                         f"sim_ids {r['sim_id_first']}-{r['sim_id_last']}",
                                         k, paths))
                 continue
-            try:
-                sha, size = _sha256(self.chunk_path(k))
-            except OSError as e:
-                problems.append(Problem(cname, "unreadable", e.strerror or str(e), k, paths))
-                continue
-            if sha != r["sha256"]:
-                j = by_sha.get(sha)
-                if j is not None and j != k:
-                    a, b = self.chunk_range(j)
-                    c, e = self.chunk_range(k)
-                    problems.append(Problem(
-                        cname, "duplicate", f"a copy of {chunk_name(j)}: sim_ids {a}-{b - 1} "
-                        f"twice, {c}-{e - 1} missing", k, paths))
-                elif size < r["bytes"]:
-                    problems.append(Problem(cname, "truncated",
-                                            f"{size} of {r['bytes']} bytes", k, paths))
-                else:
-                    problems.append(Problem(cname, "altered", "sha256 differs from its record"
-                                            + (f", {size} of {r['bytes']} bytes"
-                                               if size != r["bytes"] else ""), k, paths))
+            bad = self._checksum_problem(k, r, by_sha, paths)
+            if bad is not None:
+                problems.append(bad)
                 continue
             if deep:
                 why = self._read_problem(k, r)
