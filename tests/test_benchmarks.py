@@ -35,7 +35,7 @@ LAST = {
     "bench_identify.py": "at 50 Hz",
     "bench_import.py": "import rocking; rocking.simulate",
     "bench_motions.py": "pyrotd",
-    "bench_overturning.py": "mp ",
+    "bench_overturning.py": "mavroeidis_papageorgiou ",
     "bench_stochastic.py": "records/s",
     "bench_vertical.py": "GroundMotion(h, v)",
     "study_rest_tol.py": "ccrr section:",
