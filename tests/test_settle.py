@@ -251,7 +251,7 @@ def _cli(*args):
 
 
 def test_cli_warns_when_still_rocking():
-    args = ["simulate", "--specimen", "2", "--params", "experimental", "--motion", "one-sine",
+    args = ["simulate", "--specimen", "2", "--params", "experimental", "--motion", "one_sine",
             "--tp", "0.5s", "--amp", f"{AP}m/s2"]
     cut = _cli(*args, "--duration", "0.5")
     assert cut.returncode == 0, cut.stderr
