@@ -40,14 +40,14 @@ def test_modes_follow_zhang_and_makris_on_a_physical_case():
     acceleration overturns the block after one impact (mode 1: the tongue), one 8 times
     it without any impact (mode 2), as in Zhang and Makris (2001)."""
     b = rocking.specimen(1, "experimental")
-    after = rocking.simulate(b, pulse_motion(b, "sine", 2.0, 1.4))
-    direct = rocking.simulate(b, pulse_motion(b, "sine", 2.0, 8.0))
+    after = rocking.simulate(b, pulse_motion(b, "one_sine", 2.0, 1.4))
+    direct = rocking.simulate(b, pulse_motion(b, "one_sine", 2.0, 8.0))
     assert after.overturned and after.n_impacts == 1
     assert direct.overturned and direct.n_impacts == 0
-    m = A.outcome_map(b, "sine", [2.0], [1.4, 8.0])
+    m = A.outcome_map(b, "one_sine", [2.0], [1.4, 8.0])
     assert m["n_impacts"].tolist() == [1, 0]
     assert m["mode"].tolist() == [1, 2]
-    spec = A.overturning_spectrum(b, "sine", [2.0], tol=0.02)
+    spec = A.overturning_spectrum(b, "one_sine", [2.0], tol=0.02)
     assert int(spec["n_impacts"].iloc[0]) >= 1 and int(spec["mode"].iloc[0]) == 1
 
 
