@@ -300,7 +300,7 @@ def test_spec_message_has_one_prefix():
     from rocking.errors import SpecError
 
     text = ("[campaign]\nname = 'x'\nseed = 1\nmodel = 'housner'\n[[blocks]]\nspecimen = 2\n"
-            "[motions]\nkind = 'builtin'\nnames = ['Rinaldi228']\n"
+            "[motions]\nkind = 'builtin'\nname = ['Rinaldi228']\n"
             "[uncertain]\nalpha = {dist = 'normal', cov = -1}\n")
     with pytest.raises(SpecError) as e:
         parse_spec(text)
