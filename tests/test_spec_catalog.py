@@ -254,6 +254,9 @@ def test_an_old_spelling_keeps_its_hash_and_names_its_keys(tmp_path):
         with pytest.raises(SpecError, match=r"^spec: motions\.records\[1\]: must be in "
                                             r"\[1, 30\]"):
             campaign.parse_spec(spec_text({"kind": "seed_earthquakes", "records": [2, 31]}))
+        with pytest.raises(SpecError, match=r"^spec: motions\.name: give name or names"):
+            campaign.parse_spec(spec_text({"kind": "builtin", "names": ["Rinaldi228"],
+                                           "name": "Rinaldi228"}))
 
 
 # ------------------------------------------------------------------ every kind

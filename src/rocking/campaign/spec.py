@@ -286,6 +286,10 @@ def _legacy(t: dict) -> tuple[dict, dict]:
         return t, {}
     if new is None and "pulse" not in t:
         _fail("motions.pulse", f"missing (one of {', '.join(PULSES)})")
+    both = [k for k in keys if k in t and keys[k] in t and keys[k] != "kind"]
+    if both:
+        _fail(f"motions.{keys[both[0]]}", f"give {keys[both[0]]} or {both[0]} (its old "
+                                          "spelling), not both")
     out = {"kind": new} if new else {}
     out.update({keys.get(k, k): v for k, v in t.items() if k != "kind"})
     for k, v in LEGACY_DEFAULTS.get(old, {}).items():
