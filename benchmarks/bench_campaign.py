@@ -88,7 +88,7 @@ params = "experimental"
 [motions]
 kind = "stochastic"
 n = {n}
-record_duration = 20.0
+duration = 20.0
 dt = 0.01
 load_factors = {{start = 0.25, stop = 2.5, num = {num}}}
 
@@ -111,11 +111,10 @@ specimen = 2
 params = "geometric"
 
 [motions]
-kind = "pulse_grid"
-pulse = "one_sine"
-periods = {{start = 0.2, stop = 1.0, num = {n_periods}}}
+kind = "one_sine"
+period = {{start = 0.2, stop = 1.0, num = {n_periods}}}
 amplitude = 1.0
-record_duration = 3.0
+duration = 3.0
 load_factors = {{start = 1.0, stop = 6.0, num = {n_amplitudes}}}
 
 [run]

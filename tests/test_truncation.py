@@ -159,8 +159,8 @@ specimen = 2
 params = "experimental"
 
 [motions]
-kind = "sine_grid"
-frequencies = [2.0]
+kind = "sine"
+frequency = [2.0]
 cycles = 2
 amplitude = 0.5
 load_factors = [1.0]
