@@ -47,8 +47,15 @@ def blocks_dict(name: str | None = None) -> list[dict]:
              "keys": _jsonable(f.describe())} for f in forms]
 
 
-def _text(title: str, rows: list[dict], head: str) -> str:
-    return "\n".join([title, *describe_table(rows, head, unset="-")])
+def _echo(items: list[dict], as_json: bool, title, rows: str, head: str, footer: str):
+    """Print ``items`` as JSON, or as one table each (``title(item)``, ``item[rows]``)
+    followed by ``footer``."""
+    if as_json:
+        click.echo(json.dumps(items, indent=2, default=json_default))
+        return
+    click.echo("\n\n".join("\n".join([title(i), *describe_table(i[rows], head, unset="-")])
+                           for i in items))
+    click.echo("\n" + footer)
 
 
 @click.command("motions", context_settings=CONTEXT)
@@ -56,19 +63,14 @@ def _text(title: str, rows: list[dict], head: str) -> str:
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 def motions_cmd(kind, as_json):
     """List the motion kinds and their parameters (or those of KIND)."""
-    kinds = motions_dict(kind)
-    if as_json:
-        click.echo(json.dumps(kinds, indent=2, default=json_default))
-        return
-    click.echo("\n\n".join(
-        _text(f"{k['name']}: {k['summary']}"
-              + (f" (old spelling: {', '.join(k['aliases'])})" if k["aliases"] else ""),
-              k["parameters"], "parameter") for k in kinds))
-    click.echo("\nsimulate --motion KIND: --amp is amplitude (for sine and hanning, "
-               "displacement if a length: 5mm), --freq frequency, --tp period, --duration "
-               "duration, --param KEY=VALUE any parameter; numbers in the unit shown or "
-               "with a unit (0.3g, 5mm, 2Hz). A campaign spec: [motions] kind = KIND and the "
-               "parameters by name.")
+    _echo(motions_dict(kind), as_json,
+          lambda k: f"{k['name']}: {k['summary']}"
+          + (f" (old spelling: {', '.join(k['aliases'])})" if k["aliases"] else ""),
+          "parameters", "parameter",
+          "simulate --motion KIND: --amp is amplitude (for sine and hanning, displacement if "
+          "a length: 5mm), --freq frequency, --tp period, --duration duration, --param "
+          "KEY=VALUE any parameter; numbers in the unit shown or with a unit (0.3g, 5mm, "
+          "2Hz). A campaign spec: [motions] kind = KIND and the parameters by name.")
 
 
 @click.command("blocks", context_settings=CONTEXT)
@@ -76,14 +78,10 @@ def motions_cmd(kind, as_json):
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
 def blocks_cmd(form, as_json):
     """List the block forms and their keys (or those of FORM)."""
-    forms = blocks_dict(form)
-    if as_json:
-        click.echo(json.dumps(forms, indent=2, default=json_default))
-        return
-    click.echo("\n\n".join(_text(f"{f['name']}: {f['summary']} (told by the key {f['key']})",
-                                 f["keys"], "key") for f in forms))
-    click.echo("\nsimulate/params: --specimen N, --width W --height H or --alpha A --p P "
-               "--mu MU; a campaign spec: [[blocks]] with the keys by name")
+    _echo(blocks_dict(form), as_json,
+          lambda f: f"{f['name']}: {f['summary']} (told by the key {f['key']})", "keys", "key",
+          "simulate/params: --specimen N, --width W --height H or --alpha A --p P --mu MU; a "
+          "campaign spec: [[blocks]] with the keys by name")
 
 
 __all__ = ["motions_cmd", "blocks_cmd", "motions_dict", "blocks_dict"]
