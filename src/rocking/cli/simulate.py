@@ -411,7 +411,12 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
                                       load_factor, earthquake, vertical, vertical_factor,
                                       params=motion_params)
     options = model_options(model, model_opts, friction_angle, stiffness, damping)
-    linear = bool(linear) or bool(options.pop("linear", False))  # --linear = --option linear=1
+    if linear:  # --linear is --option linear=true: one way into the model's options
+        owners = models_with_option("linear")
+        if model not in owners:
+            raise ParameterError(f"linear applies to --model {' or '.join(owners)} only")
+        options["linear"] = True
+    linear = bool(options.get("linear", False))
     th0 = quantity(theta0, "angle", "theta0", default_unit="rad")
     om0 = number(omega0, "omega0", ("rad/s", "1/s"))
     run = {}
@@ -427,7 +432,7 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
         run["max_free_time"] = mft
     resp = simulate(block, mot, model=model, duration=sim_dur,
                     theta0=0.0 if th0 is None else th0, omega0=0.0 if om0 is None else om0,
-                    linear=linear, **run, **options)
+                    **run, **options)
 
     summary = resp.summary()
     inputs = {"block": {**binfo, "alpha": block.alpha, "p": block.p, "mu": block.mu,
