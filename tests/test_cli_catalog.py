@@ -310,7 +310,9 @@ BAD = [
     (["simulate", "--specimen", "2", "--earthquake", "2.5"], "earthquake"),
     (["simulate", "--specimen", "2", "--earthquake", "7", "--amp", "0.3g"], "amp"),
     (["simulate", "--specimen", "2", "--motion", "nope"], "motion"),
-    (["simulate", "--specimen", "2", "--motion", "stochastic"], "motion"),
+    (["simulate", "--specimen", "2", "--motion", "stochastic", "--param", "zeta_f=2"],
+     "zeta_f"),
+    (["simulate", "--specimen", "2", "--motion", "ground_motion"], "set or file"),
     (["simulate", "--specimen", "2", "--record", "Rinaldi228", "--dt", "0.01"], "--dt"),
     (["simulate", "--specimen", "2", "--model", "dem", "--motion", "free", "--friction-angle",
       "95deg"], "friction-angle must be in [0, "),
@@ -343,3 +345,30 @@ def test_mass_with_its_unit(capsys):
                               "228kg", "--json")
     assert code == 0, err
     assert json.loads(out)["mass"] == rocking.Block.rectangular(0.2, 1.0, mass=228.0).mass
+
+
+# every kind of the catalog through --motion and --param: the catalog's own motion
+def _param_args(params: dict) -> list[str]:
+    return [a for k, v in params.items() for a in ("--param", f"{k}={v}")]
+
+
+@pytest.mark.parametrize("name", sorted(catalog.KINDS))
+def test_every_catalog_kind_through_param(name, tmp_path):
+    from test_catalog import EXAMPLES  # one example per kind, checked against the classes
+
+    from rocking.cli.simulate import make_motion
+
+    if name == "record":  # --motion record takes --record FILE (and --dt, --units)
+        path = tmp_path / "r.txt"
+        path.write_text("\n".join(f"{x:.5f}" for x in np.sin(np.arange(300) / 7.0) * 0.1))
+        params = {"file": str(path), "dt": 0.01}
+        m, desc, _ = make_motion(name, None, None, None, None, str(path), None, "0.01", None)
+    else:
+        params = EXAMPLES[name][0]
+        pairs = tuple(f"{k}={v}" for k, v in params.items())
+        m, desc, _ = make_motion(name, None, None, None, None, None, None, None, None,
+                                 params=pairs)
+    ref = catalog.build(name, catalog.Context(seed=0), **params)
+    (ka, pa, sa), (kb, pb, sb) = m.spec(), ref.spec()
+    assert ka == kb and np.array_equal(pa, pb) and np.array_equal(sa, sb)
+    assert desc["type"] == name

@@ -72,22 +72,25 @@ UNITS_HELP = "g, m/s^2 or cm/s^2"
 
 
 class MotionChoice(click.ParamType):
-    """``--motion``: a name of :data:`MOTION_CHOICES`, or an old spelling of one
-    (``one-sine``; resolved by the catalog, with a warning)."""
+    """``--motion``: ``free`` or any kind of :data:`rocking.motions.catalog.KINDS` (the
+    kinds of :data:`MOTION_CHOICES` have flags of their own; every kind takes ``--param
+    KEY=VALUE``), or an old spelling of one (``one-sine``; resolved by the catalog, with a
+    warning)."""
 
     name = "motion"
 
     def get_metavar(self, param, ctx=None):  # click >= 8.2 passes ctx
-        return "[" + "|".join(MOTION_CHOICES) + "]"
+        return "KIND"
 
     def convert(self, value, param, ctx):
         if value in MOTION_CHOICES:
             return value
-        from ..motions.catalog import ALIASES  # lazy: the motions import numba
+        from ..motions.catalog import ALIASES, KINDS  # lazy: the motions import numba
 
-        if ALIASES.get(value) in MOTION_CHOICES:
+        if value in KINDS or value in ALIASES:
             return value
-        self.fail(f"{value!r} is not one of {', '.join(MOTION_CHOICES)}", param, ctx)
+        self.fail(f"{value!r} is not one of free, {', '.join(KINDS)} (rocking motions "
+                  "lists them)", param, ctx)
 
 
 # ----------------------------------------------------------------------------- motions
@@ -164,10 +167,21 @@ def _describe(kind: str, m) -> dict:
             d["t0"] = m.t0
     elif kind == "ricker":
         d.update(amplitude=m.amplitude, fp=m.fp, tc=m.tc)
-    else:  # mavroeidis_papageorgiou
+    elif kind == "mavroeidis_papageorgiou":
         d.update(amplitude=m.amplitude, fp=m.fp, gamma=m.gamma, nu=m.nu, t0=m.t0)
     d["duration"] = m.duration
     return d
+
+
+def _other_motion(kind: str, freq, amp, tp, pairs):
+    """``(motion, description)`` of a catalog kind without flags of its own (``--param
+    KEY=VALUE``: a built-in three-component set, a stochastic record with seed 0, ...)."""
+    values, words = _catalog_values(kind, freq, amp, tp, None, pairs)
+    p, m = _build(kind, values, words)
+    defaults = {d["name"]: d["default"] for d in p.describe()}
+    desc = {"type": kind, **{k: v for k, v in p.to_dict().items()
+                             if v is not None and v != defaults[k]}, "pga": m.pga}
+    return m, desc
 
 
 def _catalog_motion(kind: str, freq, amp, tp, duration, pairs):
@@ -234,7 +248,7 @@ def _source(motion, record, earthquake, vertical, vertical_factor) -> str:
         if motion is not None or record is not None:
             raise ParameterError("earthquake: --earthquake cannot be combined with --motion "
                                  "or --record")
-        return "earthquake"
+        return "--earthquake"
     if motion is None:
         if record is None:
             raise ParameterError(f"motion: give --motion ({', '.join(MOTION_CHOICES)}) "
@@ -250,9 +264,9 @@ def _source(motion, record, earthquake, vertical, vertical_factor) -> str:
 
 def _refuse(source: str, given: dict) -> None:
     """An error for a flag that does not apply to the motion."""
-    applies = {"free": (), "earthquake": (), "record": ("units", "dt")}.get(
+    applies = {"free": (), "--earthquake": (), "record": ("units", "dt")}.get(
         source, ("freq", "amp", "tp", "param"))
-    label = "--earthquake" if source == "earthquake" else f"--motion {source}"
+    label = source if source == "--earthquake" else f"--motion {source}"
     for flag, value in given.items():
         if value is None or flag in applies:
             continue
@@ -276,7 +290,9 @@ def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
     run = positive_quantity(duration, "time", "duration", "s", "s")
     if source == "free":
         return None, {"type": "free", "load_factor": lf}, run
-    if source == "earthquake":
+    if source not in ("--earthquake", "record"):
+        return (*_scaled(*_other_motion(source, freq, amp, tp, params), lf), run)
+    if source == "--earthquake":
         m, desc = _earthquake(earthquake)
     else:
         m, desc = _record(record, units, dt)
@@ -506,6 +522,10 @@ def _motion_title(d: dict) -> str:
         return f"record {Path(d['file']).name} (PGA {d['pga'] / G:.3g} g){tail}"
     if kind == "earthquake":
         return f"earthquake {d['number']} (PGA {d['pga'] / G:.3g} g){tail}"
+    if kind not in (None, "free"):  # a kind given by --param: its parameters
+        shown = ", ".join(f"{k} {v}" for k, v in d.items()
+                          if k not in ("type", "pga", "load_factor", "repr"))
+        return f"{kind} {shown} (PGA {d['pga'] / G:.3g} g){tail}"
     return "free rocking"
 
 
