@@ -37,6 +37,8 @@ UNITS = {
     "dt": "s", "gamma": "", "nu": "rad", "vertical_factor": "", "friction_angle": "rad",
     "width": "m", "height": "m", "mass": "kg", "density": "kg/m^3", "thickness": "m",
     "alpha": "rad", "p": "1/s", "mu": "", "stiffness": "N/m", "damping": "s",
+    "damping_ratio": "", "storeys": "", "floor": "", "height_ratio": "",
+    "stiffness_ratio": "",
 }
 """The SI unit of each parameter name used by more than one declaration (a test checks
 that every declared parameter of that name has this unit)."""
@@ -101,7 +103,7 @@ def check_option(name: str, value, m: dict):
         return value
     if m.get("quantity") and isinstance(value, str):
         value = parse_quantity(value, m["quantity"], name=name,
-                               default_unit=m.get("unit") or None)
+                               default_unit=m.get("unit", ""))
     x = as_float(name, value)
     if m["lo"] is not None or m["hi"] is not None:
         lo = -math.inf if m["lo"] is None else m["lo"]

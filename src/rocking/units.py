@@ -24,6 +24,8 @@ ACCELERATION = {
 TIME = {"s": 1.0, "ms": 1e-3, "min": 60.0}
 FREQUENCY = {"hz": 1.0, "khz": 1e3}
 ANGLE = {"rad": 1.0, "deg": math.pi / 180.0}
+RATIO = {"": 1.0, "%": 0.01}
+"""A dimensionless ratio, bare or in percent (``5%`` is 0.05): damping ratios."""
 
 KINDS = {
     "length": LENGTH,
@@ -31,6 +33,7 @@ KINDS = {
     "time": TIME,
     "frequency": FREQUENCY,
     "angle": ANGLE,
+    "ratio": RATIO,
 }
 
 _QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([^\s\d].*)?\s*$")
@@ -116,7 +119,7 @@ def parse_quantity(text, kind: str, *, name: str = "value",
     m = _QTY.match(str(text))
     if not m:
         examples = {"length": "5mm", "acceleration": "0.3g", "time": "2s",
-                    "frequency": "5Hz", "angle": "2deg"}[kind]
+                    "frequency": "5Hz", "angle": "2deg", "ratio": "5%"}[kind]
         raise UnitError(f"{name} must be a number with {_a(kind)} unit such as {examples!r}; "
                         f"got {text!r}")
     number = float(m.group(1))
