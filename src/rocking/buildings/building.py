@@ -4,24 +4,97 @@ A building is a set of modes ``j`` with circular frequency ``omega_j = 2 pi / T_
 damping ratio ``zeta_j``, shape ``phi_j`` (at each floor, or as a function of the height
 ratio ``z/H`` for the continuous model) and participation factor ``Gamma_j``
 (``Gamma_j = phi_j^T M 1 / phi_j^T M phi_j``). Under a horizontal ground acceleration
-``a_g(t)`` (the paper's Eq (1) convention) each mode is an oscillator
+``a_g(t)`` each mode is an oscillator (Chopra, *Dynamics of Structures*, 13.1)
 
-    u_j'' + 2 zeta_j omega_j u_j' + omega_j^2 u_j = -a_g(t),
+    (B1)  u_j'' + 2 zeta_j omega_j u_j' + omega_j^2 u_j = -a_g(t),
 
-and the absolute acceleration of a point at height ``z`` is (Chopra, *Dynamics of
-Structures*, 13.1)
+and the absolute acceleration of a point at height ``z`` is
 
-    a(z, t) = a_g(t) + sum_j Gamma_j phi_j(z) u_j''(t),
+    (B2)  a(z, t) = a_g(t) + sum_j Gamma_j phi_j(z) u_j''(t),
 
 exact with all modes of a discrete model and truncated to the modes given otherwise.
 :meth:`Building.modal_factors` returns ``(omega_j, zeta_j, Gamma_j phi_j(z))`` at a
 floor or a height ratio, which is all a floor motion needs
-(:class:`rocking.buildings.FloorMotion`).
+(:class:`rocking.buildings.FloorMotion`). ``Gamma_j phi_j`` does not depend on how the
+shapes are normalised; :meth:`Building.continuous` gives ``phi_j = 1`` at the roof,
+:meth:`Building.shear` a largest ``|phi_j|`` of 1, positive at the roof.
 
 Constructors: :meth:`Building.sdof` (one oscillator; the floor is its mass),
 :meth:`Building.modal` (modal properties from the user's own structural model, e.g.
 exported from OpenSees or ETABS), :meth:`Building.shear` (a shear building) and
 :meth:`Building.continuous` (Miranda and Taghavi's shear-flexural beam, 2005).
+
+Shear building (Chopra 9.2, 10.2)
+---------------------------------
+Floor masses ``m_i`` and storey stiffnesses ``k_i`` (storey ``i`` joins level ``i - 1``
+to level ``i``; level 0 is the ground) give ``M = diag(m_i)`` and the tridiagonal
+``K_ii = k_i + k_{i+1}`` (``k_{N+1} = 0``), ``K_{i,i+1} = -k_{i+1}``; the modes solve
+
+    (S1)  K phi_j = omega_j^2 M phi_j,      (S2)  Gamma_j = phi_j^T M 1 / phi_j^T M phi_j.
+
+With uniform ``m`` and ``k`` (Rayleigh's closed form of the tridiagonal eigenproblem)
+
+    (S3)  omega_j = 2 sqrt(k/m) sin((2j - 1) pi / (2 (2N + 1))),
+          phi_ij  ∝ sin((2j - 1) i pi / (2N + 1)).
+
+Continuous shear-flexural beam (Miranda and Reyes 2002; Miranda and Taghavi 2005)
+------------------------------------------------------------------------------
+A flexural cantilever (``EI``) and a shear cantilever (``GA``) tied by axially rigid links,
+of uniform mass ``rho`` per height and height ``H``. With ``x = z/H`` and the lateral
+stiffness ratio ``alpha = H sqrt(GA / EI)`` (the paper's ``alpha_0``), the free vibration
+``u(x) e^{i omega t}`` satisfies
+
+    (C1)  u'''' - alpha^2 u'' - (rho H^4 omega^2 / EI) u = 0,
+
+with ``u = u' = 0`` at the base and, at the free top, no moment and no total shear:
+``u'' = 0`` and ``u''' - alpha^2 u' = 0``. The roots ``r^2 = beta^2`` and ``-gamma^2`` of
+``r^4 - alpha^2 r^2 - rho H^4 omega^2 / EI = 0`` give
+
+    (C2)  beta_j^2 = gamma_j^2 + alpha^2,     omega_j^2 = (EI / rho H^4) gamma_j^2 beta_j^2,
+
+the base conditions give the shape
+
+    (C3)  phi_j(x) = sin(gamma_j x) - (gamma_j / beta_j) sinh(beta_j x)
+                     + eta_j [cosh(beta_j x) - cos(gamma_j x)],
+    (C4)  eta_j = (gamma_j^2 sin gamma_j + gamma_j beta_j sinh beta_j)
+                  / (gamma_j^2 cos gamma_j + beta_j^2 cosh beta_j)      (u''(1) = 0),
+
+and the shear condition at the top, with (C4), the characteristic equation
+
+    (C5)  2 + [2 + alpha^4 / (gamma^2 beta^2)] cos(gamma) cosh(beta)
+            + [alpha^2 / (gamma beta)] sin(gamma) sinh(beta) = 0.
+
+Hence the period ratios and the participation factors (uniform mass)
+
+    (C6)  T_1 / T_j = (gamma_j beta_j) / (gamma_1 beta_1),
+    (C7)  Gamma_j = int_0^1 phi_j dx / int_0^1 phi_j^2 dx.
+
+(C2)-(C7) are derived here from (C1) and its boundary conditions (``eta_j`` eliminated
+between ``u''(1) = 0`` and ``u'''(1) = alpha^2 u'(1)``, then ``cosh^2 - sinh^2 = 1``);
+they have the form of Miranda and Taghavi (2005), J. Struct. Eng. 131(2), whose text
+could not be consulted here, so no equation number of the paper is quoted; the tests
+check them against a finite-element model of the same beam.
+
+Limits: ``alpha = 0`` gives ``cos(gamma) cosh(gamma) = -1``, the flexural cantilever
+(``gamma_j = 1.8751, 4.6941, 7.8548, 10.9955``, ``T_1/T_j = (gamma_j/gamma_1)^2 = 1,
+6.267, 17.55, 34.39``); ``alpha -> inf`` gives ``cos(gamma) = 0``, the shear cantilever
+(``gamma_j = (2j - 1) pi / 2``, ``T_1/T_j = 2j - 1``, ``phi_j = sin(gamma_j x)``,
+``Gamma_j phi_j(1) = 4 (-1)^(j+1) / ((2j - 1) pi)``). The operator of (C1) is self-adjoint
+under these boundary conditions (the energy is ``int EI u''^2 + GA u'^2``), so the shapes
+are orthogonal: ``int phi_i phi_j dx = 0`` for ``i != j``.
+
+Numerics. (C5) is solved divided by ``(2 + alpha^4/(gamma^2 beta^2)) cosh(beta)``
+(:func:`characteristic`), which tends to ``cos(gamma) + 1/cosh(gamma)`` as ``alpha -> 0``
+and to ``cos(gamma)`` as ``alpha -> inf`` and never overflows; it is ``(-1)^j (1 +
+o(1))`` at ``gamma = j pi`` and positive at ``gamma -> 0``, and it has exactly one root in
+each ``((j - 1) pi, j pi)`` (checked on a fine grid for ``alpha`` from 0 to 1e4 and
+against a finite-element model in the tests), found by :func:`scipy.optimize.brentq`.
+(C3) is evaluated as ``sin(gamma x) - eta cos(gamma x) + P e^{beta (x - 1)} + Q e^{-beta
+x}`` with ``P = (eta - gamma/beta) e^beta / 2`` and ``Q = (eta + gamma/beta) / 2`` written
+without ``sinh``/``cosh`` of large arguments (:class:`ShearFlexuralShapes`): the direct
+form (C3) loses every digit to cancellation for ``alpha`` above about 30 (``eta ->
+gamma/beta`` and ``sinh``, ``cosh`` grow as ``e^beta``). The integrals of (C7) are closed
+forms of that expression. ``alpha = math.inf`` is the exact shear limit.
 """
 
 from __future__ import annotations
@@ -30,6 +103,8 @@ import math
 from collections.abc import Callable
 
 import numpy as np
+from scipy.linalg import eigh
+from scipy.optimize import brentq
 
 from .._validate import as_int, in_range, positive
 from ..errors import ParameterError
@@ -37,17 +112,201 @@ from ..errors import ParameterError
 MAX_DAMPING = 1.0
 """Modal damping ratios are in [0, 1): an underdamped oscillator per mode."""
 
+MAX_STOREYS = 1000
+"""Largest number of storeys of :meth:`Building.shear` (and floors of a continuous
+building)."""
+
+MAX_CONTINUOUS_MODES = 50
+"""Largest number of modes kept by :meth:`Building.continuous`."""
+
+DEFAULT_CONTINUOUS_MODES = 6
+"""Modes kept by :meth:`Building.continuous` by default (see its truncation note)."""
+
 
 def _damping(damping, n: int) -> np.ndarray:
-    z = np.broadcast_to(np.asarray(damping, dtype=float), (n,)).copy() \
-        if np.ndim(damping) == 0 else np.asarray(damping, dtype=float)
-    if z.shape != (n,):
+    """``damping`` as ``n`` ratios in [0, 1): one ratio for every mode, or one per mode."""
+    shown = "[0, 1) (a ratio: 5 % is 0.05)"
+    if np.ndim(damping) == 0:
+        z = in_range("damping", damping, 0.0, MAX_DAMPING, lo_open=False, hi_open=True,
+                     shown=shown)
+        return np.full(n, z)
+    try:
+        arr = np.asarray(damping, dtype=object)
+    except ValueError:  # ragged
+        arr = None
+    if arr is None or arr.shape != (n,):
+        shape = "ragged" if arr is None else arr.shape
         raise ParameterError(f"damping must be one ratio or one per mode ({n}), got shape "
-                             f"{z.shape}")
-    for i, x in enumerate(z):
-        in_range(f"damping[{i}]" if n > 1 else "damping", x, 0.0, MAX_DAMPING,
-                 lo_open=False, hi_open=True, shown="[0, 1) (a ratio: 5 % is 0.05)")
-    return z
+                             f"{shape}")
+    items = list(arr)
+    return np.array([in_range(f"damping[{i}]", x, 0.0, MAX_DAMPING, lo_open=False,
+                              hi_open=True, shown=shown) for i, x in enumerate(items)])
+
+
+def _positive_values(name: str, values, n: int, what: str) -> np.ndarray:
+    """``values`` as ``n`` finite numbers > 0 (``None``: ``n`` ones)."""
+    if values is None:
+        return np.ones(n)
+    if isinstance(values, str) or np.ndim(values) != 1 or len(values) != n:
+        raise ParameterError(f"{name} must be {n} positive numbers ({what}, one per storey, "
+                             f"bottom to top), got {values!r}")
+    return np.array([positive(f"{name}[{i}]", x) for i, x in enumerate(values)])
+
+
+def _heights(heights, n_floors: int) -> np.ndarray:
+    """Height ratios ``z/H`` of levels 0..n_floors (``n_floors`` values: floors 1..N, the
+    ground 0 is added), increasing in [0, 1]."""
+    try:
+        h = np.asarray(heights, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise ParameterError(f"heights must be the height ratios z/H of the floors, got "
+                             f"{heights!r}") from None
+    if h.size == n_floors:
+        h = np.concatenate([[0.0], h])
+    if (h.size != n_floors + 1 or not np.all(np.isfinite(h)) or h[0] != 0.0
+            or np.any(np.diff(h) <= 0.0) or h[-1] > 1.0):
+        raise ParameterError(f"heights must be {n_floors} increasing height ratios z/H in "
+                             f"(0, 1] (floors 1..{n_floors}; the ground, 0, may lead), got "
+                             f"{heights!r}")
+    return h
+
+
+# ---------------------------------------------------------------- the shear building
+def shear_stiffness_matrix(stiffnesses) -> np.ndarray:
+    """The tridiagonal stiffness matrix ``K`` of a shear building (module docstring, above
+    (S1)) from its storey stiffnesses ``k_1..k_N``, bottom to top."""
+    k = np.asarray(stiffnesses, dtype=float)
+    above = np.append(k[1:], 0.0)
+    return np.diag(k + above) - np.diag(k[1:], 1) - np.diag(k[1:], -1)
+
+
+# ------------------------------------------------------------- the continuous beam
+def _sech_tanh(b: float) -> tuple[float, float, float]:
+    """``(e^{-b}, 1/cosh b, tanh b)`` without overflow for ``b >= 0``."""
+    em = math.exp(-b)
+    return em, 2.0 * em / (1.0 + em * em), (1.0 - em * em) / (1.0 + em * em)
+
+
+def characteristic(gamma: float, alpha: float) -> float:
+    """Left side of (C5) divided by ``(2 + alpha^4/(gamma^2 beta^2)) cosh(beta)``.
+
+    With ``r = alpha^2 / (gamma beta)`` it is ``cos(gamma) + (2 sech(beta) + r sin(gamma)
+    tanh(beta)) / (2 + r^2)``; finite for every ``alpha`` in [0, inf] (module docstring).
+    """
+    if math.isinf(alpha):
+        return math.cos(gamma)
+    b = math.hypot(gamma, alpha)
+    _, sech, tanh = _sech_tanh(b)
+    r = (alpha / gamma) * (alpha / b)
+    if r < 1.0:
+        return math.cos(gamma) + (2.0 * sech + r * math.sin(gamma) * tanh) / (2.0 + r * r)
+    return math.cos(gamma) + (2.0 * sech / r + math.sin(gamma) * tanh) / (2.0 / r + r)
+
+
+def shear_flexural_gammas(alpha: float, n_modes: int) -> np.ndarray:
+    """The first ``n_modes`` roots ``gamma_j`` of (C5), one in each ``((j-1) pi, j pi)``."""
+    if math.isinf(alpha):
+        return (2.0 * np.arange(1, n_modes + 1) - 1.0) * (math.pi / 2.0)
+    out = []
+    for j in range(1, n_modes + 1):
+        lo = (j - 1) * math.pi if j > 1 else 1e-9
+        out.append(brentq(characteristic, lo, j * math.pi, args=(alpha,), xtol=1e-14,
+                          rtol=4.0 * np.finfo(float).eps, maxiter=200))
+    return np.array(out)
+
+
+class ShearFlexuralShapes:
+    """The mode shapes (C3) of the shear-flexural beam, ``phi_j(1) = 1``: ``shapes(x)``.
+
+    Parameters
+    ----------
+    alpha : float
+        Lateral stiffness ratio in [0, inf] (inf: the shear beam, ``phi_j = sin(gamma_j
+        x) / sin(gamma_j)``).
+    gammas : array_like
+        Roots of (C5), :func:`shear_flexural_gammas`.
+
+    Calling it with a height ratio ``x`` in [0, 1] gives the ``n_modes`` values
+    ``phi_j(x)``; with an array of ``x``, an array of shape ``x.shape + (n_modes,)``.
+    """
+
+    def __init__(self, alpha: float, gammas):
+        self.alpha = float(alpha)
+        g = np.asarray(gammas, dtype=float)
+        self.gammas = g
+        if math.isinf(self.alpha):
+            self.betas = np.full_like(g, math.inf)
+            self.eta = np.zeros_like(g)
+            self.P = np.zeros_like(g)
+            self.Q = np.zeros_like(g)
+        else:
+            b = np.hypot(g, self.alpha)
+            em = np.exp(-b)
+            sech = 2.0 * em / (1.0 + em * em)
+            tanh = (1.0 - em * em) / (1.0 + em * em)
+            rho = g / b  # gamma/beta in (0, 1]
+            s, c = np.sin(g), np.cos(g)
+            d = 1.0 + rho * rho * c * sech  # (gamma^2 cos + beta^2 cosh) / (beta^2 cosh)
+            self.betas = b
+            self.eta = (rho * rho * s * sech + rho * tanh) / d  # (C4)
+            # (eta - gamma/beta) e^beta / 2, with sinh - cosh = -e^{-beta} done exactly
+            self.P = (rho * rho * s - rho ** 3 * c - rho * em) / (d * (1.0 + em * em))
+            self.Q = 0.5 * (self.eta + rho)
+        self.scale = 1.0 / self._raw(np.array(1.0))  # phi_j(1) = 1
+
+    def _raw(self, x: np.ndarray) -> np.ndarray:
+        x = np.asarray(x, dtype=float)[..., None]
+        g = self.gammas
+        out = np.sin(g * x) - self.eta * np.cos(g * x)
+        if not math.isinf(self.alpha):
+            b = self.betas
+            out = out + self.P * np.exp(b * (x - 1.0)) + self.Q * np.exp(-b * x)
+        return out
+
+    def __call__(self, x) -> np.ndarray:
+        xs = np.asarray(x, dtype=float)
+        if not np.all((xs >= 0.0) & (xs <= 1.0)):
+            raise ParameterError(f"height_ratio must be in [0, 1], got {x!r}")
+        return self._raw(xs) * self.scale
+
+    def integrals(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(int_0^1 phi_j dx, int_0^1 phi_j^2 dx)`` in closed form, for (C7)."""
+        g = self.gammas
+        s, c = np.sin(g), np.cos(g)
+        eta = self.eta
+        i1 = (1.0 - c) / g - eta * s / g
+        i2 = (0.5 - np.sin(2 * g) / (4 * g) - eta * s * s / g
+              + eta * eta * (0.5 + np.sin(2 * g) / (4 * g)))
+        if not math.isinf(self.alpha):
+            b, P, Q = self.betas, self.P, self.Q
+            em = np.exp(-b)
+            rho = g / b
+            i1 = i1 + (P + Q) * (1.0 - em) / b
+            i2 = i2 + (P * P + Q * Q) * (-np.expm1(-2.0 * b)) / (2.0 * b) + 2.0 * P * Q * em
+            den = b * (1.0 + rho * rho)  # (beta^2 + gamma^2) / beta
+            sp = (s - rho * c + rho * em) / den  # int sin(gamma x) e^{beta (x - 1)}
+            cp = (c + rho * s - em) / den  # int cos(gamma x) e^{beta (x - 1)}
+            sq = (rho - em * (s + rho * c)) / den  # int sin(gamma x) e^{-beta x}
+            cq = (1.0 + em * (rho * s - c)) / den  # int cos(gamma x) e^{-beta x}
+            i2 = i2 + 2.0 * (P * (sp - eta * cp) + Q * (sq - eta * cq))
+        return i1 * self.scale, i2 * self.scale ** 2
+
+    def __repr__(self) -> str:
+        return f"ShearFlexuralShapes(alpha={self.alpha:g}, n_modes={self.gammas.size})"
+
+
+def _alpha(alpha) -> float:
+    """``alpha`` in [0, inf] (``math.inf`` allowed: the shear limit)."""
+    shown = "[0, inf] (0: flexural cantilever, inf: shear cantilever)"
+    if isinstance(alpha, bool | np.bool_):
+        raise ParameterError(f"alpha must be a number in {shown}, not a bool, got {alpha!r}")
+    try:
+        a = float(alpha)
+    except (TypeError, ValueError):
+        raise ParameterError(f"alpha must be a number in {shown}, got {alpha!r}") from None
+    if not a >= 0.0:  # also NaN
+        raise ParameterError(f"alpha must be in {shown}, got {alpha!r}")
+    return a
 
 
 class Building:
@@ -68,6 +327,16 @@ class Building:
     shape_function : callable or None
         ``f(x) -> (n_modes,)``: ``phi_j`` at the height ratio ``x = z/H`` in [0, 1]
         (continuous model; discrete models give the floors only).
+    heights : ndarray or None
+        ``(n_floors + 1,)``: the height ratio ``z/H`` of each level, 0 (the ground) first.
+    mass_matrix, stiffness_matrix : ndarray or None
+        ``M`` and ``K`` of a shear building (:meth:`shear`; None otherwise), floors 1..N,
+        in the unit of its ``masses`` (and that unit per s^2).
+    storey_masses, storey_stiffnesses : ndarray or None
+        Their diagonal and the storey stiffnesses ``k_1..k_N`` (bottom to top), scaled to
+        the first period (:meth:`shear`).
+    alpha : float or None
+        Lateral stiffness ratio of a continuous building (:meth:`continuous`).
     """
 
     def __init__(self, periods, damping, participation, shapes=None,
@@ -99,9 +368,14 @@ class Building:
             shapes = s
         self.shapes = shapes
         self.shape_function = shape_function
-        self.heights = None if heights is None else np.asarray(heights, dtype=float)
+        if heights is not None and shapes is None:
+            raise ParameterError("heights: give them with the shapes at the floors")
+        self.heights = None if heights is None else _heights(heights, shapes.shape[0] - 1)
         self.name = str(name)
         self.kind = kind
+        self.mass_matrix = self.stiffness_matrix = None
+        self.storey_masses = self.storey_stiffnesses = None
+        self.alpha = None
 
     # ------------------------------------------------------------------ constructors
     @classmethod
@@ -118,9 +392,120 @@ class Building:
         """Modal properties from the user's own structural model: ``periods`` (s),
         ``damping`` (one ratio or one per mode), ``shapes`` ``(n_floors, n_modes)`` at
         floors 1..N (the ground row is added) and ``participation`` ``Gamma_j`` (with the
-        same normalisation of the shapes)."""
+        same normalisation of the shapes); ``heights``, optional, the height ratios ``z/H``
+        of floors 1..N (increasing, in (0, 1]) for ``modal_factors(height_ratio=...)``."""
         return cls(periods, damping, participation, shapes=shapes, heights=heights,
                    name=name or "modal building", kind="modal")
+
+    @classmethod
+    def shear(cls, n_storeys: int, period: float, damping=0.05, masses=None,
+              stiffnesses=None, heights=None, name: str = "") -> Building:
+        """A shear building of ``n_storeys`` lumped floors, scaled to the first period.
+
+        Parameters
+        ----------
+        n_storeys : int
+            Number of storeys N in [1, 1000] (floors 1..N; floor N is the roof).
+        period : float
+            First-mode period ``T_1`` (s), > 0: the storey stiffnesses are scaled to it.
+        damping : float or array_like
+            Modal damping ratio in [0, 1), one for all modes or one per mode (N).
+        masses, stiffnesses : array_like, optional
+            N relative floor masses and storey stiffnesses, bottom to top, > 0 (default
+            uniform). Storey ``i`` joins level ``i - 1`` to level ``i``.
+        heights : array_like, optional
+            N storey heights, bottom to top, > 0, in any unit (default equal: ``z/H =
+            k/N``); they only place the floors at their ``z/H`` (:attr:`heights`).
+        name : str
+            A label.
+
+        Notes
+        -----
+        Solves (S1) with :func:`scipy.linalg.eigh` and keeps all N modes, so that (B2) is
+        exact; ``phi_j`` has a largest ``|phi_j|`` of 1 over the floors and is positive at
+        the roof, and ``Gamma_j`` is (S2). ``mass_matrix`` is ``diag(masses)`` and
+        ``stiffness_matrix`` is ``K`` scaled so that ``T_1 = period``.
+        """
+        n = as_int("n_storeys", n_storeys, 1, MAX_STOREYS)
+        T1 = positive("period", period, "s")
+        zeta = _damping(damping, n)
+        m = _positive_values("masses", masses, n, "relative floor masses")
+        k0 = _positive_values("stiffnesses", stiffnesses, n, "relative storey stiffnesses")
+        h = _positive_values("heights", heights, n, "storey heights")
+        lam0, vec = eigh(shear_stiffness_matrix(k0), np.diag(m))
+        scale = (2.0 * math.pi / T1) ** 2 / lam0[0]
+        k = k0 * scale
+        omegas = np.sqrt(lam0 * scale)
+        # largest |phi_j| 1, roof positive (the roof value of a high mode of an irregular
+        # building can be ~1e-11 of its largest: no good divisor)
+        big = vec[np.argmax(np.abs(vec), axis=0), np.arange(n)]
+        phi = vec / np.abs(big) * np.where(vec[-1] < 0.0, -1.0, 1.0)
+        gam = (phi.T @ m) / np.einsum("ij,i,ij->j", phi, m, phi)
+        z = np.concatenate([[0.0], np.cumsum(h)])
+        z = z / z[-1]
+        b = cls(2.0 * math.pi / omegas, zeta, gam, shapes=np.vstack([np.zeros(n), phi]),
+                heights=z, name=name or f"{n}-storey shear building, T1 = {T1:g} s",
+                kind="shear")
+        b.periods[0] = T1  # exact, not 2 pi / sqrt(omega^2) rounded
+        b.storey_masses, b.storey_stiffnesses = m, k
+        b.mass_matrix, b.stiffness_matrix = np.diag(m), shear_stiffness_matrix(k)
+        return b
+
+    @classmethod
+    def continuous(cls, period: float, alpha: float, damping=0.05,
+                   n_modes: int = DEFAULT_CONTINUOUS_MODES, n_floors: int | None = None,
+                   name: str = "") -> Building:
+        """Miranda and Taghavi's (2005) uniform shear-flexural beam (module docstring).
+
+        Parameters
+        ----------
+        period : float
+            First-mode period ``T_1`` (s), > 0; ``T_j`` follow from (C6).
+        alpha : float
+            Lateral stiffness ratio ``alpha_0 = H sqrt(GA/EI)`` in [0, inf]: 0 is a
+            flexural cantilever (walls), large a shear cantilever (frames), ``math.inf``
+            the shear limit exactly. Any value is handled without overflow (module
+            docstring, Numerics); above ~1e4 the modes equal the shear limit to ~1e-4.
+        damping : float or array_like
+            Modal damping ratio in [0, 1), one for all modes or one per mode.
+        n_modes : int
+            Modes kept, in [1, 50] (default 6).
+        n_floors : int, optional
+            In [1, 1000]: floors at ``z/H = k/n_floors`` for ``modal_factors(floor=k)``
+            (default: ``height_ratio`` only).
+        name : str
+            A label.
+
+        Notes
+        -----
+        ``phi_j(1) = 1``; ``Gamma_j`` is (C7) in closed form. Truncation: (B2) adds the
+        ground acceleration itself, so modes much stiffer than the excitation add almost
+        nothing (their relative acceleration is small); the first 6 modes carry 96.6 % of
+        the mass of the shear beam and 93.3 % of the flexural one (``sum Gamma_j^2 int
+        phi_j^2``), and their periods reach ``T_1/11`` and ``T_1/85``.
+        """
+        T1 = positive("period", period, "s")
+        a = _alpha(alpha)
+        nm = as_int("n_modes", n_modes, 1, MAX_CONTINUOUS_MODES)
+        zeta = _damping(damping, nm)
+        nf = None if n_floors is None else as_int("n_floors", n_floors, 1, MAX_STOREYS)
+        g = shear_flexural_gammas(a, nm)
+        freq = g if math.isinf(a) else g * np.hypot(g, a)  # omega_j ∝ gamma_j beta_j (C2)
+        periods = T1 * freq[0] / freq
+        periods[0] = T1
+        shapes_fn = ShearFlexuralShapes(a, g)
+        i1, i2 = shapes_fn.integrals()
+        shapes = heights = None
+        if nf is not None:
+            heights = np.arange(nf + 1) / nf
+            shapes = shapes_fn(heights)
+            shapes[0] = 0.0  # phi(0) = 0 exactly (rounding leaves ~1e-16)
+        label = "inf" if math.isinf(a) else f"{a:g}"
+        b = cls(periods, zeta, i1 / i2, shapes=shapes, shape_function=shapes_fn,
+                heights=heights, kind="continuous",
+                name=name or f"shear-flexural building, alpha = {label}, T1 = {T1:g} s")
+        b.alpha = a
+        return b
 
     # ------------------------------------------------------------------ the modes
     @property
