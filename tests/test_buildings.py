@@ -252,6 +252,30 @@ def test_continuous_shapes_are_orthogonal_and_integrals_exact(alpha):
     assert np.array_equal(b.modal_factors(floor=3)[2], b.participation * b.shapes[3])
 
 
+@pytest.mark.parametrize("alpha", [0.0, 3.0, 20.0, math.inf])
+def test_continuous_effective_masses_tend_to_the_total_mass(alpha):
+    """Parseval for the complete, orthogonal shapes of the uniform beam: sum_j Gamma_j^2
+    int phi_j^2 = int 1^2 = 1 (the total mass), approached from below (50 modes leave less
+    than 1 %). For the shear beam Gamma_j^2 int phi_j^2 = 8/((2j-1) pi)^2: 6 modes carry
+    0.9663 (the docstring's truncation note) and 50 modes all but the tail sum_{j>50}
+    8/((2j-1) pi)^2 ≈ (8/pi^2) int_100^inf dk / (2 k^2) = 8/(200 pi^2) = 4.05e-3."""
+    def eff(n):
+        b = Building.continuous(1.0, alpha, n_modes=n)
+        i1, i2 = b.shape_function.integrals()
+        return np.sum(b.participation ** 2 * i2)
+
+    e6, e50 = eff(6), eff(50)
+    assert e6 < e50 < 1.0
+    assert 1.0 - e50 < 1e-2
+    if math.isinf(alpha):
+        j = np.arange(1, 51)
+        exact = 8 / ((2 * j - 1) * np.pi) ** 2
+        assert e6 == pytest.approx(np.sum(exact[:6]), rel=1e-14)
+        assert e6 == pytest.approx(0.9663, abs=5e-5)
+        assert e50 == pytest.approx(np.sum(exact), rel=1e-14)
+        assert 1.0 - e50 == pytest.approx(8 / (200 * np.pi ** 2), rel=1e-3)
+
+
 def test_characteristic_has_one_root_per_interval():
     """The bracketing of (C5): one sign change of :func:`characteristic` in each
     ((j-1) pi, j pi), j <= 12, on a fine grid, for alpha from 0 to 1e4."""

@@ -32,7 +32,7 @@ to level ``i``; level 0 is the ground) give ``M = diag(m_i)`` and the tridiagona
 
     (S1)  K phi_j = omega_j^2 M phi_j,      (S2)  Gamma_j = phi_j^T M 1 / phi_j^T M phi_j.
 
-With uniform ``m`` and ``k`` (Rayleigh's closed form of the tridiagonal eigenproblem)
+With uniform ``m`` and ``k`` (the closed form of this tridiagonal eigenproblem)
 
     (S3)  omega_j = 2 sqrt(k/m) sin((2j - 1) pi / (2 (2N + 1))),
           phi_ij  ∝ sin((2j - 1) i pi / (2N + 1)).
