@@ -38,8 +38,8 @@ from .units import G
 
 __version__ = "0.1.0"
 
-_SUBMODULES = ("blocks", "motions", "buildings", "models", "results", "identify", "analysis", "campaign",
-               "report", "cli", "testing", "units", "errors", "plot")
+_SUBMODULES = ("blocks", "motions", "buildings", "models", "results", "identify", "analysis",
+               "campaign", "report", "cli", "testing", "units", "errors", "plot")
 """Submodules loaded on first access (PEP 562): ``rocking.identify.free_rocking`` works
 after ``import rocking``, and ``import rocking`` stays cheap (no numba compilation)."""
 _LAZY = {"simulate": ("rocking.models", "simulate"),
