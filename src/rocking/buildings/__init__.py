@@ -7,5 +7,8 @@ superposition (:class:`Building`, :class:`FloorMotion`).
 """
 
 from .building import Building
+from .floor import FloorMotion
+from .spectra import asce7_hf, code_floor_spectrum_ec8, floor_spectrum, plot_floor_spectrum
 
-__all__ = ["Building"]
+__all__ = ["Building", "FloorMotion", "floor_spectrum", "code_floor_spectrum_ec8", "asce7_hf",
+           "plot_floor_spectrum"]

@@ -130,7 +130,14 @@ def _peaks_parallel(acc, dt, omegas, zeta, nsub, ntail, out):
 
 
 @njit(cache=True)
-def _history(acc, dt, w, zeta, m, u_out, v_out):
+def sdof_history(acc, dt, w, zeta, m, u_out, v_out):
+    """Relative displacement and velocity of one oscillator at the samples (compiled).
+
+    ``acc`` (contiguous float64, step ``dt`` s, linear between samples), ``w`` (rad/s),
+    ``zeta``, ``m`` sub-steps per step; ``u_out`` and ``v_out`` (``acc``'s length) receive
+    ``u`` and ``u'`` from rest. The exact Nigam-Jennings recurrence of the module
+    docstring, without checks: the inner loop of :func:`sdof_response` and of
+    :class:`rocking.buildings.FloorMotion`."""
     n = acc.shape[0]
     h = dt / m
     A, B, C, D, A1, B1, C1, D1 = _coefficients(w, zeta, h)
@@ -292,7 +299,7 @@ def sdof_response(record, period: float, damping: float = 0.05, *, dt: float | N
     w = 2.0 * math.pi / T
     u = np.empty(acc.size)
     v = np.empty(acc.size)
-    _history(acc, float(dt), w, zeta, int(substeps), u, v)
+    sdof_history(acc, float(dt), w, zeta, int(substeps), u, v)
     return {"t": np.arange(acc.size) * dt, "u": u, "v": v,
             "a": -(2.0 * zeta * w * v + w * w * u)}
 
