@@ -16,7 +16,9 @@ and the absolute acceleration of the floor (or height ratio) where the modal fac
 
 the second form from the equation of motion (with every mode of a discrete model
 ``sum_j Gamma_j phi_j = 1`` at each floor and the first term vanishes; with truncated
-modes it is the rigid, "missing-mass" part of the response).
+modes it is the rigid, "missing-mass" part of the response). The building starts at
+rest, so at ``t = 0`` the floor is ``(1 - sum_j Gamma_j phi_j) a_g(0)``: a record whose
+first sample is not zero starts with a jump, which the oscillators do not follow.
 
 **Integration.** Each oscillator is advanced by the exact recurrence for a
 piecewise-linear excitation (Nigam and Jennings 1969; Chopra 5.2), the one of the
@@ -319,7 +321,10 @@ class FloorMotion(Motion):
         if identity:  # the ground itself: its own spec
             set_(self, "samples", np.empty(0))
             set_(self, "step", float(self.ground.scan_step))
-            set_(self, "ground_end", float(self.ground.quiet_time))
+            try:
+                set_(self, "ground_end", float(self.ground.quiet_time))
+            except NotImplementedError:
+                set_(self, "ground_end", float(self.ground.duration))
             return
         acc, step = _ground_samples(h, self.building.periods, self.dt)
         out = floor_history(acc, step, omegas, zetas, gphis)

@@ -220,11 +220,38 @@ def plot_floor_spectrum(ax, periods, floor, ground=None, *, references=None,
                         label: str = "floor", title: str | None = None):
     """Draw a floor response spectrum on a matplotlib Axes; returns the Axes.
 
-    ``floor`` (and optionally ``ground``, the ground's spectrum at the same ``periods``)
-    are pseudo-accelerations in m/s^2; ``references`` is a dict ``{label: values}`` of
-    reference curves at ``periods`` (e.g. :func:`code_floor_spectrum_ec8`), drawn
-    dashed. ``units="g"`` divides by g for display; ``damping`` goes into the legend.
-    The style is :func:`rocking.plot.style_axes` with its colour palette.
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    periods : array_like
+        Periods (s) of the spectra; a log axis over the positive ones.
+    floor : array_like
+        The floor spectrum (pseudo-acceleration, m/s^2), e.g. :func:`floor_spectrum`.
+    ground : array_like, optional
+        The ground's spectrum at the same periods (drawn thin, black).
+    references : dict, optional
+        ``{label: values}`` reference curves at ``periods`` (m/s^2), drawn dashed: e.g.
+        :func:`code_floor_spectrum_ec8`, or ``asce7_hf(z/h, Ta) * pga`` as a constant.
+    damping : float or None
+        The oscillators' damping ratio, for the legend (None: not shown).
+    units : {"m/s^2", "g"}
+        Display units (values are divided by g for ``"g"``).
+    label, title : str
+        Legend label of the floor curve; Axes title.
+
+    The style is :func:`rocking.plot.style_axes` with the colour palette
+    :data:`rocking.plot.PALETTE`.
+
+    Examples
+    --------
+    >>> import numpy as np, rocking
+    >>> from matplotlib.figure import Figure
+    >>> from rocking.buildings import Building, floor_spectrum, plot_floor_spectrum
+    >>> g = rocking.motions.load_builtin("Rinaldi228")
+    >>> T = np.geomspace(0.05, 3.0, 40)
+    >>> ax = plot_floor_spectrum(Figure().add_subplot(), T,
+    ...                          floor_spectrum(g, Building.sdof(0.5), floor=1, periods=T),
+    ...                          rocking.motions.response_spectrum(g, T), units="g")
     """
     from ..plot import PALETTE, style_axes
     from ..units import G
