@@ -61,3 +61,17 @@ def test_table_lists_every_kind_and_key():
     rows = BC.table()
     for name, k in BC.KINDS.items():
         assert [r["name"] for r in rows if r["kind"] == name] == list(k.Params.names())
+
+
+def test_shear_and_continuous_equal_their_constructors():
+    a = BC.make_building({"kind": "shear", "storeys": 4, "period": 0.6,
+                          "damping_ratio": "3%"})
+    b = Building.shear(4, 0.6, 0.03)
+    c = BC.make_building({"kind": "continuous", "period": 1.1, "stiffness_ratio": 8.0,
+                          "n_modes": 4, "storeys": 5})
+    d = Building.continuous(1.1, 8.0, 0.05, n_modes=4, n_floors=5)
+    for (x, y), where in (((a, b), {"floor": 3}), ((c, d), {"height_ratio": 0.7}),
+                          ((c, d), {"floor": 5})):
+        for u, v in zip(x.modal_factors(**where), y.modal_factors(**where), strict=True):
+            assert np.array_equal(u, v)
+    assert a.periods[0] == pytest.approx(0.6, rel=1e-12)
