@@ -29,6 +29,7 @@ LAST = {
     "bench_campaign.py": "== summary",
     "bench_ccrr.py": "record by record",
     "bench_dem.py": "goal (20 s of motion",
+    "bench_floors.py": "context, floors / the ground motion itself",
     "bench_fragility_fit.py": "fragility_curves, 3 states",
     "bench_fragility_study.py": ", total ",
     "bench_housner.py": "batch: overturned / rocked",

@@ -287,13 +287,15 @@ def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:
     for m, name in enumerate(spec.models):
         k = 4 if MODELS[name].slow else n_sample
         idx = [np.full(k, m)] + [rng.integers(0, n, k) for n in
-                                 (shape[1], k_prep, shape[3], shape[4])]
+                                 (shape[1], shape[2], k_prep, shape[4], shape[5])]
         ids = np.unique(np.ravel_multi_index(idx, shape))
         t0 = time.perf_counter()
         c.run_ids(ids)
         seconds += (time.perf_counter() - t0) / ids.size * spec.n_sims / len(spec.models)
         sampled += ids.size
+    axes = dict(zip(["models", "blocks", "floors", "motions", "levels", "samples"], shape,
+                    strict=True))
+    if spec.building is None:
+        del axes["floors"]
     return {"n_sims": spec.n_sims, "n_chunks": spec.n_chunks, "chunk_size": spec.chunk_size,
-            "shape": dict(zip(["models", "blocks", "motions", "levels", "samples"],
-                              shape, strict=True)),
-            "sampled": sampled, "estimated_seconds": seconds}
+            "shape": axes, "sampled": sampled, "estimated_seconds": seconds}

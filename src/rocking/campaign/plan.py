@@ -1,8 +1,10 @@
 """A campaign's table of simulations, and the run of one chunk of it.
 
-The spec's axes ``(models, blocks, motions, levels, samples)`` (:attr:`CampaignSpec.shape`)
-are enumerated in that order, the last fastest: ``sim_id`` is the flat index, so it is
-stable for a given spec and needs no table to be stored. A chunk is the contiguous range
+The spec's axes ``(models, blocks, floors, motions, levels, samples)``
+(:attr:`CampaignSpec.shape`) are enumerated in that order, the last fastest: ``sim_id`` is
+the flat index, so it is stable for a given spec and needs no table to be stored (the
+floor axis has size 1 without ``[building]``: the ids, columns and rows of such a spec are
+those it had before buildings existed). A chunk is the contiguous range
 ``[k * chunk_size, (k + 1) * chunk_size)`` of ``sim_id``.
 
 Random draws: simulation ``sim_id`` draws its uncertain parameters (and the table noise)
@@ -18,6 +20,14 @@ The uncertain parameters are drawn as in :func:`rocking.analysis.monte_carlo`
 parameter's range by redrawing, ``theta0`` to ``|theta0| < alpha`` of the row's own
 (drawn) alpha. A row whose ``theta0`` was redrawn says so in ``theta0_truncated``; the
 report counts them.
+
+With ``[building]``, motion ``j`` of ``[motions]`` is the ground motion and a block on a
+floor feels :class:`rocking.buildings.FloorMotion` of it; the intensity levels scale the
+ground motion (``load_factor``, ``im`` and ``pga`` are the ground's, the same for every
+floor), the row's ``floor_pga`` is the peak absolute floor acceleration of the motion as
+run, and the uncertain ``amplitude`` and ``noise`` act on the floor motion (the one the
+block stands on). Floor motions are built once per (floor, ground motion) and kept like
+the ground motions (:class:`MotionSet`), never per run.
 """
 
 from __future__ import annotations
@@ -36,7 +46,7 @@ from ..blocks import Block
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import GroundMotion, HanningSine, Motion, Record, Sine, catalog, sample
-from .spec import CampaignSpec, motion_kind, motion_value, nominal
+from .spec import CampaignSpec, building_model, motion_kind, motion_value, nominal
 
 STREAM = 3
 """Tag of the campaign's random streams (Monte Carlo uses 1, stochastic records 2)."""
@@ -76,14 +86,19 @@ class MotionSet:
     """The motions of a checked ``[motions]`` table, made by the catalog
     (:mod:`rocking.motions.catalog`) on demand and kept (unscaled) up to :data:`KEEP` of
     them (then those of the current chunk only: memory follows the chunk size, not the
-    number of motions)."""
+    number of motions). With a checked ``[building]`` (``building``), also the floor
+    motions of each (floor, ground motion), kept the same way (:meth:`on_floor`)."""
 
-    def __init__(self, m: dict, seed: int, base_dir="."):
+    def __init__(self, m: dict, seed: int, base_dir=".", building: dict | None = None):
         self.m, self.seed = m, seed
         self.kind = motion_kind(m)
         self.ctx = catalog.Context(Path(base_dir), seed)
         self._cache: dict[int, Motion] = {}
         self._im: dict[tuple, float] = {}
+        self.building = building
+        self.model = None if building is None else building_model(building)
+        self._floors: dict[tuple[int, int], Motion] = {}
+        self._floor_pga: dict[tuple[int, int], float] = {}
 
     @cached_property
     def n(self) -> int:
@@ -131,6 +146,42 @@ class MotionSet:
             mo = self._cache[j]
         return mo
 
+    def _floor_motion(self, f: int, j: int) -> Motion:
+        from ..buildings import FloorMotion
+        where = {self.building["axis"]: self.building["values"][f]}
+        return FloorMotion(self.get(j), self.model, **where)
+
+    def prepare_floors(self, fs, js) -> None:
+        """Build the floor motions of the pairs ``(fs[i], js[i])`` not built yet."""
+        if self.building is None:
+            return
+        wanted = dict.fromkeys(zip(np.asarray(fs).tolist(), np.asarray(js).tolist(),
+                                   strict=True))
+        missing = [k for k in wanted if k not in self._floors]
+        if missing and len(self._floors) + len(missing) > KEEP:
+            self._floors = {k: m for k, m in self._floors.items() if k in wanted}
+        for f, j in missing:
+            self._floors[f, j] = self._floor_motion(f, j)
+
+    def on_floor(self, f: int, j: int) -> Motion:
+        """The motion (unscaled) that a block on floor ``f`` (an index of the floor axis)
+        feels under ground motion ``j``: motion ``j`` itself without a building."""
+        if self.building is None:
+            return self.get(j)
+        mo = self._floors.get((f, j))
+        if mo is None:
+            self.prepare_floors([f], [j])
+            mo = self._floors[f, j]
+        return mo
+
+    def floor_pga(self, f: int, j: int) -> float:
+        """The peak absolute acceleration of :meth:`on_floor` (unscaled)."""
+        key = (f, j)
+        if key not in self._floor_pga:
+            mo = self.on_floor(f, j)  # the ground itself at floor 0: its PGA, as ``pga``
+            self._floor_pga[key] = self.im(j, "pga") if mo.identity else mo.pga
+        return self._floor_pga[key]
+
     def im(self, j: int, im: str, block: Block | None = None) -> float:
         """The intensity measure ``im`` of motion ``j`` unscaled (``block`` for the ratio
         IMs; a ground motion's: its horizontal component's)."""
@@ -145,7 +196,7 @@ class Campaign:
 
     def __init__(self, spec: CampaignSpec):
         self.spec = spec
-        self.motions = MotionSet(spec.motions, spec.seed, spec.base_dir)
+        self.motions = MotionSet(spec.motions, spec.seed, spec.base_dir, spec.building)
         self.levels = np.asarray(spec.levels, dtype=float)
         self._dists = [distributions(nominal(block), spec.uncertain,
                                      where=lambda k: f"uncertain.{k}")
@@ -180,15 +231,17 @@ class Campaign:
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         if ids.size and not (ids.min() >= 0 and ids.max() < self.n_sims):
             raise ParameterError(f"sim ids must lie in [0, {self.n_sims - 1}]")
-        mi, bi, ji, li, si = np.unravel_index(ids, s.shape)
+        mi, bi, fi, ji, li, si = np.unravel_index(ids, s.shape)
         self.motions.prepare(ji)
+        self.motions.prepare_floors(fi, ji)
         n = ids.size
         vals = {k: np.empty(n) for k in PARAMETERS}
         lf, pga, truncated = np.empty(n), np.empty(n), np.zeros(n, bool)
+        floor_pga = np.empty(n)
         blocks, motions = [], []
         uncertain = s.uncertain
         for r in range(n):
-            b, j = int(bi[r]), int(ji[r])
+            b, j, f = int(bi[r]), int(ji[r]), int(fi[r])
             block = s.blocks[b]
             nom = nominal(block)
             scale = self._scale(j, int(li[r]), b)
@@ -199,20 +252,23 @@ class Campaign:
                 v, truncated[r] = draw_parameters(nom, self._dists[b], rng)
                 if uncertain.keys() & {"alpha", "p", "mu"}:
                     block = Block.from_params(v["alpha"], v["p"], v["mu"], name=block.name)
-                mo = perturbed(self.motions.get(j).scaled(scale), v["amplitude"], v["noise"],
-                               rng)
+                mo = perturbed(self.motions.on_floor(f, j).scaled(scale), v["amplitude"],
+                               v["noise"], rng)
             else:
                 v = {k: PARAMETERS[k][0](nom) for k in PARAMETERS}
-                mo = self.motions.get(j).scaled(scale)
+                mo = self.motions.on_floor(f, j).scaled(scale)
             for k in PARAMETERS:
                 vals[k][r] = v[k]
             pga[r] = self.motions.im(j, "pga") * abs(scale * v["amplitude"])
+            if s.building is not None:
+                floor_pga[r] = self.motions.floor_pga(f, j) * abs(scale * v["amplitude"])
             blocks.append(block)
             motions.append(mo)
         table = pd.DataFrame({
             "sim_id": ids, "model": np.array(s.models, dtype=object)[mi],
             "block": bi.astype(np.int64),
             "block_name": np.array([b.name for b in s.blocks], dtype=object)[bi],
+            **self._floor_columns(fi),
             "alpha": vals["alpha"], "p": vals["p"], "mu": vals["mu"],
             "motion": ji.astype(np.int64),
             "motion_id": [self.motions.id(int(j)) for j in ji],
@@ -222,8 +278,20 @@ class Campaign:
             "theta0": vals["theta0"], "theta0_truncated": truncated,
             "amplitude": vals["amplitude"], "noise": vals["noise"],
             "pga": pga,
+            **({"floor_pga": floor_pga} if s.building is not None else {}),
         })
         return table, blocks, motions
+
+    def _floor_columns(self, fi: np.ndarray) -> dict:
+        """``floor`` (the floor number; with ``height_ratios`` its index there) and
+        ``height_ratio`` (with ``height_ratios``); none without a building."""
+        b = self.spec.building
+        if b is None:
+            return {}
+        values = np.asarray(b["values"])
+        if b["axis"] == "floor":
+            return {"floor": values[fi].astype(np.int64)}
+        return {"floor": fi.astype(np.int64), "height_ratio": values[fi].astype(float)}
 
     def run_ids(self, ids) -> pd.DataFrame:
         """Simulate ``ids`` (one compiled batch per model): the inputs and the results, one

@@ -17,6 +17,13 @@ writes, in one folder:
   with their bootstrap bands, one colour per block;
 * ``report.md``: a short markdown summary linking the above.
 
+A table with a ``floor`` column (a campaign with ``[building]``) is grouped by (model,
+block, floor): every file above has a ``floor`` column (and ``height_ratio`` when the
+floors were given by height), each floor is a curve of its own in the plots, and
+``report.md`` has a table of P(overturn) by floor per (model, block) (rows the levels,
+columns the floors) before the per-floor tables. The IM of a floor's runs is the ground's
+(the campaign scaled the ground motion).
+
 The IM is the table's ``im`` column when the campaign scaled its motions to intensity
 levels (name and unit from ``manifest["im"]``, so every run of a level has the same IM),
 else the PGA of each run as run (``pga``, m/s^2): the points of a level are then drawn at
@@ -87,7 +94,8 @@ def _check(table, manifest) -> tuple[pd.DataFrame, dict, tuple]:
     for col in ("alpha", "load_factor", "pga", "max_abs_theta", "max_abs_theta_over_alpha",
                 *(["im"] if "im" in t else [])):
         t[col] = _numeric(t, col, float)
-    for col in ("level", "block", "damage_state", "status"):
+    for col in ("level", "block", "damage_state", "status",
+                *(["floor"] if "floor" in t else [])):
         t[col] = _numeric(t, col, int)
     # overturned, and the optional ones (older stores lack settled and theta0_truncated;
     # lifted_off: motions with a vertical component)
@@ -131,6 +139,19 @@ def _numeric(t: pd.DataFrame, col: str, kind) -> pd.Series:
             raise ParameterError(f"table: column {col} must hold whole numbers")
         return s.astype(np.int64)
     return s.astype(float)
+
+
+def _where(key: dict) -> str:
+    """A floor in words: ``floor 2``, or ``z/H = 0.5`` (floors given by height)."""
+    if "height_ratio" in key:
+        return f"z/H = {_g(key['height_ratio'])}"
+    return f"floor {key['floor']}" if "floor" in key else ""
+
+
+def _group_name(name: str, key: dict) -> str:
+    """A group's name: the block's, and its floor if there is a floor axis."""
+    where = _where(key)
+    return f"{name}, {where}" if where else str(name)
 
 
 def _im_label(im: dict) -> str:
@@ -274,15 +295,16 @@ def _plot_name(name: str, blocks) -> str:
 
 def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> Path:
     """P(overturn) vs IM of one model: stripes with Wilson bars, fits with bands; the IM's
-    unit in mathtext (``m/s$^2$``), the blocks named by :func:`_plot_name`, the legend
-    beside the axes (it covered the curves of the weaker blocks)."""
+    unit in mathtext (``m/s$^2$``), the blocks named by :func:`_plot_name` (and their
+    floor), the legend beside the axes (it covered the curves of the weaker blocks)."""
     fig, ax = figure(figsize=(8.6, 3.8))
     unit = unit_label(im["unit"])
-    for i, (name, pt, fit) in enumerate(groups):
+    for i, (key, pt, fit) in enumerate(groups):
         c = PALETTE[i % len(PALETTE)]
         d = pt[(pt["n"] > 0) & pt["im"].notna()]
         yerr = np.vstack([d["p_overturn"] - d["ci_lower"], d["ci_upper"] - d["p_overturn"]])
-        lab = _plot_name(name, blocks)
+        lab = _plot_name(key["block_name"], blocks)
+        lab += f", {_where(key)}" if _where(key) else ""
         if fit is not None:
             lo = np.nanmin(d["im"]) if len(d) else fit.median
             hi = np.nanmax(d["im"]) if len(d) else fit.median
@@ -352,15 +374,19 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
            "likelihood over the runs (stripes, Baker 2015); ± one standard error.", ""]
     for model, f in fr[fr["fit"] == "overturning"].groupby("model", sort=False):
         out += [f"### {model}", ""]
-        rows = [[str(r.block_name), _pm(r.median, r.median_se, 3), _pm(r.beta, r.beta_se, 2),
-                 str(r.n), str(r.n_exceed), r.note or ""] for r in f.itertuples()]
+        rows = [[_group_name(r.block_name, r._asdict()), _pm(r.median, r.median_se, 3),
+                 _pm(r.beta, r.beta_se, 2), str(r.n), str(r.n_exceed), r.note or ""]
+                for r in f.itertuples()]
         out += _md_table(["block", f"median{unit}", "beta", "runs", "overturned", "note"],
                          rows)
+    out += _by_floor(po, unit)
     out += ["## P(overturn) per level", "",
             "Wilson 95% intervals; ratio: median max|theta|/alpha of the survivors; "
             "P(DS>=k) with the manifest's thresholds (the last state is overturning).", ""]
-    for (model, name), d in po.groupby(["model", "block_name"], sort=False):
-        out += [f"### {model}, {name}", ""]
+    keys = ["model", "block_name", *(["floor"] if "floor" in po.columns else [])]
+    for _, d in po.groupby(keys, sort=False):
+        out += [f"### {d['model'].iloc[0]}, "
+                f"{_group_name(d['block_name'].iloc[0], d.iloc[0].to_dict())}", ""]
         rows = [[str(r["level"]), _g(r["im"]), str(r["n"]), str(r["n_overturned"]),
                  _g(r["p_overturn"]), f"{_g(r['ci_lower'], 2)}–{_g(r['ci_upper'], 2)}",
                  _g(r["median_ratio_survivors"]),
@@ -374,6 +400,27 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
     if notes:
         out += ["## Notes", ""] + [f"- {n}" for n in notes] + [""]
     return "\n".join(out)
+
+
+def _by_floor(po: pd.DataFrame, unit: str) -> list[str]:
+    """P(overturn) by floor: per (model, block) a table with a row per level and a column
+    per floor (none without a floor axis)."""
+    if "floor" not in po.columns:
+        return []
+    out = ["## P(overturn) by floor", "",
+           "P(overturn) of each level (rows; the ground motion's IM) on each floor "
+           "(columns); the same runs as the per-floor tables below.", ""]
+    for (model, name), d in po.groupby(["model", "block_name"], sort=False):
+        floors = d.drop_duplicates("floor").sort_values("floor")
+        heads = [_where(r.to_dict()) for _, r in floors.iterrows()]
+        rows = []
+        for lv, g in d.groupby("level", sort=True):
+            p = {int(r["floor"]): _g(r["p_overturn"]) for _, r in g.iterrows()}
+            rows.append([str(lv), _g(g["im"].median()),
+                         *(p.get(int(f), "–") for f in floors["floor"])])
+        out += [f"### {model}, {name}", ""]
+        out += _md_table(["level", f"IM{unit}", *heads], rows)
+    return out
 
 
 # --------------------------------------------------------------------------- public
@@ -405,9 +452,12 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         notes.append(f"{n_excl} of {len(t)} runs failed numerically (status != 0) and are "
                      "excluded")
     po_parts, fr_rows, pel_rows, by_model = [], [], [], {}
-    for (model, block), g in t.groupby(["model", "block"], sort=False):
-        name = str(g["block_name"].iloc[0])
-        key = {"model": model, "block": int(block), "block_name": name}
+    floor = [c for c in ("floor", "height_ratio") if c in t.columns]
+    for _, g in t.groupby(["model", "block", *floor[:1]], sort=False):
+        model, block = g["model"].iloc[0], g["block"].iloc[0]
+        key = {"model": model, "block": int(block), "block_name": str(g["block_name"].iloc[0]),
+               **{c: g[c].iloc[0].item() for c in floor}}
+        name = _group_name(key["block_name"], key)
         pt = _p_overturn(g, im["column"], n_states)
         po_parts.append(pt.assign(**key)[[*key, *pt.columns]])
         ok = g[g["status"] == 0]
@@ -423,7 +473,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
                 pel_rows.append(pel)
             elif f"pelicun: {why}" not in notes:
                 notes.append(f"pelicun: {why}")
-        by_model.setdefault(model, []).append((name, pt, fit))
+        by_model.setdefault(model, []).append((key, pt, fit))
     po = pd.concat(po_parts, ignore_index=True)
     fr = pd.DataFrame(fr_rows)
     files = []
@@ -459,7 +509,7 @@ def summary_lines(result: dict) -> list[str]:
              f"excluded); IM: {_im_label(im)}", *result.get("run_alerts", ())]
     fr = result["fragility"]
     for r in fr[fr["fit"] == "overturning"].itertuples():
-        head = f"{r.model} / {r.block_name}:"
+        head = f"{r.model} / {_group_name(r.block_name, r._asdict())}:"
         if math.isfinite(r.median):
             lines.append(f"{head} overturning median {_g(r.median)}{unit} "
                          f"(± {_g(r.median_se, 2)}), beta {_g(r.beta, 2)} "

@@ -33,6 +33,13 @@
     [options.housner]             # optional model options (rocking models)
     rest_tol = 1e-12
 
+    [building]                    # optional: the blocks stand on floors of a building
+    kind = "shear"                # any kind of rocking.buildings.catalog, with its keys
+    storeys = 3
+    period = 0.4
+    damping_ratio = "5%"
+    floors = "all"                # or a list, 0 the ground; or height_ratios (continuous)
+
 Every key is listed by :func:`keys_table` (the README's table, generated from the motion
 catalog and the block factory). ``[motions]``: ``kind`` names a catalog entry
 (:data:`rocking.motions.catalog.KINDS`) and the other keys are its parameters; one
@@ -54,6 +61,16 @@ outside its parameter's range (:func:`rocking.analysis.montecarlo.distributions`
 A :class:`~rocking.Stack` stands in the table (``alpha``, ``p``, ``mu``, the ratio IMs,
 ``max_abs_theta_over_alpha``, damage states) by its top block, the one whose angle
 ``max_abs_theta`` is (:func:`nominal`); its ``block_name`` is the stack's.
+
+``[building]`` (optional) puts the blocks on the floors of a building
+(:mod:`rocking.buildings`): its keys are those of
+:func:`rocking.buildings.catalog.make_building`, and ``floors`` (floor numbers, 0 the
+ground, or ``"all"``: 0 .. n_floors) or ``height_ratios`` (``z/H`` in [0, 1], a
+``continuous`` building) set the floor axis of the table. Each motion of ``[motions]`` is
+the ground motion; a block feels the absolute floor acceleration
+(:class:`rocking.buildings.FloorMotion`). The intensity axis scales the ground motion:
+every floor of a level has the same ground intensity (``pga``, ``im``, ``load_factor``),
+and ``floor_pga`` is the peak floor acceleration of the run's motion.
 """
 
 from __future__ import annotations
@@ -78,12 +95,13 @@ from ..analysis.damage import DEFAULT_THRESHOLDS, state_labels
 from ..analysis.ida import IMS
 from ..analysis.montecarlo import PARAMETERS, RANGES, distributions
 from ..blocks import Block, Stack, factory
+from ..buildings import catalog as buildings
 from ..errors import ParameterError, RockingError, SpecError
 from ..models.registry import MODELS
 from ..motions import catalog
 from ..options import check_option
 
-SECTIONS = {"campaign", "blocks", "motions", "uncertain", "run", "options"}
+SECTIONS = {"campaign", "blocks", "motions", "uncertain", "run", "options", "building"}
 CAMPAIGN_KEYS = {
     "name": "the campaign's name (required)",
     "seed": "every random draw derives from (seed, sim_id); integer >= 0 (required)",
@@ -127,6 +145,13 @@ MAX_RECORD_DURATION = catalog.MAX_DURATION
 """Longest motion a spec may define (s): see :data:`rocking.motions.catalog.MAX_DURATION`."""
 MAX_RECORD_SAMPLES = catalog.MAX_SAMPLES
 """Most samples of one stochastic record (:data:`rocking.motions.catalog.MAX_SAMPLES`)."""
+FLOOR_KEYS = {
+    "floors": 'the floors the blocks stand on: a list of floor numbers (0 the ground, '
+              '1 .. n_floors) or "all" (0 .. n_floors)',
+    "height_ratios": "instead of floors, for a continuous building: heights z/H in [0, 1], "
+                     "a list or a grid",
+}
+"""The keys of ``[building]`` that set the floor axis (the others are the building's)."""
 MAX_SIMS = 2 ** 63 - 1
 """Most simulations of a campaign: ``sim_id`` is an int64."""
 
@@ -515,6 +540,88 @@ def n_motions(m: dict) -> int:
     return m["n"]
 
 
+# ----------------------------------------------------------------------------- building
+BUILDING_KEYS = {"kind", *(k for b in buildings.KINDS.values() for k in b.Params.names())}
+
+
+def building_model(b: dict):
+    """The :class:`~rocking.buildings.Building` of a checked ``[building]`` table."""
+    return buildings.make_building(b["params"])
+
+
+def _building_kind(t: dict) -> buildings.BuildingKind:
+    if "kind" not in t:
+        _fail("building.kind", f"missing (one of {', '.join(buildings.KINDS)})")
+    name = _string("building.kind", t["kind"], tuple(buildings.KINDS))
+    kind = buildings.KINDS[name]
+    _known("building", t, {"kind", *kind.Params.names(), *FLOOR_KEYS})
+    return kind
+
+
+def _floor_list(v, top: int | None, kind: str) -> list[int]:
+    key = "building.floors"
+    if top is None:
+        _fail(key, f"this {kind} building has no floors (give storeys, or height_ratios)")
+    if v == "all":
+        return list(range(top + 1))
+    if not isinstance(v, list) or not v:
+        _fail(key, f'must be "all" or a list of floor numbers in 0..{top}, got {_toml(v)}')
+    out = [_number(f"{key}[{i}]", x, 0, top, integer=True) for i, x in enumerate(v)]
+    if len(set(out)) != len(out):
+        _fail(key, "has repeated floors (one each)")
+    return out
+
+
+def _ratios(v, kind: str) -> list[float]:
+    key = "building.height_ratios"
+    if kind != "continuous":
+        _fail(key, f"applies to a continuous building only (this one is {kind}: give "
+                   "floors)")
+    out = grid(key, v, 0.0, lo_open=False).tolist()
+    for i, x in enumerate(out):
+        if x > 1.0:
+            _fail(f"{key}[{i}]" if isinstance(v, list) else key,
+                  f"must be in [0, 1] (z/H), got {x:g}")
+    if len(set(out)) != len(out):
+        _fail(key, "has repeated values (one each)")
+    return out
+
+
+def _building(raw: dict) -> dict | None:
+    """The checked ``[building]``: ``params`` (the keys for
+    :func:`~rocking.buildings.catalog.make_building`), ``axis`` (``floor`` or
+    ``height_ratio``), ``values`` (the floors or height ratios), ``n_floors``, the modal
+    ``periods`` (s), the building's ``name`` and its ``checked`` keys (SI); None without
+    the table."""
+    if "building" not in raw:
+        return None
+    t = _table("building", raw["building"])
+    kind = _building_kind(t)
+    params = {k: v for k, v in t.items() if k not in FLOOR_KEYS}
+    try:
+        b = buildings.make_building(params)
+    except (RockingError, TypeError, ValueError) as e:
+        _param_fail("building", e, BUILDING_KEYS, {"damping": "building.damping_ratio"})
+    if not np.all(b.damping > 0):
+        _fail("building.damping_ratio", "must be > 0 for a floor motion (an undamped "
+                                        "building never rings down)")
+    given = [k for k in FLOOR_KEYS if k in t]
+    if len(given) > 1:
+        _fail("building.height_ratios", "give floors or height_ratios, not both")
+    if not given:
+        _fail("building.floors", f'missing (a list of floors, 0 the ground, or "all"'
+                                 f'{"; or height_ratios" if kind.name == "continuous" else ""})')
+    if given == ["floors"]:
+        axis, values = "floor", _floor_list(t["floors"], b.n_floors, kind.name)
+    else:
+        axis, values = "height_ratio", _ratios(t["height_ratios"], kind.name)
+    checked = kind.Params(**{k: v for k, v in params.items() if k != "kind"}).to_dict()
+    return {"params": params, "axis": axis, "values": values, "n_floors": b.n_floors,
+            "periods": b.periods.tolist(), "name": b.name,
+            "checked": {"kind": kind.name, **{k: v for k, v in checked.items()
+                                              if v is not None}}}
+
+
 # ------------------------------------------------------------------------------ the spec
 @dataclass(frozen=True)
 class CampaignSpec:
@@ -541,6 +648,9 @@ class CampaignSpec:
     max_free_time: float | None = None
     """Cap (s) of the free rocking after each motion (``duration`` unset); None: the
     package's default (:data:`rocking.models.run.DEFAULT_MAX_FREE_TIME`)."""
+    building: dict | None = None
+    """The checked ``[building]`` (:func:`building_model` builds it), or None: the blocks
+    stand on the ground."""
 
     @property
     def hash(self) -> str:
@@ -572,11 +682,18 @@ class CampaignSpec:
         return n_motions(self.motions)
 
     @property
-    def shape(self) -> tuple[int, int, int, int, int]:
-        """``(models, blocks, motions, levels, samples)``: the axes of the simulation table,
-        ``sim_id`` running fastest over the last."""
-        return (len(self.models), len(self.blocks), self.n_motions, self.levels.size,
-                self.samples)
+    def floors(self) -> list:
+        """The floor axis: floor numbers or height ratios (``[0]`` without a building)."""
+        return [0] if self.building is None else list(self.building["values"])
+
+    @property
+    def shape(self) -> tuple[int, int, int, int, int, int]:
+        """``(models, blocks, floors, motions, levels, samples)``: the axes of the
+        simulation table, ``sim_id`` running fastest over the last (the floor axis has size
+        1 without ``[building]``: the ids of a spec without it are those of the five other
+        axes)."""
+        return (len(self.models), len(self.blocks), len(self.floors), self.n_motions,
+                self.levels.size, self.samples)
 
     @property
     def n_sims(self) -> int:
@@ -664,14 +781,16 @@ def _uncertain(raw: dict, c: dict, blocks: tuple, motions: dict) -> dict:
     return uncertain
 
 
-def _check_size(c: dict, blocks: tuple, motions: dict) -> None:
-    shape = (len(c["models"]), len(blocks), n_motions(motions),
+def _check_size(c: dict, blocks: tuple, motions: dict, building: dict | None) -> None:
+    floors = [0] if building is None else building["values"]
+    shape = (len(c["models"]), len(blocks), len(floors), n_motions(motions),
              len(motions.get("levels", motions.get("load_factors", []))), c["samples"])
     if math.prod(shape) > MAX_SIMS:
         axes = {"campaign.model": shape[0], "blocks": shape[1],
-                f"motions.{motions['axis']}": shape[2],
-                "motions.levels" if "levels" in motions else "motions.load_factors": shape[3],
-                "campaign.samples": shape[4]}
+                f"building.{building['axis']}s" if building else "building": shape[2],
+                f"motions.{motions['axis']}": shape[3],
+                "motions.levels" if "levels" in motions else "motions.load_factors": shape[4],
+                "campaign.samples": shape[5]}
         key = max(axes, key=axes.get)
         _fail(key, f"the campaign would have {math.prod(shape):.3g} simulations ("
                    + " x ".join(f"{v} {k}" for k, v in axes.items())
@@ -728,7 +847,8 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
         _fail("motions", "missing (a [motions] table with kind)")
     motions = _motions(raw["motions"], Path(base_dir).resolve(), c["seed"])
     uncertain = _uncertain(raw, c, blocks, motions)
-    _check_size(c, blocks, motions)
+    building = _building(raw)
+    _check_size(c, blocks, motions, building)
     chunk, window = _run(raw)
     options = _options(raw, c["models"])
     _usable(c["models"], blocks, options)
@@ -737,7 +857,7 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
                         thresholds=c["thresholds"], blocks=blocks, motions=motions,
                         uncertain=uncertain, chunk_size=chunk, window=window, options=options,
                         text=text, raw=raw, base_dir=str(Path(base_dir).resolve()),
-                        max_free_time=c["max_free_time"])
+                        max_free_time=c["max_free_time"], building=building)
 
 
 def read_spec(path) -> CampaignSpec:
@@ -835,6 +955,16 @@ def keys_table() -> str:
                                           [[f"`{k}`", h] for k, h in RUN_KEYS.items()])
     out += ["", "**`[options.<model>]`**: the model's options, as `rocking models` lists "
             "them."]
+    out += ["", "**`[building]`** (optional): the blocks stand on floors of a building "
+            "(`rocking buildings`); `kind` and that kind's keys, and the floor axis. The "
+            "levels scale the ground motion (the same ground intensity on every floor):", ""]
+    shown = {"kind": ("", "required"), "floors": ("0 .. n_floors", "floors or height_ratios"),
+             "height_ratios": ("[0, 1]", "")}
+    rows = [["(all)", f"`{k}`", "", *shown[k], h] for k, h in
+            {"kind": "the building kind (below)", **FLOOR_KEYS}.items()]
+    rows += [[f"`{d['kind']}`", f"`{d['name']}`", d["unit"], d["range"], _default(d),
+              d["help"]] for d in buildings.table()]
+    out += _rows(["kind", "key", "unit", "range", "default", "meaning"], rows)
     return "\n".join(out) + "\n"
 
 

@@ -93,8 +93,30 @@ def record_name(k: int) -> str:
     return f"chunk-{k:06d}.json"
 
 
+def _axes(spec: CampaignSpec) -> dict:
+    """``axes`` and ``shape``: without a building, the five axes of the stores written
+    before buildings existed (the floor axis has size 1)."""
+    axes = ["model", "block", "floor", "motion", "level", "sample"]
+    shape = list(spec.shape)
+    if spec.building is None:
+        del axes[2], shape[2]
+    return {"axes": axes, "shape": shape}
+
+
+def _building(spec: CampaignSpec) -> dict:
+    """The manifest's ``building`` (its keys, modal periods, floors) and ``floors`` (or
+    ``height_ratios``); nothing without a building."""
+    b = spec.building
+    if b is None:
+        return {}
+    return {"building": {**b["checked"], "name": b["name"], "n_floors": b["n_floors"],
+                         "periods": b["periods"]},
+            f"{b['axis']}s": list(b["values"])}
+
+
 def manifest_for(spec: CampaignSpec) -> dict:
-    """The manifest of a store for ``spec``."""
+    """The manifest of a store for ``spec`` (with a building: ``building`` and ``floors``
+    or ``height_ratios``, after ``motions``)."""
     from ..analysis.ida import IMS
     from .plan import STREAM
     return {
@@ -105,12 +127,12 @@ def manifest_for(spec: CampaignSpec) -> dict:
         "n_sims": spec.n_sims,
         "chunk_size": spec.chunk_size,
         "n_chunks": spec.n_chunks,
-        "axes": ["model", "block", "motion", "level", "sample"],
-        "shape": list(spec.shape),
+        **_axes(spec),
         "models": list(spec.models),
         "blocks": [{"name": b.name, "alpha": nominal(b).alpha, "p": nominal(b).p,
                     "mu": nominal(b).mu} for b in spec.blocks],  # a stack: its top block
         "motions": spec.motions,
+        **_building(spec),
         "levels": np.asarray(spec.levels, dtype=float).tolist(),
         "im": ({"name": spec.im, "unit": IMS[spec.im][0]} if spec.im else None),
         "samples": spec.samples,

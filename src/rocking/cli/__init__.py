@@ -9,6 +9,7 @@
     rocking models [--json]
     rocking motions [KIND] [--json]
     rocking blocks [FORM] [--json]
+    rocking buildings [KIND] [--json]
     rocking motion synth|spectrum ...
     rocking dem-params --specimen 2
     rocking identify RECORD.csv
@@ -17,7 +18,8 @@
     rocking campaign status|report STORE
 
 Modules: :mod:`~rocking.cli.params`, :mod:`~rocking.cli.simulate`,
-:mod:`~rocking.cli.models`, :mod:`~rocking.cli.catalog` (``motions``, ``blocks``),
+:mod:`~rocking.cli.models`, :mod:`~rocking.cli.catalog` (``motions``, ``blocks``,
+``buildings``),
 :mod:`~rocking.cli.motion`, :mod:`~rocking.cli.dem`,
 :mod:`~rocking.cli.identify`, :mod:`~rocking.cli.reproduce`,
 :mod:`~rocking.cli.campaign`; each imports only
@@ -41,7 +43,7 @@ import click
 
 from .. import __version__
 from .campaign import campaign
-from .catalog import blocks_cmd, motions_cmd
+from .catalog import blocks_cmd, buildings_cmd, motions_cmd
 from .common import CONTEXT, error_report, one_line
 from .dem import dem_params
 from .identify import identify
@@ -62,7 +64,7 @@ def cli():
 
 
 for _command in (params_cmd, simulate_cmd, reproduce_cmd, identify, dem_params, motion,
-                 models_cmd, motions_cmd, blocks_cmd, campaign):
+                 models_cmd, motions_cmd, blocks_cmd, buildings_cmd, campaign):
     cli.add_command(_command)
 
 _NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())

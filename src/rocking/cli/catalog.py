@@ -1,12 +1,14 @@
-"""``rocking motions`` and ``rocking blocks``: the motion kinds of
-:mod:`rocking.motions.catalog` and the block forms of :mod:`rocking.blocks.factory`, with
-their declared parameters (name, default, unit, range, help).
+"""``rocking motions``, ``rocking blocks`` and ``rocking buildings``: the motion kinds of
+:mod:`rocking.motions.catalog`, the block forms of :mod:`rocking.blocks.factory` and the
+building kinds of :mod:`rocking.buildings.catalog`, with their declared parameters (name,
+default, unit, range, help).
 
 ::
 
     rocking motions              # every kind and its parameters
     rocking motions ricker       # one kind
     rocking blocks [FORM] [--json]
+    rocking buildings [KIND] [--json]
 """
 
 from __future__ import annotations
@@ -47,6 +49,17 @@ def blocks_dict(name: str | None = None) -> list[dict]:
              "keys": _jsonable(f.describe())} for f in forms]
 
 
+def buildings_dict(name: str | None = None) -> list[dict]:
+    """One dict per building kind (or the kind ``name``): ``name``, ``summary``, ``keys``."""
+    from ..buildings.catalog import KINDS
+
+    if name is not None and name not in KINDS:
+        raise ParameterError(f"kind must be one of {', '.join(KINDS)}; got {name!r}")
+    kinds = [KINDS[name]] if name is not None else list(KINDS.values())
+    return [{"name": k.name, "summary": k.summary, "keys": _jsonable(k.describe())}
+            for k in kinds]
+
+
 def _echo(items: list[dict], as_json: bool, title, rows: str, head: str, footer: str):
     """Print ``items`` as JSON, or as one table each (``title(item)``, ``item[rows]``)
     followed by ``footer``."""
@@ -84,4 +97,19 @@ def blocks_cmd(form, as_json):
           "campaign spec: [[blocks]] with the keys by name")
 
 
-__all__ = ["motions_cmd", "blocks_cmd", "motions_dict", "blocks_dict"]
+@click.command("buildings", context_settings=CONTEXT)
+@click.argument("kind", required=False)
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+def buildings_cmd(kind, as_json):
+    """List the building kinds and their keys (or those of KIND)."""
+    _echo(buildings_dict(kind), as_json, lambda k: f"{k['name']}: {k['summary']}", "keys",
+          "key",
+          "simulate --building KIND: --storeys is storeys, --building-period period, "
+          "--building-damping damping_ratio, --building-param KEY=VALUE any key (a list as "
+          "JSON: masses=[2,1,1]); --floor K (0 the ground) or --height-ratio X says where "
+          "the block stands. A campaign spec: [building] kind = KIND, the keys by name, and "
+          'floors = [0, 3] or "all" (or height_ratios).')
+
+
+__all__ = ["motions_cmd", "blocks_cmd", "buildings_cmd", "motions_dict", "blocks_dict",
+           "buildings_dict"]

@@ -9,6 +9,8 @@
         --theta0 0.05 --duration 5
     rocking simulate --specimen 1 --motion mavroeidis_papageorgiou --amp 0.3g --freq 1 \\
         --param gamma=2 --param nu=0
+    rocking simulate --specimen 2 --record Rinaldi228 --building shear --storeys 5 \\
+        --building-period 0.5 --building-damping 5% --floor 3
 
 Motions are built by :mod:`rocking.motions.catalog` (``rocking motions`` lists the kinds):
 ``--motion`` is a kind's name, ``--amp``, ``--freq``, ``--tp`` and ``--duration`` set its
@@ -18,6 +20,14 @@ Motions are built by :mod:`rocking.motions.catalog` (``rocking motions`` lists t
 ``--vertical`` is a GroundMotion of two such records (for two files, the kind
 ``ground_motion``). Blocks are built by :func:`rocking.blocks.factory.make_block`
 (:func:`rocking.cli.common.make_block`).
+
+``--building KIND`` puts the block on a floor of a building of
+:mod:`rocking.buildings.catalog` (``rocking buildings`` lists the kinds): ``--storeys``,
+``--building-period`` and ``--building-damping`` set its ``storeys``, ``period`` and
+``damping_ratio``, ``--building-param KEY=VALUE`` any other key (a list as JSON:
+``masses=[2,1,1]``); ``--floor K`` (0 the ground) or ``--height-ratio X`` (z/H, a
+continuous building) says where the block stands. The motion of the other flags is then the
+ground motion, and the block feels :class:`rocking.buildings.FloorMotion` of it.
 
 ``--model`` is a name of :data:`rocking.models.MODELS` and ``--option KEY=VALUE``
 (repeatable) passes an option of that model's ``Options`` (``rocking models`` lists them);
@@ -30,6 +40,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
+import re
 import warnings
 from pathlib import Path
 
@@ -46,6 +57,7 @@ from .common import (
     block_options,
     check_positive,
     in_flag_words,
+    integer,
     json_default,
     make_block,
     model_classes,
@@ -301,6 +313,106 @@ def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
     return (*_scaled(m, desc, lf), run)
 
 
+# ----------------------------------------------------------------------------- buildings
+BUILDING_FLAGS = {"storeys": "storeys", "period": "building-period",
+                  "damping_ratio": "building-damping"}
+"""The building catalog keys that have a flag of their own (the others:
+``--building-param``)."""
+
+
+def _building_values(kind, storeys, period, damping, pairs) -> tuple[dict, dict]:
+    """The building catalog mapping of the flags (``kind`` and its keys), and the words of
+    messages."""
+    flags = {"storeys": storeys, "period": period, "damping_ratio": damping}
+    values = {k: v for k, v in flags.items() if v is not None}
+    extra = parse_options(pairs, flag="building-param", example="stiffness_ratio=5")
+    for key, v in extra.items():
+        if key in values:
+            raise ParameterError(f"{key} given twice (--{BUILDING_FLAGS[key]} and "
+                                 f"--building-param {key}=...)")
+        if isinstance(v, str) and v.lstrip().startswith("["):
+            try:
+                extra[key] = json.loads(v)
+            except ValueError:
+                raise ParameterError(f"building-param {key} must be a number, a quantity or "
+                                     f"a JSON list such as [2, 1, 1]; got {v!r}") from None
+    words = {k: (f, flags[k]) for k, f in BUILDING_FLAGS.items() if k not in extra}
+    words["kind"] = ("building", kind)
+    return {"kind": kind, **values, **extra}, words
+
+
+def make_building(kind, storeys=None, period=None, damping=None, pairs=()):
+    """``(building, description)`` of the ``--building`` flags, built by
+    :func:`rocking.buildings.catalog.make_building` (which checks the keys)."""
+    from ..buildings import catalog
+
+    mapping, words = _building_values(kind, storeys, period, damping, pairs)
+    try:
+        building = catalog.make_building(mapping)
+    except ParameterError as e:
+        msg = one_line(in_flag_words(e, words))
+        name = msg.split(" ", 1)[0]
+        if msg.startswith(f"{name} is required"):
+            msg += (f"; give --{name} VALUE" if name in BUILDING_FLAGS.values()
+                    else f"; give --building-param {name}=VALUE")
+        raise type(e)(msg) from None
+    checked = catalog.KINDS[kind].Params(**{k: v for k, v in mapping.items() if k != "kind"})
+    desc = {"kind": kind, **{k: v for k, v in checked.to_dict().items() if v is not None},
+            "name": building.name, "periods": building.periods.tolist(),
+            "n_floors": building.n_floors}
+    return building, desc
+
+
+def _where(building, floor, height_ratio) -> dict:
+    """``{"floor": K}`` or ``{"height_ratio": X}`` of the flags (one of them)."""
+    if building is None:
+        for flag, v in (("floor", floor), ("height-ratio", height_ratio)):
+            if v is not None:
+                raise ParameterError(f"{flag}: --{flag} applies with --building KIND only")
+        return {}
+    if floor is not None and height_ratio is not None:
+        raise ParameterError("floor or height-ratio: give one, not both")
+    if height_ratio is not None:
+        return {"height_ratio": number(height_ratio, "height-ratio")}
+    if floor is None:
+        raise ParameterError("floor: --building needs --floor K (0 the ground, 1 .. the top "
+                             "floor) or --height-ratio X (z/H)")
+    return {"floor": integer(floor, "floor", lo=0)}
+
+
+def on_floor(mot, building_flags: dict, floor, height_ratio):
+    """``(motion the block stands on, floor description or None)``: ``mot`` itself without
+    ``--building``, else :class:`rocking.buildings.FloorMotion` of it (the ground motion)
+    at ``--floor`` or ``--height-ratio``."""
+    kind = building_flags.get("kind")
+    if kind is None:
+        flags = {"storeys": "storeys", "period": "building-period",
+                 "damping": "building-damping", "param": "building-param"}
+        given = [flags[k] for k, v in building_flags.items() if v and k in flags]
+        if given:
+            raise ParameterError(f"{given[0]}: --{given[0]} applies with --building KIND "
+                                 "only")
+        _where(None, floor, height_ratio)
+        return mot, None
+    building, bdesc = make_building(kind, building_flags["storeys"], building_flags["period"],
+                                    building_flags["damping"], building_flags["param"])
+    where = _where(building, floor, height_ratio)
+    if mot is None:
+        raise ParameterError("building: --building needs a ground motion (not --motion free)")
+    from ..buildings import FloorMotion
+
+    try:
+        fm = FloorMotion(mot, building, **where)
+    except ParameterError as e:
+        msg = one_line(in_flag_words(e, {"height_ratio": ("height-ratio", height_ratio)}))
+        msg = msg.replace("give height_ratio", "give --height-ratio X")
+        if msg.startswith("damping["):  # the modal damping ratio of every mode
+            msg = re.sub(r"^damping\[\d+\]", "building-damping", msg)
+            msg = re.sub(r", got .*$", f", got {building_flags['damping']!r}", msg)
+        raise type(e)(msg) from None
+    return fm, {"building": bdesc, **where, "floor_pga": fm.pga, "where": fm.where}
+
+
 # ----------------------------------------------------------------------------- model options
 def _friction_angle(model: str, text) -> float:
     """``--friction-angle 30deg`` (or ``0.52rad``) in rad, checked by the model's declared
@@ -412,13 +524,29 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
 @click.option("--damping", metavar="B",
               help="dem: stiffness-proportional damping b (s), or 'calibrated' (default: "
                    "matches mu) or 'paper' (Eq 20).")
+@click.option("--building", metavar="KIND",
+              help="Put the block on a floor of a building of this kind ('rocking "
+                   "buildings'); the motion is then the ground motion.")
+@click.option("--storeys", metavar="N", help="Storeys of the building (shear, continuous).")
+@click.option("--building-period", "building_period", metavar="T",
+              help="First-mode period of the building (s).")
+@click.option("--building-damping", "building_damping", metavar="Z",
+              help="Modal damping ratio of the building (5% or 0.05; default 5%).")
+@click.option("--building-param", "building_params", multiple=True, metavar="KEY=VALUE",
+              help="Another key of the building kind, repeatable (e.g. stiffness_ratio=5, "
+                   "masses=[2,1,1]); 'rocking buildings KIND' lists them.")
+@click.option("--floor", metavar="K", help="The floor the block stands on (0 the ground).")
+@click.option("--height-ratio", "height_ratio", metavar="X",
+              help="Instead of --floor: the height z/H in [0, 1] (a continuous building).")
 @click.option("--out", type=click.Path(file_okay=False),
               help="Write response.csv, summary.json and theta.png to this folder.")
 def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model_opts, motion,
                  freq, amp, tp, motion_params, duration, max_free_time, record, vertical,
                  vertical_factor, units, dt, earthquake, load_factor, theta0, omega0, linear,
-                 friction_angle, stiffness, damping, dt_out, out):
-    """Simulate one block under one base motion."""
+                 friction_angle, stiffness, damping, dt_out, building, storeys,
+                 building_period, building_damping, building_params, floor, height_ratio,
+                 out):
+    """Simulate one block under one base motion (on a floor of a building: --building)."""
     from ..models import simulate  # lazy: the models import numba
 
     block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
@@ -426,6 +554,9 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
     mot, mdesc, sim_dur = make_motion(motion, freq, amp, tp, duration, record, units, dt,
                                       load_factor, earthquake, vertical, vertical_factor,
                                       params=motion_params)
+    mot, fdesc = on_floor(mot, {"kind": building, "storeys": storeys,
+                                "period": building_period, "damping": building_damping,
+                                "param": building_params}, floor, height_ratio)
     options = model_options(model, model_opts, friction_angle, stiffness, damping)
     if linear:  # --linear is --option linear=true: one way into the model's options
         owners = models_with_option("linear")
@@ -460,11 +591,18 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
     inputs.update(run)
     summary["specimen"] = binfo.get("specimen")
     summary["params"] = binfo.get("params")
+    if fdesc is not None:  # where the block stands, also among the inputs
+        floor_keys = {k: v for k, v in fdesc.items() if k != "where"}
+        summary.update(floor_keys)
+        inputs.update(floor_keys)
     summary["inputs"] = inputs
 
     th = summary["max_abs_theta"]
     click.echo(f"block       {block!r}")
-    click.echo(f"motion      {mdesc.get('repr', 'free rocking')}  [{model}"
+    on = "" if fdesc is None else (
+        f" on {fdesc['where']} of the {fdesc['building']['name']} (peak floor acceleration "
+        f"{fdesc['floor_pga'] / G:.3g} g)")
+    click.echo(f"motion      {mdesc.get('repr', 'free rocking')}{on}  [{model}"
                f"{', linear' if linear else ''}]")
     click.echo(f"max |theta| {math.degrees(th):.4g} deg ({th:.6g} rad, "
                f"{th / block.alpha:.3g} alpha)")
@@ -492,7 +630,7 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
         resp.to_csv(folder / "response.csv")
         atomic_write(folder / "summary.json",
                      json.dumps(summary, indent=2, default=json_default))
-        _theta_png(resp, block, mdesc, folder / "theta.png")
+        _theta_png(resp, block, mdesc, folder / "theta.png", fdesc)
         click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
 
 
@@ -529,13 +667,16 @@ def _motion_title(d: dict) -> str:
     return "free rocking"
 
 
-def _theta_png(resp, block, mdesc, path):
+def _theta_png(resp, block, mdesc, path, fdesc=None):
     from ..plot import figure, plot_response, save_figure  # lazy: matplotlib
 
     fig, ax = figure()
     title = f"{block.name or 'block'}: {_motion_title(mdesc)}"
+    if fdesc is not None:
+        title += f", {fdesc['where']} of a {fdesc['building']['name']}"
     plot_response(resp, ax=ax, show_alpha=True, title=title)
     save_figure(fig, path)
 
 
-__all__ = ["simulate_cmd", "make_motion", "model_options", "MOTION_CHOICES", "MotionChoice"]
+__all__ = ["simulate_cmd", "make_motion", "model_options", "MOTION_CHOICES", "MotionChoice",
+           "make_building", "on_floor", "BUILDING_FLAGS"]
