@@ -226,7 +226,9 @@ class Campaign:
     def inputs(self, ids):
         """Simulations ``ids``: ``(table, blocks, motions)`` ready for
         :func:`rocking.simulate_many` (the table holds the inputs, see :meth:`run_ids`; a
-        stack's ``alpha``, ``p`` and ``mu`` are its top block's: :func:`.spec.nominal`)."""
+        stack's ``alpha``, ``p`` and ``mu`` are its top block's: :func:`.spec.nominal`).
+        With a building: ``floor`` (and ``height_ratio``) after ``block_name`` and
+        ``floor_pga`` after ``pga`` (see the module docstring)."""
         s = self.spec
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         if ids.size and not (ids.min() >= 0 and ids.max() < self.n_sims):
