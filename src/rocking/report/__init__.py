@@ -29,7 +29,8 @@ from .core import (
 SECTION_PACKAGE = f"{__name__}.sections"
 """The package holding the section modules."""
 SECTION_MODULES = ("table2", "identification", "table4", "free_rocking", "figure7", "dem",
-                   "earthquakes", "figure6", "probability", "pulses", "fragility", "vertical")
+                   "earthquakes", "figure6", "probability", "pulses", "fragility", "vertical",
+                   "buildings")
 """Modules of :data:`SECTION_PACKAGE` that register sections when imported."""
 
 
