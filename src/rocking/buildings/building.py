@@ -357,7 +357,11 @@ class Building:
         if shapes is None and shape_function is None:
             raise ParameterError("shapes: give the mode shapes at the floors")
         if shapes is not None:
-            s = np.asarray(shapes, dtype=float)
+            try:
+                s = np.asarray(shapes, dtype=float)
+            except (TypeError, ValueError):
+                raise ParameterError(f"shapes must be (floors, modes) = (n, {T.size}) numbers, "
+                                     "one row per floor with one value per mode") from None
             if s.ndim == 1 and T.size == 1:
                 s = s[:, None]
             if s.ndim != 2 or s.shape[1] != T.size or not np.all(np.isfinite(s)):

@@ -32,8 +32,9 @@ def _period(help_: str = "first-mode period"):
 
 
 def _damping():
-    return option(0.05, help="modal damping ratio (5% or 0.05)", lo=0.0, hi=1.0,
-                  lo_open=False, hi_open=True, quantity="ratio")
+    return option(0.05, help="modal damping ratio (5% or 0.05; > 0: an undamped building "
+                  "never rings down)", lo=0.0, hi=1.0, lo_open=True, hi_open=True,
+                  quantity="ratio")
 
 
 @dataclass(frozen=True)
