@@ -43,6 +43,19 @@ record is extended, in closed form (free vibration), until every mode's envelope
 ``tol / n_modes`` times the peak floor acceleration (:data:`RING_DOWN_TOL` = 1e-6), so
 that what is cut off is below ``tol`` times the peak. An undamped mode never rings down:
 every modal damping ratio must be > 0.
+
+**Vertical component.** A building filters the vertical ground acceleration too, through
+its vertical modes (the axial modes of its columns and walls, the slabs' out-of-plane
+modes). Given a second, *vertical* building (its vertical modes, in the same
+:class:`~rocking.buildings.Building` form), the vertical ground acceleration ``a_v`` is
+filtered by Eq (1) with that building's modal factors at the same floor (or height ratio):
+the same modal superposition, integration and ring-down as the horizontal component. The
+axial vibration of a uniform bar, ``rho A u_tt = (EA u_z)_z``, is the shear beam's equation
+with ``EA`` for ``GA`` (Clough and Penzien, *Dynamics of Structures*, 2nd ed., chapters 18
+and 19), so ``Building.shear(N, T_v)`` with the building's storeys and its first vertical
+period ``T_v`` is a lumped model of the columns' axial filter, and ``Building.sdof(T_v,
+zeta)`` a single vertical mode (floor 1). Without a vertical building the vertical
+component passes through unchanged: the building is taken as rigid vertically.
 """
 
 from __future__ import annotations
@@ -138,6 +151,15 @@ def _guard(n: int, name: str) -> None:
                              "realistic damping ratio")
 
 
+def _check_damping(zetas, what: str) -> None:
+    """Every modal damping ratio > 0 (an undamped mode never rings down)."""
+    for j, z in enumerate(zetas):
+        if not z > 0.0:
+            raise ParameterError(
+                f"{what}damping[{j}] must be in (0, 1) for a floor motion (an undamped "
+                f"building never rings down), got {z!r}")
+
+
 def floor_history(acc: np.ndarray, step: float, omegas, zetas, gphis,
                   tol: float = RING_DOWN_TOL) -> np.ndarray:
     """Absolute floor acceleration (Eq 1 of the module docstring) at the samples of
@@ -221,8 +243,8 @@ class FloorMotion(Motion):
     ground : Motion
         The ground motion: a :class:`~rocking.motions.Record`, an analytic motion (sampled
         first, see ``dt``), a :class:`~rocking.motions.GroundMotion` (its horizontal
-        component is filtered; **the vertical component passes through unchanged**: there
-        is no vertical building filter yet) or another ``FloorMotion``.
+        component is filtered by ``building``, its vertical one by ``vertical_building``
+        or, without one, **passes through unchanged**) or another ``FloorMotion``.
     building : Building
         The building; every modal damping ratio must be > 0 (an undamped building never
         rings down).
@@ -237,6 +259,15 @@ class FloorMotion(Motion):
         ``scan_step / 4``, or finer by the same rule).
     scale : float
         Load factor (multiplies both components).
+    vertical_building : Building, optional
+        The building's vertical modes (e.g. ``Building.sdof(0.1, 0.05)``, one vertical mode
+        at floor 1, or ``Building.shear(N, T_v)``, the columns' axial modes; see
+        :mod:`rocking.buildings.floor`): the ground's vertical component is filtered by it
+        at the same ``floor`` or ``height_ratio`` (which must be a floor of it), by the
+        same modal superposition (1), on the vertical record's own time grid (same ``dt``
+        rule). Every modal damping ratio must be > 0. Without a vertical component in the
+        ground it has nothing to filter and the floor has no vertical motion either; at
+        floor 0 it is the ground's, unchanged.
 
     Attributes
     ----------
@@ -248,12 +279,15 @@ class FloorMotion(Motion):
     ground_end : float
         When the ground stops (s); the ring-down follows.
     vertical : Motion or None
-        The vertical component (the ground's, unchanged).
+        The vertical component: the ground's, unchanged, without ``vertical_building``;
+        with it, the vertical floor acceleration as a :class:`~rocking.motions.Record`
+        (m/s^2, positive upwards, before ``scale``), ringing down like ``samples``.
 
     Notes
     -----
     ``floor=0`` (or ``height_ratio=0``) is the ground itself: the kernels get the ground's
-    own spec, bit for bit. ``FloorMotion(ground.scaled(f), ...)`` equals
+    own spec, bit for bit (with or without a ``vertical_building``, whose modes do not
+    move the ground either). ``FloorMotion(ground.scaled(f), ...)`` equals
     ``FloorMotion(ground, ...).scaled(f)`` (linearity; bit for bit when ``f`` is a power
     of 2).
 
@@ -282,6 +316,7 @@ class FloorMotion(Motion):
     height_ratio: float | None = None
     dt: float | None = None
     scale: float = 1.0
+    vertical_building: Building | None = None
     samples: np.ndarray = field(init=False, repr=False)
     step: float = field(init=False, repr=False)
     ground_end: float = field(init=False, repr=False)
@@ -296,6 +331,10 @@ class FloorMotion(Motion):
         if not isinstance(self.building, Building):
             raise ParameterError(f"building must be a rocking.buildings.Building, got "
                                  f"{type(self.building).__name__}")
+        vb = self.vertical_building
+        if vb is not None and not isinstance(vb, Building):
+            raise ParameterError(f"vertical_building must be a rocking.buildings.Building "
+                                 f"(its vertical modes) or None, got {type(vb).__name__}")
         set_ = object.__setattr__
         set_(self, "scale", as_float("scale", self.scale))
         if self.floor is not None and self.height_ratio is not None:
@@ -307,16 +346,28 @@ class FloorMotion(Motion):
         if self.height_ratio is not None:
             set_(self, "height_ratio", in_range("height_ratio", self.height_ratio, 0.0,
                                                 1.0, lo_open=False, hi_open=False))
-        for j, z in enumerate(zetas):
-            if not z > 0.0:
-                raise ParameterError(
-                    f"damping[{j}] must be in (0, 1) for a floor motion (an undamped "
-                    f"building never rings down), got {z!r}")
+        _check_damping(zetas, "")
+        vfactors = None
+        if vb is not None:
+            try:
+                vfactors = vb.modal_factors(self.floor, self.height_ratio)
+            except ParameterError as e:
+                raise ParameterError(f"vertical_building: {e} (the vertical building is "
+                                     "read at the same floor or height_ratio)") from None
+            _check_damping(vfactors[1], "vertical_building ")
         if self.dt is not None:
             set_(self, "dt", positive("dt", self.dt, "s"))
         h, v = _split(self.ground)
+        filtered = v is not None and vfactors is not None and bool(np.any(vfactors[2] != 0.0))
+        if filtered:
+            vacc, vstep = _ground_samples(v, vb.periods, self.dt)
+            vout = floor_history(vacc, vstep, *vfactors)
+            with warnings.catch_warnings():  # an amplified floor may exceed 5 g
+                warnings.simplefilter("ignore", PlausibilityWarning)
+                v = Record(vout, vstep, name=f"{getattr(v, 'name', '') or 'vertical'} "
+                           f"through {vb.name or 'the vertical building'}")
         set_(self, "vertical", v)
-        identity = not np.any(gphis != 0.0)
+        identity = not np.any(gphis != 0.0) and not filtered
         set_(self, "identity", identity)
         if identity:  # the ground itself: its own spec
             set_(self, "samples", np.empty(0))
@@ -401,8 +452,8 @@ class FloorMotion(Motion):
             return Record(self.samples, self.step, name=self.name, scale=self.scale)
 
     def vertical_acceleration(self, t):
-        """Vertical acceleration (m/s^2, positive upwards) at ``t`` (s): the ground's; 0
-        without one."""
+        """Vertical acceleration (m/s^2, positive upwards) at ``t`` (s): the ground's, or
+        its floor motion through ``vertical_building``; 0 without one."""
         arr = np.asarray(t, dtype=np.float64)
         if self.vertical is None:
             return np.zeros(arr.shape) if arr.ndim else 0.0
@@ -437,5 +488,7 @@ class FloorMotion(Motion):
         gname = getattr(self.ground, "name", "") or type(self.ground).__name__
         if self.identity:
             return f"FloorMotion({self.where} = the ground {gname!r}{sc})"
-        return (f"FloorMotion({gname!r} at {self.where} of {self.building.name!r}, "
+        vb = ("" if self.vertical_building is None
+              else f", vertical through {self.vertical_building.name!r}")
+        return (f"FloorMotion({gname!r} at {self.where} of {self.building.name!r}{vb}, "
                 f"n={self.samples.size}, dt={self.step:g} s, pfa={self.pga:.3f} m/s^2{sc})")
