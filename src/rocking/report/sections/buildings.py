@@ -336,7 +336,7 @@ def _grid(summary, buildings, blocks, levels, value, xlabel, *, theta=False):
 def _pfa_figure(pfa, buildings):
     from matplotlib.figure import Figure
 
-    fig = Figure(figsize=(10.0, 4.6), layout="constrained")
+    fig = Figure(figsize=(10.0, 5.0), layout="constrained")
     axs = fig.subplots(1, len(buildings))
     for ax, (n, bld) in zip(axs, buildings.items(), strict=True):
         d = pfa[pfa.storeys == n].sort_values("floor")
@@ -352,10 +352,11 @@ def _pfa_figure(pfa, buildings):
         ax.plot(d.ec8_rigid, d.floor, color=PALETTE[2], ls="-.", lw=1.4,
                 label="EN 1998-1 Eq 4.25, rigid element: 1 + 1.5 z/H")
         ax.set_yticks(floors_of(bld))
-        ax.set_xlim(left=0.0)
+        ax.set_xlim(left=min(0.75, float(d.pfa_over_pga_p16.min()) - 0.05))
         style_axes(ax, "peak floor acceleration / PGA", "floor (0 = ground)")
         ax.set_title(f"{n}-storey shear building, T1 = {bld.periods[0]:.2f} s", fontsize=10)
-        ax.legend(fontsize=7.5, loc="upper left", framealpha=0.9)
+    fig.legend(*axs[0].get_legend_handles_labels(), loc="outside lower center", ncols=3,
+               fontsize=8.5, frameon=False)
     return fig
 
 
@@ -481,13 +482,12 @@ def build(ctx) -> str:
         row.append(_thr_cell(g))
         for n in buildings:
             d = thr[(thr.block == label) & (thr.storeys == n)].sort_values("floor")
+            row.append(_thr_cell(d.iloc[len(d) // 2]))
             row.append(_thr_cell(d.iloc[-1]))
-            mid = d.iloc[len(d) // 2]
-            row.append(_thr_cell(mid))
         trows.append(row)
     hdr = ["block", "ground"]
     for n in buildings:
-        hdr += [f"roof, {n}-storey", f"floor {(n + 1) // 2}, {n}-storey"]
+        hdr += [f"floor {(n + 1) // 2}, {n}-storey", f"roof, {n}-storey"]
     tbl_t = H.table(
         hdr, trows,
         caption=(f"Ground PGA (g) at which P(overturn) over the {nrec} seed earthquakes "
