@@ -682,12 +682,15 @@ def _text(res) -> list[str]:
         "Limits: the buildings are linear elastic (no cracking or yielding, which would "
         "lengthen their periods and limit the floor accelerations at the higher PGAs), "
         "uniform shear buildings (no flexural deformation of walls, no torsion, rigid "
-        "floors) with classical modal damping; the seed earthquakes are horizontal only, "
-        "and FloorMotion passes a vertical component through unchanged (there is no "
-        "vertical building filter, although floors amplify the vertical motion too, most "
-        "at mid-span); the blocks do not slide. The periods come from the code's rule of "
-        "thumb, not from a model of a real building, and EN 1998-1 Eq 4.25 is anchored at "
-        "the record's PGA for the comparison only.")
+        "floors) with classical modal damping; the motions are horizontal only (the seed "
+        "earthquakes have no vertical component and the Rinaldi record is used without its "
+        "own), so there is no vertical building filter in these runs, although floors "
+        "amplify the vertical motion too, most at mid-span (FloorMotion can filter a "
+        "vertical component through a building's vertical modes, vertical_building=...; "
+        "without one it passes the ground's through unchanged); the blocks do not slide. "
+        "The periods come from the code's rule of thumb, not from a model of a real "
+        "building, and EN 1998-1 Eq 4.25 is anchored at the record's PGA for the "
+        "comparison only.")
     return [setup, amp, unsafe_t, rin_t, cascade, limits]
 
 
