@@ -551,7 +551,8 @@ def _text(res) -> list[str]:
             f"{roof[f'pfa_over_pga_{RECORD}']:.2f}) against ASCE 7-22's H_f = "
             f"{roof.asce7_hf:.2f} and EN 1998-1's {roof.ec8_rigid:.2f}; over its {len(up)} "
             f"floors the median is at most H_f on {below_hf} and at most EN 1998-1's "
-            f"value on {below_ec8}, the 84th percentile exceeds H_f on {over84}, and the "
+            f"value on {below_ec8 or 'none'}, the 84th percentile exceeds H_f on "
+            f"{over84 or 'none'}, and the "
             "Rinaldi record exceeds H_f on "
             + (f"floors {', '.join(map(str, real_over))}" if real_over else "none")
             + f" (the seed earthquakes' median spectral acceleration at T1 is {sa:.2f} "
