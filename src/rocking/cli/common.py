@@ -12,6 +12,7 @@ Quantities accept units at the edge (``170mm``, ``0.3g``, ``5Hz``, ``9.6deg``); 
 
 from __future__ import annotations
 
+import json
 import math
 import re
 from pathlib import Path
@@ -254,6 +255,83 @@ def in_flag_words(e: ParameterError, words: dict) -> ParameterError:
     return type(e)(out)
 
 
+# ----------------------------------------------------------------------------- buildings
+BUILDING_FLAGS = {"storeys": "storeys", "period": "building-period",
+                  "damping_ratio": "building-damping"}
+"""The building catalog keys that have a flag of their own (the others:
+``--building-param``)."""
+
+
+def building_options(building_help: str):
+    """Decorator adding ``--building --storeys --building-period --building-damping
+    --building-param``: a building of :mod:`rocking.buildings.catalog`, read by
+    :func:`make_building` (``rocking simulate``, ``rocking motion floor``)."""
+    opts = [
+        click.option("--building", metavar="KIND", help=building_help),
+        click.option("--storeys", metavar="N",
+                     help="Storeys of the building (shear, continuous)."),
+        click.option("--building-period", "building_period", metavar="T",
+                     help="First-mode period of the building (s)."),
+        click.option("--building-damping", "building_damping", metavar="Z",
+                     help="Modal damping ratio of the building (5% or 0.05; default 5%)."),
+        click.option("--building-param", "building_params", multiple=True,
+                     metavar="KEY=VALUE",
+                     help="Another key of the building kind, repeatable (e.g. "
+                          "stiffness_ratio=5, masses=[2,1,1]); 'rocking buildings KIND' "
+                          "lists them."),
+    ]
+
+    def decorate(f):
+        for o in reversed(opts):
+            f = o(f)
+        return f
+
+    return decorate
+
+
+def _building_values(kind, storeys, period, damping, pairs) -> tuple[dict, dict]:
+    """The building catalog mapping of the flags (``kind`` and its keys), and the words of
+    messages."""
+    flags = {"storeys": storeys, "period": period, "damping_ratio": damping}
+    values = {k: v for k, v in flags.items() if v is not None}
+    extra = parse_options(pairs, flag="building-param", example="stiffness_ratio=5")
+    for key, v in extra.items():
+        if key in values:
+            raise ParameterError(f"{key} given twice (--{BUILDING_FLAGS[key]} and "
+                                 f"--building-param {key}=...)")
+        if isinstance(v, str) and v.lstrip().startswith("["):
+            try:
+                extra[key] = json.loads(v)
+            except ValueError:
+                raise ParameterError(f"building-param {key} must be a number, a quantity or "
+                                     f"a JSON list such as [2, 1, 1]; got {v!r}") from None
+    words = {k: (f, flags[k]) for k, f in BUILDING_FLAGS.items() if k not in extra}
+    words["kind"] = ("building", kind)
+    return {"kind": kind, **values, **extra}, words
+
+
+def make_building(kind, storeys=None, period=None, damping=None, pairs=()):
+    """``(building, description)`` of the ``--building`` flags, built by
+    :func:`rocking.buildings.catalog.make_building` (which checks the keys)."""
+    from ..buildings import catalog
+
+    mapping, words = _building_values(kind, storeys, period, damping, pairs)
+    try:
+        building = catalog.make_building(mapping)
+    except ParameterError as e:
+        msg = one_line(in_flag_words(e, words))
+        name = msg.split(" ", 1)[0]
+        if msg.startswith(f"{name} is required"):
+            msg += (f"; give --{name} VALUE" if name in BUILDING_FLAGS.values()
+                    else f"; give --building-param {name}=VALUE")
+        raise type(e)(msg) from None
+    checked = catalog.KINDS[kind].Params(**{k: v for k, v in mapping.items() if k != "kind"})
+    desc = {"kind": kind, **{k: v for k, v in checked.to_dict().items() if v is not None},
+            "name": building.name, "periods": building.periods.tolist(),
+            "n_floors": building.n_floors}
+    return building, desc
+
+
 # ----------------------------------------------------------------------------- models
 def model_classes() -> dict:
     """:data:`rocking.models.MODELS`, read at run time (lazy: the models import numba)."""
@@ -442,4 +520,4 @@ __all__ = ["CONTEXT", "quantity", "number", "check_positive", "positive_quantity
            "ModelChoice", "option_value", "parse_options", "validate_options",
            "models_with_option", "options_table", "describe_table", "one_line",
            "read_record_arg", "output_too_large_message", "error_report", "in_flag_words",
-           "BLOCK_FLAGS"]
+           "BLOCK_FLAGS", "BUILDING_FLAGS", "building_options", "make_building"]

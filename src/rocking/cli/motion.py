@@ -1,4 +1,5 @@
-"""``rocking motion ...``: synthetic earthquakes and response spectra from the command line.
+"""``rocking motion ...``: synthetic earthquakes, response spectra and floor motions from the
+command line.
 
 ::
 
@@ -7,6 +8,26 @@
     rocking motion spectrum quake.AT2                       # PEER file, in g
     rocking motion spectrum quake.csv --units m/s^2 --damping 5% --plot spec.png
     rocking motion show H.AT2 --vertical V.AT2 [--units g] [--plot motion.png]
+    rocking motion floor Rinaldi228 --building shear --storeys 5 --building-period 0.5 \\
+        --building-damping 5% [--floors all|0,1,3 | --height-ratios 0.5,1] --out floors/
+
+``floor`` filters a record through a building of :mod:`rocking.buildings.catalog` (the
+flags of ``rocking simulate --building``, :func:`rocking.cli.common.building_options`)
+into the absolute acceleration of its floors (:class:`rocking.buildings.FloorMotion`) and
+writes, in OUT: one CSV per floor (``t,acc`` in s and m/s^2 whatever ``--units`` the
+record was read in, with a header stating the units and ``dt``, as
+:func:`rocking.motions.io.write_csv`: read it back with ``--units m/s^2``); ``floors.csv``
+(per floor: ``floor``, ``height_ratio`` z/H, ``file``, the ground's PGA ``pga_ms2``, the
+peak floor acceleration ``pfa_ms2``, ``pfa_over_pga``, and for comparison ASCE/SEI 7-22
+Eq (13.3-4)'s ``asce7_hf`` with ``Ta`` the building's first period and EN 1998-1:2004
+Eq (4.25)'s amplification of a rigid element ``ec8_rigid``, ``3 (1 + z/H) / 2 - 0.5``,
+both :mod:`rocking.buildings.spectra`); ``floor_spectra.csv`` (one row per period: the
+ground's and each floor's pseudo-acceleration spectrum, m/s^2, ``--damping`` default
+5 %); ``floor_accelerations.png`` and ``floor_spectra.png`` (each floor's spectrum with
+the ground's, Eq (4.25) with ``a_g S`` the record's PGA and ``T1`` the building's, and
+ASCE 7's ``H_f`` PGA, :func:`rocking.buildings.plot_floor_spectrum`; at most
+:data:`MAX_PLOTTED_FLOORS` floors are drawn). A ``modal`` building of the catalog has no
+floor heights: its ``height_ratio`` and code columns are empty.
 
 The group is registered in :mod:`rocking.cli`. Bad input
 raises :class:`~rocking.errors.RockingError`; the main entry point prints it as one line
@@ -16,6 +37,7 @@ raises :class:`~rocking.errors.RockingError`; the main entry point prints it as 
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import click
@@ -25,7 +47,16 @@ from .._atomic import atomic_path, atomic_write
 from .._validate import as_float
 from ..errors import ParameterError
 from ..units import G, parse_quantity
-from .common import CONTEXT, integer, positive_quantity, read_record_arg
+from .common import (
+    CONTEXT,
+    building_options,
+    in_flag_words,
+    integer,
+    make_building,
+    one_line,
+    positive_quantity,
+    read_record_arg,
+)
 
 # matplotlib, pandas and rocking.motions (numba) are imported inside the functions: lazy,
 # so that `rocking --help` and the other commands start fast.
@@ -106,7 +137,8 @@ def _record_figure(rec, periods, sa, target, prange, damping):
 # ----------------------------------------------------------------------------- commands
 @click.group("motion", context_settings=CONTEXT)
 def motion():
-    """Earthquake input: synthetic spectrum-compatible records, response spectra."""
+    """Earthquake input: synthetic spectrum-compatible records, response spectra, the
+    motion of a building's floors."""
 
 
 @motion.command("synth")
@@ -343,4 +375,255 @@ def show_cmd(file, vertical, units, dt, plot_path, no_plot):
         click.echo(f"wrote       {out}")
 
 
-__all__ = ["motion", "synth_cmd", "spectrum_cmd", "show_cmd"]
+# ----------------------------------------------------------------------------- floors
+MAX_PLOTTED_FLOORS = 6
+"""The PNGs of ``rocking motion floor`` show at most this many floors (the lowest, the
+highest and floors evenly between); the CSV files have them all."""
+
+
+def _items(text, flag: str, what: str) -> list[str]:
+    items = [x.strip() for x in str(text).split(",")]
+    if not all(items):
+        raise ParameterError(f"{flag} must be {what} separated by commas, got {text!r}")
+    return items
+
+
+def _unique(values: list, flag: str, text) -> list:
+    seen = set()
+    for v in values:
+        if v in seen:
+            raise ParameterError(f"{flag}: {v:g} given twice, got {text!r}")
+        seen.add(v)
+    return sorted(values)
+
+
+def floor_list(floors, height_ratios, building) -> list[dict]:
+    """The places of ``--floors`` (``all`` by default, or ``0,1,3``) or ``--height-ratios``
+    (``0.5,1``) as keyword arguments of :class:`~rocking.buildings.FloorMotion`
+    (``{"floor": k}`` or ``{"height_ratio": x}``), bottom to top."""
+    if floors is not None and height_ratios is not None:
+        raise ParameterError("floors or height-ratios: give one, not both")
+    if height_ratios is not None:
+        shown = "heights z/H in [0, 1]"
+        xs = [as_float("height-ratios", x) for x in
+              _items(height_ratios, "height-ratios", shown)]
+        for x in xs:
+            if not 0.0 <= x <= 1.0:
+                raise ParameterError(f"height-ratios must be {shown} (0 the ground, 1 the "
+                                     f"top), got {height_ratios!r}")
+        return [{"height_ratio": x}
+                for x in _unique(xs, "height-ratios", height_ratios)]
+    n = building.n_floors
+    if n is None:
+        raise ParameterError(f"floors: a {building.kind} building without storeys has no "
+                             "floors; give --height-ratios X,Y (z/H in [0, 1]) or --storeys "
+                             "N")
+    text = "all" if floors is None else str(floors).strip()
+    if text.lower() == "all":
+        return [{"floor": k} for k in range(n + 1)]
+    shown = f"'all' or floor numbers in 0..{n} (0 the ground, {n} the top)"
+    ks = []
+    for item in _items(text, "floors", shown):
+        try:
+            k = int(item)
+        except ValueError:
+            raise ParameterError(f"floors must be {shown} separated by commas, e.g. "
+                                 f"0,1,{n}; got {floors!r}") from None
+        if not 0 <= k <= n:
+            raise ParameterError(f"floors must be in 0..{n} (0 the ground, {n} the top), "
+                                 f"got {floors!r}")
+        ks.append(k)
+    return [{"floor": k} for k in _unique(ks, "floors", floors)]
+
+
+def _plotted(n: int) -> list[int]:
+    """Indices of at most MAX_PLOTTED_FLOORS of ``n`` places, both ends included."""
+    if n <= MAX_PLOTTED_FLOORS:
+        return list(range(n))
+    return sorted({int(round(i)) for i in np.linspace(0, n - 1, MAX_PLOTTED_FLOORS)})
+
+
+def _accelerations_figure(rec, rows, motions, shown, bname):
+    from matplotlib.figure import Figure
+
+    from ..plot import PALETTE, style_axes
+
+    fig = Figure(figsize=(8.0, 1.5 * len(shown) + 1.0), layout="constrained")
+    axes = fig.subplots(len(shown), 1, sharex=True, sharey=True, squeeze=False)[:, 0]
+    end = max(motions[i].record.duration for i in shown)
+    for ax, i in zip(axes, reversed(shown), strict=True):  # the top floor on top
+        r, fr = rows[i], motions[i].record
+        ax.plot(rec.t, rec.values / G, lw=0.6, color=PALETTE[6], alpha=0.6, label="ground")
+        ax.plot(fr.t, fr.values / G, lw=0.7, color=PALETTE[0], label=r["where"])
+        z = "" if np.isnan(r["height_ratio"]) else f" (z/H = {r['height_ratio']:.3g})"
+        ax.set_title(f"{r['where']}{z}: peak {r['pfa_ms2'] / G:.3g} g = "
+                     f"{r['pfa_over_pga']:.3g} x PGA", fontsize=9, loc="left")
+        style_axes(ax, "", "acc. (g)")
+    axes[0].legend(fontsize=8, loc="upper right", ncol=2)
+    axes[-1].set_xlabel("time (s)")
+    axes[-1].set_xlim(0.0, end)
+    more = "" if len(shown) == len(rows) else f" ({len(shown)} of {len(rows)} places)"
+    fig.suptitle(f"{rec.name or 'record'} on the floors of a {bname}{more}", fontsize=10)
+    return fig
+
+
+def _spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta, T1, bname):
+    from matplotlib.figure import Figure
+
+    from ..buildings import code_floor_spectrum_ec8, plot_floor_spectrum
+
+    ncol = min(3, len(shown))
+    nrow = -(-len(shown) // ncol)
+    fig = Figure(figsize=(4.2 * ncol, 3.4 * nrow + 0.5), layout="constrained")
+    axes = fig.subplots(nrow, ncol, sharey=True, squeeze=False).ravel()
+    pga = rec.pga
+    for ax, i in zip(axes, reversed(shown), strict=False):  # the top floor first
+        r = rows[i]
+        refs = {}
+        if not np.isnan(r["height_ratio"]):
+            refs["EN 1998-1 Eq (4.25)"] = code_floor_spectrum_ec8(T, pga, r["height_ratio"],
+                                                                  T1)
+            refs["ASCE 7-22 $H_f$ × PGA"] = np.full(T.size, r["asce7_hf"] * pga)
+        z = "" if np.isnan(r["height_ratio"]) else f", z/H = {r['height_ratio']:.3g}"
+        plot_floor_spectrum(ax, T, floor_psa[i], ground_psa, references=refs, damping=zeta,
+                            units="g", label=r["where"], title=f"{r['where']}{z}")
+    for ax in axes[len(shown):]:
+        ax.set_visible(False)
+    more = "" if len(shown) == len(rows) else f" ({len(shown)} of {len(rows)} places)"
+    fig.suptitle(f"Floor response spectra: {rec.name or 'record'} (PGA {pga / G:.3g} g) "
+                 f"in a {bname}{more}", fontsize=10)
+    return fig
+
+
+@motion.command("floor")
+@click.argument("record")
+@click.option("--units", metavar="U",
+              help="Units of the record: g, m/s^2, cm/s^2 (gal); default g. The floor "
+                   "records are written in m/s^2.")
+@click.option("--dt", metavar="DT", help="Time step of a one-column record file (s).")
+@building_options("The kind of building ('rocking buildings'): its floors filter the "
+                  "record. Required.")
+@click.option("--floors", metavar="K,...",
+              help="Floors to write: all (default) or numbers, 0 the ground (e.g. 0,1,3).")
+@click.option("--height-ratios", "height_ratios", metavar="X,...",
+              help="Instead of --floors: heights z/H in [0, 1] (e.g. 0.5,1; a continuous "
+                   "building).")
+@click.option("--damping", default="5%", show_default=True, metavar="Z",
+              help="Damping ratio of the floor spectra: 5% or 0.05.")
+@click.option("--tmin", default="0.02", show_default=True, metavar="T",
+              help="Shortest period of the spectra (s).")
+@click.option("--tmax", default="4", show_default=True, metavar="T",
+              help="Longest period of the spectra (s).")
+@click.option("--n", "npts", default="100", show_default=True, metavar="N",
+              help="Number of periods (log-spaced).")
+@click.option("--no-plots", is_flag=True, help="Skip the PNGs.")
+@click.option("--out", required=True, type=click.Path(file_okay=False),
+              help="Folder for the floor records, floors.csv, floor_spectra.csv and PNGs.")
+def floor_cmd(record, units, dt, building, storeys, building_period, building_damping,
+              building_params, floors, height_ratios, damping, tmin, tmax, npts, no_plots,
+              out):
+    """Filter the record RECORD through a building into the motion of its floors.
+
+    RECORD is a file (.AT2, CSV or columns) or a built-in record's name (e.g.
+    Rinaldi228). Writes, in OUT, each floor's absolute acceleration (CSV: t in s, acc in
+    m/s^2, with the building's ring-down after the record), floors.csv (peak floor
+    acceleration over PGA against ASCE 7-22 Hf and EN 1998-1), floor_spectra.csv
+    (pseudo-acceleration, m/s^2) and the PNGs floor_accelerations.png and
+    floor_spectra.png.
+    """
+    import pandas as pd
+
+    from ..buildings import FloorMotion, asce7_hf, code_floor_spectrum_ec8, floor_spectrum
+    from ..motions.io import write_csv
+    from ..motions.spectra import log_periods, response_spectrum
+
+    if building is None:
+        raise ParameterError("building: give --building KIND (sdof, shear, continuous, "
+                             "modal; 'rocking buildings' lists them)")
+    zeta = _damping(damping)
+    t_lo, t_hi = _time(tmin, "tmin"), _time(tmax, "tmax")
+    n = integer(npts, "n", 2, 10000)
+    step = _time(dt, "dt")
+    bld, bdesc = make_building(building, storeys, building_period, building_damping,
+                               building_params)
+    places = floor_list(floors, height_ratios, bld)
+    T = log_periods(t_lo, t_hi, n)
+    rec, src = read_record_arg(record, "record", units, step)
+
+    motions = []
+    for where in places:
+        try:
+            motions.append(FloorMotion(rec, bld, **where))
+        except ParameterError as e:  # a height ratio that is not a floor of the building
+            words = {"height_ratio": ("height-ratios", height_ratios)}
+            raise type(e)(one_line(in_flag_words(e, words))) from None
+    T1 = float(bld.periods[0])
+    heights = bld.heights
+    width = len(str(bld.n_floors or 0))
+    rows = []
+    for where, fm in zip(places, motions, strict=True):
+        if "floor" in where:
+            k = where["floor"]
+            z = float(heights[k]) if heights is not None else math.nan
+            name = f"floor_{k:0{width}d}.csv"
+        else:
+            k, z = None, where["height_ratio"]
+            name = f"height_ratio_{z:g}.csv"
+        known = not math.isnan(z)
+        rows.append({"floor": k, "height_ratio": z, "file": name, "pga_ms2": rec.pga,
+                     "pfa_ms2": fm.pga, "pfa_over_pga": fm.pga / rec.pga,
+                     "asce7_hf": float(asce7_hf(z, T1)) if known else math.nan,
+                     "ec8_rigid": float(code_floor_spectrum_ec8(0.0, 1.0, z, T1))
+                     if known else math.nan,
+                     "where": fm.where})
+
+    folder = Path(out)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise click.ClickException(f"cannot create {folder}: {e.strerror or e}") from None
+    for r, fm in zip(rows, motions, strict=True):
+        write_csv(fm.record, folder / r["file"])
+    table = pd.DataFrame(rows).drop(columns="where")
+    table["floor"] = table["floor"].astype("Int64")
+    with atomic_path(folder / "floors.csv") as tmp:
+        table.to_csv(tmp, index=False, float_format="%.10g")
+    ground_psa = response_spectrum(rec, T, damping=zeta)
+    floor_psa = [floor_spectrum(fm, periods=T, damping=zeta) for fm in motions]
+    spectra = {"period_s": T, "ground_psa_ms2": ground_psa}
+    for r, psa in zip(rows, floor_psa, strict=True):
+        spectra[f"{r['file'][:-4]}_psa_ms2"] = psa
+    with atomic_path(folder / "floor_spectra.csv") as tmp:
+        pd.DataFrame(spectra).to_csv(tmp, index=False, float_format="%.10g")
+    pngs = []
+    if not no_plots:
+        shown = _plotted(len(rows))
+        _save(_accelerations_figure(rec, rows, motions, shown, bld.name),
+              folder / "floor_accelerations.png")
+        _save(_spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta, T1,
+                              bld.name), folder / "floor_spectra.png")
+        pngs = ["floor_accelerations.png", "floor_spectra.png"]
+
+    Ts = ", ".join(f"{t:.3g}" for t in bld.periods[:4]) + (", ..." if bld.n_modes > 4
+                                                             else "")
+    click.echo(f"record      {src}: {len(rec)} samples, dt = {rec.dt:g} s, PGA "
+               f"{rec.pga:.4g} m/s^2 ({rec.pga / G:.3g} g)")
+    click.echo(f"building    {bld.name}: T = {Ts} s, damping "
+               f"{100 * float(bld.damping[0]):g} %")
+    click.echo(f"floors      dt = {motions[-1].step:g} s, ring-down to t = "
+               f"{max(fm.record.duration for fm in motions):.4g} s")
+    click.echo(f"{'where':>14} {'z/H':>6} {'PFA (g)':>8} {'PFA/PGA':>8} {'ASCE7 Hf':>9} "
+               f"{'EC8 rigid':>9}")
+    for r in rows:
+        z, hf, ec8 = (("-" if math.isnan(x) else f"{x:.4g}")
+                      for x in (r["height_ratio"], r["asce7_hf"], r["ec8_rigid"]))
+        click.echo(f"{r['where']:>14} {z:>6} {r['pfa_ms2'] / G:8.4g} "
+                   f"{r['pfa_over_pga']:8.4g} {hf:>9} {ec8:>9}")
+    if heights is None and height_ratios is None:
+        click.echo(f"            (a {bld.kind} building without floor heights: no z/H, "
+                   "no code values)")
+    click.echo(f"wrote       {folder}/: {len(rows)} floor records (CSV: t s, acc m/s^2), "
+               "floors.csv, floor_spectra.csv" + "".join(f", {p}" for p in pngs))
+
+
+__all__ = ["motion", "synth_cmd", "spectrum_cmd", "show_cmd", "floor_cmd", "floor_list"]

@@ -52,14 +52,17 @@ from ..errors import ParameterError
 from ..options import check_option
 from ..units import ACCELERATION, LENGTH, G, split_quantity
 from .common import (
+    BUILDING_FLAGS,
     CONTEXT,
     ModelChoice,
     block_options,
+    building_options,
     check_positive,
     in_flag_words,
     integer,
     json_default,
     make_block,
+    make_building,
     model_classes,
     models_with_option,
     number,
@@ -314,55 +317,6 @@ def make_motion(motion, freq, amp, tp, duration, record, units, dt, load_factor,
 
 
 # ----------------------------------------------------------------------------- buildings
-BUILDING_FLAGS = {"storeys": "storeys", "period": "building-period",
-                  "damping_ratio": "building-damping"}
-"""The building catalog keys that have a flag of their own (the others:
-``--building-param``)."""
-
-
-def _building_values(kind, storeys, period, damping, pairs) -> tuple[dict, dict]:
-    """The building catalog mapping of the flags (``kind`` and its keys), and the words of
-    messages."""
-    flags = {"storeys": storeys, "period": period, "damping_ratio": damping}
-    values = {k: v for k, v in flags.items() if v is not None}
-    extra = parse_options(pairs, flag="building-param", example="stiffness_ratio=5")
-    for key, v in extra.items():
-        if key in values:
-            raise ParameterError(f"{key} given twice (--{BUILDING_FLAGS[key]} and "
-                                 f"--building-param {key}=...)")
-        if isinstance(v, str) and v.lstrip().startswith("["):
-            try:
-                extra[key] = json.loads(v)
-            except ValueError:
-                raise ParameterError(f"building-param {key} must be a number, a quantity or "
-                                     f"a JSON list such as [2, 1, 1]; got {v!r}") from None
-    words = {k: (f, flags[k]) for k, f in BUILDING_FLAGS.items() if k not in extra}
-    words["kind"] = ("building", kind)
-    return {"kind": kind, **values, **extra}, words
-
-
-def make_building(kind, storeys=None, period=None, damping=None, pairs=()):
-    """``(building, description)`` of the ``--building`` flags, built by
-    :func:`rocking.buildings.catalog.make_building` (which checks the keys)."""
-    from ..buildings import catalog
-
-    mapping, words = _building_values(kind, storeys, period, damping, pairs)
-    try:
-        building = catalog.make_building(mapping)
-    except ParameterError as e:
-        msg = one_line(in_flag_words(e, words))
-        name = msg.split(" ", 1)[0]
-        if msg.startswith(f"{name} is required"):
-            msg += (f"; give --{name} VALUE" if name in BUILDING_FLAGS.values()
-                    else f"; give --building-param {name}=VALUE")
-        raise type(e)(msg) from None
-    checked = catalog.KINDS[kind].Params(**{k: v for k, v in mapping.items() if k != "kind"})
-    desc = {"kind": kind, **{k: v for k, v in checked.to_dict().items() if v is not None},
-            "name": building.name, "periods": building.periods.tolist(),
-            "n_floors": building.n_floors}
-    return building, desc
-
-
 def _where(building, floor, height_ratio) -> dict:
     """``{"floor": K}`` or ``{"height_ratio": X}`` of the flags (one of them)."""
     if building is None:
@@ -524,17 +478,8 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
 @click.option("--damping", metavar="B",
               help="dem: stiffness-proportional damping b (s), or 'calibrated' (default: "
                    "matches mu) or 'paper' (Eq 20).")
-@click.option("--building", metavar="KIND",
-              help="Put the block on a floor of a building of this kind ('rocking "
-                   "buildings'); the motion is then the ground motion.")
-@click.option("--storeys", metavar="N", help="Storeys of the building (shear, continuous).")
-@click.option("--building-period", "building_period", metavar="T",
-              help="First-mode period of the building (s).")
-@click.option("--building-damping", "building_damping", metavar="Z",
-              help="Modal damping ratio of the building (5% or 0.05; default 5%).")
-@click.option("--building-param", "building_params", multiple=True, metavar="KEY=VALUE",
-              help="Another key of the building kind, repeatable (e.g. stiffness_ratio=5, "
-                   "masses=[2,1,1]); 'rocking buildings KIND' lists them.")
+@building_options("Put the block on a floor of a building of this kind ('rocking "
+                  "buildings'); the motion is then the ground motion.")
 @click.option("--floor", metavar="K", help="The floor the block stands on (0 the ground).")
 @click.option("--height-ratio", "height_ratio", metavar="X",
               help="Instead of --floor: the height z/H in [0, 1] (a continuous building).")
