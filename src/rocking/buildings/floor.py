@@ -308,6 +308,14 @@ class FloorMotion(Motion):
     >>> roof.step, roof.quiet_time > ground.duration
     (0.01, True)
     >>> r = rocking.simulate(rocking.Block.rectangular(0.2, 1.0), roof)
+
+    With the vertical component of the record filtered by a vertical mode of 0.1 s:
+
+    >>> g3 = rocking.motions.GroundMotion.builtin("rinaldi")  # Rinaldi228 + RinaldiUP
+    >>> up = FloorMotion(g3, Building.sdof(0.5, 0.05), floor=1,
+    ...                  vertical_building=Building.sdof(0.1, 0.05))
+    >>> bool(up.vertical.pga > g3.pga_vertical)
+    True
     """
 
     ground: Motion

@@ -455,7 +455,8 @@ def _accelerations_figure(rec, rows, motions, shown, bname):
         r, fr = rows[i], motions[i].record
         ax.plot(rec.t, rec.values / G, lw=0.6, color=PALETTE[6], alpha=0.6, label="ground")
         ax.plot(fr.t, fr.values / G, lw=0.7, color=PALETTE[0], label=r["where"])
-        z = "" if np.isnan(r["height_ratio"]) else f" (z/H = {r['height_ratio']:.3g})"
+        z = ("" if r["floor"] is None or np.isnan(r["height_ratio"])
+             else f" (z/H = {r['height_ratio']:.3g})")
         ax.set_title(f"{r['where']}{z}: peak {r['pfa_ms2'] / G:.3g} g = "
                      f"{r['pfa_over_pga']:.3g} x PGA", fontsize=9, loc="left")
         style_axes(ax, "", "acc. (g)")
@@ -484,7 +485,8 @@ def _spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta, T1, bname)
             refs["EN 1998-1 Eq (4.25)"] = code_floor_spectrum_ec8(T, pga, r["height_ratio"],
                                                                   T1)
             refs["ASCE 7-22 $H_f$ × PGA"] = np.full(T.size, r["asce7_hf"] * pga)
-        z = "" if np.isnan(r["height_ratio"]) else f", z/H = {r['height_ratio']:.3g}"
+        z = ("" if r["floor"] is None or np.isnan(r["height_ratio"])
+             else f", z/H = {r['height_ratio']:.3g}")
         plot_floor_spectrum(ax, T, floor_psa[i], ground_psa, references=refs, damping=zeta,
                             units="g", label=r["where"], title=f"{r['where']}{z}")
     for ax in axes[len(shown):]:
