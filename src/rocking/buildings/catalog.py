@@ -79,6 +79,9 @@ class ModalParams(Options):
                                   "(with the same normalisation of the shapes)",
                                   kind=object, required=True)
     damping_ratio: float = _damping()
+    heights: tuple | None = option(REQUIRED, help="height ratio z/H of floors 1..N, "
+                                   "increasing to 1 (for height_ratio and the code floor "
+                                   "spectra)", kind=object)
 
 
 def _sdof(p: SdofParams) -> Building:
@@ -96,7 +99,8 @@ def _continuous(p: ContinuousParams) -> Building:
 
 
 def _modal(p: ModalParams) -> Building:
-    return Building.modal(p.periods, p.damping_ratio, p.shapes, p.participation)
+    return Building.modal(p.periods, p.damping_ratio, p.shapes, p.participation,
+                          heights=p.heights)
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@
     rocking motions [KIND] [--json]
     rocking blocks [FORM] [--json]
     rocking buildings [KIND] [--json]
-    rocking motion synth|spectrum ...
+    rocking motion synth|spectrum|show|floor ...
     rocking dem-params --specimen 2
     rocking identify RECORD.csv
     rocking reproduce --out results [--quick] [--full]
