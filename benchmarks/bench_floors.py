@@ -33,30 +33,11 @@ import argparse
 import time
 
 import numpy as np
+from bench_campaign import stochastic_spec  # the same ground-motion campaign
 
 from rocking import campaign
 from rocking.models import simulate_many
 
-SPEC = """
-[campaign]
-name = "bench-floors"
-seed = 11
-model = "housner"
-
-[[blocks]]
-specimen = 2
-params = "experimental"
-
-[motions]
-kind = "stochastic"
-n = {n}
-duration = 20.0
-dt = 0.01
-load_factors = {{start = 0.25, stop = 2.5, num = {num}}}
-
-[run]
-chunk_size = {chunk}
-"""
 BUILDING = """
 [building]
 kind = "shear"
@@ -113,7 +94,7 @@ def main(argv=None):
     if ap.parse_known_args(argv)[0].quick:
         ap.set_defaults(**QUICK)
     args = ap.parse_args(argv)
-    base = SPEC.format(n=args.records, num=args.levels, chunk=args.chunk)
+    base = stochastic_spec(args.records, args.levels, args.chunk, name="bench-floors")
     floors = campaign.parse_spec(base + BUILDING)
     ground = campaign.parse_spec(base)
     n = floors.n_sims
