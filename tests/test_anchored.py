@@ -167,3 +167,29 @@ def test_bad_anchor_parameters_are_refused():
         anchored(BLOCK, motion, 1.0, 0.1, 0.0)
     with pytest.raises(ParameterError, match="scan_step"):
         anchored(BLOCK, lambda t: 0.0, 1.0, 0.1)
+
+
+def test_stiff_elastic_anchors_tend_to_the_rigid_law():
+    """Under a slow ramp a = c t a stiff elastic anchor breaks where the rigid one lets the
+    block uplift, g tan(alpha) (1 + 2 q) (the quasi-static limit kappa -> inf; measured:
+    -1e-2, -1.6e-3, 2e-5 for kappa = 1e2, 1e3, 1e4)."""
+    q, t_ramp = 0.3, 20.0
+    c = rigid_threshold(q) / t_ramp
+    gaps = []
+    for kappa in (1e2, 1e3, 1e4):
+        r = anchored(BLOCK, lambda t: c * t, 1.1 * t_ramp, q, kappa, scan_step=0.01)
+        assert r.uplift_time == pytest.approx(THR / c, rel=1e-12)  # gravity's threshold
+        assert r.anchor_broken[0] and r.max_anchor_force == q
+        gaps.append(abs(c * r.anchor_break_time[0] / rigid_threshold(q) - 1.0))
+    assert gaps[0] > gaps[1] > gaps[2] and gaps[2] < 1e-4
+
+
+@pytest.mark.parametrize("kappa", LAWS, ids=["rigid", "elastic"])
+def test_negated_motion_mirrors_the_response_and_swaps_the_anchors(kappa):
+    pulse = OneSine(2.0 * THR, 0.3, duration=0.3)
+    a = anchored(BLOCK, pulse, 2.0, 0.05, kappa)
+    b = anchored(BLOCK, -pulse, 2.0, 0.05, kappa)
+    assert a.max_abs_theta == b.max_abs_theta
+    np.testing.assert_array_equal(a.impact_times, b.impact_times)
+    assert a.anchor_break_time == b.anchor_break_time[::-1]
+    np.testing.assert_array_equal(a.theta, -b.theta)
