@@ -215,7 +215,7 @@ def test_bad_building_keys_are_named(building, floors, key):
 
 
 @pytest.mark.parametrize("building, ratios, key", [
-    (SHEAR, "[0.5]", "building.height_ratios"),  # not a continuous building
+    (SHEAR, "[0.5]", "building.height_ratios[0]"),  # not a floor of the 3 storeys
     ({"kind": "continuous", "period": 0.5, "stiffness_ratio": 5.0}, "[0.5, 1.5]",
      "building.height_ratios[1]"),
     ({"kind": "continuous", "period": 0.5, "stiffness_ratio": 5.0}, "[0.5, 0.5]",
@@ -225,6 +225,15 @@ def test_bad_height_ratios_are_named(building, ratios, key):
     with pytest.raises(SpecError) as e:
         campaign.parse_spec(spec_text(building, None) + f"height_ratios = {ratios}\n")
     assert str(e.value).startswith(f"spec: {key}: "), str(e.value)
+
+
+def test_height_ratios_of_a_shear_building_are_its_floors():
+    s = campaign.parse_spec(spec_text(SHEAR, None) + "height_ratios = [0.0, 1.0]\n")
+    f = campaign.parse_spec(spec_text(SHEAR, [0, 3]))
+    assert s.n_sims == f.n_sims
+    a, b = campaign.Campaign(s).run_ids(range(s.n_sims)), campaign.Campaign(f).run_ids(
+        range(f.n_sims))
+    assert np.array_equal(a["max_abs_theta"], b["max_abs_theta"], equal_nan=True)
 
 
 def test_floors_and_height_ratios_together_are_refused():

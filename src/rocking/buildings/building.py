@@ -106,7 +106,7 @@ import numpy as np
 from scipy.linalg import eigh
 from scipy.optimize import brentq
 
-from .._validate import as_int, in_range, positive
+from .._validate import as_int, in_range, positive, warn_implausible
 from ..errors import ParameterError
 
 MAX_DAMPING = 1.0
@@ -309,6 +309,20 @@ def _alpha(alpha) -> float:
     return a
 
 
+def _check_expansion(participation: np.ndarray, shapes: np.ndarray) -> None:
+    """Warn when ``sum_j Gamma_j phi_j`` at a floor is far from 1: with every mode it is
+    exactly 1 (the modes expand the rigid-body vector), with truncated modes close to it;
+    far from 1 the participation factors and the shapes were normalised differently and
+    every floor acceleration would be wrong by that factor."""
+    total = shapes[1:] @ participation
+    worst = int(np.argmax(np.abs(total - 1.0)))
+    if not 0.0 <= total[worst] <= 2.0:
+        warn_implausible(f"participation: sum_j Gamma_j phi_j at floor {worst + 1} is "
+                         f"{total[worst]:.3g}, not about 1: are the participation factors "
+                         "normalised with the same shapes (Gamma_j = phi_j^T M 1 / "
+                         "phi_j^T M phi_j)?")
+
+
 class Building:
     """A linear elastic building with modal damping (see the module docstring).
 
@@ -372,6 +386,8 @@ class Building:
             shapes = s
         self.shapes = shapes
         self.shape_function = shape_function
+        if shapes is not None:
+            _check_expansion(g, shapes)
         if heights is not None and shapes is None:
             raise ParameterError("heights: give them with the shapes at the floors")
         self.heights = None if heights is None else _heights(heights, shapes.shape[0] - 1)

@@ -24,11 +24,16 @@ from dataclasses import dataclass
 
 from ..errors import ParameterError
 from ..options import REQUIRED, Options, option
-from .building import Building
+from .building import DEFAULT_CONTINUOUS_MODES, MAX_CONTINUOUS_MODES, MAX_STOREYS, Building
+
+MAX_PERIOD = 20.0
+"""Longest first-mode period a building may have (s): the tallest buildings have T1 of
+about 10 s; a larger value is a unit mistake (500 for 0.5 s)."""
 
 
 def _period(help_: str = "first-mode period"):
-    return option(REQUIRED, help=help_, unit="s", lo=0.0, quantity="time", required=True)
+    return option(REQUIRED, help=help_, unit="s", lo=0.0, hi=MAX_PERIOD, quantity="time",
+                  required=True)
 
 
 def _damping():
@@ -46,7 +51,7 @@ class SdofParams(Options):
 @dataclass(frozen=True)
 class ShearParams(Options):
     storeys: int = option(REQUIRED, help="number of storeys (floors 1..storeys)", lo=1,
-                          hi=200, lo_open=False, kind=int, required=True)
+                          hi=MAX_STOREYS, lo_open=False, kind=int, required=True)
     period: float = _period()
     damping_ratio: float = _damping()
     masses: tuple | None = option(REQUIRED, help="relative storey masses, bottom to top "
@@ -63,9 +68,10 @@ class ContinuousParams(Options):
                                     "(about 0-5 for walls, 5-20 for frames)", lo=0.0,
                                     lo_open=False, required=True)
     damping_ratio: float = _damping()
-    n_modes: int = option(6, help="modes kept", lo=1, hi=50, lo_open=False, kind=int)
+    n_modes: int = option(DEFAULT_CONTINUOUS_MODES, help="modes kept", lo=1,
+                          hi=MAX_CONTINUOUS_MODES, lo_open=False, kind=int)
     storeys: int | None = option(REQUIRED, help="floors at z/H = k/storeys (default: "
-                                 "height_ratio only)", lo=1, hi=200, lo_open=False,
+                                 "height_ratio only)", lo=1, hi=MAX_STOREYS, lo_open=False,
                                  kind=int)
 
 

@@ -572,16 +572,16 @@ def _floor_list(v, top: int | None, kind: str) -> list[int]:
     return out
 
 
-def _ratios(v, kind: str) -> list[float]:
+def _ratios(v, building) -> list[float]:
+    """The height ratios, each where the building has a floor (or any z/H of a continuous
+    building): the building's own check (:meth:`~rocking.buildings.Building.modal_factors`)."""
     key = "building.height_ratios"
-    if kind != "continuous":
-        _fail(key, f"applies to a continuous building only (this one is {kind}: give "
-                   "floors)")
     out = grid(key, v, 0.0, lo_open=False).tolist()
     for i, x in enumerate(out):
-        if x > 1.0:
-            _fail(f"{key}[{i}]" if isinstance(v, list) else key,
-                  f"must be in [0, 1] (z/H), got {x:g}")
+        try:
+            building.modal_factors(height_ratio=x)
+        except ParameterError as e:
+            _fail(f"{key}[{i}]" if isinstance(v, list) else key, str(e))
     if len(set(out)) != len(out):
         _fail(key, "has repeated values (one each)")
     return out
@@ -602,19 +602,16 @@ def _building(raw: dict) -> dict | None:
         b = buildings.make_building(params)
     except (RockingError, TypeError, ValueError) as e:
         _param_fail("building", e, BUILDING_KEYS, {"damping": "building.damping_ratio"})
-    if not np.all(b.damping > 0):
-        _fail("building.damping_ratio", "must be > 0 for a floor motion (an undamped "
-                                        "building never rings down)")
     given = [k for k in FLOOR_KEYS if k in t]
     if len(given) > 1:
         _fail("building.height_ratios", "give floors or height_ratios, not both")
     if not given:
-        _fail("building.floors", f'missing (a list of floors, 0 the ground, or "all"'
-                                 f'{"; or height_ratios" if kind.name == "continuous" else ""})')
+        _fail("building.floors", 'missing (a list of floors, 0 the ground, or "all"'
+                                 '; or height_ratios, z/H)')
     if given == ["floors"]:
         axis, values = "floor", _floor_list(t["floors"], b.n_floors, kind.name)
     else:
-        axis, values = "height_ratio", _ratios(t["height_ratios"], kind.name)
+        axis, values = "height_ratio", _ratios(t["height_ratios"], b)
     checked = kind.Params(**{k: v for k, v in params.items() if k != "kind"}).to_dict()
     return {"params": params, "axis": axis, "values": values, "n_floors": b.n_floors,
             "periods": b.periods.tolist(), "name": b.name,

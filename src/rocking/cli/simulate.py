@@ -40,7 +40,6 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
-import re
 import warnings
 from pathlib import Path
 
@@ -360,9 +359,6 @@ def on_floor(mot, building_flags: dict, floor, height_ratio):
     except ParameterError as e:
         msg = one_line(in_flag_words(e, {"height_ratio": ("height-ratio", height_ratio)}))
         msg = msg.replace("give height_ratio", "give --height-ratio X")
-        if msg.startswith("damping["):  # the modal damping ratio of every mode
-            msg = re.sub(r"^damping\[\d+\]", "building-damping", msg)
-            msg = re.sub(r", got .*$", f", got {building_flags['damping']!r}", msg)
         raise type(e)(msg) from None
     return fm, {"building": bdesc, **where, "floor_pga": fm.pga, "where": fm.where}
 
