@@ -33,13 +33,20 @@ def _inside(code) -> bool:
     return os.path.abspath(name).startswith(_PACKAGE_DIR)
 
 
-def warn_implausible(message: str) -> None:
-    """Issue a one-line :class:`PlausibilityWarning`, attributed to the first caller
-    outside the package (so that it is shown once per place in the user's code)."""
+def warn_implausible(message: str, category: type[Warning] = PlausibilityWarning) -> None:
+    """Issue a one-line :class:`PlausibilityWarning` (or ``category``), attributed to the
+    first caller outside the package (so that it is shown once per place in the user's
+    code)."""
     level, f = 1, sys._getframe(0)
     while f is not None and _inside(f.f_code):
         f, level = f.f_back, level + 1
-    warnings.warn(message, PlausibilityWarning, stacklevel=level)
+    warnings.warn(message, category, stacklevel=level)
+
+
+def warn_deprecated(message: str) -> None:
+    """A one-line :class:`DeprecationWarning` attributed to the first caller outside the
+    package (:func:`warn_implausible`)."""
+    warn_implausible(message, DeprecationWarning)
 
 
 def _is_bool(value) -> bool:

@@ -11,13 +11,10 @@ from __future__ import annotations
 
 import math
 import numbers
-import os
-import sys
-import warnings
 
 import numpy as np
 
-from ..._validate import in_range
+from ..._validate import in_range, warn_deprecated
 from ...errors import ParameterError
 from ...units import parse_quantity
 
@@ -25,24 +22,6 @@ DEFAULT_FRICTION_ANGLE = math.radians(30.0)
 """Default friction angle of the contacts (rad): 30 degrees."""
 
 HALF_PI = 0.5 * math.pi
-
-_PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-
-
-def _in_package(code) -> bool:
-    """A frame of the package (or a dataclass's generated ``__init__``)."""
-    if code.co_filename == "<string>" and code.co_name == "__init__":
-        return True
-    return os.path.abspath(code.co_filename).startswith(_PACKAGE_DIR + os.sep)
-
-
-def _deprecated(message: str) -> None:
-    """A DeprecationWarning attributed to the first caller outside the package."""
-    level, f = 1, sys._getframe(0)
-    while f is not None and _in_package(f.f_code):
-        f, level = f.f_back, level + 1
-    warnings.warn(message, DeprecationWarning, stacklevel=level)
-
 
 def degrees_if_bare(value, name: str = "friction_angle"):
     """``value``, with a bare number ``>= pi/2`` read as degrees (deprecated: a
@@ -57,7 +36,7 @@ def degrees_if_bare(value, name: str = "friction_angle"):
         raise ParameterError(f"{name} must be in [0, pi/2) rad, or a string with its unit "
                              f"such as '30deg'; got {value!r} (a bare number >= pi/2 is read "
                              "as degrees, and must then be below 90)")
-    _deprecated(f"{name} is in rad; write math.radians({x:g}) or '{x:g}deg' (a bare number "
+    warn_deprecated(f"{name} is in rad; write math.radians({x:g}) or '{x:g}deg' (a bare number "
                 ">= pi/2 is read as degrees for one release)")
     return math.radians(x)
 
