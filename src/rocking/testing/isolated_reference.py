@@ -138,4 +138,308 @@ an outcome). Energy in free motion (``a_g = 0``): ``T + V`` above, conserved wit
 
 from __future__ import annotations
 
-__all__: list[str] = []
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from .._validate import positive
+from ..errors import ParameterError
+from ..motions import Motion
+from ..units import G
+from .housner_reference import Excitation
+
+HALF_PI = 0.5 * math.pi
+ISOLATIONS = ("linear", "pendulum")
+DEFAULT_REST_TOL = 1e-12
+
+__all__ = ["IsolatedResponse", "isolated_restitution", "isolation_force",
+           "simulate_isolated_reference"]
+
+
+def _geometry(block):
+    """``(R, lambda)``: ``R`` from the block (a rectangle's ``3 g / (4 p^2)`` if unknown)
+    and ``lambda = m R^2 / I_O = R p^2 / g``."""
+    R = block.R if block.R is not None else 3.0 * G / (4.0 * block.p ** 2)
+    return R, R * block.p ** 2 / G
+
+
+def isolated_restitution(block, mass_ratio: float) -> float:
+    """``mu_iso = theta'_after / theta'_before`` of an impact on a plate of mass
+    ``mass_ratio * m`` (module docstring): ``1 - 2 lambda sin^2(alpha) / (1 - gamma lambda
+    cos^2(alpha))``, ``gamma = 1 / (1 + mass_ratio)``."""
+    _, lam = _geometry(block)
+    gam = 1.0 / (1.0 + mass_ratio)
+    a = block.alpha
+    return 1.0 - 2.0 * lam * math.sin(a) ** 2 / (1.0 - gam * lam * math.cos(a) ** 2)
+
+
+def isolation_force(isolation: str, u, v, *, period=None, damping=0.0, radius=None,
+                    friction=0.0, v_eps=1e-4):
+    """The isolator's force on the plate per unit of ``M = m + m_b`` (m/s^2), opposing."""
+    if isolation == "linear":
+        w = 2.0 * math.pi / period
+        return w * w * u + 2.0 * damping * w * v
+    return G * u / radius + friction * G * np.tanh(v / v_eps)
+
+
+@dataclass
+class IsolatedResponse:
+    """What :func:`simulate_isolated_reference` returns (SI units)."""
+
+    t: np.ndarray
+    theta: np.ndarray
+    omega: np.ndarray
+    u: np.ndarray
+    """The plate's displacement relative to the ground (m)."""
+    v: np.ndarray
+    """``u'`` (m/s)."""
+    max_abs_theta: float
+    overturned: bool
+    overturn_time: float
+    uplift_time: float
+    impact_times: np.ndarray
+    max_abs_u: float
+    max_plate_acc: float
+    """Largest ``|A|``, the plate's absolute acceleration (m/s^2), on the solver's points
+    and 8 dense points per step."""
+    clearance_exceeded: bool
+    clearance_time: float
+    restitution: float
+    settled: bool
+    pieces: list = field(repr=False, default_factory=list)
+
+    @property
+    def n_impacts(self) -> int:
+        return int(self.impact_times.size)
+
+    def state_at(self, t: float) -> tuple[float, float, float, float]:
+        """``(theta, theta', u, u')`` at ``t`` (at an impact: after it)."""
+        found = None
+        for ta, tb, sol, _ in self.pieces:
+            if ta <= t <= tb:
+                found = (ta, tb, sol)
+        if found is None:
+            raise ValueError(f"t = {t} is outside the simulated window")
+        ta, tb, sol = found
+        return tuple(float(x) for x in sol.sol(min(max(t, ta), tb)))
+
+
+class _Callable:
+    """A plain function ``a(t)`` (m/s^2) as something :class:`Excitation` takes."""
+
+    def __init__(self, fn, scan_step):
+        self.acceleration = fn
+        self.scan_step = scan_step
+
+
+def _free_amplitude(om, alpha, p):
+    c = math.cos(alpha) + 0.5 * (om / p) ** 2
+    return alpha - math.acos(c) if c < 1.0 else math.inf
+
+
+def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: float,
+                                isolation: str = "linear", *, period: float | None = None,
+                                damping: float = 0.0, radius: float | None = None,
+                                friction: float = 0.0, v_eps: float = 1e-4,
+                                clearance: float = math.inf, mu: float | None = None,
+                                theta0: float = 0.0, omega0: float = 0.0, u0: float = 0.0,
+                                v0: float = 0.0, rtol: float = 1e-10, atol=None,
+                                method: str = "DOP853", rest_tol: float = DEFAULT_REST_TOL,
+                                scan_step: float | None = None,
+                                max_step: float = math.inf) -> IsolatedResponse:
+    """A block on an isolated base (module docstring) integrated with ``solve_ivp``.
+
+    Parameters
+    ----------
+    block : Block
+    motion_fn : Motion, callable ``a_g(t)`` (m/s^2, then ``scan_step`` is required) or None
+    t_end : float
+        Simulated time (s).
+    mass_ratio : float
+        ``m_b / m``.
+    isolation : ``"linear"`` (``period`` ``T_b``, s, and ``damping`` ``zeta_b``) or
+        ``"pendulum"`` (``radius`` ``R_c``, m, ``friction`` ``mu_f``, ``v_eps``, m/s).
+    clearance : float
+        The run stops when ``|u|`` reaches it (m).
+    mu : float, optional
+        Restitution ``theta'_after / theta'_before``; default :func:`isolated_restitution`.
+    theta0, omega0, u0, v0 : the initial state (rad, rad/s, m, m/s).
+    """
+    t_end = positive("t_end", t_end, "s")
+    mass_ratio = positive("mass_ratio", mass_ratio)
+    if isolation not in ISOLATIONS:
+        raise ParameterError(f"isolation must be one of {ISOLATIONS}; got {isolation!r}")
+    if isolation == "linear":
+        period = positive("period", period, "s")
+    else:
+        radius = positive("radius", radius, "m")
+        if friction > 0.0:
+            v_eps = positive("v_eps", v_eps, "m/s")
+    if motion_fn is None or isinstance(motion_fn, Motion):
+        exc = Excitation(motion_fn)
+    else:
+        exc = Excitation(_Callable(motion_fn, positive("scan_step", scan_step, "s")))
+    if exc.vfns is not None:
+        raise ParameterError("simulate_isolated_reference takes horizontal motions only")
+
+    alpha, p = block.alpha, block.p
+    p2 = p * p
+    R, lam = _geometry(block)
+    h = R * math.cos(alpha)
+    gam = 1.0 / (1.0 + mass_ratio)
+    mu_i = isolated_restitution(block, mass_ratio) if mu is None else float(mu)
+    thr = G * math.tan(alpha)
+    if atol is None:
+        atol = [1e-3 * rtol * alpha, 1e-3 * rtol * alpha * p, 1e-12, 1e-12]
+
+    def force(u, v):
+        return isolation_force(isolation, u, v, period=period, damping=damping,
+                               radius=radius, friction=friction, v_eps=v_eps)
+
+    def plate_acc(y, s, rocking):
+        """The plate's absolute acceleration A and theta''."""
+        f = force(y[2], y[3])
+        if not rocking:
+            return -f, 0.0
+        phi = alpha - s * y[0]
+        c, sn = math.cos(phi), math.sin(phi)
+        A = (-f + s * gam * R * sn * (y[1] ** 2 - p2 * c)) / (1.0 - gam * lam * c * c)
+        return A, p2 * (c * A / G - s * sn)
+
+    t = 0.0
+    y = np.array([theta0, omega0, u0, v0], dtype=float)
+    rocking = not (theta0 == 0.0 and omega0 == 0.0)
+    s = 1.0 if (theta0 > 0.0 or (theta0 == 0.0 and omega0 > 0.0)) else -1.0
+    uplift_time = 0.0 if rocking else math.nan
+    peak, peak_u, peak_a = abs(theta0), abs(u0), 0.0
+    impacts: list[float] = []
+    pieces: list = []
+    overturned, t_over = False, math.nan
+    cleared, t_clear = False, math.nan
+    stalls = 0
+
+    while t < t_end:
+        if not rocking:  # uplift at once if |A| already exceeds the threshold
+            A0 = -force(y[2], y[3])
+            if abs(A0) > thr:
+                rocking, s = True, math.copysign(1.0, A0)
+                y[0] = y[1] = 0.0
+                if math.isnan(uplift_time):
+                    uplift_time = t
+        k = exc.piece(t)
+        tb = min(exc.end(k), t_end)
+        fn = exc.fns[k]
+
+        def rhs(tt, yy, s=s, fn=fn, rocking=rocking):
+            A, thdd = plate_acc(yy, s, rocking)
+            return (yy[1] if rocking else 0.0, thdd, yy[3], A - fn(tt))
+
+        def ev_impact(tt, yy, s=s, t_start=t):
+            if tt == t_start and yy[0] == 0.0:
+                return 1e-300
+            return s * yy[0]
+
+        def ev_over(tt, yy, s=s):
+            return s * yy[0] - HALF_PI
+
+        def ev_clear(tt, yy):
+            return abs(yy[2]) - clearance
+
+        def ev_up_p(tt, yy):
+            return -force(yy[2], yy[3]) - thr
+
+        def ev_up_m(tt, yy):
+            return -force(yy[2], yy[3]) + thr
+
+        def ev_peak(tt, yy):
+            return yy[1]
+
+        def ev_peak_u(tt, yy):
+            return yy[3]
+
+        ev_impact.terminal, ev_impact.direction = True, -1.0
+        ev_over.terminal, ev_over.direction = True, 1.0
+        ev_clear.terminal, ev_clear.direction = True, 1.0
+        ev_up_p.terminal, ev_up_p.direction = True, 1.0
+        ev_up_m.terminal, ev_up_m.direction = True, -1.0
+        if rocking:
+            events = [ev_impact, ev_over, ev_clear, ev_peak, ev_peak_u]
+        else:
+            events = [ev_up_p, ev_up_m, ev_clear, ev_peak_u]
+        opts = {}
+        if rocking and y[0] == 0.0 and y[1] != 0.0:
+            acc0 = rhs(t, y)[1]
+            if s * acc0 < 0.0:  # keep the first step within a small excursion
+                fs = max(0.5 * abs(y[1] / acc0), 100.0 * math.ulp(max(t, 1.0)))
+                opts["first_step"] = min(fs, tb - t)
+        sol = solve_ivp(rhs, (t, tb), y, method=method, rtol=rtol, atol=atol,
+                        events=events, dense_output=True, max_step=max_step, **opts)
+        if sol.status < 0:
+            raise RuntimeError(f"solve_ivp failed at t = {t}: {sol.message}")
+        t1 = float(sol.t[-1])
+        pieces.append((t, t1, sol, rocking))
+        # peaks: events, ends, and |A| on the solver's points and dense points
+        for ye in (sol.y_events[3] if rocking else []):
+            peak = max(peak, abs(ye[0]))
+        for ye in sol.y_events[-1]:
+            peak_u = max(peak_u, abs(ye[2]))
+        peak = max(peak, float(np.max(np.abs(sol.y[0]))))
+        peak_u = max(peak_u, float(np.max(np.abs(sol.y[2]))))
+        tt = sol.t
+        if tt.size > 1:
+            tt = np.concatenate([tt, (tt[:-1, None] + np.diff(tt)[:, None]
+                                      * np.linspace(0, 1, 9)[None, 1:-1]).ravel()])
+        for yy in sol.sol(tt).T:
+            peak_a = max(peak_a, abs(plate_acc(yy, s, rocking)[0]))
+        y = sol.y[:, -1].copy()
+        t = t1
+        if sol.t_events[2].size:
+            cleared, t_clear = True, float(sol.t_events[2][0])
+            break
+        if rocking:
+            if sol.t_events[1].size:
+                overturned, t_over, peak = True, float(sol.t_events[1][0]), HALF_PI
+                break
+            if sol.t_events[0].size:
+                te = float(sol.t_events[0][0])
+                stalls = stalls + 1 if te <= pieces[-1][0] else 0
+                if stalls > 10_000:
+                    raise RuntimeError(f"impacts do not advance in time at t = {t}")
+                impacts.append(te)
+                ye = sol.y_events[0][0]
+                om1 = float(ye[1])
+                om2 = mu_i * om1
+                v2 = float(ye[3]) + gam * h * (om2 - om1)
+                y = np.array([0.0, om2, float(ye[2]), v2])
+                if om2 == 0.0 or (_free_amplitude(om2, alpha, p) < rest_tol * alpha
+                                  and abs(force(y[2], y[3])) <= thr):
+                    y[3] -= gam * h * om2  # plastic: the common velocity conserving P
+                    y[1] = 0.0
+                    rocking = False
+                else:
+                    s = 1.0 if om2 > 0.0 else -1.0
+                continue
+        else:
+            for j, sg in ((0, 1.0), (1, -1.0)):
+                if sol.t_events[j].size and float(sol.t_events[j][0]) == t:
+                    rocking, s = True, sg
+                    y[0] = y[1] = 0.0
+                    if math.isnan(uplift_time):
+                        uplift_time = t
+                    break
+
+    ts, ys = [], []
+    for _ta, _tb, sol, _ in pieces:
+        ts.append(sol.t)
+        ys.append(sol.y)
+    tcat = np.concatenate(ts) if ts else np.zeros(0)
+    ycat = np.concatenate(ys, axis=1) if ys else np.zeros((4, 0))
+    return IsolatedResponse(
+        t=tcat, theta=ycat[0], omega=ycat[1], u=ycat[2], v=ycat[3],
+        max_abs_theta=float(peak), overturned=overturned, overturn_time=t_over,
+        uplift_time=uplift_time, impact_times=np.asarray(impacts, dtype=float),
+        max_abs_u=float(peak_u), max_plate_acc=float(peak_a),
+        clearance_exceeded=cleared, clearance_time=t_clear, restitution=mu_i,
+        settled=overturned or not rocking, pieces=pieces)
