@@ -1,0 +1,241 @@
+"""A rigid block on a seismically isolated base (issue 19, part 1): the plain reference
+:mod:`rocking.testing.isolated_reference` against closed forms, independent integrations
+and the classical model.
+
+Tolerances. The reference integrates with ``solve_ivp`` (DOP853 or Radau, ``rtol`` 1e-9 to
+1e-11); closed forms and directly integrated oscillators are matched to 1e-7 (relative)
+or better. A stiff isolator (``T_b = 1e-4`` s, ``zeta_b = 0.2``) under a heavy plate
+(``mass_ratio = 1e6``, so that the impacts do not move it) is not exactly a rigid base:
+the plate's absolute acceleration lags the ground's by about ``2 zeta_b / omega_b`` (6e-6 s)
+and differs from it by ``O(a' / omega_b)``. Measured against :func:`rocking.simulate`
+(whose own uplift times are located to about 1e-7 s): with ``T_b = 1e-3`` s the uplift
+times differ by 3e-7 s, the overturning time by 5.6e-6 s, the impact times by up to 8.7e-5 s
+(the third impact, after slow free rocking) and the largest angle by 3e-5 (relative); with
+``T_b = 1e-4`` s by 1.5e-7 s, 3e-8 s, 1.2e-6 s and 4e-7: the error is O(T_b), and the bounds
+below are the ``T_b = 1e-4`` s differences times 5 to 10.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
+
+import rocking
+from rocking import ParameterError
+from rocking.motions import OneSine, Sine
+from rocking.testing.isolated_reference import (
+    isolated_restitution,
+    isolation_force,
+)
+from rocking.testing.isolated_reference import simulate_isolated_reference as iso
+from rocking.units import G
+
+BLOCK = rocking.specimen(2, "experimental")
+RECT = rocking.Block.rectangular(0.4, 1.6, mass=100.0)
+THR = G * math.tan(BLOCK.alpha)
+
+
+def oscillator(a_g, t_end, period, zeta, u0=0.0, v0=0.0):
+    """u'' + 2 zeta w u' + w^2 u = -a_g, integrated directly (dense)."""
+    w = 2 * math.pi / period
+    return solve_ivp(lambda t, y: (y[1], -a_g(t) - 2 * zeta * w * y[1] - w * w * y[0]),
+                     (0.0, t_end), [u0, v0], method="DOP853", rtol=1e-12, atol=1e-15,
+                     dense_output=True, max_step=0.01)
+
+
+# --------------------------------------------------------------------- restitution
+def test_restitution_tends_to_eq4_for_a_heavy_plate():
+    mu4 = rocking.housner_mu(RECT.alpha)
+    assert isolated_restitution(RECT, 1e12) == pytest.approx(mu4, abs=1e-10)
+    for q in (0.5, 1.0, 4.0):  # rectangle: lambda = 3/4
+        gam = 1 / (1 + q)
+        want = 1 - 1.5 * math.sin(RECT.alpha) ** 2 / (1 - 0.75 * gam * math.cos(RECT.alpha) ** 2)
+        assert isolated_restitution(RECT, q) == pytest.approx(want, rel=1e-12)
+        assert isolated_restitution(RECT, q) < mu4  # the plate takes part of the momentum
+
+
+def momentum_balance(block, mass_ratio, om1, v1, s):
+    """Impact from the side s, written independently: angular momentum of the block about
+    the new pivot (r x m v_c + I_c omega, vectors) and horizontal momentum of block plus
+    plate conserved; returns (omega_2, v_2)."""
+    m = block.mass
+    mb = mass_ratio * m
+    b, h = block.width / 2, block.height / 2
+    I_c = m * (b * b + h * h) / 3  # a rectangle about its centre: m (w^2 + H^2) / 12
+    new = np.array([s * b, 0.0])  # the new pivot (the old one is at -s b)
+    c = np.array([0.0, h])
+
+    def vc(om, v, side):  # the centre's velocity rotating about the corner -side*b
+        piv = np.array([-side * b, 0.0])
+        r = c - piv
+        return np.array([v, 0.0]) + om * np.array([-r[1], r[0]])
+
+    def H(om, v, side):
+        r = c - new
+        vv = vc(om, v, side)
+        return I_c * om + m * (r[0] * vv[1] - r[1] * vv[0])
+
+    def P(om, v, side):
+        return mb * v + m * vc(om, v, side)[0]
+
+    # both are linear in (om2, v2): solve the 2x2 system
+    Mx = np.array([[H(1, 0, -s) - H(0, 0, -s), H(0, 1, -s) - H(0, 0, -s)],
+                   [P(1, 0, -s) - P(0, 0, -s), P(0, 1, -s) - P(0, 0, -s)]])
+    rhs = np.array([H(om1, v1, s), P(om1, v1, s)])
+    return np.linalg.solve(Mx, rhs)
+
+
+@pytest.mark.parametrize("q", [0.3, 1.0, 10.0])
+@pytest.mark.parametrize("s", [1.0, -1.0])
+def test_restitution_equals_an_independent_momentum_balance(q, s):
+    om1, v1 = -s * 0.7, 0.13
+    om2, v2 = momentum_balance(RECT, q, om1, v1, s)
+    assert om2 / om1 == pytest.approx(isolated_restitution(RECT, q), rel=1e-12)
+    h = RECT.R * math.cos(RECT.alpha)
+    assert v2 - v1 == pytest.approx(h / (1 + q) * (om2 - om1), rel=1e-10)
+
+
+def test_impact_in_a_run_follows_the_restitution_and_the_momentum_balance():
+    q = 1.0
+    r = iso(RECT, None, 3.0, q, "linear", period=2.0, damping=0.05,
+            theta0=0.5 * RECT.alpha, v0=0.05)
+    assert r.n_impacts >= 2
+    for te in r.impact_times[:2]:
+        before = next(sol for ta, tb, sol, _ in r.pieces if tb == te and ta < te)
+        th1, om1, u1, v1 = before.y[:, -1]
+        th2, om2, u2, v2 = r.state_at(te)
+        assert th2 == 0 and u2 == u1
+        w2, vv2 = momentum_balance(RECT, q, om1, v1, math.copysign(1.0, -om1))
+        assert om2 == pytest.approx(w2, rel=1e-12)
+        assert v2 == pytest.approx(vv2, rel=1e-10, abs=1e-15)
+
+
+# ------------------------------------------------------------- classical limit
+def test_stiff_isolator_under_a_heavy_plate_is_the_classical_model():
+    for mot, dur in ((OneSine(3 * THR, 0.4), 3.0), (OneSine(1.6 * THR, 0.4), 3.0)):
+        ref = rocking.simulate(BLOCK, mot, duration=dur)
+        r = iso(BLOCK, mot, dur, 1e6, "linear", period=1e-4, damping=0.2, mu=BLOCK.mu,
+                method="Radau", rtol=1e-9)
+        assert r.overturned == ref.overturned
+        assert r.uplift_time == pytest.approx(ref.uplift_time, abs=1e-6)
+        if ref.overturned:
+            assert r.overturn_time == pytest.approx(ref.overturn_time, abs=1e-6)
+        else:
+            assert r.max_abs_theta == pytest.approx(ref.max_abs_theta, rel=4e-6)
+        n = min(r.n_impacts, ref.n_impacts, 5)
+        assert n >= 1
+        np.testing.assert_allclose(r.impact_times[:n], ref.impact_times[:n], atol=1e-5)
+        assert r.max_abs_u < 1e-8  # the scale of a_g / omega_b^2
+
+
+# ---------------------------------------------------------------- at rest
+def test_a_block_that_never_uplifts_rides_the_linear_oscillator():
+    mot = Sine.from_acceleration(1.0, 0.5 * THR, duration=3.0)
+    Tb, z = 1.5, 0.1
+    r = iso(BLOCK, mot, 4.0, 2.0, "linear", period=Tb, damping=z)
+    assert math.isnan(r.uplift_time) and r.max_abs_theta == 0.0 and r.n_impacts == 0
+    o = oscillator(mot.acceleration, 4.0, Tb, z)
+    scale = float(np.max(np.abs(r.u)))
+    np.testing.assert_allclose(r.u, o.sol(r.t)[0], atol=1e-8 * scale)
+    np.testing.assert_allclose(r.v, o.sol(r.t)[1], atol=1e-7 * scale)
+    # the plate's absolute acceleration is -(w^2 u + 2 z w u')
+    tt = np.linspace(0, 4, 4001)
+    uu, vv = o.sol(tt)
+    assert r.max_plate_acc == pytest.approx(
+        np.max(np.abs(isolation_force("linear", uu, vv, period=Tb, damping=z))), rel=1e-4)
+
+
+@pytest.mark.parametrize("amp", [0.9, 2.0])
+def test_uplift_when_the_plate_acceleration_reaches_g_tan_alpha(amp):
+    mot = Sine.from_acceleration(0.5, amp * THR, duration=4.0)
+    Tb, z = 2.0, 0.05  # near resonance: the plate amplifies the ground motion
+    r = iso(BLOCK, mot, 4.0, 1.0, "linear", period=Tb, damping=z)
+    o = oscillator(mot.acceleration, 4.0, Tb, z)
+
+    def margin(t):
+        u, v = o.sol(t)
+        return abs(isolation_force("linear", u, v, period=Tb, damping=z)) - THR
+
+    grid = np.linspace(0, 4.0, 40001)
+    m = np.array([margin(t) for t in grid])
+    i = int(np.argmax(m > 0))
+    assert m[i] > 0  # uplifts, even below g tan(alpha) on the ground when amp < 1
+    t_up = brentq(margin, grid[i - 1], grid[i], xtol=1e-14)
+    assert r.uplift_time == pytest.approx(t_up, abs=1e-7)
+    assert r.max_abs_theta > 0
+
+
+# ------------------------------------------------------------------ energy
+@pytest.mark.parametrize("iso_kw", [dict(isolation="linear", period=1.0, damping=0.0),
+                                    dict(isolation="pendulum", radius=1.5, friction=0.0)])
+def test_energy_is_conserved_in_free_motion_with_restitution_one(iso_kw):
+    q = 0.5
+    r = iso(RECT, None, 4.0, q, **iso_kw, mu=1.0, theta0=0.6 * RECT.alpha, u0=0.02,
+            rtol=1e-11)
+    assert r.n_impacts >= 3 and not r.overturned
+    m, R, a, p = 1.0, RECT.R, RECT.alpha, RECT.p
+    M = m * (1 + q)
+    I_O = m * G * R / p ** 2
+    th, om, u, v = r.theta, r.omega, r.u, r.v
+    phi = a - np.sign(th) * th
+    if iso_kw["isolation"] == "linear":
+        V = 0.5 * M * (2 * math.pi / iso_kw["period"]) ** 2 * u ** 2
+    else:
+        V = 0.5 * M * G * u ** 2 / iso_kw["radius"]
+    E = (0.5 * M * v ** 2 - m * R * np.cos(phi) * v * om + 0.5 * I_O * om ** 2
+         + m * G * R * np.cos(phi) + V)
+    assert np.ptp(E) < 1e-8 * (E[0] - m * G * R * math.cos(a))
+
+
+# ---------------------------------------------------------- friction pendulum
+def test_pendulum_small_oscillation_period():
+    Rc, u0 = 2.0, 0.01
+    r = iso(BLOCK, None, 6.0, 1.0, "pendulum", radius=Rc, friction=0.0, u0=u0)
+    assert r.max_abs_theta == 0.0  # g u0 / Rc << g tan(alpha)
+    wn = math.sqrt(G / Rc)
+    np.testing.assert_allclose(r.u, u0 * np.cos(wn * r.t), atol=1e-9 * u0)
+    # zero crossings downward are one period 2 pi sqrt(Rc/g) apart
+    t_dn = [brentq(lambda t: r.state_at(t)[2], r.t[i], r.t[i + 1])
+            for i in range(r.t.size - 1) if r.u[i] > 0 >= r.u[i + 1]]
+    assert np.diff(t_dn) == pytest.approx(2 * math.pi * math.sqrt(Rc / G), rel=1e-9)
+
+
+def test_pendulum_slides_only_above_mu_g():
+    mu_f, v_eps, Rc = 0.05, 1e-5, 2.0
+    below = iso(BLOCK, Sine.from_acceleration(1.0, 0.8 * mu_f * G, duration=2.0), 2.0, 1.0,
+                "pendulum", radius=Rc, friction=mu_f, v_eps=v_eps, method="Radau",
+                rtol=1e-8)
+    # creep of the regularisation only: |u'| <= v_eps atanh(0.8) at most
+    assert below.max_abs_u < 2.0 * v_eps * math.atanh(0.8)
+    above = iso(BLOCK, Sine.from_acceleration(1.0, 1.5 * mu_f * G, duration=2.0), 2.0, 1.0,
+                "pendulum", radius=Rc, friction=mu_f, v_eps=v_eps, method="Radau",
+                rtol=1e-8)
+    assert above.max_abs_u > 1e-3
+    assert above.max_abs_u > 100 * below.max_abs_u
+    # friction caps the plate's absolute acceleration at mu_f g + g |u| / Rc
+    assert above.max_plate_acc <= mu_f * G * (1 + 1e-6) + G * above.max_abs_u / Rc
+
+
+# -------------------------------------------------------------------- clearance
+def test_clearance_stops_the_run():
+    mot = OneSine(30 * THR, 0.4)
+    free = iso(BLOCK, mot, 3.0, 1.0, "linear", period=2.0, damping=0.1)
+    assert not free.clearance_exceeded and math.isnan(free.clearance_time)
+    r = iso(BLOCK, mot, 3.0, 1.0, "linear", period=2.0, damping=0.1,
+            clearance=0.5 * free.max_abs_u)
+    assert r.clearance_exceeded and 0 < r.clearance_time < 3.0
+    assert r.t[-1] == r.clearance_time
+    assert abs(r.u[-1]) == pytest.approx(0.5 * free.max_abs_u, rel=1e-9)
+
+
+def test_bad_inputs():
+    with pytest.raises(ParameterError, match="isolation"):
+        iso(BLOCK, None, 1.0, 1.0, "rubber", period=1.0)
+    with pytest.raises(ParameterError, match="period"):
+        iso(BLOCK, None, 1.0, 1.0, "linear")
+    with pytest.raises(ParameterError, match="radius"):
+        iso(BLOCK, None, 1.0, 1.0, "pendulum")
