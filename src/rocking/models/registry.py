@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+from .anchored import Anchored
 from .base import Model
 from .ccrr import CCRR
 from .dem import DEM
 from .housner import Housner
 
-MODELS: dict[str, type[Model]] = {cls.name: cls for cls in (Housner, CCRR, DEM)}
+MODELS: dict[str, type[Model]] = {cls.name: cls for cls in (Housner, CCRR, DEM, Anchored)}
 """Registered models by name, in the order the CLI and the report list them."""
 
 
