@@ -220,6 +220,27 @@ def test_pendulum_slides_only_above_mu_g():
     assert above.max_plate_acc <= mu_f * G * (1 + 1e-6) + G * above.max_abs_u / Rc
 
 
+# ---------------------------------------------------------------------- symmetry
+@pytest.mark.parametrize(("kw", "mot"), [
+    (dict(isolation="linear", period=0.5, damping=0.05), OneSine(0.8 * THR, 1.0)),
+    (dict(isolation="pendulum", radius=0.3, friction=0.2, v_eps=1e-3),
+     OneSine(1.2 * THR, 0.6))])
+def test_a_negated_motion_mirrors_the_response(kw, mot):
+    r = iso(BLOCK, mot, 3.0, 0.8, **kw)
+    m = iso(BLOCK, lambda t: -mot.acceleration(t), 3.0, 0.8, **kw,
+            scan_step=mot.scan_step)
+    assert r.n_impacts == m.n_impacts >= 5 and not r.overturned and not m.overturned
+    assert m.uplift_time == pytest.approx(r.uplift_time, abs=1e-9)
+    assert m.max_abs_theta == pytest.approx(r.max_abs_theta, rel=1e-6)
+    assert m.max_abs_u == pytest.approx(r.max_abs_u, rel=1e-6)
+    np.testing.assert_allclose(m.impact_times, r.impact_times, atol=1e-6)
+    t = np.linspace(0, min(r.t[-1], m.t[-1]), 301)
+    a = np.array([r.state_at(x) for x in t])
+    b = np.array([m.state_at(x) for x in t])
+    scale = np.max(np.abs(a), axis=0)
+    assert np.max(np.abs(b + a) / scale) < 1e-6
+
+
 # -------------------------------------------------------------------- clearance
 def test_clearance_stops_the_run():
     mot = OneSine(30 * THR, 0.4)

@@ -413,10 +413,10 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
                 om2 = mu_i * om1
                 v2 = float(ye[3]) + gam * h * (om2 - om1)
                 y = np.array([0.0, om2, float(ye[2]), v2])
+                v_rest = v2 - gam * h * om2  # plastic: the common velocity conserving P
                 if om2 == 0.0 or (_free_amplitude(om2, alpha, p) < rest_tol * alpha
-                                  and abs(force(y[2], y[3])) <= thr):
-                    y[3] -= gam * h * om2  # plastic: the common velocity conserving P
-                    y[1] = 0.0
+                                  and abs(force(y[2], v_rest)) <= thr):
+                    y[1], y[3] = 0.0, v_rest
                     rocking = False
                 else:
                     s = 1.0 if om2 > 0.0 else -1.0
