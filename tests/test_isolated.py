@@ -26,7 +26,7 @@ from scipy.optimize import brentq
 
 import rocking
 from rocking import ParameterError
-from rocking.motions import OneSine, Sine
+from rocking.motions import OneSine, Record, Sine
 from rocking.testing.isolated_reference import (
     isolated_restitution,
     isolation_force,
@@ -130,6 +130,27 @@ def test_stiff_isolator_under_a_heavy_plate_is_the_classical_model():
         assert n >= 1
         np.testing.assert_allclose(r.impact_times[:n], ref.impact_times[:n], atol=1e-5)
         assert r.max_abs_u < 1e-8  # the scale of a_g / omega_b^2
+
+
+def test_heavy_plate_is_the_classical_model_under_the_plate_acceleration():
+    """A plate too heavy to feel the block (mass_ratio = 1e9) moves as the isolated
+    oscillator, and the block rocks as the classical model under the plate's absolute
+    acceleration A = -(w^2 u + 2 zeta w u'): here that acceleration, sampled at dt = 1e-4 s,
+    is a Record for rocking.simulate. The sampling error is O(dt^2): at dt = 2e-4 s and 1e-4 s
+    the largest angles differ by 1.2e-4 and 2.9e-5 (relative), the first five impacts by
+    1.3e-5 s and 3.4e-6 s, the uplift times by 6e-8 s and 1.2e-8 s; bounds: 5 times these."""
+    mot = OneSine(0.7 * THR, 1.0)  # below g tan(alpha): the plate's resonance uplifts
+    Tb, z, dur, dt = 0.5, 0.05, 3.0, 1e-4
+    o = oscillator(mot.acceleration, dur, Tb, z)
+    t = np.arange(0, dur + dt / 2, dt)
+    u, v = o.sol(t)
+    ref = rocking.simulate(BLOCK, Record(-isolation_force("linear", u, v, period=Tb,
+                                                          damping=z), dt), duration=dur)
+    r = iso(BLOCK, mot, dur, 1e9, "linear", period=Tb, damping=z, mu=BLOCK.mu)
+    assert r.n_impacts == ref.n_impacts > 5 and not r.overturned and not ref.overturned
+    assert r.uplift_time == pytest.approx(ref.uplift_time, abs=1e-7)
+    assert r.max_abs_theta == pytest.approx(ref.max_abs_theta, rel=1.5e-4)
+    np.testing.assert_allclose(r.impact_times[:5], ref.impact_times[:5], atol=2e-5)
 
 
 # ---------------------------------------------------------------- at rest
