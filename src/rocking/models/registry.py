@@ -7,8 +7,9 @@ from .base import Model
 from .ccrr import CCRR
 from .dem import DEM
 from .housner import Housner
+from .isolated import Isolated
 
-MODELS: dict[str, type[Model]] = {cls.name: cls for cls in (Housner, CCRR, DEM, Anchored)}
+MODELS: dict[str, type[Model]] = {cls.name: cls for cls in (Housner, CCRR, DEM, Anchored, Isolated)}
 """Registered models by name, in the order the CLI and the report list them."""
 
 
