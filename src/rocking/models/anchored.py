@@ -510,6 +510,7 @@ class AnchoredOptions(ModelOptions):
 class Anchored(Model):
     """A block anchored at its base corners, brittle anchors (module docstring)."""
 
+    mitigation = True
     name = "anchored"
     label = "anchored block"
     Options = AnchoredOptions

@@ -132,6 +132,10 @@ class Model:
     slow: ClassVar[bool] = False
     """A simulation costs seconds, not milliseconds: reports run the model's large batches
     only on request (``rocking reproduce --full``)."""
+    mitigation: ClassVar[bool] = False
+    """The model adds a mitigation (anchors, an isolated base) to the free-standing block:
+    the report's comparisons with the paper, whose specimens stood free, leave it out
+    (:func:`rocking.report.core.report_models`)."""
     append_overturn: ClassVar[bool] = True
     """End the history of a single run on the exact overturning point (pi/2)."""
     response_class: ClassVar[type] = Response

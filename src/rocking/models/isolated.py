@@ -256,6 +256,7 @@ class IsolatedOptions(ModelOptions):
 
 
 class Isolated(Model):
+    mitigation = True
     name = "isolated"
     label = "block on an isolated base"
     Options = IsolatedOptions

@@ -101,8 +101,10 @@ class ModelStyle:
 
 
 def report_models() -> list[str]:
-    """Names of every registered model, in registry order (:data:`rocking.models.MODELS`)."""
-    return list(MODELS)
+    """Names of every registered model of the free-standing block, in registry order
+    (:data:`rocking.models.MODELS`; mitigation models, ``Model.mitigation``, are not
+    models of the paper's specimens and are left out)."""
+    return [name for name, cls in MODELS.items() if not cls.mitigation]
 
 
 def model_style(name: str) -> ModelStyle:
