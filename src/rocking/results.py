@@ -263,6 +263,17 @@ class BatchResponse:
     info: dict = field(default_factory=dict)
     lift_off_time: np.ndarray | None = None
     settled: np.ndarray | None = None
+    outputs: dict = field(default_factory=dict)
+    """The model's own scalar outputs per run (``Model.row_outputs``), by name; each is
+    also an attribute (``res.max_base_displacement``)."""
+
+    def __getattr__(self, name):
+        outputs = self.__dict__.get("outputs") or {}
+        if name in outputs:
+            return outputs[name]
+        raise AttributeError(f"{type(self).__name__!s} has no attribute {name!r}"
+                             + (f" (outputs of this model: {', '.join(outputs)})"
+                                if outputs else ""))
 
     def __post_init__(self):
         if self.lift_off_time is None:
@@ -296,6 +307,7 @@ class BatchResponse:
             "lifted_off": self.lifted_off,
             "lift_off_time": self.lift_off_time,
             "settled": self.settled,
+            **self.outputs,
         })
 
     def summary(self) -> dict:

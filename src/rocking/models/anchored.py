@@ -29,7 +29,10 @@ reported unsettled.
 
 Extra outputs of a single run (``Response.info``): ``max_anchor_force`` (fraction of
 ``m g``; ``max_anchor_force_n`` in N when the block's mass is known), ``anchor_broken``
-and ``anchor_break_time`` (``[+, -]``, s, NaN: intact). Batches keep the common fields.
+and ``anchor_break_time`` (``[+, -]``, s, NaN: intact); the row outputs
+(``max_anchor_force``, ``anchor_break_time_plus``/``_minus``,
+``anchor_broken_plus``/``_minus``) also in batches (``BatchResponse.outputs``) and
+campaigns.
 """
 
 from __future__ import annotations
@@ -37,7 +40,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
 from numba import njit, prange
 
 from ..motions._kernel import (
@@ -50,7 +52,16 @@ from ..motions._kernel import (
 from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
-from .base import KernelResult, Model, ModelOptions, option, row_args, store_row
+from .base import (
+    KernelResult,
+    Model,
+    ModelOptions,
+    RowOutput,
+    option,
+    row_args_out,
+    row_output_values,
+    store_row,
+)
 from .housner import DEFAULT_FREE_REST_TOL, DEFAULT_REST_TOL, DEFAULT_RTOL, free_outcome
 
 HALF_PI = 0.5 * math.pi
@@ -476,9 +487,10 @@ def with_block(mp, b):
 
 @njit(cache=True, parallel=True)
 def batch_kernel(mp, extra0, rows, blocks):
-    """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
+    """The batch kernel: the kernel over the rows of
+    :func:`rocking.models.base.row_args_out` (each row writes its own row outputs)."""
     for i in prange(rows[0].shape[0]):
-        store_row(i, kernel(with_block(mp, blocks[i]), *row_args(i, rows, extra0)), rows)
+        store_row(i, kernel(with_block(mp, blocks[i]), *row_args_out(i, rows)), rows)
 
 
 # ------------------------------------------------------------------------------- the model
@@ -516,6 +528,16 @@ class Anchored(Model):
     Options = AnchoredOptions
     kernel = kernel
     batch_kernel = batch_kernel
+    row_outputs = (
+        RowOutput("max_anchor_force", "", False,
+                  "largest anchor force, as a fraction of the block's weight m g"),
+        RowOutput("anchor_break_time_plus", "s", False,
+                  "when the + anchor (stretched by theta > 0) broke (NaN: intact)"),
+        RowOutput("anchor_break_time_minus", "s", False,
+                  "when the - anchor broke (NaN: intact)"),
+        RowOutput("anchor_broken_plus", "", True, "the + anchor broke"),
+        RowOutput("anchor_broken_minus", "", True, "the - anchor broke"),
+    )
 
     @classmethod
     def block_row(cls, block) -> tuple:
@@ -526,19 +548,11 @@ class Anchored(Model):
         return (b.alpha, b.p, b.mu, o.anchor_strength, o.anchor_stiffness,
                 o.anchors == "rigid", o.rtol, o.rest_tol, o.free_rest_tol)
 
-    def extra_buffers(self, n_out: int) -> tuple:
-        return (np.full(5 if n_out > 0 else 0, np.nan),)
-
-    def extra_bytes(self, n_out: int) -> int:
-        return 40
-
     def extra_fields(self, n_out: int, extra: tuple, dt_out: float) -> dict:
         a = extra[0]
-        if a.shape[0] < 5:
-            return {}
         mass = getattr(self.block, "mass", None)
         return {"info": {
-            "max_anchor_force": float(a[0]),
+            **row_output_values(self.row_outputs, a),
             "max_anchor_force_n": math.nan if mass is None else float(a[0] * mass * G),
             "anchor_broken": [bool(a[3]), bool(a[4])],
             "anchor_break_time": [float(a[1]), float(a[2])]}}

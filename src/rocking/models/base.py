@@ -75,8 +75,25 @@ A subclass of :class:`Model` provides
 
 And optionally: ``accepts_stack`` (the model simulates :class:`~rocking.Stack` objects),
 ``response_class`` with :meth:`Model.extra_buffers` and :meth:`Model.extra_fields` for
-outputs beyond ``theta`` and ``omega`` (the DEM's), :meth:`Model.info` and
+outputs beyond ``theta`` and ``omega`` (the DEM's histories), :meth:`Model.info` and
 :meth:`Model.failure`.
+
+**Row outputs** (scalars beyond :data:`KernelResult`, one value per run, such as the
+isolated base's largest displacement): declare them in ``row_outputs`` (a tuple of
+:data:`RowOutput`). The kernel writes them, in that order, into ``extra[0]`` when its
+length is ``len(row_outputs)`` (NaN: not reached); the default :meth:`Model.extra_buffers`
+gives a single run that buffer and puts the values in ``Response.info``, and the batch
+kernel passes each row its own row of the batch's ``row_out`` array with
+:func:`row_args_out` instead of :func:`row_args`::
+
+    @njit(cache=True, parallel=True)
+    def batch_kernel(mp, extra0, rows, blocks):
+        for i in prange(rows[0].shape[0]):
+            store_row(i, kernel(with_block(mp, blocks[i]), *row_args_out(i, rows)), rows)
+
+:func:`rocking.simulate_many` returns them in ``BatchResponse.outputs`` (by name; also
+``res.<name>``), campaigns store them as columns and
+:func:`rocking.testing.check_model` checks that each batch row equals its single run.
 
 Sign convention (all models): Eq (1) of Peña et al. (2007): a positive ground acceleration
 drives ``theta`` positive (see :mod:`rocking.models.housner`).
@@ -139,6 +156,9 @@ class Model:
     append_overturn: ClassVar[bool] = True
     """End the history of a single run on the exact overturning point (pi/2)."""
     response_class: ClassVar[type] = Response
+    row_outputs: ClassVar[tuple] = ()
+    """Scalar outputs per run beyond :data:`KernelResult` (:data:`RowOutput` entries; see
+    the module docstring)."""
 
     def __init__(self, block, options: ModelOptions | None = None):
         self.block = self.check_block(block)
@@ -178,17 +198,21 @@ class Model:
         return self.name
 
     def extra_buffers(self, n_out: int) -> tuple:
-        """Extra output arrays of the kernel for ``n_out`` samples (default: none)."""
-        return ()
+        """Extra output arrays of the kernel for ``n_out`` samples (default: the buffer of
+        the :attr:`row_outputs`, if any)."""
+        return (np.full(len(self.row_outputs), np.nan),) if self.row_outputs else ()
 
     def extra_bytes(self, n_out: int) -> int:
         """Memory of :meth:`extra_buffers` for ``n_out`` samples (bytes)."""
-        return 0
+        return 8 * len(self.row_outputs)
 
     def extra_fields(self, n_out: int, extra: tuple, dt_out: float) -> dict:
         """Fields of :attr:`response_class` beyond those of :class:`Response` (an ``"info"``
-        entry is merged into ``Response.info``), from ``n_out`` samples at ``dt_out`` (s)."""
-        return {}
+        entry is merged into ``Response.info``), from ``n_out`` samples at ``dt_out`` (s).
+        Default: the :attr:`row_outputs` in ``info``."""
+        if not self.row_outputs:
+            return {}
+        return {"info": row_output_values(self.row_outputs, extra[0])}
 
     def check_batch(self) -> None:
         """Refuse options that a batch cannot honour (raise ParameterError); default: none."""
@@ -206,6 +230,26 @@ class Model:
         return f"model {self.name!r} failed (status {status}) near t = {t:.4g} s"
 
 
+# ============================================================================ row outputs
+RowOutput = namedtuple("RowOutput", ["name", "unit", "flag", "help"])
+"""A scalar output of each run (:attr:`Model.row_outputs`): its name (a result field and a
+campaign column), its unit (SI, ``""`` if none), whether it is a flag (stored as 0/1 by
+the kernel, returned as a bool) and a one-line description."""
+
+
+def row_output_values(outputs: tuple, values) -> dict:
+    """``{name: value}`` of the row outputs ``values`` (a kernel's buffer, or one row of a
+    batch's ``row_out``): flags as bools (True where the value is 1), the rest as floats."""
+    return {o.name: (bool(v == 1.0) if o.flag else float(v))
+            for o, v in zip(outputs, values, strict=True)}
+
+
+def row_output_arrays(outputs: tuple, row_out: np.ndarray) -> dict:
+    """``{name: array}`` of a batch's ``row_out`` (rows x outputs): flags as bool arrays."""
+    return {o.name: (row_out[:, j] == 1.0) if o.flag else row_out[:, j].copy()
+            for j, o in enumerate(outputs)}
+
+
 # ====================================================================== shared batch rows
 KernelResult = namedtuple("KernelResult", [
     "n_out", "n_impacts", "max_abs_theta", "overturned", "overturn_time", "uplift_time",
@@ -221,8 +265,11 @@ BATCH_INPUTS = ("kinds", "prms", "samples", "nsamp", "t_ends", "t_quiets", "h_sc
 """The inputs of a batch: the packed motions (:func:`rocking.models.run.pack_motions`),
 each row's window and initial state, and the output interval."""
 BATCH_OUTPUTS = ("theta", "omega", "max_abs_theta", "overturned", "overturn_time",
-                 "uplift_time", "n_impacts", "n_steps", "status", "lift_off_time", "settled")
-"""The outputs of a batch, one array per row (``theta``, ``omega``: the histories)."""
+                 "uplift_time", "n_impacts", "n_steps", "status", "lift_off_time", "settled",
+                 "row_out")
+"""The outputs of a batch, one array per row (``theta``, ``omega``: the histories;
+``row_out``: the model's :attr:`Model.row_outputs`, rows x outputs, NaN where not
+written)."""
 Batch = namedtuple("Batch", BATCH_INPUTS + BATCH_OUTPUTS)
 """A batch as the compiled batch kernels see it: named arrays, one entry per row."""
 
@@ -233,6 +280,15 @@ def row_args(i, rows, extra0):
     return (rows.kinds[i], rows.prms[i], rows.samples[i, : rows.nsamp[i]], rows.t_ends[i],
             rows.t_quiets[i], rows.theta0[i], rows.omega0[i], rows.h_scans[i], rows.dt_out,
             rows.theta[i], rows.omega[i], np.empty(0), extra0)
+
+
+@njit(cache=True)
+def row_args_out(i, rows):
+    """:func:`row_args` with ``extra = (rows.row_out[i],)``: the kernel writes row ``i``'s
+    :attr:`Model.row_outputs` in place (models with row outputs)."""
+    return (rows.kinds[i], rows.prms[i], rows.samples[i, : rows.nsamp[i]], rows.t_ends[i],
+            rows.t_quiets[i], rows.theta0[i], rows.omega0[i], rows.h_scans[i], rows.dt_out,
+            rows.theta[i], rows.omega[i], np.empty(0), (rows.row_out[i],))
 
 
 @njit(cache=True)

@@ -15,8 +15,8 @@ stepping onto the motion's breakpoints, events (impact, uplift, clearance) locat
 bisection on the exact Runge-Kutta sub-step. Horizontal motions only: a vertical
 component is refused (a :class:`~rocking.SimulationError` naming it).
 
-Extra outputs, in ``Response.info`` of single runs (batches pass no extra buffers, so
-that their rows cannot race): ``max_base_displacement`` (m, ``max |u|`` at the steps),
+Row outputs (``Response.info`` of single runs, ``BatchResponse.outputs`` of batches,
+columns of campaigns): ``max_base_displacement`` (m, ``max |u|`` at the steps),
 ``max_plate_acceleration`` (m/s^2, ``max |A|`` at the steps), ``clearance_exceeded`` and
 ``clearance_time`` (s, NaN if not). Rest: after an impact, the Zeno rule of the classical
 model with the plate taking the common velocity that conserves the horizontal momentum;
@@ -41,7 +41,7 @@ from numba import njit, prange
 
 from ..motions._kernel import ground_acc, has_vertical, next_breakpoint
 from ..units import G
-from .base import KernelResult, Model, ModelOptions, option, row_args, store_row
+from .base import KernelResult, Model, ModelOptions, RowOutput, option, row_args_out, store_row
 
 HALF_PI = 0.5 * math.pi
 
@@ -226,7 +226,7 @@ def with_block(mp, b):
 @njit(cache=True, parallel=True)
 def batch_kernel(mp, extra0, rows, blocks):
     for i in prange(rows[0].shape[0]):
-        store_row(i, kernel(with_block(mp, blocks[i]), *row_args(i, rows, extra0)), rows)
+        store_row(i, kernel(with_block(mp, blocks[i]), *row_args_out(i, rows)), rows)
 
 
 @dataclass(frozen=True)
@@ -262,6 +262,14 @@ class Isolated(Model):
     Options = IsolatedOptions
     kernel = kernel
     batch_kernel = batch_kernel
+    row_outputs = (
+        RowOutput("max_base_displacement", "m", False, "max |u| of the base plate"),
+        RowOutput("max_plate_acceleration", "m/s^2", False,
+                  "max absolute acceleration of the plate"),
+        RowOutput("clearance_exceeded", "", True, "|u| reached the clearance (the run "
+                                                 "stopped there)"),
+        RowOutput("clearance_time", "s", False, "when |u| reached the clearance (NaN: never)"),
+    )
 
     def kernel_params(self, dt_out, theta0, omega0):
         b, o = self.block, self.options
@@ -291,17 +299,3 @@ class Isolated(Model):
             return ("model 'isolated' takes horizontal ground motions only: the motion has a "
                     "vertical component")
         return super().failure(status, t, dt_out)
-
-    def extra_buffers(self, n_out):
-        # batches pass one buffer to every row: none there (rows would race)
-        return (np.full(4 if n_out > 0 else 0, np.nan),)
-
-    def extra_bytes(self, n_out):
-        return 32
-
-    def extra_fields(self, n_out, extra, dt_out):
-        e = extra[0]
-        return {"info": {"max_base_displacement": float(e[0]),
-                         "max_plate_acceleration": float(e[1]),
-                         "clearance_exceeded": bool(e[2] == 1.0),
-                         "clearance_time": float(e[3])}}

@@ -20,7 +20,7 @@ from ..errors import OutputTooLargeError, ParameterError, SimulationError
 from ..motions import Motion
 from ..motions._kernel import NPRM
 from ..results import DEFAULT_DT_OUT, BatchResponse
-from .base import BATCH_OUTPUTS, Batch, Model
+from .base import BATCH_OUTPUTS, Batch, Model, row_output_arrays
 from .registry import MODELS
 
 HALF_PI = 0.5 * math.pi
@@ -303,7 +303,9 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     Returns a :class:`~rocking.results.BatchResponse` with numpy arrays ``max_abs_theta``,
     ``overturned``, ``overturn_time``, ``uplift_time`` and ``n_impacts`` (one entry per
     motion); the time histories ``theta``, ``omega`` (at ``dt_out``) only with
-    ``return_histories=True``. ``errors="raise"`` (default) raises
+    ``return_histories=True``; a model's own scalar outputs (its ``row_outputs``, e.g. the
+    isolated base's ``max_base_displacement``) in ``outputs`` (by name, also as
+    attributes: ``res.max_base_displacement``). ``errors="raise"`` (default) raises
     :class:`~rocking.errors.SimulationError` if a run fails numerically;
     ``errors="nan"`` marks it with a non-zero ``status`` and NaN ``max_abs_theta`` and
     times instead (its ``overturned`` and ``n_impacts`` are those reached before the
@@ -343,7 +345,8 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
                  overturn_time=np.empty(n), uplift_time=np.empty(n),
                  n_impacts=np.zeros(n, dtype=np.int64), n_steps=np.zeros(n, dtype=np.int64),
                  status=np.zeros(n, dtype=np.int64), lift_off_time=np.empty(n),
-                 settled=np.zeros(n, dtype=np.bool_))
+                 settled=np.zeros(n, dtype=np.bool_),
+                 row_out=np.full((n, len(cls.row_outputs)), np.nan))
     nb = len(cls.block_row(blocks[0]))
     if nb or len({id(b) for b in blocks}) == 1:
         bp = np.array([cls.block_row(b) for b in blocks], dtype=np.float64).reshape(n, nb)
@@ -367,6 +370,7 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
         for name in ("max_abs_theta", "overturn_time", "uplift_time", "lift_off_time"):
             getattr(rows, name)[bad] = math.nan  # the failed runs
         rows.settled[bad] = False
+        rows.row_out[bad] = math.nan
     return BatchResponse(
         max_abs_theta=rows.max_abs_theta, overturned=rows.overturned,
         overturn_time=rows.overturn_time, uplift_time=rows.uplift_time,
@@ -375,5 +379,5 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
         theta=rows.theta if return_histories else None,
         omega=rows.omega if return_histories else None,
         model=m.result_name, block=block, info=m.info(dt_out), lift_off_time=rows.lift_off_time,
-        settled=rows.settled,
+        settled=rows.settled, outputs=row_output_arrays(cls.row_outputs, rows.row_out),
     )

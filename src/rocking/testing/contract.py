@@ -42,7 +42,8 @@ The checks
     Row ``i`` of ``simulate_many`` is bit-identical to ``simulate`` of motion ``i``
     (``max_abs_theta``, ``n_impacts``, ``overturned``, ``overturn_time``,
     ``uplift_time``, ``lift_off_time``, ``settled``, and the ``theta``/``omega``
-    histories, NaN past the samples the run wrote), for motions of different time
+    histories, NaN past the samples the run wrote, and the model's row outputs:
+    ``BatchResponse.outputs`` against ``Response.info``), for motions of different time
     scales in one batch (sines, pulses, short random records).
 ``check_chunk_independence``
     ``simulate_many`` over all motions equals the concatenation over two chunks.
@@ -201,6 +202,11 @@ def _row_equals_single(b, i: int, r, label: str) -> None:
     """Row ``i`` of the batch ``b`` is the single run ``r``, bit for bit."""
     for key in SCALARS:
         _expect_same(f"{label}: {key}", getattr(b, key)[i], getattr(r, key))
+    for key, values in b.outputs.items():  # the model's row outputs
+        if key not in r.info:
+            raise AssertionError(f"{label}: row output {key!r} is in the batch but not in "
+                                 "the single run's info")
+        _expect_same(f"{label}: {key}", values[i], r.info[key])
     if b.theta is not None:
         n = _grid_samples(r)
         for key in ("theta", "omega"):
@@ -444,6 +450,12 @@ def check_result_conventions(cls, plan):
         f"settled/overturned dtypes {b.settled.dtype}/{b.overturned.dtype} (bool)"
     assert np.issubdtype(b.n_impacts.dtype, np.integer), f"n_impacts dtype {b.n_impacts.dtype}"
     assert len(b) == n
+    names = [o.name for o in cls.row_outputs]
+    assert list(b.outputs) == names, f"batch outputs {list(b.outputs)} != row_outputs {names}"
+    for o in cls.row_outputs:
+        v = b.outputs[o.name]
+        assert v.shape == (n,) and (v.dtype == np.bool_) == bool(o.flag), \
+            f"row output {o.name}: shape {v.shape}, dtype {v.dtype} (flag: {o.flag})"
     for res, label in ((b, "batch"), *((r, f"single run of {_describe(m)}")
                                       for r, m in zip(singles, ms, strict=True))):
         over, t_up = np.atleast_1d(res.overturned), np.atleast_1d(res.uplift_time)
