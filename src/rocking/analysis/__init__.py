@@ -12,7 +12,9 @@ every function returns a tidy :class:`pandas.DataFrame` or a result object with 
   Wilson interval (:func:`wilson_interval`);
 * :func:`ida`: records scaled to intensity levels (stripes / IDA), :func:`ida_capacity`;
 * :func:`fragility`, :func:`fragility_ida`, :func:`fragility_curves` (damage states,
-  :func:`damage_state`), :func:`annual_frequency`.
+  :func:`damage_state`), :func:`annual_frequency`;
+* :func:`compare_mitigations`: fragility, hazard and isolator demand per mitigation
+  (:class:`MitigationComparison`, :func:`plot_mitigations`; issue 19).
 """
 
 from .damage import DEFAULT_THRESHOLDS, FragilityCurves, damage_state, fragility_curves
@@ -20,6 +22,7 @@ from .fourier import FourierSpectrum, fourier_spectrum
 from .fragility import FragilityFit, annual_frequency, fragility, fragility_ida
 from .harmonic import motion_space, plot_motion_space
 from .ida import ida, ida_capacity, plot_ida
+from .mitigation import MitigationComparison, compare_mitigations, plot_mitigations
 from .montecarlo import MonteCarloResult, monte_carlo, wilson_interval
 from .overturning import (
     PULSES,
@@ -33,7 +36,7 @@ from .overturning import (
 __all__ = [
     "motion_space", "plot_motion_space", "monte_carlo", "MonteCarloResult", "wilson_interval",
     "ida", "ida_capacity", "plot_ida", "fragility", "fragility_ida", "FragilityFit",
-    "annual_frequency",
+    "annual_frequency", "compare_mitigations", "MitigationComparison", "plot_mitigations",
     "fragility_curves", "FragilityCurves", "damage_state", "DEFAULT_THRESHOLDS",
     "fourier_spectrum", "FourierSpectrum", "overturning_spectrum", "outcome_map",
     "plot_overturning_spectrum", "plot_outcome_map", "pulse_motion", "PULSES",

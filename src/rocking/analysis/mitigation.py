@@ -1,0 +1,600 @@
+"""Compare mitigations (issue 19): fragility, hazard and isolator demand per mitigation.
+
+:func:`compare_mitigations` takes a table of simulations (one row per run, as a campaign
+with ``[[mitigation]]`` produces it) and, for each group (block, floor, ...) and each
+mitigation, fits a lognormal fragility curve with the package's :func:`~.fragility.fragility`
+(a probit GLM on ``ln im`` by maximum likelihood, the multiple-stripe likelihood of
+Baker 2015, Eq. 11; bootstrap ``"normal"``: the asymptotic distribution of the MLE),
+compares its median with that of the unmitigated block (``"none"``), integrates it over a
+hazard curve with :func:`~.fragility.annual_frequency` (Cornell et al. 2002,
+``lambda_f = int P(f | im) |d lambda / d im| d im``) and summarises the isolator's
+displacement demand against a clearance.
+
+A mitigation that never (or always) fails in a group has no fragility fit (the MLE does
+not exist): its median is NaN, with a ``note`` and a bound (``median_lower_bound``: the
+largest IM run without failure), never an invented number.
+
+References: J. W. Baker (2015), Efficient analytical fragility function fitting using
+dynamic structural analysis, Earthquake Spectra 31(1). C. A. Cornell, F. Jalayer,
+R. O. Hamburger, D. A. Foutch (2002), Probabilistic basis for 2000 SAC Federal Emergency
+Management Agency steel moment frame guidelines, J. Struct. Eng. 128(4).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+
+from ..errors import ParameterError, SimulationError
+from ..plot import PALETTE, im_label, style_axes
+from ..units import acceleration_unit, parse_quantity
+from .fragility import IM_UNITS, FragilityFit, annual_frequency, as_bool_array, fragility
+
+FAILURES = ("overturned", "overturned_or_clearance")
+"""What counts as a failure: the block overturned, or (also) the isolator reached its
+clearance (the base hit the moat)."""
+DEFAULT_BY = ("block_name", "floor", "height_ratio")
+"""The grouping columns used by default, those present in the table."""
+REFERENCE = "none"
+"""The name of the unmitigated entry (the block as it stands), the reference of the
+ratios."""
+IM_NAMES = {"pga": "PGA", "floor_pga": "floor PGA", "im": "IM"}
+
+#: The columns of :attr:`MitigationComparison.table`, after the grouping columns.
+COLUMNS = (
+    "mitigation", "model", "n", "n_failed", "n_excluded", "n_unsettled", "im_min", "im_max",
+    "median", "beta", "median_ci_low", "median_ci_high", "beta_ci_low", "beta_ci_high",
+    "median_lower_bound", "median_upper_bound", "median_ratio", "median_ratio_lower_bound",
+    "annual_frequency", "annual_frequency_lower_bound", "annual_frequency_upper_bound",
+    "annual_frequency_ratio", "displacement_median", "displacement_p84",
+    "displacement_max", "n_clearance_exceeded", "p_clearance_exceeded", "clearance",
+    "note",
+)
+
+
+# --------------------------------------------------------------------------- inputs
+
+def unit_kind(unit: str | None):
+    """``(kind, SI value of one unit)`` of an IM unit (``"g"`` -> acceleration, 9.80665),
+    None if not known (the units of :data:`rocking.analysis.fragility.IM_UNITS`, and any
+    spelling of an acceleration that :func:`rocking.units.acceleration_unit` knows)."""
+    if unit is None:
+        return None
+    u = str(unit).strip()
+    for key in (u, u.replace(" ", ""), u.replace(" ", "").lower()):
+        if key in IM_UNITS:
+            return IM_UNITS[key]
+    acc = acceleration_unit(u)
+    return IM_UNITS.get(acc) if acc else None
+
+
+def parse_hazard(hazard, im_unit: str | None):
+    """``(hazard_im, hazard_rate)`` in the IM unit ``im_unit``, from ``(im, rate, unit)`` or
+    ``{"im": ..., "rate": ..., "unit": ...}``. A hazard in another unit of the same kind
+    (g against m/s^2) is converted; one of another kind, or an unknown unit, is refused."""
+    if isinstance(hazard, dict):
+        missing = [k for k in ("im", "rate", "unit") if k not in hazard]
+        extra = sorted(set(hazard) - {"im", "rate", "unit"})
+        if missing or extra:
+            raise ParameterError(f"hazard must be a dict with keys 'im', 'rate' and 'unit' "
+                                 f"(missing {missing}, unknown {extra})")
+        x, rate, unit = hazard["im"], hazard["rate"], hazard["unit"]
+    elif isinstance(hazard, list | tuple):
+        if len(hazard) != 3:
+            raise ParameterError("hazard must be (im_values, annual_rates, unit), e.g. "
+                                 f"([0.1, 0.5, 1.0], [1e-2, 1e-3, 1e-4], 'g'); got "
+                                 f"{len(hazard)} items (the unit is required)")
+        x, rate, unit = hazard
+    else:
+        raise ParameterError("hazard must be (im_values, annual_rates, unit) or a dict "
+                             f"{{'im', 'rate', 'unit'}}, got {type(hazard).__name__}")
+    if not isinstance(unit, str) or not unit.strip():
+        raise ParameterError(f"hazard unit must be a unit string such as 'g' or 'm/s^2', "
+                             f"got {unit!r}")
+    if im_unit is None:
+        raise ParameterError("im_unit is required with a hazard curve: the IM's unit "
+                             "must be known to check the hazard's")
+    try:
+        x = np.atleast_1d(np.asarray(x, dtype=float))
+        rate = np.atleast_1d(np.asarray(rate, dtype=float))
+    except (TypeError, ValueError):
+        raise ParameterError("hazard im and rate must be arrays of numbers") from None
+    a, b = unit_kind(im_unit), unit_kind(unit)
+    if a is None or b is None:
+        if str(unit).replace(" ", "").lower() != str(im_unit).replace(" ", "").lower():
+            raise ParameterError(f"hazard unit {unit!r} cannot be checked against im_unit "
+                                 f"{im_unit!r} (unknown unit): give both in known units "
+                                 f"({', '.join(sorted(IM_UNITS))})")
+        factor = 1.0
+    elif a[0] != b[0]:
+        raise ParameterError(f"hazard unit {unit!r} ({b[0]}) is incompatible with im_unit "
+                             f"{im_unit!r} ({a[0]}): the hazard curve must be of the IM "
+                             "that the fragility is fitted on")
+    else:
+        factor = b[1] / a[1]
+    x = x * factor
+
+    class _Never:  # validates the curve through annual_frequency (its checks, not copies)
+        def probability(self, im):
+            return np.zeros_like(np.asarray(im, dtype=float))
+
+    annual_frequency(_Never(), x, rate)
+    return x, rate
+
+
+def rate_at(x: float, hx: np.ndarray, hr: np.ndarray) -> float:
+    """The hazard curve's rate at ``x`` (log-log interpolation); NaN outside it."""
+    if not (math.isfinite(x) and hx[0] <= x <= hx[-1]):
+        return math.nan
+    return float(np.exp(np.interp(math.log(x), np.log(hx), np.log(hr))))
+
+
+def parse_clearance(clearance) -> float:
+    """The clearance in m (a number in m, or a quantity such as ``"0.15m"``), > 0."""
+    if clearance is None:
+        return math.nan
+    if isinstance(clearance, bool):
+        raise ParameterError(f"clearance must be a length > 0 (m), got {clearance!r}")
+    if isinstance(clearance, str):
+        c = parse_quantity(clearance, "length", name="clearance", default_unit="m")
+    else:
+        try:
+            c = float(clearance)
+        except (TypeError, ValueError):
+            raise ParameterError(f"clearance must be a length > 0 (m) such as 0.15 or "
+                                 f"'15cm', got {clearance!r}") from None
+    if not (math.isfinite(c) and c > 0):
+        raise ParameterError(f"clearance must be a finite length > 0 (m), got {clearance!r}")
+    return c
+
+
+def _flags(table: pd.DataFrame, col: str) -> np.ndarray:
+    """A flag column as floats: 1, 0 or NaN (missing: a row of a model without it)."""
+    if col not in table:
+        return np.full(len(table), np.nan)
+    v = table[col]
+    out = pd.to_numeric(v.map(lambda e: float(e) if isinstance(e, bool | np.bool_) else e),
+                        errors="coerce").to_numpy(float)
+    bad = np.isfinite(out) & (out != 0) & (out != 1)
+    if bad.any():
+        first = v.iloc[np.flatnonzero(bad)[0]]
+        raise ParameterError(f"column {col!r} must be boolean, got {first!r}")
+    return out
+
+
+def _check_table(table, im, failure, by, mit_col):
+    if not isinstance(table, pd.DataFrame):
+        raise ParameterError(f"table must be a pandas DataFrame (one row per run), got "
+                             f"{type(table).__name__}")
+    if len(table) == 0:
+        raise ParameterError("table is empty: no run to compare")
+    if failure not in FAILURES:
+        raise ParameterError(f"failure must be one of {FAILURES}, got {failure!r}")
+    if not isinstance(im, str):
+        raise ParameterError(f"im must be a column name such as 'pga', got {im!r}")
+    need = [im, "overturned"]
+    missing = [c for c in need if c not in table.columns]
+    if missing:
+        raise ParameterError(f"table has no column {missing[0]!r} (needed: {need}; the "
+                             f"columns are {list(table.columns)})")
+    if mit_col is None:
+        raise ParameterError("table needs a 'mitigation' column (or a 'model' column) "
+                             "naming the mitigation of each run")
+    if by is None:
+        by = [c for c in DEFAULT_BY if c in table.columns]
+    else:
+        by = [by] if isinstance(by, str) else list(by)
+        for c in by:
+            if not isinstance(c, str) or c not in table.columns:
+                raise ParameterError(f"by: table has no column {c!r} (columns: "
+                                     f"{list(table.columns)})")
+        if mit_col in by:
+            raise ParameterError(f"by must not contain {mit_col!r}: the mitigations are "
+                                 "compared within each group")
+    return by
+
+
+# --------------------------------------------------------------------------- one fit
+
+def _stripes(x: np.ndarray, y: np.ndarray, max_levels: int = 25) -> pd.DataFrame:
+    """The observed failed fraction per IM level (``im``, ``n``, ``n_failed``); with more
+    than ``max_levels`` distinct IMs, per bin of equal count in ``ln im`` (``im``: the
+    geometric mean of the bin)."""
+    levels = np.unique(x)
+    if levels.size <= max_levels:
+        idx = np.searchsorted(levels, x)
+        im = levels
+    else:
+        edges = np.quantile(np.log(x), np.linspace(0, 1, 11))
+        idx = np.clip(np.searchsorted(edges, np.log(x), side="right") - 1, 0, 9)
+        keep = np.unique(idx)
+        idx = np.searchsorted(keep, idx)
+        im = np.array([math.exp(np.log(x[idx == k]).mean()) for k in range(keep.size)])
+    n = np.bincount(idx, minlength=im.size)
+    k = np.bincount(idx, weights=y.astype(float), minlength=im.size).astype(int)
+    return pd.DataFrame({"im": im, "n": n, "n_failed": k})
+
+
+def _fit_one(x, y, *, im, im_unit, n_boot, seed, label):
+    """``(fit or None, row fields)``: the fragility fit, or the bounds and a note when the
+    MLE does not exist."""
+    name = IM_NAMES.get(im, im)
+    unit = f" {im_unit}" if im_unit else ""
+    out = {"median": math.nan, "beta": math.nan, "median_ci_low": math.nan,
+           "median_ci_high": math.nan, "beta_ci_low": math.nan, "beta_ci_high": math.nan,
+           "median_lower_bound": math.nan, "median_upper_bound": math.nan, "note": ""}
+    nf = int(y.sum())
+    if nf == 0:
+        out["median_lower_bound"] = float(x.max())
+        out["note"] = f"no failure up to {name} = {x.max():.4g}{unit} ({y.size} runs)"
+        return None, out
+    if nf == y.size:
+        out["median_upper_bound"] = float(x.min())
+        out["note"] = f"every run failed, down to {name} = {x.min():.4g}{unit} ({y.size} runs)"
+        return None, out
+    lo_fail, hi_safe = float(x[y].min()), float(x[~y].max())
+    if lo_fail >= hi_safe:
+        out["median_lower_bound"], out["median_upper_bound"] = hi_safe, lo_fail
+        out["note"] = (f"outcomes separated by the IM (no failure up to {name} = "
+                       f"{hi_safe:.4g}{unit}, every run failed from {lo_fail:.4g}{unit}): "
+                       "no fit (beta -> 0); the median lies between them")
+        return None, out
+    try:
+        fit = fragility(x, y, n_boot=n_boot, seed=seed, im_name=im, im_unit=im_unit,
+                        label=label)
+    except (ParameterError, SimulationError) as e:
+        out["note"] = f"no fragility fit: {e}"
+        return None, out
+    out.update(median=fit.median, beta=fit.beta)
+    if fit.n_boot:
+        with np.errstate(invalid="ignore"):  # draws with b1 <= 0: an infinite median
+            ci = fit.ci(0.95)
+        out.update(median_ci_low=ci["median"][0], median_ci_high=ci["median"][1],
+                   beta_ci_low=ci["beta"][0], beta_ci_high=ci["beta"][1])
+    if fit.median > x.max() or fit.median < x.min():
+        out["note"] = (f"median extrapolated beyond the IMs run ({x.min():.4g} to "
+                       f"{x.max():.4g}{unit})")
+    return fit, out
+
+
+# --------------------------------------------------------------------------- result
+
+class MitigationComparison:
+    """The result of :func:`compare_mitigations`.
+
+    ``table``: one row per (group..., mitigation) (see :func:`compare_mitigations` for the
+    columns); ``fits``: the fitted :class:`~.fragility.FragilityFit` by key (the
+    mitigation's name without grouping columns, else the tuple ``(*group, mitigation)``;
+    the mitigations that could not be fitted are absent); ``stripes``: the observed
+    failed fraction per IM level, same keys, every mitigation; ``by``, ``im``, ``im_unit``,
+    ``failure``, ``clearance``, ``reference``.
+    """
+
+    def __init__(self, table, fits, stripes, *, by, im, im_unit, failure, clearance,
+                 reference, hazard=None):
+        self.table = table
+        self.fits = fits
+        self.stripes = stripes
+        self.by = list(by)
+        self.im = im
+        self.im_unit = im_unit
+        self.failure = failure
+        self.clearance = clearance
+        self.reference = reference
+        self.hazard = hazard
+
+    def __repr__(self) -> str:
+        mits = list(dict.fromkeys(self.table["mitigation"]))
+        return (f"MitigationComparison({len(self.table)} rows, mitigations {mits}, by "
+                f"{self.by}, failure {self.failure!r})")
+
+    def key(self, mitigation: str, group=()) -> object:
+        """The key of :attr:`fits` for ``mitigation`` in ``group`` (a tuple of the ``by``
+        values)."""
+        group = group if isinstance(group, tuple) else (group,)
+        return tuple(group) + (mitigation,) if self.by else mitigation
+
+    def to_frame(self) -> pd.DataFrame:
+        """A copy of :attr:`table`."""
+        return self.table.copy()
+
+    def plot(self, **kw):
+        """:func:`plot_mitigations` of this comparison; returns the Figure."""
+        return plot_mitigations(self, **kw)
+
+
+def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned", by=None,
+                        hazard=None, clearance=None, n_boot=200, seed=0,
+                        reference=REFERENCE) -> MitigationComparison:
+    """Compare the mitigations of a table of runs, group by group.
+
+    ``table``: one row per run, with a ``mitigation`` column (without it, ``model`` names
+    the mitigations), the IM column ``im`` (``pga``, ``floor_pga``, ``im``; in ``im_unit``)
+    and ``overturned``; optional ``status`` (runs with a non-zero status are left out and
+    counted in ``n_excluded``; a missing status counts as 0), ``settled`` (counted in
+    ``n_unsettled``), ``max_base_displacement`` (m), ``clearance_exceeded``. Runs whose IM
+    is not finite and > 0 are left out and counted too.
+
+    ``failure``: ``"overturned"`` or ``"overturned_or_clearance"`` (a run whose isolator
+    reached the clearance, ``clearance_exceeded`` or ``max_base_displacement >=
+    clearance``, failed too). ``by``: the grouping columns (default those of
+    :data:`DEFAULT_BY` present). ``clearance`` (m or a quantity string, ``"0.15m"``): the
+    displacement capacity of the isolator. ``reference``: the unmitigated entry's name;
+    without a ``mitigation`` column and without that name, the one model of the group
+    that is not a mitigation (``Model.mitigation`` false) is the reference.
+
+    Each (group, mitigation) is fitted with :func:`~.fragility.fragility` (probit GLM MLE,
+    Baker 2015; ``n_boot`` draws of the ``"normal"`` bootstrap with ``seed`` give the 95%
+    intervals). ``hazard``: ``(im, rate, unit)`` or ``{"im", "rate", "unit"}``, a hazard
+    curve (annual rate of exceeding each IM) converted to ``im_unit`` when of the same
+    kind (g to m/s^2), refused otherwise; the annual frequency of failure is
+    :func:`~.fragility.annual_frequency` of the fit (Cornell et al. 2002).
+
+    Columns of the result's ``table`` (one row per group and mitigation): the ``by``
+    columns, ``mitigation``, ``model`` (the model(s) run), ``n`` (runs used), ``n_failed``,
+    ``n_excluded``, ``n_unsettled``, ``im_min``/``im_max``, ``median`` and ``beta`` (the fit,
+    in ``im_unit``), ``median_ci_low/high`` and ``beta_ci_low/high`` (95% bootstrap),
+    ``median_lower_bound``/``median_upper_bound`` (when no fit exists: no failure up to
+    ``im_max``, every run failed from ``im_min``, or outcomes separated by the IM),
+    ``median_ratio`` (median / the reference's median in the group; NaN without a
+    reference), ``median_ratio_lower_bound`` (a never-failing mitigation's lower bound over
+    the reference's median), ``annual_frequency`` (with ``hazard``),
+    ``annual_frequency_lower_bound``/``_upper_bound`` (without a fit: the hazard rate at the
+    bounds of the median, i.e. the frequency if the fragility were a step there; NaN
+    beyond the hazard curve), ``annual_frequency_ratio``, ``displacement_median``,
+    ``displacement_p84`` (84th percentile: median + one log standard deviation of a
+    lognormal demand), ``displacement_max`` (m, of ``max_base_displacement``; NaN without
+    it; a run stopped at the model's clearance has the clearance as its maximum, so these
+    are censored there), ``n_clearance_exceeded`` and ``p_clearance_exceeded`` (runs with
+    ``clearance_exceeded`` or ``max_base_displacement >= clearance``; NaN when neither is
+    known), ``clearance`` (m, NaN if not given) and ``note``.
+
+    Raises :class:`~rocking.ParameterError` for a missing column, an unknown ``failure``,
+    a hazard in an incompatible unit, or a group whose runs were all left out.
+    """
+    mit_col = ("mitigation" if isinstance(table, pd.DataFrame) and "mitigation" in table
+               else "model" if isinstance(table, pd.DataFrame) and "model" in table else None)
+    by = _check_table(table, im, failure, by, mit_col)
+    if not isinstance(reference, str):
+        raise ParameterError(f"reference must be a mitigation name, got {reference!r}")
+    if im_unit is not None and not isinstance(im_unit, str):
+        raise ParameterError(f"im_unit must be a unit string such as 'm/s^2', got {im_unit!r}")
+    attrs_unit = _attrs_unit(table, im)
+    if attrs_unit is not None and im_unit is not None and unit_kind(attrs_unit) != unit_kind(
+            im_unit) and attrs_unit.strip() != im_unit.strip():
+        raise ParameterError(f"im_unit={im_unit!r} contradicts the table's own IM unit "
+                             f"{attrs_unit!r} (table.attrs)")
+    clear = parse_clearance(clearance)
+    hz = parse_hazard(hazard, im_unit) if hazard is not None else None
+
+    x_all = pd.to_numeric(table[im], errors="coerce").to_numpy(float)
+    status = (pd.to_numeric(table["status"], errors="coerce").fillna(0).to_numpy(float)
+              if "status" in table else np.zeros(len(table)))
+    bad_im = ~(np.isfinite(x_all) & (x_all > 0))
+    excluded = (status != 0) | bad_im
+    disp_all = (pd.to_numeric(table["max_base_displacement"], errors="coerce").to_numpy(float)
+                if "max_base_displacement" in table else np.full(len(table), np.nan))
+    flag_all = _flags(table, "clearance_exceeded")
+    if failure == "overturned_or_clearance" and not (
+            "clearance_exceeded" in table or (math.isfinite(clear)
+                                              and "max_base_displacement" in table)):
+        raise ParameterError("failure='overturned_or_clearance' needs a "
+                             "'clearance_exceeded' column, or a 'max_base_displacement' "
+                             "column and clearance=")
+    if math.isfinite(clear) and "max_base_displacement" not in table and (
+            "clearance_exceeded" not in table):
+        raise ParameterError("clearance: the table has no 'max_base_displacement' column "
+                             "(nor 'clearance_exceeded') to compare with it")
+    with np.errstate(invalid="ignore"):
+        by_disp = np.where(np.isfinite(disp_all) & math.isfinite(clear),
+                           (disp_all >= clear).astype(float), np.nan)
+    # 1: exceeded by either source; 0: known not exceeded; NaN: not known
+    exceeded = np.where((flag_all == 1) | (by_disp == 1), 1.0,
+                        np.where(np.isfinite(flag_all) | np.isfinite(by_disp), 0.0, np.nan))
+    settled = _flags(table, "settled")
+
+    rows, fits, stripes = [], {}, {}
+    groups = table.groupby(by, sort=False, dropna=False) if by else [((), table)]
+    for gkey, g in groups:
+        gkey = gkey if isinstance(gkey, tuple) else (gkey,)
+        gdesc = ", ".join(f"{c}={v}" for c, v in zip(by, gkey, strict=True)) or "the table"
+        pos = table.index.get_indexer(g.index) if table.index.is_unique else None
+        if pos is None:
+            raise ParameterError("table must have a unique index (use reset_index())")
+        names = list(dict.fromkeys(g[mit_col].astype(str)))
+        if reference in names:
+            names.remove(reference)
+            names.insert(0, reference)
+        for mname in names:
+            p = pos[(g[mit_col].astype(str) == mname).to_numpy()]
+            ok = p[~excluded[p]]
+            label = f"{gdesc}, mitigation {mname!r}" if by else f"mitigation {mname!r}"
+            if ok.size == 0:
+                raise ParameterError(f"{label}: no usable run ({p.size} runs, all with a "
+                                     "non-zero status or no valid IM): an empty group")
+            x = x_all[ok]
+            ovt = as_bool_array(f"overturned ({label})", table["overturned"].to_numpy()[ok])
+            exc = exceeded[ok]
+            y = ovt | ((exc == 1) if failure == "overturned_or_clearance" else False)
+            key = tuple(gkey) + (mname,) if by else mname
+            fit, fields = _fit_one(x, y, im=im, im_unit=im_unit, n_boot=n_boot, seed=seed,
+                                   label=mname)
+            if fit is not None:
+                fits[key] = fit
+            stripes[key] = _stripes(x, y)
+            note = fields.pop("note")
+            notes = [note] if note else []
+            n_exc = int(excluded[p].sum())
+            if n_exc:
+                notes.append(f"{n_exc} runs left out (non-zero status or no valid IM)")
+            n_stop = int(np.sum((flag_all[ok] == 1) & ~ovt))
+            if failure == "overturned" and n_stop:
+                notes.append(f"{n_stop} runs stopped at the isolator's clearance "
+                             "(clearance_exceeded): whether they would have overturned is "
+                             "not known, they count as not overturned "
+                             "(failure='overturned_or_clearance' counts them as failed)")
+            d = disp_all[ok]
+            d = d[np.isfinite(d)]
+            known = exc[np.isfinite(exc)]
+            row = dict(zip(by, gkey, strict=True))
+            models = (", ".join(dict.fromkeys(g["model"].astype(str).to_numpy()[
+                (g[mit_col].astype(str) == mname).to_numpy()]))
+                if "model" in g else "")
+            row.update(
+                mitigation=mname, model=models, n=int(ok.size), n_failed=int(y.sum()),
+                n_excluded=n_exc,
+                n_unsettled=int(np.sum(settled[ok] == 0)),
+                im_min=float(x.min()), im_max=float(x.max()), **fields,
+                displacement_median=float(np.median(d)) if d.size else math.nan,
+                displacement_p84=float(np.percentile(d, 84)) if d.size else math.nan,
+                displacement_max=float(d.max()) if d.size else math.nan,
+                n_clearance_exceeded=int(known.sum()) if known.size else 0,
+                p_clearance_exceeded=float(known.mean()) if known.size else math.nan,
+                clearance=clear, note="; ".join(notes))
+            _hazard_fields(row, fit, hz, im_unit)
+            rows.append(row)
+    out = pd.DataFrame(rows)
+    _ratios(out, by, reference, mit_col, table)
+    out = out[[*by, *COLUMNS]]
+    out.attrs.update(im=im, im_unit=im_unit, failure=failure, reference=reference,
+                     clearance=clear, by=list(by),
+                     fit_method="rocking.analysis.fragility.fragility: probit GLM MLE "
+                                "(Baker 2015)",
+                     hazard="Cornell et al. (2002)" if hz is not None else None)
+    return MitigationComparison(out, fits, stripes, by=by, im=im, im_unit=im_unit,
+                                failure=failure, clearance=clear, reference=reference,
+                                hazard=hz)
+
+
+def _attrs_unit(table: pd.DataFrame, im: str) -> str | None:
+    """The IM unit that the table states in its ``attrs`` (``{"im": {"name", "unit"}}``
+    as a campaign manifest has it, or ``im_unit``), if any and if it is about ``im``."""
+    a = table.attrs or {}
+    spec = a.get("im")
+    if isinstance(spec, dict) and spec.get("unit") and im == "im":
+        return str(spec["unit"])
+    if isinstance(a.get("im_unit"), str) and a.get("im_name", im) == im:
+        return a["im_unit"]
+    return None
+
+
+def _hazard_fields(row: dict, fit: FragilityFit | None, hz, im_unit) -> None:
+    row.update(annual_frequency=math.nan, annual_frequency_lower_bound=math.nan,
+               annual_frequency_upper_bound=math.nan)
+    if hz is None:
+        return
+    hx, hr = hz
+    if fit is not None:
+        row["annual_frequency"] = annual_frequency(fit, hx, hr, hazard_unit=im_unit)
+        return
+    lo, hi = row["median_lower_bound"], row["median_upper_bound"]
+    # a step fragility at m has lambda_f = lambda(m): lambda_f <= lambda(lo), >= lambda(hi)
+    if math.isfinite(lo):
+        row["annual_frequency_upper_bound"] = (float(hr[-1]) if lo > hx[-1]
+                                               else rate_at(lo, hx, hr))
+    if math.isfinite(hi):
+        row["annual_frequency_lower_bound"] = (float(hr[0]) if hi < hx[0]
+                                               else rate_at(hi, hx, hr))
+    what = ("upper bound: the rate of the largest IM without failure" if math.isfinite(lo)
+            else "")
+    what += ("; " if what and math.isfinite(hi) else "") + (
+        "lower bound: the rate of the smallest IM with failure" if math.isfinite(hi) else "")
+    row["note"] = "; ".join(s for s in (row["note"], f"annual frequency not fitted ({what}, "
+                                        "if the fragility were a step there)") if s)
+
+
+def _reference_of(g: pd.DataFrame, reference: str, mit_col: str, table) -> str | None:
+    names = set(g["mitigation"])
+    if reference in names:
+        return reference
+    if mit_col != "model":
+        return None
+    from ..models import MODELS
+
+    plain = [n for n in names if n in MODELS and not MODELS[n].mitigation]
+    return plain[0] if len(plain) == 1 else None
+
+
+def _ratios(out: pd.DataFrame, by, reference, mit_col, table) -> None:
+    out["median_ratio"] = math.nan
+    out["median_ratio_lower_bound"] = math.nan
+    out["annual_frequency_ratio"] = math.nan
+    parts = out.groupby(by, sort=False, dropna=False) if by else [((), out)]
+    for _, g in parts:
+        ref = _reference_of(g, reference, mit_col, table)
+        if ref is None:
+            continue
+        r = g[g["mitigation"] == ref].iloc[0]
+        idx = g.index
+        out.loc[idx, "median_ratio"] = g["median"] / r["median"]
+        out.loc[idx, "median_ratio_lower_bound"] = g["median_lower_bound"] / r["median"]
+        out.loc[idx, "annual_frequency_ratio"] = g["annual_frequency"] / r["annual_frequency"]
+
+
+# --------------------------------------------------------------------------- plot
+
+def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
+                     level: float = 0.95, ncols: int = 3, figsize=None):
+    """Fragility curves of the mitigations side by side: one panel per group, the curves
+    of all its mitigations overlaid (with the ``level`` bootstrap band if ``band``), the
+    observed failed fraction per IM level as markers (per bin of equal count when the IMs
+    are not on stripes). A mitigation without a fit shows its markers only, its note in
+    the legend. Returns a matplotlib Figure (no pyplot)."""
+    from matplotlib.figure import Figure
+
+    if not isinstance(comparison, MitigationComparison):
+        raise ParameterError("comparison must be a MitigationComparison, got "
+                             f"{type(comparison).__name__}")
+    if isinstance(ncols, bool) or not isinstance(ncols, int) or ncols < 1:
+        raise ParameterError(f"ncols must be an integer >= 1, got {ncols!r}")
+    t = comparison.table
+    by = comparison.by
+    groups = list(t.groupby(by, sort=False, dropna=False)) if by else [((), t)]
+    ncols = min(ncols, len(groups))
+    nrows = math.ceil(len(groups) / ncols)
+    fig = Figure(figsize=figsize or (4.2 * ncols, 3.4 * nrows), layout="constrained")
+    axes = fig.subplots(nrows, ncols, squeeze=False).ravel()
+    lo = float(t["im_min"].min())
+    hi = float(t["im_max"].max())
+    meds = t["median"].to_numpy(float)
+    if np.isfinite(meds).any():
+        lo, hi = min(lo, np.nanmin(meds) / 3.0), max(hi, np.nanmax(meds) * 3.0)
+    grid = np.geomspace(lo * 0.8, hi * 1.2, 200)
+    colors = {m: PALETTE[i % len(PALETTE)]
+              for i, m in enumerate(dict.fromkeys(t["mitigation"]))}
+    unit = comparison.im_unit
+    for ax, (gkey, g) in zip(axes, groups, strict=False):
+        gkey = gkey if isinstance(gkey, tuple) else (gkey,)
+        for _, r in g.iterrows():
+            m = r["mitigation"]
+            key = comparison.key(m, tuple(gkey))
+            c = colors[m]
+            s = comparison.stripes[key]
+            ax.plot(s["im"], s["n_failed"] / s["n"], "o", ms=4, mfc="none", color=c)
+            fit = comparison.fits.get(key)
+            if fit is None:
+                ax.plot([], [], "o", mfc="none", color=c, label=f"{m}: {r['note'].split(';')[0]}")
+                continue
+            ax.plot(grid, fit.probability(grid), color=c,
+                    label=f"{m}: median {fit.median:.3g}, beta {fit.beta:.2f}")
+            if band and fit.n_boot:
+                b = fit.band(grid, level)
+                ax.fill_between(grid, b["lower"], b["upper"], color=c, alpha=0.15, lw=0)
+        style_axes(ax, im_label(comparison.im if comparison.im in ("pga", "im") else
+                                IM_NAMES.get(comparison.im, comparison.im), unit),
+                   f"P({comparison.failure.replace('_', ' ')})")
+        ax.set_xscale("log")
+        ax.set_ylim(-0.02, 1.02)
+        if by:
+            ax.set_title(", ".join(f"{c} {v}" for c, v in zip(by, gkey, strict=True)),
+                         fontsize="medium")
+        ax.legend(frameon=False, fontsize="x-small")
+    for ax in axes[len(groups):]:
+        ax.set_visible(False)
+    return fig
+
+
+__all__ = ["compare_mitigations", "MitigationComparison", "plot_mitigations", "FAILURES",
+           "DEFAULT_BY", "REFERENCE", "unit_kind", "parse_hazard", "parse_clearance"]
