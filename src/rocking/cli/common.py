@@ -12,6 +12,7 @@ Quantities accept units at the edge (``170mm``, ``0.3g``, ``5Hz``, ``9.6deg``); 
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import re
@@ -28,6 +29,7 @@ from ..errors import (
     RockingError,
     SimulationError,
 )
+from ..options import check_option, describe_field
 from ..units import parse_quantity
 
 CONTEXT = {"help_option_names": ["-h", "--help"]}
@@ -403,22 +405,29 @@ def models_with_option(name: str) -> list[str]:
             if any(d["name"] == name for d in cls.Options.describe())]
 
 
-def options_table(cls) -> list[str]:
-    """The options of a model class as text lines (from ``Options.describe()``)."""
-    return describe_table(cls.Options.describe())
+def options_table(cls, flags: dict | None = None) -> list[str]:
+    """The options of a model class as text lines (from ``Options.describe()``); with
+    ``flags`` (option name -> flag of ``rocking simulate``) a column of the flags, ``--option``
+    for an option without one."""
+    return describe_table(cls.Options.describe(), flags=flags)
 
 
-def describe_table(rows: list[dict], head: str = "option", unset: str = "auto") -> list[str]:
+def describe_table(rows: list[dict], head: str = "option", unset: str = "auto",
+                   flags: dict | None = None) -> list[str]:
     """Declared parameters (:func:`rocking.options.describe_field` dicts) as text lines:
-    name, default (``required``, or ``unset`` for None), unit, range, help."""
+    name, (flag,) default (``required``, or ``unset`` for None), unit, range, help."""
     cells = [(d["name"], "required" if d.get("required") else _shown(d["default"], unset),
               d["unit"] or "-", d["range"] or "-", d["help"]) for d in rows]
+    top = (head, "default", "unit", "range", "help")
+    if flags is not None:
+        cells = [(c[0], flags.get(c[0]) or f"--option {c[0]}=", *c[1:]) for c in cells]
+        top = (head, "flag", *top[1:])
     if not cells:
         return ["  (no options)"]
-    top = (head, "default", "unit", "range", "help")
-    widths = [max(len(r[i]) for r in (top, *cells)) for i in range(4)]
-    return ["  " + "  ".join(f"{c:<{w}}" for c, w in zip(r[:4], widths, strict=True))
-            + f"  {r[4]}" for r in (top, *cells)]
+    n = len(top) - 1
+    widths = [max(len(r[i]) for r in (top, *cells)) for i in range(n)]
+    return ["  " + "  ".join(f"{c:<{w}}" for c, w in zip(r[:n], widths, strict=True))
+            + f"  {r[n]}" for r in (top, *cells)]
 
 
 def _shown(value, unset: str = "auto") -> str:
@@ -427,6 +436,164 @@ def _shown(value, unset: str = "auto") -> str:
     if isinstance(value, float):
         return f"{value:g}"
     return str(value)
+
+
+# ----------------------------------------------------------------------------- model flags
+QUANTITY_OF_UNIT = {"s": "time", "m": "length", "rad": "angle", "m/s^2": "acceleration",
+                    "Hz": "frequency", "": "ratio"}
+"""The quantity that a declared option's SI unit stands for when the declaration names
+none: a flag's value may then carry any unit of it (``2.5s``, ``15cm``, ``10%``; a bare
+number is in the declared unit). Options in other units (``N/m``, ``m/s``) take a bare
+number or the number followed by that unit."""
+
+MODEL_FLAG_DEST = "model_flag__"
+"""Prefix of the keyword under which a generated model flag reaches the command's
+callback (``model_flag__isolation_period``)."""
+
+
+def option_flag(name: str) -> str:
+    """The flag of a model option: ``isolation_period`` -> ``--isolation-period``."""
+    return "--" + name.replace("_", "-")
+
+
+def option_declarations() -> dict[str, dict]:
+    """``{option name: {model name: its dataclass field}}`` over the registered models (in
+    the order of :data:`rocking.models.MODELS` and of each model's fields)."""
+    out: dict[str, dict] = {}
+    for model, cls in model_classes().items():
+        for f in dataclasses.fields(cls.Options):
+            if f.metadata:
+                out.setdefault(f.name, {})[model] = f
+    return out
+
+
+def declared_value(name: str, text, field: dataclasses.Field, flag: str | None = None):
+    """``text`` (a flag's value) as the value of the declared model option ``field``,
+    checked against its range (:func:`rocking.options.check_option`).
+
+    A number may carry a unit of the option's quantity (``quantity`` of the declaration, or
+    :data:`QUANTITY_OF_UNIT` of its unit): ``2.5s``, ``15cm``, ``10%``; ``none`` is the
+    automatic default of an option whose default is None; bool and free-form options read
+    as :func:`option_value`. Errors name ``flag`` (default: the name with dashes) and the
+    value as typed."""
+    word = (flag or option_flag(name)).lstrip("-")
+    m = field.metadata
+    try:
+        if not isinstance(text, str):
+            return check_option(name, text, m)
+        s = text.strip()
+        if field.default is None and s.lower() in ("none", "null", "auto"):
+            return None
+        kind = m["kind"]
+        if kind is bool or kind is object:
+            return check_option(name, option_value(s), m)
+        if m.get("choices") or kind is str:
+            low = s.lower()
+            return check_option(name, low if low in (m.get("choices") or ()) else s, m)
+        unit = m.get("unit", "")
+        qty = m.get("quantity") or QUANTITY_OF_UNIT.get(unit)
+        if qty is not None:
+            value = parse_quantity(s, qty, name=name, default_unit=unit)
+        else:
+            value = number(s, name, (unit.lower(),) if unit else ())
+        return check_option(name, value, m)
+    except ParameterError as e:
+        raise in_flag_words(e, {name: (word, text)}) from None
+
+
+def model_flag_values(model: str, given: dict, readers: dict | None = None) -> dict:
+    """The model options given by flags (``{option name: text or None}``), read: an error
+    naming the flag and the models that have the option if ``model`` lacks it; ``readers``
+    (option name -> ``f(model, text)``) read options of their own way, the others
+    :func:`declared_value` with the model's declaration."""
+    decls = option_declarations()
+    out = {}
+    for key, text in given.items():
+        if text is None:
+            continue
+        flag = key.replace("_", "-")
+        owners = list(decls.get(key, {}))
+        if model not in owners:
+            raise ParameterError(f"{flag} applies to --model {' or '.join(owners)} only")
+        reader = (readers or {}).get(key)
+        out[key] = (reader(model, text) if reader is not None
+                    else declared_value(key, text, decls[key][model]))
+    return out
+
+
+class ModelFlagsCommand(click.Command):
+    """A command with a flag per option of the registered models, generated from their
+    declarations (:func:`rocking.options.option`: help, unit, range, choices) when the
+    command line is parsed or its help shown (the models are imported then, not before).
+
+    ``--isolation-period 2.5s`` is the option ``isolation_period``; a bool option is a pair
+    ``--settled/--no-settled``. An option whose flag is already a flag of the command (the
+    command's own ``--dt``) gets none (:meth:`skipped`): ``--option KEY=VALUE`` still sets
+    it. The callback receives the flags as ``model_flag__NAME`` keywords (None: not
+    given). ``flag_help`` overrides ``(metavar, help)`` of some options."""
+
+    def __init__(self, *args, flag_help: dict | None = None, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.flag_help = dict(flag_help or {})
+        self._generated: tuple = ((), [])
+
+    def own_flags(self) -> set:
+        """The flags of the command itself (``--dt``, ``--mu``, ...)."""
+        return {o for p in self.params for o in (*p.opts, *p.secondary_opts)}
+
+    def model_flags(self) -> dict:
+        """``{option name: flag}`` of the options that have a generated flag."""
+        own = self.own_flags()
+        return {k: option_flag(k) for k in option_declarations() if option_flag(k) not in own}
+
+    def skipped(self) -> dict:
+        """``{option name: flag}`` of the options without a flag: it is one of the
+        command's own (set them with ``--option KEY=VALUE``)."""
+        own = self.own_flags()
+        return {k: option_flag(k) for k in option_declarations() if option_flag(k) in own}
+
+    def generated_params(self) -> list:
+        key = tuple((k, id(c)) for k, c in model_classes().items())
+        if self._generated[0] != key:
+            decls = option_declarations()
+            self._generated = (key, [self._option(k, decls[k])
+                                     for k in self.model_flags()])
+        return self._generated[1]
+
+    def _option(self, name: str, fields: dict) -> click.Option:
+        f = next(iter(fields.values()))
+        m = f.metadata
+        flag, dest = option_flag(name), MODEL_FLAG_DEST + name
+        metavar, text = self.flag_help.get(name, (None, None))
+        if text is None:
+            shown = {(d["unit"], d["range"]) for d in map(describe_field, fields.values())}
+            bits = ["see 'rocking models'"]
+            if len(shown) == 1 and not m.get("choices") and m.get("kind") is not bool:
+                unit, rng = shown.pop()
+                bits = [b for b in (unit, rng) if b]
+            if f.default is None and m.get("kind") is not bool:
+                bits.append("'none': the default")
+            text = f"{', '.join(fields)}: {m.get('help', '')}" + (
+                f" [{'; '.join(bits)}]" if bits and m.get("kind") is not bool
+                and not m.get("choices") else "")
+        if m.get("kind") is bool:
+            return click.Option([f"{flag}/--no-{flag[2:]}", dest], default=None, help=text)
+        if metavar is None:
+            metavar = "[" + "|".join(map(str, m["choices"])) + "]" if m.get("choices") \
+                else "VALUE"
+        return click.Option([flag, dest], metavar=metavar, help=text)
+
+    def get_params(self, ctx):
+        params = super().get_params(ctx)
+        help_option = self.get_help_option(ctx)
+        own = [p for p in params if p is not help_option]
+        return [*own, *self.generated_params(), *([help_option] if help_option else [])]
+
+
+def model_flags_given(kwargs: dict) -> dict:
+    """``{option name: value}`` of the generated flags among a callback's keywords."""
+    return {k[len(MODEL_FLAG_DEST):]: v for k, v in kwargs.items()
+            if k.startswith(MODEL_FLAG_DEST)}
 
 
 # ----------------------------------------------------------------------------- records
@@ -520,4 +687,6 @@ __all__ = ["CONTEXT", "quantity", "number", "check_positive", "positive_quantity
            "ModelChoice", "option_value", "parse_options", "validate_options",
            "models_with_option", "options_table", "describe_table", "one_line",
            "read_record_arg", "output_too_large_message", "error_report", "in_flag_words",
-           "BLOCK_FLAGS", "BUILDING_FLAGS", "building_options", "make_building"]
+           "BLOCK_FLAGS", "BUILDING_FLAGS", "building_options", "make_building",
+           "QUANTITY_OF_UNIT", "MODEL_FLAG_DEST", "option_flag", "option_declarations",
+           "declared_value", "model_flag_values", "ModelFlagsCommand", "model_flags_given"]

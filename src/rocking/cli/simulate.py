@@ -31,8 +31,35 @@ ground motion, and the block feels :class:`rocking.buildings.FloorMotion` of it.
 
 ``--model`` is a name of :data:`rocking.models.MODELS` and ``--option KEY=VALUE``
 (repeatable) passes an option of that model's ``Options`` (``rocking models`` lists them);
-the model validates the options. The DEM flags ``--friction-angle``, ``--stiffness`` and
-``--damping`` are the options of the same names, for the models that have them.
+the model validates the options. Every declared option of every registered model also has a
+flag of its own, generated from its declaration (:class:`~rocking.cli.common.
+ModelFlagsCommand`; help, unit and range from :func:`rocking.options.option`), so a new
+model's options get flags without editing this module::
+
+    rocking simulate --specimen 2 --record Rinaldi228 --model isolated \
+        --isolation-period 2.5 --isolation-damping 10% --clearance 0.15m
+    rocking simulate --specimen 2 --record Rinaldi228 --model anchored \
+        --anchor-strength 0.3 --anchors elastic --anchor-stiffness 200
+
+A number takes a unit of its quantity (``2.5s``, ``15cm``; a dimensionless one ``10%`` or
+``0.1``; a bare number is in the declared SI unit), ``none`` the automatic default, a bool
+option is ``--settled/--no-settled``. The DEM's ``--friction-angle`` (a bare number in
+degrees, deprecated), ``--stiffness`` and ``--damping`` (``calibrated``, ``paper``) are
+read their own way (:data:`FLAG_READERS`). A flag of an option the model lacks, or an
+option given both by its flag and by ``--option``, is refused (exit code 2).
+
+Options WITHOUT a flag, since theirs is already a flag of this command (set them with
+``--option KEY=VALUE``): ``dt`` (ccrr, dem: ``--dt`` is a record's time step), ``mu``
+(isolated's restitution: ``--mu`` overrides the block's) and ``linear`` (housner: ``--linear``
+is that option already). ``ModelFlagsCommand.skipped()`` lists them; a test checks this
+list against it.
+
+Models with row outputs (:attr:`rocking.models.base.Model.row_outputs`: the isolated
+base's ``max_base_displacement``, ``max_plate_acceleration``, ``clearance_exceeded``,
+``clearance_time``; the anchors' ``max_anchor_force``, ``anchor_break_time_plus``/``minus``,
+``anchor_broken_plus``/``minus``) print them, with units, after the rocking response;
+``--json`` prints the summary (also in ``summary.json``), with ``row_outputs``:
+``{name: {value, unit, flag, help}}`` (a NaN time as null).
 """
 
 from __future__ import annotations
@@ -54,18 +81,23 @@ from .common import (
     BUILDING_FLAGS,
     CONTEXT,
     ModelChoice,
+    ModelFlagsCommand,
     block_options,
     building_options,
     check_positive,
+    declared_value,
     in_flag_words,
     integer,
     json_default,
     make_block,
     make_building,
     model_classes,
+    model_flag_values,
+    model_flags_given,
     models_with_option,
     number,
     one_line,
+    option_declarations,
     parse_options,
     positive_quantity,
     quantity,
@@ -381,49 +413,85 @@ def _friction_angle(model: str, text) -> float:
         raise in_flag_words(e, {"friction_angle": ("friction-angle", text)}) from None
 
 
-def flag_options(model: str, friction_angle, stiffness, damping) -> dict:
-    """The options given by their own flags, parsed; an error for a model without them."""
-    given = {"friction_angle": friction_angle, "stiffness": stiffness, "damping": damping}
-    opts = {}
-    for key, val in given.items():
-        if val is None:
-            continue
-        flag = key.replace("_", "-")
-        owners = models_with_option(key)
-        if model not in owners:
-            raise ParameterError(f"{flag} applies to --model {' or '.join(owners)} only")
-        if key == "friction_angle":
-            opts[key] = _friction_angle(model, val)
-        elif key == "stiffness":
-            opts[key] = check_positive(number(val, flag, ("n/m",)), flag, "N/m")
-        else:
-            d = str(val).strip().lower()
-            if d in ("calibrated", "paper"):
-                opts[key] = d
-            else:
-                opts[key] = as_float(flag, number(d, flag, ("s",)))
-                if opts[key] < 0:
-                    raise ParameterError(f"damping must be >= 0 s, 'calibrated' or 'paper'; "
-                                         f"got {val!r}")
+def _stiffness(model: str, text) -> float:
+    """``--stiffness 1e6`` (or ``1e6N/m``), > 0."""
+    return check_positive(number(text, "stiffness", ("n/m",)), "stiffness", "N/m")
+
+
+def _damping(model: str, text):
+    """``--damping 0.001`` (s, ``1ms``), ``calibrated`` or ``paper``."""
+    d = str(text).strip().lower()
+    if d in ("calibrated", "paper"):
+        return d
+    value = as_float("damping", number(d, "damping", ("s",)))
+    if value < 0:
+        raise ParameterError(f"damping must be >= 0 s, 'calibrated' or 'paper'; got {text!r}")
+    return value
+
+
+FLAG_READERS = {"friction_angle": _friction_angle, "stiffness": _stiffness,
+                "damping": _damping}
+"""The model flags read their own way (the DEM's: a bare friction angle in degrees,
+damping words); the others by their declaration
+(:func:`~rocking.cli.common.declared_value`)."""
+
+FLAG_HELP = {
+    "friction_angle": ("ANGLE", "dem: contact friction angle with its unit, e.g. 30deg or "
+                                "0.52rad (default 30deg; a bare number is degrees, "
+                                "deprecated)."),
+    "stiffness": ("K", "dem: normal contact stiffness per contact point (N/m; default "
+                       "physical, a settlement of 1e-7 of the height)."),
+    "damping": ("B", "dem: stiffness-proportional damping b (s), or 'calibrated' (default: "
+                     "matches mu) or 'paper' (Eq 20)."),
+}
+"""Metavar and help of the model flags whose generated ones would not say enough."""
+
+
+def flag_options(model: str, friction_angle=None, stiffness=None, damping=None, *,
+                 flags: dict | None = None) -> dict:
+    """The options given by their own flags (the DEM's three, and ``flags``: ``{option
+    name: text or None}`` of the generated ones), read; an error for a model without
+    them (:func:`~rocking.cli.common.model_flag_values`)."""
+    given = {"friction_angle": friction_angle, "stiffness": stiffness, "damping": damping,
+             **(flags or {})}
+    return model_flag_values(model, given, FLAG_READERS)
+
+
+def _option_pairs(model: str, pairs) -> dict:
+    """``--option KEY=VALUE`` pairs; a text value of a declared number read with its unit
+    (``--option clearance=15cm``) as the flag would."""
+    opts = parse_options(pairs)
+    decls = option_declarations()
+    for key, value in opts.items():
+        f = decls.get(key, {}).get(model)
+        if isinstance(value, str) and f is not None and f.metadata.get("kind") in (int, float) \
+                and key not in FLAG_READERS:
+            opts[key] = declared_value(key, value, f, flag=f"option {key}")
     return opts
 
 
-def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict:
-    """``--option KEY=VALUE`` pairs and the DEM flags as one options dict, checked by the
+def model_options(model: str, pairs, friction_angle=None, stiffness=None, damping=None, *,
+                  flags: dict | None = None) -> dict:
+    """``--option KEY=VALUE`` pairs and the model flags as one options dict, checked by the
     model (unknown names, ranges)."""
-    opts = parse_options(pairs)
-    flags = flag_options(model, friction_angle, stiffness, damping)
-    both = sorted(set(opts) & set(flags))
+    opts = _option_pairs(model, pairs)
+    flagged = flag_options(model, friction_angle, stiffness, damping, flags=flags)
+    both = sorted(set(opts) & set(flagged))
     if both:
         raise ParameterError(f"option {both[0]} given twice (--{both[0].replace('_', '-')} "
                              f"and --option {both[0]}=...)")
-    opts.update(flags)
-    validate_options(model, opts)
+    opts.update(flagged)
+    words = {k: (k.replace("_", "-"), None) for k in flagged}
+    try:
+        validate_options(model, opts)
+    except ParameterError as e:  # a check of several options: in the flags' words
+        raise in_flag_words(e, words) from None
     return opts
 
 
 # ----------------------------------------------------------------------------- command
-@click.command("simulate", context_settings=CONTEXT)
+@click.command("simulate", cls=ModelFlagsCommand, flag_help=FLAG_HELP,
+               context_settings=CONTEXT)
 @block_options(classical=True)
 @click.option("--model", type=ModelChoice(), default="housner", show_default=True,
               help="Rocking model (see 'rocking models').")
@@ -465,15 +533,6 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
 @click.option("--omega0", metavar="W", help="Initial angular velocity (rad/s).")
 @click.option("--linear", is_flag=True, help="Small-angle (linearised) equation of motion.")
 @click.option("--dt-out", metavar="DT", help="Output time step (s; default 0.002).")
-@click.option("--friction-angle", metavar="ANGLE",
-              help="dem: contact friction angle with its unit, e.g. 30deg or 0.52rad "
-                   "(default 30deg; a bare number is degrees, deprecated).")
-@click.option("--stiffness", metavar="K",
-              help="dem: normal contact stiffness per contact point (N/m; default physical, "
-                   "a settlement of 1e-7 of the height).")
-@click.option("--damping", metavar="B",
-              help="dem: stiffness-proportional damping b (s), or 'calibrated' (default: "
-                   "matches mu) or 'paper' (Eq 20).")
 @building_options("Put the block on a floor of a building of this kind ('rocking "
                   "buildings'); the motion is then the ground motion.")
 @click.option("--floor", metavar="K", help="The floor the block stands on (0 the ground).")
@@ -481,12 +540,13 @@ def model_options(model: str, pairs, friction_angle, stiffness, damping) -> dict
               help="Instead of --floor: the height z/H in [0, 1] (a continuous building).")
 @click.option("--out", type=click.Path(file_okay=False),
               help="Write response.csv, summary.json and theta.png to this folder.")
+@click.option("--json", "as_json", is_flag=True,
+              help="Print the summary (summary.json's content, SI units) as JSON.")
 def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model_opts, motion,
                  freq, amp, tp, motion_params, duration, max_free_time, record, vertical,
                  vertical_factor, units, dt, earthquake, load_factor, theta0, omega0, linear,
-                 friction_angle, stiffness, damping, dt_out, building, storeys,
-                 building_period, building_damping, building_params, floor, height_ratio,
-                 out):
+                 dt_out, building, storeys, building_period, building_damping,
+                 building_params, floor, height_ratio, out, as_json, **model_flags):
     """Simulate one block under one base motion (on a floor of a building: --building)."""
     from ..models import simulate  # lazy: the models import numba
 
@@ -498,7 +558,7 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
     mot, fdesc = on_floor(mot, {"kind": building, "storeys": storeys,
                                 "period": building_period, "damping": building_damping,
                                 "param": building_params}, floor, height_ratio)
-    options = model_options(model, model_opts, friction_angle, stiffness, damping)
+    options = model_options(model, model_opts, flags=model_flags_given(model_flags))
     if linear:  # --linear is --option linear=true: one way into the model's options
         owners = models_with_option("linear")
         if model not in owners:
@@ -538,32 +598,18 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
         inputs.update(floor_keys)
     summary["inputs"] = inputs
 
-    th = summary["max_abs_theta"]
-    click.echo(f"block       {block!r}")
-    on = "" if fdesc is None else (
-        f" on {fdesc['where']} of the {fdesc['building']['name']} (peak floor acceleration "
-        f"{fdesc['floor_pga'] / G:.3g} g)")
-    click.echo(f"motion      {mdesc.get('repr', 'free rocking')}{on}  [{model}"
-               f"{', linear' if linear else ''}]")
-    click.echo(f"max |theta| {math.degrees(th):.4g} deg ({th:.6g} rad, "
-               f"{th / block.alpha:.3g} alpha)")
-    if resp.overturned:
-        click.echo(f"overturned  yes, at t = {resp.overturn_time:.4g} s")
-    else:
-        click.echo("overturned  no")
-    up = "-" if math.isnan(resp.uplift_time) else f"t = {resp.uplift_time:.4g} s"
-    click.echo(f"uplift      {up}")
-    click.echo(f"impacts     {resp.n_impacts}")
+    outputs = row_outputs(model_classes()[model], resp.info)
+    if outputs:
+        summary["row_outputs"] = outputs
+
     if not resp.settled and not resp.lifted_off:
         fix = "extend --duration" if sim_dur is not None else "raise --max-free-time"
         click.echo(f"warning: still rocking at the end (t = {resp.duration:.4g} s): the "
                    f"outcome may change; {fix}", err=True)
-    if "vertical" in mdesc:
-        lo = ("-" if not resp.lifted_off else f"yes, at t = {resp.lift_off_time:.4g} s: "
-              "g + a_v <= 0, the block leaves the ground and the run stops there")
-        click.echo(f"vertical    {mdesc['vertical']} x {mdesc['vertical_factor']:g} "
-                   f"(peak {mdesc['pga_vertical'] / G:.3g} g)")
-        click.echo(f"lift-off    {lo}")
+    if as_json:
+        click.echo(json.dumps(summary, indent=2, default=json_default))
+    else:
+        click.echo("\n".join(_text_lines(resp, block, model, linear, mdesc, fdesc, outputs)))
 
     if out is not None:
         folder = Path(out)
@@ -572,7 +618,63 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
         atomic_write(folder / "summary.json",
                      json.dumps(summary, indent=2, default=json_default))
         _theta_png(resp, block, mdesc, folder / "theta.png", fdesc)
-        click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
+        if not as_json:
+            click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
+
+
+def row_outputs(cls, info: dict) -> dict:
+    """The model's row outputs (:attr:`rocking.models.base.Model.row_outputs`) of one run:
+    ``{name: {"value", "unit", "flag", "help"}}`` (a NaN value as None: never reached)."""
+    out = {}
+    for r in getattr(cls, "row_outputs", ()):
+        v = info.get(r.name)
+        if v is not None and not r.flag:
+            v = float(v)
+            v = v if math.isfinite(v) else None
+        out[r.name] = {"value": bool(v) if r.flag and v is not None else v, "unit": r.unit,
+                       "flag": bool(r.flag), "help": r.help}
+    return out
+
+
+def row_output_text(d: dict) -> str:
+    """One row output as text: ``yes: <help>``/``no`` (a flag), ``-`` (not reached), else the
+    value with its unit (an acceleration also in g; a ratio with its help)."""
+    v = d["value"]
+    if d["flag"]:
+        return "-" if v is None else (f"yes: {d['help']}" if v else "no")
+    if v is None:
+        return "-"
+    if d["unit"] == "m/s^2":
+        return f"{v:.6g} m/s^2 ({v / G:.4g} g)"
+    if not d["unit"]:
+        return f"{v:.6g} ({d['help']})"
+    return f"{v:.6g} {d['unit']}"
+
+
+def _text_lines(resp, block, model: str, linear: bool, mdesc: dict, fdesc, outputs: dict):
+    """The text report of one run: block, motion, max angle, outcome, the model's row
+    outputs."""
+    th = float(resp.max_abs_theta)
+    on = "" if fdesc is None else (
+        f" on {fdesc['where']} of the {fdesc['building']['name']} (peak floor acceleration "
+        f"{fdesc['floor_pga'] / G:.3g} g)")
+    lines = [f"block       {block!r}",
+             f"motion      {mdesc.get('repr', 'free rocking')}{on}  [{model}"
+             f"{', linear' if linear else ''}]",
+             f"max |theta| {math.degrees(th):.4g} deg ({th:.6g} rad, "
+             f"{th / block.alpha:.3g} alpha)",
+             f"overturned  yes, at t = {resp.overturn_time:.4g} s" if resp.overturned
+             else "overturned  no"]
+    up = "-" if math.isnan(resp.uplift_time) else f"t = {resp.uplift_time:.4g} s"
+    lines += [f"uplift      {up}", f"impacts     {resp.n_impacts}"]
+    if "vertical" in mdesc:
+        lo = ("-" if not resp.lifted_off else f"yes, at t = {resp.lift_off_time:.4g} s: "
+              "g + a_v <= 0, the block leaves the ground and the run stops there")
+        lines += [f"vertical    {mdesc['vertical']} x {mdesc['vertical_factor']:g} "
+                  f"(peak {mdesc['pga_vertical'] / G:.3g} g)", f"lift-off    {lo}"]
+    width = max((len(k) for k in outputs), default=0) + 2
+    lines += [f"{k:<{width}}{row_output_text(d)}" for k, d in outputs.items()]
+    return lines
 
 
 # ----------------------------------------------------------------------------- figure
@@ -619,5 +721,6 @@ def _theta_png(resp, block, mdesc, path, fdesc=None):
     save_figure(fig, path)
 
 
-__all__ = ["simulate_cmd", "make_motion", "model_options", "MOTION_CHOICES", "MotionChoice",
+__all__ = ["simulate_cmd", "make_motion", "model_options", "flag_options", "row_outputs",
+           "row_output_text", "FLAG_READERS", "FLAG_HELP", "MOTION_CHOICES", "MotionChoice",
            "make_building", "on_floor", "BUILDING_FLAGS"]
