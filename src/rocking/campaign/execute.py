@@ -77,12 +77,16 @@ def chunk_task(spec: CampaignSpec, k: int):
 
 
 def warm_up(spec: CampaignSpec) -> None:
-    """Load (or compile) the kernels of the spec's models: one short run each."""
+    """Load (or compile) the kernels of the models the spec runs: one short run each (with
+    the options of its first run, :attr:`CampaignSpec.runs`)."""
     from ..models import simulate_many
     from ..motions import Sine
-    for name in spec.models:
+    first = {}
+    for name, options in spec.runs:
+        first.setdefault(name, options)
+    for name, options in first.items():
         simulate_many(spec.blocks[0], [Sine.from_acceleration(2.0, 0.1, 0.05)], model=name,
-                      **spec.options.get(name, {}))
+                      **options)
 
 
 def setup_worker(spec: CampaignSpec, per_host: dict | None = None, dask_worker=None) -> dict:
@@ -284,18 +288,20 @@ def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:
     rng = np.random.default_rng(0)
     shape = spec.shape
     sampled = 0
-    for m, name in enumerate(spec.models):
+    runs = spec.runs  # the models, or the mitigations of the single model
+    for r, (name, _) in enumerate(runs):
         k = 4 if MODELS[name].slow else n_sample
-        idx = [np.full(k, m)] + [rng.integers(0, n, k) for n in
+        idx = [np.full(k, r)] + [rng.integers(0, n, k) for n in
                                  (shape[1], shape[2], k_prep, shape[4], shape[5])]
         ids = np.unique(np.ravel_multi_index(idx, shape))
         t0 = time.perf_counter()
         c.run_ids(ids)
-        seconds += (time.perf_counter() - t0) / ids.size * spec.n_sims / len(spec.models)
+        seconds += (time.perf_counter() - t0) / ids.size * spec.n_sims / len(runs)
         sampled += ids.size
-    axes = dict(zip(["models", "blocks", "floors", "motions", "levels", "samples"], shape,
-                    strict=True))
+    axes = {f"{k}s": v for k, v in spec.axes.items()}
     if spec.building is None:
         del axes["floors"]
+    if not spec.mitigations:
+        del axes["mitigations"]
     return {"n_sims": spec.n_sims, "n_chunks": spec.n_chunks, "chunk_size": spec.chunk_size,
             "shape": axes, "sampled": sampled, "estimated_seconds": seconds}

@@ -7,8 +7,17 @@ floor axis has size 1 without ``[building]``: the ids, columns and rows of such 
 those it had before buildings existed). A chunk is the contiguous range
 ``[k * chunk_size, (k + 1) * chunk_size)`` of ``sim_id``.
 
+With ``[[mitigation]]`` the axes are ``(models, mitigations, blocks, floors, motions,
+levels, samples)`` (:attr:`CampaignSpec.axes`; one model): a row runs its mitigation's
+model with its options (:attr:`CampaignSpec.runs`), ``model`` is that model and
+``mitigation`` (after ``model``) the entry's name.
+
 Random draws: simulation ``sim_id`` draws its uncertain parameters (and the table noise)
-from ``numpy.random.default_rng(SeedSequence(seed, spawn_key=(STREAM, sim_id)))``, and the
+from ``numpy.random.default_rng(SeedSequence(seed, spawn_key=(STREAM, draw_id)))``, where
+``draw_id`` (:meth:`Campaign.draw_ids`) is the flat index of the row over the axes without
+the mitigation axis: ``sim_id`` itself without ``[[mitigation]]``, and with it the same
+draws for every mitigation of a (block, floor, motion, level, sample): common random
+numbers, the mitigations are compared on the same realizations. The
 stochastic records are those of :func:`rocking.motions.stochastic_records` with the
 campaign seed (record ``j`` from ``spawn_key=(2, j)``). A row therefore depends on the spec
 and its ``sim_id`` only, never on the chunk size, the executor or the order of execution;
@@ -44,7 +53,7 @@ from ..analysis.ida import IMS, intensity
 from ..analysis.montecarlo import PARAMETERS, distributions, draw_parameters, perturbed
 from ..blocks import Block
 from ..errors import ParameterError
-from ..models import simulate_many
+from ..models import MODELS, simulate_many
 from ..motions import GroundMotion, HanningSine, Motion, Record, Sine, catalog, sample
 from .spec import CampaignSpec, building_model, motion_kind, motion_value, nominal
 
@@ -54,9 +63,23 @@ KEEP = 2000
 """Motions a worker keeps built between chunks (beyond: only the current chunk's)."""
 RESULT_COLUMNS = ("max_abs_theta", "max_abs_theta_over_alpha", "overturned", "overturn_time",
                   "uplift_time", "n_impacts", "settled", "damage_state", "status")
+"""The result columns of every campaign; after them, the row outputs of the models run
+(:func:`row_output_columns`)."""
 VERTICAL_COLUMNS = ("lift_off_time", "lifted_off")
 """Result columns of motions with a vertical component (``vertical`` kinds of the catalog),
 after ``settled``: ``lift_off_time`` (s, NaN if none) and ``lifted_off``."""
+
+
+def row_output_columns(models) -> dict:
+    """The row outputs (:attr:`rocking.models.base.Model.row_outputs`) of ``models`` (names
+    of :data:`rocking.models.MODELS`), their union in the order of first appearance:
+    ``{name: RowOutput}``. A campaign's table has one column each after the result
+    columns: NaN (a value) or False (a flag) in the rows of models without it."""
+    out = {}
+    for m in models:
+        for o in MODELS[m].row_outputs:
+            out.setdefault(o.name, o)
+    return out
 
 
 def _pga(mo: Motion) -> float | None:
@@ -233,7 +256,8 @@ class Campaign:
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         if ids.size and not (ids.min() >= 0 and ids.max() < self.n_sims):
             raise ParameterError(f"sim ids must lie in [0, {self.n_sims - 1}]")
-        mi, bi, fi, ji, li, si = np.unravel_index(ids, s.shape)
+        ri, bi, fi, ji, li, si = np.unravel_index(ids, s.shape)
+        draws = self.draw_ids(ids)
         self.motions.prepare(ji)
         self.motions.prepare_floors(fi, ji)
         n = ids.size
@@ -250,7 +274,7 @@ class Campaign:
             lf[r] = scale
             if uncertain:
                 rng = np.random.default_rng(np.random.SeedSequence(
-                    s.seed, spawn_key=(STREAM, int(ids[r]))))
+                    s.seed, spawn_key=(STREAM, int(draws[r]))))
                 v, truncated[r] = draw_parameters(nom, self._dists[b], rng)
                 if uncertain.keys() & {"alpha", "p", "mu"}:
                     block = Block.from_params(v["alpha"], v["p"], v["mu"], name=block.name)
@@ -266,8 +290,11 @@ class Campaign:
                 floor_pga[r] = self.motions.floor_pga(f, j) * abs(scale * v["amplitude"])
             blocks.append(block)
             motions.append(mo)
+        runs = s.runs
         table = pd.DataFrame({
-            "sim_id": ids, "model": np.array(s.models, dtype=object)[mi],
+            "sim_id": ids, "model": np.array([m for m, _ in runs], dtype=object)[ri],
+            **({"mitigation": np.array([m.name for m in s.mitigations], dtype=object)[ri]}
+               if s.mitigations else {}),
             "block": bi.astype(np.int64),
             "block_name": np.array([b.name for b in s.blocks], dtype=object)[bi],
             **self._floor_columns(fi),
@@ -283,6 +310,19 @@ class Campaign:
             **({"floor_pga": floor_pga} if s.building is not None else {}),
         })
         return table, blocks, motions
+
+    def draw_ids(self, ids) -> np.ndarray:
+        """The ids of the random streams of simulations ``ids``: the flat index over the
+        axes without the mitigation axis (``ids`` themselves without ``[[mitigation]]``):
+        every mitigation of a (model, block, floor, motion, level, sample) draws the same
+        uncertain parameters (common random numbers)."""
+        ids = np.asarray(ids, dtype=np.int64).reshape(-1)
+        a = self.spec.axes
+        if a["mitigation"] == 1:
+            return ids
+        idx = list(np.unravel_index(ids, tuple(a.values())))
+        del idx[1]
+        return np.ravel_multi_index(idx, tuple(v for k, v in a.items() if k != "mitigation"))
 
     def _floor_columns(self, fi: np.ndarray) -> dict:
         """``floor`` (the floor number; with ``height_ratios`` its index there) and
@@ -310,8 +350,10 @@ class Campaign:
         numerically and its ``max_abs_theta`` is NaN). Motions with a vertical component
         (a ``vertical`` kind of the catalog) add :data:`VERTICAL_COLUMNS` after
         ``settled``: ``lift_off_time`` (s, NaN if none: the run stops when the block leaves
-        the ground) and ``lifted_off``.
+        the ground) and ``lifted_off``. Then the row outputs of the models run
+        (:func:`row_output_columns`; none if no model has any).
         """
+        ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         table, blocks, motions = self.inputs(ids)
         n = len(table)
         out = {"max_abs_theta": np.full(n, np.nan), "overturned": np.zeros(n, bool),
@@ -320,17 +362,24 @@ class Campaign:
                "status": np.zeros(n, np.int64)}
         if self.motions.kind.vertical:
             out |= {"lift_off_time": np.full(n, np.nan), "lifted_off": np.zeros(n, bool)}
-        models = table["model"].to_numpy()
+        extra = row_output_columns(self.spec.run_models)
+        rows_out = {k: np.zeros(n, bool) if o.flag else np.full(n, np.nan)
+                    for k, o in extra.items()}
+        runs = self.spec.runs
+        ri = np.unravel_index(ids, self.spec.shape)[0]
         theta0 = table["theta0"].to_numpy()
-        for name in dict.fromkeys(models):
-            idx = np.flatnonzero(models == name)
+        for r in dict.fromkeys(ri.tolist()):
+            idx = np.flatnonzero(ri == r)
+            name, options = runs[r]
             res = simulate_many([blocks[i] for i in idx], [motions[i] for i in idx],
                                 model=name, duration=self.spec.duration,
                                 max_free_time=self.spec.max_free_time,
                                 theta0=theta0[idx] if theta0[idx].any() else 0.0,
-                                errors="nan", **self.spec.options.get(name, {}))
+                                errors="nan", **options)
             for k in out:
                 out[k][idx] = getattr(res, k)
+            for k, v in res.outputs.items():
+                rows_out[k][idx] = v
         table = table.assign(**out)
         table["max_abs_theta_over_alpha"] = table["max_abs_theta"] / table["alpha"]
         ok = table["status"].to_numpy() == 0
@@ -344,7 +393,8 @@ class Campaign:
         if self.motions.kind.vertical:
             k = results.index("settled") + 1
             results[k:k] = VERTICAL_COLUMNS
-        return table[[c for c in table.columns if c not in results] + results]
+        table = table[[c for c in table.columns if c not in results] + results]
+        return table.assign(**rows_out) if rows_out else table
 
     def run_chunk(self, k: int) -> pd.DataFrame:
         """Simulate chunk ``k`` (:meth:`run_ids` over its range)."""

@@ -24,6 +24,13 @@ floors were given by height), each floor is a curve of its own in the plots, and
 columns the floors) before the per-floor tables. The IM of a floor's runs is the ground's
 (the campaign scaled the ground motion).
 
+A table with a ``mitigation`` column (a campaign with ``[[mitigation]]``) is grouped by
+(mitigation, block, floor): every file above has a ``mitigation`` column after ``model``,
+the fragility sections and plots are one per mitigation (``p_overturn_<mitigation>.png``),
+and ``report.md`` begins its tables with P(overturn) by mitigation per block (rows the
+levels, columns the mitigations: the same realizations, common random numbers). The
+comparison itself (risk reduction, hazard) is :mod:`rocking.analysis.mitigation`'s.
+
 The IM is the table's ``im`` column when the campaign scaled its motions to intensity
 levels (name and unit from ``manifest["im"]``, so every run of a level has the same IM),
 else the PGA of each run as run (``pga``, m/s^2): the points of a level are then drawn at
@@ -152,6 +159,13 @@ def _group_name(name: str, key: dict) -> str:
     """A group's name: the block's, and its floor if there is a floor axis."""
     where = _where(key)
     return f"{name}, {where}" if where else str(name)
+
+
+def _run_name(key: dict) -> str:
+    """What a group ran: its mitigation and model (``isolated-2.5s (isolated)``), or its
+    model."""
+    m = key.get("mitigation")
+    return str(key["model"]) if m is None else f"{m} ({key['model']})"
 
 
 def _im_label(im: dict) -> str:
@@ -372,20 +386,23 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
            "## Overturning fragility", "",
            "Lognormal curves P(overturn | IM) = Phi(ln(IM / median) / beta), maximum "
            "likelihood over the runs (stripes, Baker 2015); ± one standard error.", ""]
-    for model, f in fr[fr["fit"] == "overturning"].groupby("model", sort=False):
-        out += [f"### {model}", ""]
+    by = "mitigation" if "mitigation" in fr.columns else "model"
+    for _, f in fr[fr["fit"] == "overturning"].groupby(by, sort=False):
+        out += [f"### {_run_name(f.iloc[0].to_dict())}", ""]
         rows = [[_group_name(r.block_name, r._asdict()), _pm(r.median, r.median_se, 3),
                  _pm(r.beta, r.beta_se, 2), str(r.n), str(r.n_exceed), r.note or ""]
                 for r in f.itertuples()]
         out += _md_table(["block", f"median{unit}", "beta", "runs", "overturned", "note"],
                          rows)
+    out += _by_mitigation(po, unit)
     out += _by_floor(po, unit)
     out += ["## P(overturn) per level", "",
             "Wilson 95% intervals; ratio: median max|theta|/alpha of the survivors; "
             "P(DS>=k) with the manifest's thresholds (the last state is overturning).", ""]
-    keys = ["model", "block_name", *(["floor"] if "floor" in po.columns else [])]
+    keys = ["model", *(["mitigation"] if "mitigation" in po.columns else []), "block_name",
+            *(["floor"] if "floor" in po.columns else [])]
     for _, d in po.groupby(keys, sort=False):
-        out += [f"### {d['model'].iloc[0]}, "
+        out += [f"### {_run_name(d.iloc[0].to_dict())}, "
                 f"{_group_name(d['block_name'].iloc[0], d.iloc[0].to_dict())}", ""]
         rows = [[str(r["level"]), _g(r["im"]), str(r["n"]), str(r["n_overturned"]),
                  _g(r["p_overturn"]), f"{_g(r['ci_lower'], 2)}–{_g(r['ci_upper'], 2)}",
@@ -402,6 +419,29 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
     return "\n".join(out)
 
 
+def _by_mitigation(po: pd.DataFrame, unit: str) -> list[str]:
+    """P(overturn) by mitigation: per (block, floor) a table with a row per level and a
+    column per mitigation (none without a mitigation column)."""
+    if "mitigation" not in po.columns:
+        return []
+    out = ["## P(overturn) by mitigation", "",
+           "Overturned fraction of each level (rows) for each mitigation (columns), runs "
+           "that did not fail numerically; every mitigation ran the same realizations "
+           "(common random numbers). The same runs as the per-level tables below.", ""]
+    where = [c for c in ("floor", "height_ratio") if c in po.columns]
+    names = list(dict.fromkeys(po["mitigation"]))
+    for _, d in po.groupby(["block", *where[:1]], sort=False):
+        rows = []
+        for lv, g in d.groupby("level", sort=True):
+            p = {r["mitigation"]: f"{_g(r['p_overturn'])} ({r['n_overturned']}/{r['n']})"
+                 for _, r in g.iterrows()}
+            rows.append([str(lv), _g(g["im"].median()), *(p.get(m, "–") for m in names)])
+        first = d.iloc[0].to_dict()
+        out += [f"### {_group_name(first['block_name'], first)}", ""]
+        out += _md_table(["level", f"IM{unit}", *names], rows)
+    return out
+
+
 def _by_floor(po: pd.DataFrame, unit: str) -> list[str]:
     """P(overturn) by floor: per (model, block) a table with a row per level and a column
     per floor (none without a floor axis)."""
@@ -410,7 +450,9 @@ def _by_floor(po: pd.DataFrame, unit: str) -> list[str]:
     out = ["## P(overturn) by floor", "",
            "P(overturn) of each level (rows; the ground motion's IM) on each floor "
            "(columns); the same runs as the per-floor tables below.", ""]
-    for (model, name), d in po.groupby(["model", "block_name"], sort=False):
+    runs = ["model", *(["mitigation"] if "mitigation" in po.columns else [])]
+    for _, d in po.groupby([*runs, "block_name"], sort=False):
+        model, name = _run_name(d.iloc[0].to_dict()), d["block_name"].iloc[0]
         floors = d.drop_duplicates("floor").sort_values("floor")
         heads = [_where(r.to_dict()) for _, r in floors.iterrows()]
         rows = []
@@ -453,11 +495,14 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
                      "excluded")
     po_parts, fr_rows, pel_rows, by_model = [], [], [], {}
     floor = [c for c in ("floor", "height_ratio") if c in t.columns]
-    for _, g in t.groupby(["model", "block", *floor[:1]], sort=False):
+    mit = ["mitigation"] if "mitigation" in t.columns else []
+    for _, g in t.groupby(["model", *mit, "block", *floor[:1]], sort=False):
         model, block = g["model"].iloc[0], g["block"].iloc[0]
-        key = {"model": model, "block": int(block), "block_name": str(g["block_name"].iloc[0]),
+        key = {"model": model, **{c: str(g[c].iloc[0]) for c in mit}, "block": int(block),
+               "block_name": str(g["block_name"].iloc[0]),
                **{c: g[c].iloc[0].item() for c in floor}}
         name = _group_name(key["block_name"], key)
+        model = _run_name(key)  # with its mitigation, in the notes and the plots
         pt = _p_overturn(g, im["column"], n_states)
         po_parts.append(pt.assign(**key)[[*key, *pt.columns]])
         ok = g[g["status"] == 0]
@@ -487,7 +532,8 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         files.append(out / "pelicun.csv")
     images = []
     for model, groups in by_model.items():
-        p = _plot_model(model, groups, im, out / f"p_overturn_{_safe(model)}.png",
+        stem = _safe(groups[0][0].get("mitigation", model))
+        p = _plot_model(model, groups, im, out / f"p_overturn_{stem}.png",
                         blocks=manifest.get("blocks"))
         images.append((model, p))
         files.append(p)
@@ -509,7 +555,7 @@ def summary_lines(result: dict) -> list[str]:
              f"excluded); IM: {_im_label(im)}", *result.get("run_alerts", ())]
     fr = result["fragility"]
     for r in fr[fr["fit"] == "overturning"].itertuples():
-        head = f"{r.model} / {_group_name(r.block_name, r._asdict())}:"
+        head = f"{_run_name(r._asdict())} / {_group_name(r.block_name, r._asdict())}:"
         if math.isfinite(r.median):
             lines.append(f"{head} overturning median {_g(r.median)}{unit} "
                          f"(± {_g(r.median_se, 2)}), beta {_g(r.beta, 2)} "

@@ -40,6 +40,19 @@
     damping_ratio = "5%"
     floors = "all"                # or a list, 0 the ground; or height_ratios (continuous)
 
+    [[mitigation]]                # optional: the mitigation axis, one table per entry
+    name = "none"                 # the block as it stands: the campaign's model
+    [[mitigation]]
+    name = "isolated-2.5s"
+    model = "isolated"            # the model this entry runs
+    isolation_period = "2.5s"     # any option of that model (a quantity with its unit,
+    isolation_damping = "10%"     # or a number in the option's SI unit)
+    clearance = "0.15m"
+    [[mitigation]]
+    name = "anchored"
+    model = "anchored"
+    anchor_strength = 0.3
+
 Every key is listed by :func:`keys_table` (the README's table, generated from the motion
 catalog and the block factory). ``[motions]``: ``kind`` names a catalog entry
 (:data:`rocking.motions.catalog.KINDS`) and the other keys are its parameters; one
@@ -71,6 +84,26 @@ the ground motion; a block feels the absolute floor acceleration
 (:class:`rocking.buildings.FloorMotion`). The intensity axis scales the ground motion:
 every floor of a level has the same ground intensity (``pga``, ``im``, ``load_factor``),
 and ``floor_pga`` is the peak floor acceleration of the run's motion.
+
+``[[mitigation]]`` (optional; issue 19) compares ways of making the block safe on the same
+runs. Each entry has a ``name`` (required, unique, at most :data:`MAX_NAME` characters:
+the table's ``mitigation`` column), a ``model`` (default: the campaign's model, which must
+then be a single one: a list of models with ``[[mitigation]]`` is refused, each entry
+names the model it runs) and any option of that model, merged over ``[options.<model>]``
+and checked by the model's ``Options``. An entry is nothing more than a model and its
+options: an entry without ``model`` runs the campaign's model (the block as it stands,
+"none" by convention) and may set its options too (a variant of it). Model options given
+as strings with a unit (``"2.5s"``, ``"0.15m"``, ``"10%"``) are converted to the option's
+SI unit (:func:`option_values`), here and in ``[options.<model>]``.
+
+The mitigation axis comes right after the model axis: ``(models, mitigations, blocks,
+floors, motions, levels, samples)`` (:attr:`CampaignSpec.axes`); it has size 1 without
+``[[mitigation]]``, so that a spec without it keeps its ``sim_id``, rows and columns.
+The table then has a ``mitigation`` column (the entry's name) after ``model`` (the model
+actually run), and the row outputs of every model run (``Model.row_outputs``) after the
+result columns. The uncertain draws of a row do not depend on its mitigation (common
+random numbers, :mod:`rocking.campaign.plan`): the mitigations are compared on the same
+realizations.
 """
 
 from __future__ import annotations
@@ -100,8 +133,10 @@ from ..errors import ParameterError, RockingError, SpecError
 from ..models.registry import MODELS
 from ..motions import catalog
 from ..options import check_option
+from ..units import parse_quantity
 
-SECTIONS = {"campaign", "blocks", "motions", "uncertain", "run", "options", "building"}
+SECTIONS = {"campaign", "blocks", "motions", "uncertain", "run", "options", "building",
+            "mitigation"}
 CAMPAIGN_KEYS = {
     "name": "the campaign's name (required)",
     "seed": "every random draw derives from (seed, sim_id); integer >= 0 (required)",
@@ -154,6 +189,19 @@ FLOOR_KEYS = {
 """The keys of ``[building]`` that set the floor axis (the others are the building's)."""
 MAX_SIMS = 2 ** 63 - 1
 """Most simulations of a campaign: ``sim_id`` is an int64."""
+MITIGATION_KEYS = {
+    "name": "the entry's name, unique, at most 64 characters: the table's mitigation column "
+            "(required)",
+    "model": "the model this entry runs (default: the campaign's model, a single one)",
+    "(options)": "any option of that model (`rocking models`), merged over "
+                 "[options.<model>]; a quantity may carry its unit (\"2.5s\", \"0.15m\", "
+                 "\"10%\")",
+}
+"""The keys of a ``[[mitigation]]`` entry."""
+MAX_NAME = 64
+"""Longest ``[[mitigation]]`` name."""
+AXES = ("model", "mitigation", "block", "floor", "motion", "level", "sample")
+"""The axes of a campaign's table, in the order of ``sim_id`` (the last fastest)."""
 
 
 def _fail(key: str, msg: str) -> NoReturn:
@@ -648,6 +696,23 @@ class CampaignSpec:
     building: dict | None = None
     """The checked ``[building]`` (:func:`building_model` builds it), or None: the blocks
     stand on the ground."""
+    mitigations: tuple = ()
+    """The checked ``[[mitigation]]`` entries (:class:`Mitigation`), or ``()``: none given
+    (the mitigation axis has size 1 and the table no ``mitigation`` column)."""
+
+    @property
+    def runs(self) -> tuple[tuple[str, dict], ...]:
+        """``(model, options)`` of each index of the first axis of :attr:`shape` (the
+        models, or with ``[[mitigation]]`` the mitigations of the single model): what a row
+        runs."""
+        if self.mitigations:
+            return tuple((m.model, m.options) for m in self.mitigations)
+        return tuple((m, self.options.get(m, {})) for m in self.models)
+
+    @property
+    def run_models(self) -> tuple[str, ...]:
+        """The models the campaign runs, in the order of their first appearance."""
+        return tuple(dict.fromkeys(m for m, _ in self.runs))
 
     @property
     def hash(self) -> str:
@@ -684,13 +749,25 @@ class CampaignSpec:
         return [0] if self.building is None else list(self.building["values"])
 
     @property
+    def axes(self) -> dict[str, int]:
+        """The size of each axis of :data:`AXES` (``model``, ``mitigation``, ``block``,
+        ``floor``, ``motion``, ``level``, ``sample``), in the order of ``sim_id`` (the last
+        fastest): the mitigation axis has size 1 without ``[[mitigation]]`` and the floor
+        axis without ``[building]``, so that the ids of a spec without them are those of
+        the other axes."""
+        return dict(zip(AXES, (len(self.models), max(1, len(self.mitigations)),
+                               len(self.blocks), len(self.floors), self.n_motions,
+                               self.levels.size, self.samples), strict=True))
+
+    @property
     def shape(self) -> tuple[int, int, int, int, int, int]:
-        """``(models, blocks, floors, motions, levels, samples)``: the axes of the
-        simulation table, ``sim_id`` running fastest over the last (the floor axis has size
-        1 without ``[building]``: the ids of a spec without it are those of the five other
-        axes)."""
-        return (len(self.models), len(self.blocks), len(self.floors), self.n_motions,
-                self.levels.size, self.samples)
+        """``(runs, blocks, floors, motions, levels, samples)``: the axes of the
+        simulation table, ``sim_id`` running fastest over the last; ``runs`` is the model
+        axis, or with ``[[mitigation]]`` (one model) the mitigation axis: :attr:`runs`.
+        The same ids as :attr:`axes` (one of the model and mitigation axes has size 1)."""
+        a = self.axes
+        return (a["model"] * a["mitigation"], a["block"], a["floor"], a["motion"],
+                a["level"], a["sample"])
 
     @property
     def n_sims(self) -> int:
@@ -750,7 +827,7 @@ def _campaign(raw: dict) -> dict:
     return out
 
 
-def _uncertain(raw: dict, c: dict, blocks: tuple, motions: dict) -> dict:
+def _uncertain(raw: dict, c: dict, blocks: tuple, motions: dict, models: tuple) -> dict:
     """The checked ``[uncertain]`` table (each distribution against each block)."""
     uncertain = _table("uncertain", raw.get("uncertain", {}))
     _known("uncertain", uncertain, PARAMETERS)
@@ -769,7 +846,7 @@ def _uncertain(raw: dict, c: dict, blocks: tuple, motions: dict) -> dict:
                                   "would be identical runs (give [uncertain] parameters, or "
                                   "samples = 1)")
     geometry = sorted(set(uncertain) & {"alpha", "p", "mu", "theta0"})
-    if geometry and "dem" in c["models"]:
+    if geometry and "dem" in models:
         _fail(f"uncertain.{geometry[0]}", "not supported with model 'dem' (its geometry and "
                                           "contacts define alpha, p and mu; it starts at rest)")
     if "noise" in uncertain and motion_kind(motions).vertical:
@@ -778,12 +855,15 @@ def _uncertain(raw: dict, c: dict, blocks: tuple, motions: dict) -> dict:
     return uncertain
 
 
-def _check_size(c: dict, blocks: tuple, motions: dict, building: dict | None) -> None:
+def _check_size(c: dict, blocks: tuple, motions: dict, building: dict | None,
+                n_mitigations: int = 0) -> None:
     floors = [0] if building is None else building["values"]
-    shape = (len(c["models"]), len(blocks), len(floors), n_motions(motions),
+    shape = (len(c["models"]) * max(1, n_mitigations), len(blocks), len(floors),
+             n_motions(motions),
              len(motions.get("levels", motions.get("load_factors", []))), c["samples"])
     if math.prod(shape) > MAX_SIMS:
-        axes = {"campaign.model": shape[0], "blocks": shape[1],
+        axes = {"mitigation" if n_mitigations else "campaign.model": shape[0],
+                "blocks": shape[1],
                 f"building.{building['axis']}s" if building else "building": shape[2],
                 f"motions.{motions['axis']}": shape[3],
                 "motions.levels" if "levels" in motions else "motions.load_factors": shape[4],
@@ -803,26 +883,132 @@ def _run(raw: dict) -> tuple[int, int | None]:
     return chunk, window
 
 
-def _options(raw: dict, models: tuple) -> dict:
+QUANTITIES = {"m": "length", "s": "time", "m/s^2": "acceleration", "Hz": "frequency",
+              "rad": "angle", "": "ratio"}
+"""The quantity (:data:`rocking.units.KINDS`) of a model option's SI unit: a string with a
+unit given for an option that declares no ``quantity`` is read as this one."""
+
+
+def option_values(model: str, values: dict, key: str) -> dict:
+    """``values`` (options of ``model``) with every string that carries a unit (``"2.5s"``,
+    ``"0.15m"``, ``"10%"``) converted to the option's SI unit (the quantity of
+    :data:`QUANTITIES`), where the option declares no ``quantity`` of its own (those the
+    model's ``Options`` convert); a bare number in a string is refused. Errors name
+    ``key.<option>``."""
+    fields = {f.name: f.metadata for f in dataclasses.fields(MODELS[model].Options)}
+    out = dict(values)
+    for name, v in values.items():
+        m = fields.get(name)
+        if not (isinstance(v, str) and m and m.get("kind") is float
+                and not m.get("quantity") and m.get("unit", "") in QUANTITIES):
+            continue
+        try:
+            out[name] = parse_quantity(v, QUANTITIES[m.get("unit", "")], name=name)
+        except ParameterError as e:
+            _fail(f"{key}.{name}", f"{str(e).removeprefix(name).lstrip(': ')} (the option "
+                                   f"is in {m.get('unit') or 'a ratio'})")
+    return out
+
+
+def _build_options(model: str, values: dict, key: str, given=None) -> None:
+    """Check ``values`` with the model's ``Options``; an error names ``key.<option>`` when
+    the option is among ``given`` (default: all of ``values``), else ``key``."""
+    given = values if given is None else given
+    try:
+        MODELS[model].Options.build(model, **values)
+    except (TypeError, RockingError) as e:
+        msg = str(e).splitlines()[0]
+        opt = msg.split(" ", 1)[0]
+        if opt in given and " " in msg:  # "rest_tol must be ...": name the option's key
+            _fail(f"{key}.{opt}", msg.split(" ", 1)[1])
+        _fail(key, msg)
+
+
+def _options(raw: dict, models) -> dict:
     opts = _table("options", raw.get("options", {}))
     _known("options", opts, models)
     options = {}
     for m, o in opts.items():
-        o = _table(f"options.{m}", o)
-        try:
-            MODELS[m].Options.build(m, **o)
-        except (TypeError, RockingError) as e:
-            msg = str(e).splitlines()[0]
-            opt = msg.split(" ", 1)[0]
-            if opt in o and " " in msg:  # "rest_tol must be ...": name the option's key
-                _fail(f"options.{m}.{opt}", msg.split(" ", 1)[1])
-            _fail(f"options.{m}", msg)
+        o = option_values(m, _table(f"options.{m}", o), f"options.{m}")
+        _build_options(m, o, f"options.{m}")
         options[m] = dict(o)
     return options
 
 
-def _usable(models: tuple, blocks: tuple, options: dict) -> None:
-    """Each block must suit each model (the DEM needs a geometry; a stack, the DEM)."""
+class Mitigation(NamedTuple):
+    """A checked ``[[mitigation]]`` entry: its ``name``, the ``model`` it runs and that
+    model's ``options`` (``[options.<model>]`` with the entry's own over them, SI)."""
+
+    name: str
+    model: str
+    options: dict
+
+
+def _mitigation_entries(raw: dict, c: dict) -> list[tuple[str, str, dict, bool]]:
+    """The ``[[mitigation]]`` entries checked for their form, names and models:
+    ``(name, model, own options, model given)`` each; ``[]`` without the section."""
+    if "mitigation" not in raw:
+        return []
+    t = raw["mitigation"]
+    if isinstance(t, dict):
+        _fail("mitigation", "must be [[mitigation]] tables, one per mitigation (write "
+                            "[[mitigation]], not [mitigation])")
+    if not isinstance(t, list) or not t:
+        _fail("mitigation", "must be one or more [[mitigation]] tables")
+    if len(c["models"]) > 1:
+        _fail("campaign.model", f"must be a single model with [[mitigation]], got "
+                                f"{len(c['models'])} (each entry names the model it runs, "
+                                "and an entry without model runs the campaign's)")
+    entries, seen = [], {}
+    for i, e in enumerate(t):
+        key = f"mitigation[{i}]"
+        e = _table(key, e)
+        if "name" not in e:
+            _fail(f"{key}.name", "missing (a short name: the table's mitigation column)")
+        name = _string(f"{key}.name", e["name"])
+        if not name.strip() or len(name) > MAX_NAME:
+            _fail(f"{key}.name", f"must be 1 to {MAX_NAME} characters, not blank; got "
+                                 f"{name!r}")
+        if name in seen:
+            _fail(f"{key}.name", f"{name!r} is already the name of mitigation[{seen[name]}] "
+                                 "(names are unique)")
+        seen[name] = i
+        model = (_string(f"{key}.model", e["model"], tuple(MODELS)) if "model" in e
+                 else c["models"][0])
+        own = {k: v for k, v in e.items() if k not in ("name", "model")}
+        _known(key, own, {"name", "model", *MODELS[model].Options.names()})
+        entries.append((name, model, own, "model" in e))
+    return entries
+
+
+def _mitigations(entries: list, options: dict) -> tuple[Mitigation, ...]:
+    """The checked entries: each one's options (SI) merged over ``[options.<model>]`` and
+    checked by its model's ``Options``."""
+    out = []
+    for i, (name, model, own, _) in enumerate(entries):
+        key = f"mitigation[{i}]"
+        own = option_values(model, own, key)
+        merged = {**options.get(model, {}), **own}
+        _build_options(model, merged, key, own)
+        out.append(Mitigation(name, model, merged))
+    return tuple(out)
+
+
+def _usable(models: tuple, blocks: tuple, options: dict, entries=(),
+            mitigations=()) -> None:
+    """Each block must suit each model run (the DEM needs a geometry; a stack, the DEM)."""
+    if mitigations:
+        for i, ((_, _, _, given), mit) in enumerate(zip(entries, mitigations, strict=True)):
+            for j, b in enumerate(blocks):
+                try:
+                    MODELS[mit.model].from_kwargs(b, **mit.options)
+                except RockingError as e:
+                    if given:
+                        _fail(f"mitigation[{i}].model", f"model {mit.model!r} cannot take "
+                                                        f"blocks[{j}] ({b.name}): {e}")
+                    _fail(f"blocks[{j}]", f"not usable with model {mit.model!r} (of "
+                                          f"mitigation[{i}] {mit.name!r}): {e}")
+        return
     for m in models:
         for i, b in enumerate(blocks):
             try:
@@ -843,18 +1029,22 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
     if "motions" not in raw:
         _fail("motions", "missing (a [motions] table with kind)")
     motions = _motions(raw["motions"], Path(base_dir).resolve(), c["seed"])
-    uncertain = _uncertain(raw, c, blocks, motions)
+    entries = _mitigation_entries(raw, c)
+    run_models = tuple(dict.fromkeys(e[1] for e in entries)) if entries else c["models"]
+    uncertain = _uncertain(raw, c, blocks, motions, run_models)
     building = _building(raw)
-    _check_size(c, blocks, motions, building)
+    _check_size(c, blocks, motions, building, len(entries))
     chunk, window = _run(raw)
-    options = _options(raw, c["models"])
-    _usable(c["models"], blocks, options)
+    options = _options(raw, tuple(dict.fromkeys(c["models"] + run_models)))
+    mitigations = _mitigations(entries, options)
+    _usable(c["models"], blocks, options, entries, mitigations)
     return CampaignSpec(name=c["name"], seed=c["seed"], models=c["models"],
                         duration=c["duration"], samples=c["samples"],
                         thresholds=c["thresholds"], blocks=blocks, motions=motions,
                         uncertain=uncertain, chunk_size=chunk, window=window, options=options,
                         text=text, raw=raw, base_dir=str(Path(base_dir).resolve()),
-                        max_free_time=c["max_free_time"], building=building)
+                        max_free_time=c["max_free_time"], building=building,
+                        mitigations=mitigations)
 
 
 def read_spec(path) -> CampaignSpec:
@@ -951,7 +1141,12 @@ def keys_table() -> str:
     out += ["", "**`[run]`**", ""] + _rows(["key", "meaning"],
                                           [[f"`{k}`", h] for k, h in RUN_KEYS.items()])
     out += ["", "**`[options.<model>]`**: the model's options, as `rocking models` lists "
-            "them."]
+            "them (a quantity may carry its unit: `\"2.5s\"`, `\"0.15m\"`, `\"10%\"`)."]
+    out += ["", "**`[[mitigation]]`** (optional): one table per mitigation, the mitigation "
+            "axis (after the model axis; `campaign.model` then a single model); the table "
+            "gets a `mitigation` column and the models' row outputs:", ""]
+    out += _rows(["key", "meaning"], [[f"`{k}`" if k[0] != "(" else k, h]
+                                      for k, h in MITIGATION_KEYS.items()])
     out += ["", "**`[building]`** (optional): the blocks stand on floors of a building "
             "(`rocking buildings`); `kind` and that kind's keys, and the floor axis. The "
             "levels scale the ground motion (the same ground intensity on every floor):", ""]

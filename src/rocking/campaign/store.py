@@ -94,13 +94,24 @@ def record_name(k: int) -> str:
 
 
 def _axes(spec: CampaignSpec) -> dict:
-    """``axes`` and ``shape``: without a building, the five axes of the stores written
-    before buildings existed (the floor axis has size 1)."""
-    axes = ["model", "block", "floor", "motion", "level", "sample"]
-    shape = list(spec.shape)
+    """``axes`` and ``shape``: the axes of :attr:`CampaignSpec.axes`, without the floor
+    axis when there is no building and without the mitigation axis when there is no
+    ``[[mitigation]]`` (the five axes of the stores written before either existed)."""
+    a = spec.axes
     if spec.building is None:
-        del axes[2], shape[2]
-    return {"axes": axes, "shape": shape}
+        del a["floor"]
+    if not spec.mitigations:
+        del a["mitigation"]
+    return {"axes": list(a), "shape": list(a.values())}
+
+
+def _mitigations(spec: CampaignSpec) -> dict:
+    """The manifest's ``mitigations`` (each entry's name, model and options, SI); nothing
+    without ``[[mitigation]]``."""
+    if not spec.mitigations:
+        return {}
+    return {"mitigations": [{"name": m.name, "model": m.model, "options": m.options}
+                            for m in spec.mitigations]}
 
 
 def _building(spec: CampaignSpec) -> dict:
@@ -116,7 +127,8 @@ def _building(spec: CampaignSpec) -> dict:
 
 def manifest_for(spec: CampaignSpec) -> dict:
     """The manifest of a store for ``spec`` (with a building: ``building`` and ``floors``
-    or ``height_ratios``, after ``motions``)."""
+    or ``height_ratios``, after ``motions``; with ``[[mitigation]]``: ``mitigations``
+    after ``models``, and the ``mitigation`` axis)."""
     from ..analysis.ida import IMS
     from .plan import STREAM
     return {
@@ -129,6 +141,7 @@ def manifest_for(spec: CampaignSpec) -> dict:
         "n_chunks": spec.n_chunks,
         **_axes(spec),
         "models": list(spec.models),
+        **_mitigations(spec),
         "blocks": [{"name": b.name, "alpha": nominal(b).alpha, "p": nominal(b).p,
                     "mu": nominal(b).mu} for b in spec.blocks],  # a stack: its top block
         "motions": spec.motions,
@@ -141,11 +154,29 @@ def manifest_for(spec: CampaignSpec) -> dict:
         "max_free_time": spec.max_free_time,
         "seeds": {
             "campaign_seed": spec.seed,
-            "simulation": f"SeedSequence({spec.seed}, spawn_key=({STREAM}, sim_id))",
+            "simulation": (f"SeedSequence({spec.seed}, spawn_key=({STREAM}, draw_id)): "
+                           "draw_id the flat index over the axes without the mitigation "
+                           "axis (common random numbers)" if spec.mitigations else
+                           f"SeedSequence({spec.seed}, spawn_key=({STREAM}, sim_id))"),
             "stochastic_records": f"SeedSequence({spec.seed}, spawn_key=(2, motion))",
         },
         "spec_dir": str(spec.base_dir),
     }
+
+
+def _other_mitigations(m: dict, spec: CampaignSpec) -> str:
+    """``; mitigations ... here, ... in this spec`` when they differ, else ``""``."""
+    theirs = m.get("mitigations") or []
+    ours = _mitigations(spec).get("mitigations", [])
+    if json.loads(json.dumps(theirs, default=str)) == json.loads(json.dumps(ours,
+                                                                             default=str)):
+        return ""
+
+    def names(x):
+        return ", ".join(str(e.get("name")) if isinstance(e, dict) else "?" for e in x) \
+            or "none"
+    return f"; mitigations: {names(theirs)} in the store, {names(ours)} in this spec" + (
+        " (other options)" if names(theirs) == names(ours) else "")
 
 
 class ManifestError(StoreError):
@@ -300,8 +331,8 @@ class Store:
             if m.get("spec_hash") != spec.hash:
                 raise StoreError(f"{self.path} holds a different campaign (spec hash "
                                  f"{str(m.get('spec_hash', '?'))[:12]}, this spec "
-                                 f"{spec.hash[:12]}): use another --out, or delete the "
-                                 "store to start again")
+                                 f"{spec.hash[:12]}{_other_mitigations(m, spec)}): use "
+                                 "another --out, or delete the store to start again")
             if m.get("version") != __version__:
                 raise StoreError(f"{self.path} was written by rocking {m.get('version')}, this "
                                  f"is {__version__}: results could differ; use another --out")
