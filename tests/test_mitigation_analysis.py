@@ -48,7 +48,7 @@ def row(comp: MitigationComparison, mitigation: str, **group) -> pd.Series:
     return t[sel].iloc[0]
 
 
-def power_law(k0=1e-3, a0=1.0, k=2.5, lo=1e-3, hi=1e3, num=400):
+def power_law(k0=1e-3, a0=1.0, k=2.5, lo=1e-3, hi=1e3, num=60):
     """A power-law hazard curve ``k0 (x / a0)^-k`` on a wide, dense grid (log-log
     interpolation of a power law is exact)."""
     x = np.geomspace(lo, hi, num)
@@ -131,6 +131,24 @@ def test_hazard_in_g_is_converted_not_mixed():
     g_im = compare_mitigations(tg, im_unit="g", n_boot=0, hazard=(x, lam, "m/s^2")).table
     np.testing.assert_allclose(g_im["median"] * G, in_si["median"], rtol=1e-6)
     np.testing.assert_allclose(g_im["annual_frequency"], in_si["annual_frequency"], rtol=1e-6)
+
+
+def test_a_short_hazard_curve_gives_a_flagged_lower_bound():
+    """A hazard curve that ends where P(failure) is far from 1 misses part of the tail: the
+    frequency is flagged as a lower bound, and the closed form lies within the stated
+    margin above it."""
+    k0, a0, k = 2e-3, 1.0, 2.5
+    x, lam = power_law(k0, a0, k, lo=1e-3, hi=4.0)
+    comp = compare_mitigations(draw({"none": 2.0, "isolated": 4.0}), n_boot=0,
+                               hazard=(x, lam, "m/s^2"))
+    r = row(comp, "isolated")
+    exact = cornell(r["median"], r["beta"], k0, a0, k)
+    margin = lam[-1] * (1 - norm.cdf(math.log(4.0 / r["median"]) / r["beta"]))
+    assert r["annual_frequency"] < exact <= r["annual_frequency"] + margin * (1 + 1e-9)
+    assert "lower bound" in r["note"]
+    full = compare_mitigations(draw({"none": 2.0, "isolated": 4.0}), n_boot=0,
+                               hazard=power_law(k0, a0, k) + ("m/s^2",))
+    assert "lower bound" not in row(full, "isolated")["note"]
 
 
 @pytest.mark.parametrize("hazard, match", [
@@ -274,6 +292,7 @@ def test_model_column_names_the_mitigations_and_housner_is_the_reference():
     (lambda t: t, {"clearance": "0.1s"}, "clearance"),
     (lambda t: t, {"failure": "overturned_or_clearance"}, "clearance"),
     (lambda t: t.assign(overturned="yes"), {}, "boolean"),
+    (lambda t: t.assign(mitigation=None), {}, "has none"),
 ])
 def test_bad_input_is_one_clear_error(change, kw, match):
     with pytest.raises(ParameterError, match=match):

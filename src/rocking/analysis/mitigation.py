@@ -268,13 +268,17 @@ class MitigationComparison:
     columns); ``fits``: the fitted :class:`~.fragility.FragilityFit` by key (the
     mitigation's name without grouping columns, else the tuple ``(*group, mitigation)``;
     the mitigations that could not be fitted are absent); ``stripes``: the observed
-    failed fraction per IM level, same keys, every mitigation; ``by``, ``im``, ``im_unit``,
+    failed fraction per IM level, same keys, every mitigation; ``keys``: the key of each
+    row of ``table``; ``by``, ``im``, ``im_unit``,
     ``failure``, ``clearance``, ``reference``.
     """
 
     def __init__(self, table, fits, stripes, *, by, im, im_unit, failure, clearance,
-                 reference, hazard=None):
+                 reference, hazard=None, keys=None):
         self.table = table
+        self.keys = list(keys) if keys is not None else [
+            self.key(r["mitigation"], tuple(r[c] for c in by)) for _, r in table.iterrows()]
+        """The key of each row of :attr:`table` (in :attr:`fits` and :attr:`stripes`)."""
         self.fits = fits
         self.stripes = stripes
         self.by = list(by)
@@ -369,6 +373,10 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
     clear = parse_clearance(clearance)
     hz = parse_hazard(hazard, im_unit) if hazard is not None else None
 
+    if table[mit_col].isna().any():
+        i = int(np.flatnonzero(table[mit_col].isna().to_numpy())[0])
+        raise ParameterError(f"column {mit_col!r} names the mitigation of each run: row {i} "
+                             "has none (NaN)")
     x_all = pd.to_numeric(table[im], errors="coerce").to_numpy(float)
     status = (pd.to_numeric(table["status"], errors="coerce").fillna(0).to_numpy(float)
               if "status" in table else np.zeros(len(table)))
@@ -395,7 +403,7 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
                         np.where(np.isfinite(flag_all) | np.isfinite(by_disp), 0.0, np.nan))
     settled = _flags(table, "settled")
 
-    rows, fits, stripes = [], {}, {}
+    rows, fits, stripes, keys = [], {}, {}, []
     groups = table.groupby(by, sort=False, dropna=False) if by else [((), table)]
     for gkey, g in groups:
         gkey = gkey if isinstance(gkey, tuple) else (gkey,)
@@ -455,6 +463,7 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
                 clearance=clear, note="; ".join(notes))
             _hazard_fields(row, fit, hz, im_unit)
             rows.append(row)
+            keys.append(key)
     out = pd.DataFrame(rows)
     _ratios(out, by, reference, mit_col, table)
     out = out[[*by, *COLUMNS]]
@@ -465,7 +474,7 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
                      hazard="Cornell et al. (2002)" if hz is not None else None)
     return MitigationComparison(out, fits, stripes, by=by, im=im, im_unit=im_unit,
                                 failure=failure, clearance=clear, reference=reference,
-                                hazard=hz)
+                                hazard=hz, keys=keys)
 
 
 def _attrs_unit(table: pd.DataFrame, im: str) -> str | None:
@@ -487,7 +496,20 @@ def _hazard_fields(row: dict, fit: FragilityFit | None, hz, im_unit) -> None:
         return
     hx, hr = hz
     if fit is not None:
-        row["annual_frequency"] = annual_frequency(fit, hx, hr, hazard_unit=im_unit)
+        af = annual_frequency(fit, hx, hr, hazard_unit=im_unit)
+        row["annual_frequency"] = af
+        # beyond the curve: the tail adds lambda(x_N) P(x_N), at most lambda(x_N) is right;
+        # below it, failures at im < x_0 are not counted (at most lambda(x_0) - lambda(0))
+        p_hi, p_lo = fit.probability(float(hx[-1])), fit.probability(float(hx[0]))
+        miss = float(hr[-1]) * (1.0 - p_hi)
+        if miss > 1e-3 * af:
+            row["note"] = "; ".join(s for s in (row["note"], (
+                f"annual frequency is a lower bound: the hazard curve ends at {hx[-1]:.4g} "
+                f"{im_unit} where P(failure) = {p_hi:.3g} (up to {miss:.3g}/yr more)")) if s)
+        if p_lo > 1e-3:
+            row["note"] = "; ".join(s for s in (row["note"], (
+                f"annual frequency is a lower bound: the hazard curve starts at {hx[0]:.4g} "
+                f"{im_unit} where P(failure) = {p_lo:.3g} already")) if s)
         return
     lo, hi = row["median_lower_bound"], row["median_upper_bound"]
     # a step fragility at m has lambda_f = lambda(m): lambda_f <= lambda(lo), >= lambda(hi)
@@ -565,11 +587,12 @@ def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
     colors = {m: PALETTE[i % len(PALETTE)]
               for i, m in enumerate(dict.fromkeys(t["mitigation"]))}
     unit = comparison.im_unit
+    row_key = dict(zip(t.index, comparison.keys, strict=True))
     for ax, (gkey, g) in zip(axes, groups, strict=False):
         gkey = gkey if isinstance(gkey, tuple) else (gkey,)
-        for _, r in g.iterrows():
+        for i, r in g.iterrows():
             m = r["mitigation"]
-            key = comparison.key(m, tuple(gkey))
+            key = row_key[i]
             c = colors[m]
             s = comparison.stripes[key]
             ax.plot(s["im"], s["n_failed"] / s["n"], "o", ms=4, mfc="none", color=c)
