@@ -27,7 +27,7 @@ from scipy.optimize import brentq
 import rocking
 from rocking import ParameterError
 from rocking.models.isolated import Isolated
-from rocking.motions import OneSine, Record, Sine
+from rocking.motions import GroundMotion, HalfSine, OneSine, Record, Rectangular, Sine
 from rocking.testing.isolated_reference import (
     isolated_restitution,
     isolation_force,
@@ -330,8 +330,140 @@ def test_compiled_model_passes_the_contract():
     rocking.testing.check_model(Isolated)
 
 
-def test_compiled_model_refuses_a_vertical_component():
-    from rocking.motions import GroundMotion
-    mot = GroundMotion(OneSine(3 * THR, 0.6), OneSine(0.3 * G, 0.6))
-    with pytest.raises(rocking.SimulationError, match="horizontal ground motions only"):
-        rocking.simulate(BLOCK, mot, model=Isolated, duration=1.0)
+# ---------------------------------------------------------------- vertical motion
+def constant(a, length=100.0):
+    """A constant acceleration ``a`` (m/s^2, either sign) over ``[0, length]``."""
+    m = Rectangular(abs(a), length)
+    return m if a >= 0 else m.scaled(-1.0)
+
+
+@pytest.mark.parametrize("ratio", [-0.35, 0.5])
+def test_pendulum_period_under_a_constant_vertical_acceleration(ratio):
+    """The friction pendulum's restoring force is the normal force M (g + a_v) times
+    u / R_c: under a constant a_v its period is 2 pi sqrt(R_c / (g + a_v))."""
+    Rc, u0 = 2.0, 0.01
+    r = iso(BLOCK, GroundMotion(constant(0.0), constant(ratio * G)), 6.0, 1.0, "pendulum",
+            radius=Rc, friction=0.0, u0=u0)
+    assert r.max_abs_theta == 0.0
+    wn = math.sqrt(G * (1 + ratio) / Rc)
+    np.testing.assert_allclose(r.u, u0 * np.cos(wn * r.t), atol=1e-8 * u0)
+
+
+@pytest.mark.parametrize("ratio", [-0.3, 0.4])
+def test_uplift_threshold_under_a_constant_vertical_acceleration(ratio):
+    """At rest the plate is the linear oscillator (its stiffness does not depend on the
+    vertical load) and the block uplifts when |A| first exceeds (g + a_v) tan(alpha)."""
+    T_h = 6.0
+    h = Sine.from_acceleration(0.5, 0.9 * THR, duration=T_h)
+    gm = GroundMotion(h, constant(ratio * G, T_h))
+    Tb, z = 2.0, 0.05
+    o = oscillator(h.acceleration, T_h, Tb, z)
+    thr = THR * (1 + ratio)
+
+    def margin(t):
+        u, v = o.sol(t)
+        return abs(isolation_force("linear", u, v, period=Tb, damping=z)) - thr
+
+    grid = np.linspace(0, T_h, 60001)
+    m = np.array([margin(t) for t in grid])
+    i = int(np.argmax(m > 0))
+    assert m[i] > 0
+    t_up = brentq(margin, grid[i - 1], grid[i], xtol=1e-14)
+    r = iso(BLOCK, gm, T_h, 1.0, "linear", period=Tb, damping=z)
+    assert r.uplift_time == pytest.approx(t_up, abs=1e-7)
+    k = rocking.simulate(BLOCK, gm, model=Isolated, duration=T_h, isolation_period=Tb,
+                         isolation_damping=z)
+    assert k.uplift_time == pytest.approx(t_up, abs=1e-7)
+
+
+VERTICAL_CASES = [
+    (dict(isolation_period=0.5, isolation_damping=0.05),
+     dict(isolation="linear", period=0.5, damping=0.05),
+     GroundMotion(OneSine(0.8 * THR, 1.0), OneSine(0.5 * G, 0.35, t0=0.2))),
+    (dict(isolation="pendulum", radius=0.3, friction=0.2, v_eps=1e-3),
+     dict(isolation="pendulum", radius=0.3, friction=0.2, v_eps=1e-3),
+     GroundMotion(OneSine(1.0 * THR, 0.6), Sine.from_acceleration(2.3, 0.3 * G, 3.0))),
+]
+
+
+@pytest.mark.parametrize(("kw", "ref_kw", "mot"), VERTICAL_CASES)
+def test_compiled_model_matches_the_reference_under_a_vertical_motion(kw, ref_kw, mot):
+    r = rocking.simulate(BLOCK, mot, model=Isolated, duration=3.0, mass_ratio=0.8, **kw)
+    ref = iso(BLOCK, mot, 3.0, 0.8, **ref_kw)
+    # the vertical motion matters: the horizontal motion alone gives another answer
+    hor = iso(BLOCK, mot.horizontal, 3.0, 0.8, **ref_kw)
+    assert abs(hor.max_abs_theta / ref.max_abs_theta - 1) > 1e-2
+    assert r.overturned == ref.overturned and r.n_impacts == ref.n_impacts >= 3
+    assert not r.lifted_off and math.isnan(ref.lift_off_time)
+    assert r.uplift_time == pytest.approx(ref.uplift_time, abs=1e-8)
+    assert r.max_abs_theta == pytest.approx(ref.max_abs_theta, rel=1e-5)
+    np.testing.assert_allclose(r.impact_times, ref.impact_times, atol=1e-6)
+    assert r.info["max_base_displacement"] == pytest.approx(ref.max_abs_u, rel=1e-5)
+    assert r.info["max_plate_acceleration"] == pytest.approx(ref.max_plate_acc, rel=1e-4)
+
+
+@pytest.mark.parametrize("rocking_first", [False, True])
+@pytest.mark.parametrize("isolation", ["linear", "pendulum"])
+def test_lift_off_where_g_plus_av_reaches_zero(rocking_first, isolation):
+    """a_v = -1.5 g sin(pi (t - t0)/T): g + a_v = 0 at t0 + T asin(2/3)/pi; the run stops
+    there (lifted off, not settled), never silently ignored."""
+    T, t0 = 0.4, 1.0
+    v = HalfSine(1.5 * G, T, t0=t0).scaled(-1.0)
+    h = OneSine(2.5 * THR, 0.6) if rocking_first else constant(0.0, 3.0)
+    gm = GroundMotion(h, v)
+    t_lift = t0 + T * math.asin(1.0 / 1.5) / math.pi
+    kw = (dict(isolation_period=0.5) if isolation == "linear"
+          else dict(isolation="pendulum", radius=0.5, friction=0.1))
+    r = rocking.simulate(BLOCK, gm, model=Isolated, duration=3.0, **kw)
+    assert r.lifted_off and not r.settled and not r.overturned
+    assert r.lift_off_time == pytest.approx(t_lift, abs=1e-9)
+    assert r.t[-1] <= t_lift + 1e-12
+    assert (r.max_abs_theta > 0) == rocking_first
+    ref_kw = (dict(period=0.5, damping=0.05) if isolation == "linear"
+              else dict(radius=0.5, friction=0.1, v_eps=1e-3))
+    ref = iso(BLOCK, gm, 3.0, 1.0, isolation, **ref_kw)
+    assert ref.lift_off_time == pytest.approx(t_lift, abs=1e-9) and not ref.settled
+    b = rocking.simulate_many(BLOCK, [gm, GroundMotion(h, v.scaled(0.5))], model=Isolated,
+                              duration=3.0, **kw)
+    assert b.lifted_off.tolist() == [True, False]
+    assert b.lift_off_time[0] == r.lift_off_time
+
+
+@pytest.mark.parametrize("kw", [dict(isolation_period=0.5),
+                                dict(isolation="pendulum", radius=0.3, friction=0.2)])
+def test_a_zero_vertical_component_changes_nothing(kw):
+    """Bit for bit: a vertical record of zeros on the horizontal record's grid (and a
+    GroundMotion without one) gives the horizontal motion's run."""
+    rng = np.random.default_rng(5)
+    acc = np.convolve(rng.standard_normal(400), np.ones(8) / 8, mode="same")
+    h = Record(acc * 2.5 * THR / np.abs(acc).max(), 0.01)
+    a = rocking.simulate(BLOCK, h, model=Isolated, duration=5.0, **kw)
+    assert a.n_impacts >= 2
+    for gm in (GroundMotion(h), GroundMotion(h, Record(np.zeros(400), 0.01))):
+        b = rocking.simulate(BLOCK, gm, model=Isolated, duration=5.0, **kw)
+        np.testing.assert_array_equal(a.theta, b.theta)
+        np.testing.assert_array_equal(a.impact_times, b.impact_times)
+        assert (a.max_abs_theta, a.uplift_time) == (b.max_abs_theta, b.uplift_time)
+        np.testing.assert_equal(b.info, a.info)  # (NaN == NaN here)
+
+
+@pytest.mark.parametrize("vertical", [False, True])
+def test_floor_motion(vertical):
+    """model="isolated" on a floor of a building (rocking.buildings.FloorMotion): the
+    floor record (and the vertical floor motion through a vertical mode) is what the
+    reference is given."""
+    from rocking.buildings import Building, FloorMotion
+    ground = GroundMotion(OneSine(0.45 * THR, 0.8), OneSine(0.4 * G, 0.3, t0=0.1)) \
+        if vertical else OneSine(0.45 * THR, 0.8)
+    fm = FloorMotion(ground, Building.sdof(0.3, 0.2), floor=1,
+                     vertical_building=Building.sdof(0.08, 0.1) if vertical else None)
+    assert (fm.vertical is not None) == vertical
+    kw = dict(isolation_period=0.5, isolation_damping=0.05)
+    r = rocking.simulate(BLOCK, fm, model=Isolated, duration=1.5, **kw)
+    ref = iso(BLOCK, GroundMotion(fm.record, fm.vertical), 1.5, 1.0, "linear", period=0.5,
+              damping=0.05)
+    assert r.n_impacts == ref.n_impacts >= 3
+    assert r.uplift_time == pytest.approx(ref.uplift_time, abs=1e-8)
+    assert r.max_abs_theta == pytest.approx(ref.max_abs_theta, rel=1e-5)
+    np.testing.assert_allclose(r.impact_times, ref.impact_times, atol=1e-6)
+    assert r.info["max_base_displacement"] == pytest.approx(ref.max_abs_u, rel=1e-5)

@@ -12,8 +12,18 @@ theta'``. The run stops when ``|u|`` reaches ``clearance``.
 
 Integration: constant-step classical Runge-Kutta (4th order) on ``(theta, theta', u, u')``
 stepping onto the motion's breakpoints, events (impact, uplift, clearance) located by
-bisection on the exact Runge-Kutta sub-step. Horizontal motions only: a vertical
-component is refused (a :class:`~rocking.SimulationError` naming it).
+bisection on the exact Runge-Kutta sub-step.
+
+Vertical ground motion (:class:`rocking.motions.GroundMotion`, ``a_v`` positive upwards;
+also the vertical floor motion of :class:`rocking.buildings.FloorMotion`): ``g`` becomes
+``g + a_v`` in the block's gravity terms (``theta''`` and the plate's ``A``), in the uplift
+threshold ``(g + a_v) tan(alpha)`` and in the Zeno rule, and the friction pendulum's
+restoring and friction forces scale with its normal force, ``(g + a_v) / g`` (the linear
+isolator's stiffness and damping do not); derived in
+:mod:`rocking.testing.isolated_reference`. Where ``g + a_v <= 0`` the run stops at the
+first such instant (``lift_off_time``; not settled), as in the classical model. Without a
+vertical component, or with a zero one on the horizontal record's grid, the arithmetic is
+the horizontal model's (bit-identical results).
 
 Row outputs (``Response.info`` of single runs, ``BatchResponse.outputs`` of batches,
 columns of campaigns): ``max_base_displacement`` (m, ``max |u|`` at the steps),
@@ -39,33 +49,53 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange
 
-from ..motions._kernel import ground_acc, has_vertical, next_breakpoint
+from ..motions._kernel import (
+    ground_acc,
+    ground_acc_hv,
+    has_vertical,
+    next_breakpoint,
+    vertical_acc,
+)
 from ..units import G
+from ._numerics import events as E
 from .base import KernelResult, Model, ModelOptions, RowOutput, option, row_args_out, store_row
 
 HALF_PI = 0.5 * math.pi
 
 
 @njit(cache=True)
-def _force(mp, u, v):
-    """Isolator force per unit of the isolated mass (m/s^2)."""
+def _force(mp, u, v, gf):
+    """Isolator force per unit of the isolated mass (m/s^2); ``gf = 1 + a_v / g`` scales
+    the friction pendulum's (its normal force), not the linear isolator's."""
     if mp[6] == 0.0:
         return mp[7] * u + mp[8] * v
-    return mp[7] * u + mp[8] * math.tanh(v / mp[9])
+    return gf * (mp[7] * u + mp[8] * math.tanh(v / mp[9]))
+
+
+@njit(cache=True)
+def _gf(prm, samples, t):
+    """``1 + a_v(t) / g`` (1 without a vertical component)."""
+    if not has_vertical(prm):
+        return 1.0
+    return 1.0 + vertical_acc(prm, samples, t) / G
 
 
 @njit(cache=True)
 def _rhs(mp, y0, y1, y2, y3, t, s, rock, kind, prm, samples):
     alpha, p, R, lam, gam = mp[0], mp[1], mp[3], mp[4], mp[5]
-    ag = ground_acc(kind, prm, samples, t)
-    f = _force(mp, y2, y3)
+    if has_vertical(prm):
+        ag, av = ground_acc_hv(kind, prm, samples, t)
+        gf = 1.0 + av / G
+    else:
+        ag, gf = ground_acc(kind, prm, samples, t), 1.0
+    f = _force(mp, y2, y3, gf)
     if not rock:
         return 0.0, 0.0, y3, -f - ag
     phi = alpha - s * y0
     c, sn = math.cos(phi), math.sin(phi)
     p2 = p * p
-    A = (-f + s * gam * R * sn * (y1 * y1 - p2 * c)) / (1.0 - gam * lam * c * c)
-    return y1, p2 * (c * A / G - s * sn), y3, A - ag
+    A = (-f + s * gam * R * sn * (y1 * y1 - p2 * gf * c)) / (1.0 - gam * lam * c * c)
+    return y1, p2 * (c * A / G - s * gf * sn), y3, A - ag
 
 
 @njit(cache=True)
@@ -87,13 +117,14 @@ def _rk4(mp, y, t, h, s, rock, kind, prm, samples):
 
 
 @njit(cache=True)
-def _event(mp, y, s, rock, which):
-    """Event functions, positive once the event has happened: 0 impact, 1 uplift,
-    2 clearance."""
+def _event(mp, y, s, rock, which, t, prm, samples):
+    """Event functions at time ``t``, positive once the event has happened: 0 impact,
+    1 uplift (``|A| > (g + a_v) tan(alpha)``), 2 clearance."""
     if which == 0:
         return -s * y[0]
-    if which == 1:
-        return abs(_force(mp, y[2], y[3])) - G * math.tan(mp[0])
+    if which == 1:  # (where g + a_v <= 0 the lift-off comes first: no uplift)
+        gf = _gf(prm, samples, t)
+        return abs(_force(mp, y[2], y[3], gf)) - G * gf * math.tan(mp[0]) if gf > 0.0 else -1.0
     return abs(y[2]) - mp[10]
 
 
@@ -104,7 +135,8 @@ def _locate(mp, y, t, h, s, rock, kind, prm, samples, which):
         mid = 0.5 * (lo + hi)
         if not (lo < mid < hi):
             break
-        if _event(mp, _rk4(mp, y, t, mid, s, rock, kind, prm, samples), s, rock, which) > 0:
+        if _event(mp, _rk4(mp, y, t, mid, s, rock, kind, prm, samples), s, rock, which,
+                  t + mid, prm, samples) > 0:
             hi = mid
         else:
             lo = mid
@@ -127,7 +159,9 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
            out_om, imp, extra):
     alpha, p, mu, R, gam, h_max, rest_tol = mp[0], mp[1], mp[2], mp[3], mp[5], mp[11], mp[12]
     hc = R * math.cos(alpha)
-    thr = G * math.tan(alpha)
+    tan_a = math.tan(alpha)
+    thr = G * tan_a
+    hv = has_vertical(prm)
     h0 = min(h_max, 2e-3 / p, 0.25 * h_scan)
     y = np.zeros(4)
     y[0], y[1] = th0, om0
@@ -137,18 +171,21 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
     t_up = 0.0 if rock else math.nan
     s = 1.0 if (th0 > 0.0 or (th0 == 0.0 and om0 > 0.0)) else -1.0
     over, t_over, cleared, t_clear = False, math.nan, False, math.nan
+    t_lift = math.nan
     n_out = out_th.shape[0]
-    if has_vertical(prm):  # not modelled: refused (status 2), never ignored
-        return KernelResult(0, 0, abs(th0), False, math.nan, t_up, 0, 2, math.nan, False)
     if n_out > 0:
         out_th[0], out_om[0] = th0, om0
         k = 1
+    if hv and E.lifts_off(prm, samples, 0.0):
+        t_end = 0.0  # the base falls away at once
+        t_lift = 0.0
     while t < t_end - 1e-12:
         if not rock:
             if t >= t_quiet and _amp_bound(mp, y) <= thr:
                 break  # the ground is still and the plate cannot uplift the block
-            a0 = -_force(mp, y[2], y[3])
-            if abs(a0) > thr:
+            gf = _gf(prm, samples, t)
+            a0 = -_force(mp, y[2], y[3], gf)
+            if abs(a0) > thr * gf:
                 rock, s = True, (1.0 if a0 > 0.0 else -1.0)
                 if math.isnan(t_up):
                     t_up = t
@@ -161,10 +198,14 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
         hev = h
         checks = (0, 2) if rock else (1, 2)
         for which in checks:
-            if _event(mp, y1, s, rock, which) > 0.0:
+            if _event(mp, y1, s, rock, which, t + h, prm, samples) > 0.0:
                 he = _locate(mp, y, t, h, s, rock, kind, prm, samples, which)
                 if he < hev or ev < 0:
                     ev, hev = which, he
+        if hv:  # the base falls away (g + a_v <= 0): the model cannot represent flight
+            tl = E.first_lift_off(prm, samples, t, t + hev, h_scan)
+            if tl == tl and (ev < 0 or tl - t <= hev):
+                ev, hev = 3, tl - t
         if ev >= 0:
             h = hev
             y1 = _rk4(mp, y, t, h, s, rock, kind, prm, samples)
@@ -185,12 +226,15 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
             over, peak = True, HALF_PI
             t_over = t - h * (abs(y[0]) - HALF_PI) / max(abs(y[0]) - abs(th_prev), 1e-300)
             break
+        if ev == 3:
+            t_lift = t
+            break
         if ev == 2:
             cleared, t_clear = True, t
             break
         if ev == 1:
             rock = True
-            s = 1.0 if -_force(mp, y[2], y[3]) > 0.0 else -1.0
+            s = 1.0 if -_force(mp, y[2], y[3], _gf(prm, samples, t)) > 0.0 else -1.0
             if math.isnan(t_up):
                 t_up = t
         elif ev == 0:
@@ -202,10 +246,12 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
             y[0] = 0.0
             y[1] = om2
             y[3] += gam * hc * (om2 - om1)
-            c = math.cos(alpha) + 0.5 * (om2 / p) ** 2
+            gf = _gf(prm, samples, t)
+            c = math.cos(alpha) + 0.5 * (om2 / p) ** 2 / gf if gf > 0.0 else 2.0
             amp = alpha - math.acos(c) if c < 1.0 else math.inf
             v_rest = y[3] - gam * hc * om2
-            if om2 == 0.0 or (amp < rest_tol * alpha and abs(_force(mp, y[2], v_rest)) <= thr):
+            if om2 == 0.0 or (amp < rest_tol * alpha
+                              and abs(_force(mp, y[2], v_rest, gf)) <= thr * gf):
                 y[1], y[3] = 0.0, v_rest
                 rock = False
             else:
@@ -214,8 +260,8 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
         extra[0][0], extra[0][1], extra[0][2], extra[0][3] = (peak_u, peak_a,
                                                               1.0 if cleared else 0.0,
                                                               t_clear)
-    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0, math.nan,
-                        over or not rock)
+    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift,
+                        (over or not rock) and t_lift != t_lift)
 
 
 @njit(cache=True)
@@ -293,9 +339,3 @@ class Isolated(Model):
         clear = math.inf if o.clearance is None else o.clearance
         return (b.alpha, b.p, mu, R, lam, gam, iso, c1, c2, veps, clear,
                 min(h, o.max_step), o.rest_tol)
-
-    def failure(self, status, t, dt_out=None):
-        if status == 2:
-            return ("model 'isolated' takes horizontal ground motions only: the motion has a "
-                    "vertical component")
-        return super().failure(status, t, dt_out)

@@ -32,8 +32,18 @@ Isolation layer (force ``F`` on the plate, opposing, per unit of ``M``):
   ``|a_g| < mu_f g`` (up to the creep ``v_eps atanh(|a_g| / (mu_f g))`` of the
   regularisation).
 
-With a vertical ground acceleration ``a_v`` (positive upwards) ``g`` would become
-``g + a_v`` in every gravity term below; this reference takes horizontal motions only.
+Vertical ground motion: with a vertical ground acceleration ``a_v`` (positive upwards;
+:class:`rocking.motions.GroundMotion`) the plate moves vertically with the ground (the
+isolation layer is rigid vertically), and in the frame of the ground every mass feels the
+effective gravity ``g_e = g + a_v``: ``g`` becomes ``g_e`` in every gravity term below
+(derivation in the next section), in the uplift threshold, ``g_e tan(alpha)``, and in the
+friction pendulum's normal force, ``N = M g_e``: its restoring force ``M g_e u / R_c`` and
+its friction ``mu_f M g_e tanh(u' / v_eps)`` both scale with ``g_e / g`` (a pendulum's
+restoring force is the normal force times ``u / R_c``). The linear isolator's horizontal
+stiffness and damping do not depend on the vertical load (taken so). Where ``g_e <= 0``
+the base falls away faster than gravity and the block and plate would leave the ground;
+neither model represents flight, so the run stops at the first such instant
+(``lift_off_time``, not settled), as in :mod:`rocking.testing.housner_reference`.
 
 Equations of motion (Lagrange)
 ------------------------------
@@ -71,7 +81,26 @@ Eliminating ``theta''``:
     A\,(1 - \gamma\lambda\cos^2\phi) = -F/M + s\,\gamma R \sin\phi\,(\theta'^2 - p^2\cos\phi),
     \qquad u'' = A - a_g,
 
-then ``theta''`` from the first equation. ``1 - gamma lambda cos^2(phi) > 0`` since
+then ``theta''`` from the first equation.
+
+*With a vertical motion* the ground, and with it the plate and the pivot, is at height
+``y_g(t)``, ``y_g'' = a_v``: then ``Y_c = y_g + R cos(phi)``; ``T`` gains
+``m y_g' Y_c'`` (and terms in ``y_g'`` alone), ``V`` gains ``(m + m_b) g y_g``. In
+Lagrange's equation for ``theta`` the new terms are ``d/dt (m y_g' dY_c/dtheta) -
+m y_g' d(Y_c')/dtheta = m a_v dY_c/dtheta = m a_v s R sin(phi)``, the gravity term's
+``m g s R sin(phi)`` with ``g -> a_v``; ``Y_c`` does not depend on ``u``, so the equation
+for ``u`` gains nothing but the ``theta''`` it contains. Hence the equations above with
+``g`` replaced by ``g_e = g + a_v`` in the gravity terms (not in ``p^2`` nor ``lambda``,
+constants of the block), on both pivots ``s = +1, -1``:
+
+.. math::
+
+    \theta'' = p^2\,[\cos\phi\; A/g - s\,(g_e/g) \sin\phi], \qquad
+    A\,(1 - \gamma\lambda\cos^2\phi) = -F/M
+        + s\,\gamma R \sin\phi\,(\theta'^2 - p^2 (g_e/g)\cos\phi),
+
+and the plate's equation ``u'' = A - a_g``, with ``F`` the isolator's force under the
+normal force ``M g_e`` (above). ``1 - gamma lambda cos^2(phi) > 0`` since
 ``lambda <= 1``. As ``mass_ratio -> inf`` (``gamma -> 0``) ``A = -F/M`` is the isolated
 oscillator's, unaffected by the block; a stiff isolator (``T_b -> 0``) then gives
 ``A -> a_g``: the classical model.
@@ -84,7 +113,8 @@ With ``theta = theta' = 0`` block and plate move together: ``M A = -F``, i.e.
 start: on pivot ``s = +1`` (the corner at ``-b``) ``theta'' = p^2 [cos(alpha) A/g -
 sin(alpha)] > 0`` needs ``A > g tan(alpha)``; on ``s = -1`` ``theta'' < 0`` needs
 ``A < -g tan(alpha)``. So the block uplifts, in the direction ``sgn(A)``, when
-``|A| = |F| / M`` first exceeds ``g tan(alpha)``. At rest ``A = -F(u, u')/M`` is a
+``|A| = |F| / M`` first exceeds ``g tan(alpha)`` (``g_e tan(alpha)`` under a vertical
+motion, a threshold that jumps where ``a_v`` does). At rest ``A = -F(u, u')/M`` is a
 continuous function of the state, so a jump of ``a_g`` cannot trigger the uplift by itself.
 The coupled ``theta''`` vanishes at the threshold (substitute ``-F/M = s g tan(alpha)``
 above: ``A = s g tan(alpha)``), so leaving rest is smooth.
@@ -126,9 +156,9 @@ follows from the momentum balance alone, ``Delta v = gamma h (mu - 1) theta'_1``
 
 Rest after an impact (Zeno rule, as in :mod:`rocking.testing.housner_reference`): if the
 amplitude that free motion of the block on a fixed base would reach from the post-impact
-``theta'`` is below ``rest_tol * alpha`` and the plate cannot uplift the block there, the
-block is put at rest; the plate then takes the common velocity that conserves ``P``,
-``v -> v - gamma h theta'``.
+``theta'`` (under the gravity ``g_e`` of that instant) is below ``rest_tol * alpha`` and
+the plate cannot uplift the block there, the block is put at rest; the plate then takes
+the common velocity that conserves ``P``, ``v -> v - gamma h theta'``.
 
 Overturning: ``|theta|`` reaches ``pi/2`` (the run stops). Clearance: ``|u|`` reaches
 ``clearance`` (the moat wall; no stop is modelled, so the run stops there and the time is
@@ -176,12 +206,13 @@ def isolated_restitution(block, mass_ratio: float) -> float:
 
 
 def isolation_force(isolation: str, u, v, *, period=None, damping=0.0, radius=None,
-                    friction=0.0, v_eps=1e-4):
-    """The isolator's force on the plate per unit of ``M = m + m_b`` (m/s^2), opposing."""
+                    friction=0.0, v_eps=1e-4, g_e=G):
+    """The isolator's force on the plate per unit of ``M = m + m_b`` (m/s^2), opposing;
+    ``g_e`` is the effective gravity ``g + a_v`` (the friction pendulum's normal force)."""
     if isolation == "linear":
         w = 2.0 * math.pi / period
         return w * w * u + 2.0 * damping * w * v
-    return G * u / radius + friction * G * np.tanh(v / v_eps)
+    return g_e * u / radius + friction * g_e * np.tanh(v / v_eps)
 
 
 @dataclass
@@ -208,6 +239,8 @@ class IsolatedResponse:
     clearance_time: float
     restitution: float
     settled: bool
+    lift_off_time: float = math.nan
+    """When ``g + a_v`` first reached 0 (s; the run stopped there), NaN if never."""
     pieces: list = field(repr=False, default_factory=list)
 
     @property
@@ -281,8 +314,7 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
         exc = Excitation(motion_fn)
     else:
         exc = Excitation(_Callable(motion_fn, positive("scan_step", scan_step, "s")))
-    if exc.vfns is not None:
-        raise ParameterError("simulate_isolated_reference takes horizontal motions only")
+    has_v = exc.vfns is not None
 
     alpha, p = block.alpha, block.p
     p2 = p * p
@@ -294,19 +326,23 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
     if atol is None:
         atol = [1e-3 * rtol * alpha, 1e-3 * rtol * alpha * p, 1e-12, 1e-12]
 
-    def force(u, v):
+    def force(u, v, ge=G):
         return isolation_force(isolation, u, v, period=period, damping=damping,
-                               radius=radius, friction=friction, v_eps=v_eps)
+                               radius=radius, friction=friction, v_eps=v_eps, g_e=ge)
 
-    def plate_acc(y, s, rocking):
-        """The plate's absolute acceleration A and theta''."""
-        f = force(y[2], y[3])
+    def plate_acc(y, s, rocking, ge=G):
+        """The plate's absolute acceleration A and theta'' under the gravity ``ge``."""
+        f = force(y[2], y[3], ge)
         if not rocking:
             return -f, 0.0
         phi = alpha - s * y[0]
         c, sn = math.cos(phi), math.sin(phi)
-        A = (-f + s * gam * R * sn * (y[1] ** 2 - p2 * c)) / (1.0 - gam * lam * c * c)
-        return A, p2 * (c * A / G - s * sn)
+        gf = ge / G
+        A = (-f + s * gam * R * sn * (y[1] ** 2 - p2 * gf * c)) / (1.0 - gam * lam * c * c)
+        return A, p2 * (c * A / G - s * gf * sn)
+
+    def zero(tt):
+        return 0.0
 
     t = 0.0
     y = np.array([theta0, omega0, u0, v0], dtype=float)
@@ -318,22 +354,28 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
     pieces: list = []
     overturned, t_over = False, math.nan
     cleared, t_clear = False, math.nan
+    lift_off_time = math.nan
     stalls = 0
 
     while t < t_end:
+        k = exc.piece(t)
+        tb = min(exc.end(k), t_end)
+        fn = exc.fns[k]
+        vfn = exc.vfns[k] if has_v else zero
+        ge0 = G + vfn(t)
+        if ge0 <= 0.0:  # the base falls away at the start of this piece
+            lift_off_time = t
+            break
         if not rocking:  # uplift at once if |A| already exceeds the threshold
-            A0 = -force(y[2], y[3])
-            if abs(A0) > thr:
+            A0 = -force(y[2], y[3], ge0)
+            if abs(A0) > thr * ge0 / G:
                 rocking, s = True, math.copysign(1.0, A0)
                 y[0] = y[1] = 0.0
                 if math.isnan(uplift_time):
                     uplift_time = t
-        k = exc.piece(t)
-        tb = min(exc.end(k), t_end)
-        fn = exc.fns[k]
 
-        def rhs(tt, yy, s=s, fn=fn, rocking=rocking):
-            A, thdd = plate_acc(yy, s, rocking)
+        def rhs(tt, yy, s=s, fn=fn, vfn=vfn, rocking=rocking):
+            A, thdd = plate_acc(yy, s, rocking, G + vfn(tt))
             return (yy[1] if rocking else 0.0, thdd, yy[3], A - fn(tt))
 
         def ev_impact(tt, yy, s=s, t_start=t):
@@ -347,11 +389,16 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
         def ev_clear(tt, yy):
             return abs(yy[2]) - clearance
 
-        def ev_up_p(tt, yy):
-            return -force(yy[2], yy[3]) - thr
+        def ev_up_p(tt, yy, vfn=vfn):
+            ge = G + vfn(tt)
+            return -force(yy[2], yy[3], ge) - thr * ge / G
 
-        def ev_up_m(tt, yy):
-            return -force(yy[2], yy[3]) + thr
+        def ev_up_m(tt, yy, vfn=vfn):
+            ge = G + vfn(tt)
+            return -force(yy[2], yy[3], ge) + thr * ge / G
+
+        def ev_lift(tt, yy, vfn=vfn):
+            return G + vfn(tt)
 
         def ev_peak(tt, yy):
             return yy[1]
@@ -364,10 +411,11 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
         ev_clear.terminal, ev_clear.direction = True, 1.0
         ev_up_p.terminal, ev_up_p.direction = True, 1.0
         ev_up_m.terminal, ev_up_m.direction = True, -1.0
+        ev_lift.terminal, ev_lift.direction = True, -1.0
         if rocking:
-            events = [ev_impact, ev_over, ev_clear, ev_peak, ev_peak_u]
+            events = [ev_impact, ev_over, ev_clear, ev_peak, ev_lift, ev_peak_u]
         else:
-            events = [ev_up_p, ev_up_m, ev_clear, ev_peak_u]
+            events = [ev_up_p, ev_up_m, ev_clear, ev_lift, ev_peak_u]
         opts = {}
         if rocking and y[0] == 0.0 and y[1] != 0.0:
             acc0 = rhs(t, y)[1]
@@ -391,12 +439,15 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
         if tt.size > 1:
             tt = np.concatenate([tt, (tt[:-1, None] + np.diff(tt)[:, None]
                                       * np.linspace(0, 1, 9)[None, 1:-1]).ravel()])
-        for yy in sol.sol(tt).T:
-            peak_a = max(peak_a, abs(plate_acc(yy, s, rocking)[0]))
+        for x, yy in zip(tt, sol.sol(tt).T, strict=True):
+            peak_a = max(peak_a, abs(plate_acc(yy, s, rocking, G + vfn(x))[0]))
         y = sol.y[:, -1].copy()
         t = t1
         if sol.t_events[2].size:
             cleared, t_clear = True, float(sol.t_events[2][0])
+            break
+        if sol.t_events[-2].size:
+            lift_off_time = float(sol.t_events[-2][0])
             break
         if rocking:
             if sol.t_events[1].size:
@@ -414,8 +465,10 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
                 v2 = float(ye[3]) + gam * h * (om2 - om1)
                 y = np.array([0.0, om2, float(ye[2]), v2])
                 v_rest = v2 - gam * h * om2  # plastic: the common velocity conserving P
-                if om2 == 0.0 or (_free_amplitude(om2, alpha, p) < rest_tol * alpha
-                                  and abs(force(y[2], v_rest)) <= thr):
+                ge = G + vfn(te)
+                pe = p * math.sqrt(max(ge / G, 1e-300))  # free rocking under g_e
+                if om2 == 0.0 or (_free_amplitude(om2, alpha, pe) < rest_tol * alpha
+                                  and abs(force(y[2], v_rest, ge)) <= thr * ge / G):
                     y[1], y[3] = 0.0, v_rest
                     rocking = False
                 else:
@@ -442,4 +495,5 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
         uplift_time=uplift_time, impact_times=np.asarray(impacts, dtype=float),
         max_abs_u=float(peak_u), max_plate_acc=float(peak_a),
         clearance_exceeded=cleared, clearance_time=t_clear, restitution=mu_i,
-        settled=overturned or not rocking, pieces=pieces)
+        settled=(overturned or not rocking) and math.isnan(lift_off_time),
+        lift_off_time=lift_off_time, pieces=pieces)
