@@ -97,6 +97,15 @@ def test_excluded_runs_are_counted_and_left_out():
         assert "left out" in r["note"]
 
 
+def test_the_callers_index_does_not_matter():
+    """A table concatenated without a fresh index (repeated labels) gives the same
+    comparison as with one."""
+    a, b = draw({"none": 2.0}, seed=2), draw({"iso": 4.0}, seed=3)
+    fresh = compare_mitigations(pd.concat([a, b], ignore_index=True), n_boot=0).table
+    dup = compare_mitigations(pd.concat([a, b]), n_boot=0).table
+    pd.testing.assert_frame_equal(fresh, dup)
+
+
 # --------------------------------------------------------------------------- hazard
 
 def test_annual_frequency_matches_the_closed_form_of_cornell():

@@ -353,7 +353,8 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
     it; a run stopped at the model's clearance has the clearance as its maximum, so these
     are censored there), ``n_clearance_exceeded`` and ``p_clearance_exceeded`` (runs with
     ``clearance_exceeded`` or ``max_base_displacement >= clearance``; NaN when neither is
-    known), ``clearance`` (m, NaN if not given) and ``note``.
+    known; a run stopped at the model's own clearance counts whatever ``clearance``),
+    ``clearance`` (m, NaN if not given) and ``note``.
 
     Raises :class:`~rocking.ParameterError` for a missing column, an unknown ``failure``,
     a hazard in an incompatible unit, or a group whose runs were all left out.
@@ -372,6 +373,7 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
                              f"{attrs_unit!r} (table.attrs)")
     clear = parse_clearance(clearance)
     hz = parse_hazard(hazard, im_unit) if hazard is not None else None
+    table = table.reset_index(drop=True)  # positions, whatever the caller's index
 
     if table[mit_col].isna().any():
         i = int(np.flatnonzero(table[mit_col].isna().to_numpy())[0])
@@ -408,9 +410,7 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
     for gkey, g in groups:
         gkey = gkey if isinstance(gkey, tuple) else (gkey,)
         gdesc = ", ".join(f"{c}={v}" for c, v in zip(by, gkey, strict=True)) or "the table"
-        pos = table.index.get_indexer(g.index) if table.index.is_unique else None
-        if pos is None:
-            raise ParameterError("table must have a unique index (use reset_index())")
+        pos = g.index.to_numpy()
         names = list(dict.fromkeys(g[mit_col].astype(str)))
         if reference in names:
             names.remove(reference)
