@@ -218,34 +218,33 @@ def _stripes(x: np.ndarray, y: np.ndarray, max_levels: int = 25) -> pd.DataFrame
 
 
 def _fit_one(x, y, *, im, im_unit, n_boot, seed, label):
-    """``(fit or None, row fields)``: the fragility fit, or the bounds and a note when the
-    MLE does not exist."""
+    """``(fit or None, row fields)``: the fragility fit, or, when :func:`~.fragility.fragility`
+    refuses the data (its ``check_separation``: the MLE does not exist), the bounds of the
+    median that the data do give and a note."""
     name = IM_NAMES.get(im, im)
     unit = f" {im_unit}" if im_unit else ""
     out = {"median": math.nan, "beta": math.nan, "median_ci_low": math.nan,
            "median_ci_high": math.nan, "beta_ci_low": math.nan, "beta_ci_high": math.nan,
            "median_lower_bound": math.nan, "median_upper_bound": math.nan, "note": ""}
-    nf = int(y.sum())
-    if nf == 0:
-        out["median_lower_bound"] = float(x.max())
-        out["note"] = f"no failure up to {name} = {x.max():.4g}{unit} ({y.size} runs)"
-        return None, out
-    if nf == y.size:
-        out["median_upper_bound"] = float(x.min())
-        out["note"] = f"every run failed, down to {name} = {x.min():.4g}{unit} ({y.size} runs)"
-        return None, out
-    lo_fail, hi_safe = float(x[y].min()), float(x[~y].max())
-    if lo_fail >= hi_safe:
-        out["median_lower_bound"], out["median_upper_bound"] = hi_safe, lo_fail
-        out["note"] = (f"outcomes separated by the IM (no failure up to {name} = "
-                       f"{hi_safe:.4g}{unit}, every run failed from {lo_fail:.4g}{unit}): "
-                       "no fit (beta -> 0); the median lies between them")
-        return None, out
     try:
         fit = fragility(x, y, n_boot=n_boot, seed=seed, im_name=im, im_unit=im_unit,
                         label=label)
     except (ParameterError, SimulationError) as e:
-        out["note"] = f"no fragility fit: {e}"
+        nf = int(y.sum())
+        if nf == 0:       # P(f | im <= im_max) is small: the median is above im_max
+            out["median_lower_bound"] = float(x.max())
+            out["note"] = f"no failure up to {name} = {x.max():.4g}{unit} ({y.size} runs)"
+        elif nf == y.size:
+            out["median_upper_bound"] = float(x.min())
+            out["note"] = (f"every run failed, down to {name} = {x.min():.4g}{unit} "
+                           f"({y.size} runs)")
+        elif (lo_fail := float(x[y].min())) >= (hi_safe := float(x[~y].max())):
+            out["median_lower_bound"], out["median_upper_bound"] = hi_safe, lo_fail
+            out["note"] = (f"outcomes separated by the IM (no failure up to {name} = "
+                           f"{hi_safe:.4g}{unit}, every run failed from {lo_fail:.4g}"
+                           f"{unit}): no fit (beta -> 0); the median lies between them")
+        else:
+            out["note"] = f"no fragility fit: {e}"
         return None, out
     out.update(median=fit.median, beta=fit.beta)
     if fit.n_boot:
@@ -341,7 +340,9 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
     ``n_excluded``, ``n_unsettled``, ``im_min``/``im_max``, ``median`` and ``beta`` (the fit,
     in ``im_unit``), ``median_ci_low/high`` and ``beta_ci_low/high`` (95% bootstrap),
     ``median_lower_bound``/``median_upper_bound`` (when no fit exists: no failure up to
-    ``im_max``, every run failed from ``im_min``, or outcomes separated by the IM),
+    ``im_max``, every run failed from ``im_min``, or outcomes separated by the IM; what
+    the data show, not confidence bounds: ``n`` runs at an IM without a failure bound
+    ``P(f | im)`` below about ``3 / n`` at 95%, the rule of three),
     ``median_ratio`` (median / the reference's median in the group; NaN without a
     reference), ``median_ratio_lower_bound`` (a never-failing mitigation's lower bound over
     the reference's median), ``annual_frequency`` (with ``hazard``),
