@@ -34,6 +34,7 @@ LAST = {
     "bench_fragility_study.py": ", total ",
     "bench_housner.py": "batch: overturned / rocked",
     "bench_identify.py": "at 50 Hz",
+    "bench_isolated.py": "throughput ratio isolated/housner",
     "bench_import.py": "import rocking; rocking.simulate",
     "bench_motions.py": "pyrotd",
     "bench_overturning.py": "mavroeidis_papageorgiou ",
