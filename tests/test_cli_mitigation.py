@@ -335,3 +335,12 @@ def test_housner_json_has_no_row_outputs():
                  "1", "--rest-tol", "1e-6")
     assert "row_outputs" not in d
     assert d["inputs"]["options"] == {"rest_tol": 1e-6}
+
+
+def test_block_mu_refused_where_the_model_replaces_it(capsys):
+    """The isolated model derives its restitution (or takes its option mu): the block's
+    ``--mu`` would be silently ignored, so it is refused; ``--option mu=`` is the way."""
+    code, _, err = run_main(capsys, *FREE, "--model", "isolated", "--mu", "0.9")
+    assert_one_line_error(code, err, "--option mu=")
+    assert model_options("isolated", ("mu=0.9",)) == {"mu": 0.9}
+    assert "--linear" in invoke("models", "housner").split("linear", 1)[1].splitlines()[0]

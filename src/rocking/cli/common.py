@@ -530,11 +530,15 @@ class ModelFlagsCommand(click.Command):
     ``--settled/--no-settled``. An option whose flag is already a flag of the command (the
     command's own ``--dt``) gets none (:meth:`skipped`): ``--option KEY=VALUE`` still sets
     it. The callback receives the flags as ``model_flag__NAME`` keywords (None: not
-    given). ``flag_help`` overrides ``(metavar, help)`` of some options."""
+    given). ``flag_help`` overrides ``(metavar, help)`` of some options; ``option_flags``
+    names the options that one of the command's own flags sets (``--linear``)."""
 
-    def __init__(self, *args, flag_help: dict | None = None, **kwargs):
+    def __init__(self, *args, flag_help: dict | None = None,
+                 option_flags: dict | None = None, **kwargs):
         super().__init__(*args, **kwargs)
         self.flag_help = dict(flag_help or {})
+        self.option_flags = dict(option_flags or {})
+        """Options that one of the command's own flags sets (``{"linear": "--linear"}``)."""
         self._generated: tuple = ((), [])
 
     def own_flags(self) -> set:
@@ -545,6 +549,13 @@ class ModelFlagsCommand(click.Command):
         """``{option name: flag}`` of the options that have a generated flag."""
         own = self.own_flags()
         return {k: option_flag(k) for k in option_declarations() if option_flag(k) not in own}
+
+    def flag_of(self) -> dict:
+        """``{option name: flag}`` of every option that a flag sets: the generated ones
+        and :attr:`option_flags` (``rocking models`` shows them)."""
+        decls = option_declarations()
+        return {**self.model_flags(),
+                **{k: v for k, v in self.option_flags.items() if k in decls}}
 
     def skipped(self) -> dict:
         """``{option name: flag}`` of the options without a flag: it is one of the

@@ -34,7 +34,7 @@ def simulate_flags(ctx: click.Context | None = None) -> dict | None:
     if not isinstance(group, click.Group):
         return None
     sim = group.get_command(root, "simulate")
-    return sim.model_flags() if isinstance(sim, ModelFlagsCommand) else None
+    return sim.flag_of() if isinstance(sim, ModelFlagsCommand) else None
 
 
 def models_dict(flags: dict | None = None, names=None) -> list[dict]:

@@ -50,9 +50,9 @@ option given both by its flag and by ``--option``, is refused (exit code 2).
 
 Options WITHOUT a flag, since theirs is already a flag of this command (set them with
 ``--option KEY=VALUE``): ``dt`` (ccrr, dem: ``--dt`` is a record's time step), ``mu``
-(isolated's restitution: ``--mu`` overrides the block's) and ``linear`` (housner: ``--linear``
-is that option already). ``ModelFlagsCommand.skipped()`` lists them; a test checks this
-list against it.
+(isolated's restitution: ``--mu`` overrides the block's, which that model does not use, so
+``--mu`` with it is refused) and ``linear`` (housner: ``--linear`` is that option
+already). ``ModelFlagsCommand.skipped()`` lists them; a test checks this list against it.
 
 Models with row outputs (:attr:`rocking.models.base.Model.row_outputs`: the isolated
 base's ``max_base_displacement``, ``max_plate_acceleration``, ``clearance_exceeded``,
@@ -491,7 +491,7 @@ def model_options(model: str, pairs, friction_angle=None, stiffness=None, dampin
 
 # ----------------------------------------------------------------------------- command
 @click.command("simulate", cls=ModelFlagsCommand, flag_help=FLAG_HELP,
-               context_settings=CONTEXT)
+               option_flags={"linear": "--linear"}, context_settings=CONTEXT)
 @block_options(classical=True)
 @click.option("--model", type=ModelChoice(), default="housner", show_default=True,
               help="Rocking model (see 'rocking models').")
@@ -559,6 +559,10 @@ def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model
                                 "period": building_period, "damping": building_damping,
                                 "param": building_params}, floor, height_ratio)
     options = model_options(model, model_opts, flags=model_flags_given(model_flags))
+    if mu is not None and model in models_with_option("mu"):
+        raise ParameterError(f"mu: --mu overrides the block's restitution, which --model "
+                             f"{model} does not use (its option mu replaces it; default: "
+                             "derived): give --option mu=VALUE")
     if linear:  # --linear is --option linear=true: one way into the model's options
         owners = models_with_option("linear")
         if model not in owners:
