@@ -318,7 +318,10 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
     and ``overturned``; optional ``status`` (runs with a non-zero status are left out and
     counted in ``n_excluded``; a missing status counts as 0), ``settled`` (counted in
     ``n_unsettled``), ``max_base_displacement`` (m), ``clearance_exceeded``. Runs whose IM
-    is not finite and > 0 are left out and counted too.
+    is not finite and > 0 are left out and counted too. ``im_unit`` is the unit of the
+    IM column: a campaign's ``pga`` and ``floor_pga`` are in m/s^2, its ``im`` in the unit
+    of its manifest (``manifest["im"]["unit"]``; a table whose ``attrs`` state another unit
+    is refused).
 
     ``failure``: ``"overturned"`` or ``"overturned_or_clearance"`` (a run whose isolator
     reached the clearance, ``clearance_exceeded`` or ``max_base_displacement >=
