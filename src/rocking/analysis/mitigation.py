@@ -28,7 +28,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import ParameterError, SimulationError
-from ..plot import PALETTE, im_label, style_axes
+from ..plot import PALETTE, im_label, style_axes, unit_label
 from ..units import acceleration_unit, parse_quantity
 from .fragility import IM_UNITS, FragilityFit, annual_frequency, as_bool_array, fragility
 
@@ -602,10 +602,14 @@ def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
             ax.plot(s["im"], s["n_failed"] / s["n"], "o", ms=4, mfc="none", color=c)
             fit = comparison.fits.get(key)
             if fit is None:
-                ax.plot([], [], "o", mfc="none", color=c, label=f"{m}: {r['note'].split(';')[0]}")
+                note = r["note"].split(";")[0]
+                if unit:
+                    note = note.replace(f" {unit}", f" {unit_label(unit)}")
+                ax.plot([], [], "o", mfc="none", color=c, label=f"{m}: {note}")
                 continue
             ax.plot(grid, fit.probability(grid), color=c,
-                    label=f"{m}: median {fit.median:.3g}, beta {fit.beta:.2f}")
+                    label=f"{m}: median {fit.median:.3g} {unit_label(unit)}, "
+                          f"beta {fit.beta:.2f}")
             if band and fit.n_boot:
                 b = fit.band(grid, level)
                 ax.fill_between(grid, b["lower"], b["upper"], color=c, alpha=0.15, lw=0)
