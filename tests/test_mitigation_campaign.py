@@ -233,6 +233,11 @@ def test_the_report_counts_overturns_per_mitigation(tmp_path, nominal_rows):
     got = po.set_index(["mitigation", "block", "level"])["n_overturned"]
     pd.testing.assert_series_equal(got.sort_index(), want.sort_index(), check_dtype=False,
                                    check_names=False)
+    # the flags among the row outputs are counted over the runs of the models that have them
+    iso = nominal_rows[nominal_rows["model"] == "isolated"]
+    assert res["n_clearance_exceeded"] == int(iso["clearance_exceeded"].sum()) > 0
+    assert any(line.startswith(f"clearance_exceeded: {res['n_clearance_exceeded']} of "
+                               f"{len(iso)} isolated runs") for line in res["run_alerts"])
     md = (tmp_path / "rep" / "report.md").read_text()
     assert "## P(overturn) by mitigation" in md
     assert "| level | IM (m/s^2) | none | isolated-2.5s | anchored |" in md
@@ -288,7 +293,7 @@ def test_a_stack_on_an_isolated_base_is_refused():
 def test_options_of_the_models_run_merge_under_the_entries():
     """``[options.isolated]`` applies to every isolated entry; an entry's own options win."""
     t = text(MITIGATIONS + '\n[[mitigation]]\nname = "iso-2"\nmodel = "isolated"\n') \
-        + '\n[options.isolated]\nisolation_damping = 0.2\nmass_ratio = 0.5\n'
+        + '\n[options.isolated]\nisolation_damping = "20%"\nmass_ratio = 0.5\n'
     spec = parse_spec(t)
     iso = {m.name: m.options for m in spec.mitigations if m.model == "isolated"}
     assert iso["isolated-2.5s"] == {**ISO, "isolation_damping": 0.1, "mass_ratio": 0.5}

@@ -40,7 +40,10 @@ still rocking when they ended (``settled`` false: neither at rest nor overturned
 spec's ``duration``, or ``max_free_time`` after their motion) are counted as survivors,
 with the max|theta|/alpha they reached, and flagged: their number is in ``report.md``, in
 the terminal summary and per level (``n_unsettled`` in ``p_overturn.csv``). Initial tilts
-redrawn because a draw lay beyond +-alpha (``theta0_truncated``) are counted the same way.
+redrawn because a draw lay beyond +-alpha (``theta0_truncated``) are counted the same way,
+and so are the flags among the models' row outputs (``clearance_exceeded``: the isolated
+base reached its clearance and the run stopped there, a survivor with the angle it had
+reached; ``anchor_broken_plus``/``_minus``), among the runs of the models that report them.
 """
 
 from __future__ import annotations
@@ -58,8 +61,10 @@ from .._atomic import atomic_path, atomic_write
 from ..analysis import DEFAULT_THRESHOLDS, fragility, fragility_curves, wilson_interval
 from ..analysis.damage import state_labels
 from ..errors import ParameterError, SimulationError
+from ..models.registry import MODELS
 from ..plot import PALETTE, figure, im_label, save_figure, style_axes, unit_label
 from ..units import G
+from .plan import row_output_columns
 
 #: Columns the table must have.
 REQUIRED_COLUMNS = (
@@ -368,6 +373,14 @@ def _run_counts(t: pd.DataFrame) -> tuple[list[str], list[str], dict]:
                      "ended (neither at rest nor overturned); they count as survivors with "
                      "the max|theta|/alpha they reached (column settled = false; raise "
                      "max_free_time or duration to decide them)")
+        alerts += lines[-1:] if k else []
+    for name, o in row_output_columns(MODELS).items():  # the models' flags (row outputs)
+        if not o.flag or name not in t.columns:
+            continue
+        models = [m for m, c in MODELS.items() if name in {r.name for r in c.row_outputs}]
+        runs = t[t["model"].isin(models)]
+        k = counts[f"n_{name}"] = int(runs[name].astype(bool).sum())
+        lines.append(f"{name}: {k} of {len(runs)} {'/'.join(models)} runs ({o.help})")
         alerts += lines[-1:] if k else []
     return lines, alerts, counts
 

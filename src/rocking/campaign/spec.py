@@ -891,19 +891,22 @@ unit given for an option that declares no ``quantity`` is read as this one."""
 
 def option_values(model: str, values: dict, key: str) -> dict:
     """``values`` (options of ``model``) with every string that carries a unit (``"2.5s"``,
-    ``"0.15m"``, ``"10%"``) converted to the option's SI unit (the quantity of
-    :data:`QUANTITIES`), where the option declares no ``quantity`` of its own (those the
-    model's ``Options`` convert); a bare number in a string is refused. Errors name
+    ``"0.15m"``, ``"10%"``) converted to the option's SI unit: as the option's declared
+    ``quantity`` (as its ``Options`` would), or else as the quantity of its unit
+    (:data:`QUANTITIES`; a bare number in a string is then refused). Errors name
     ``key.<option>``."""
     fields = {f.name: f.metadata for f in dataclasses.fields(MODELS[model].Options)}
     out = dict(values)
     for name, v in values.items():
         m = fields.get(name)
         if not (isinstance(v, str) and m and m.get("kind") is float
-                and not m.get("quantity") and m.get("unit", "") in QUANTITIES):
+                and (m.get("quantity") or m.get("unit", "") in QUANTITIES)):
             continue
+        declared = m.get("quantity")
         try:
-            out[name] = parse_quantity(v, QUANTITIES[m.get("unit", "")], name=name)
+            out[name] = parse_quantity(v, declared or QUANTITIES[m.get("unit", "")],
+                                       name=name,
+                                       default_unit=m.get("unit", "") if declared else None)
         except ParameterError as e:
             _fail(f"{key}.{name}", f"{str(e).removeprefix(name).lstrip(': ')} (the option "
                                    f"is in {m.get('unit') or 'a ratio'})")
