@@ -18,6 +18,7 @@ below are the ``T_b = 1e-4`` s differences times 5 to 10.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 import pytest
@@ -26,7 +27,8 @@ from scipy.optimize import brentq
 
 import rocking
 from rocking import ParameterError
-from rocking.models.isolated import Isolated
+from rocking.models.base import option
+from rocking.models.isolated import Isolated, IsolatedOptions
 from rocking.motions import GroundMotion, HalfSine, OneSine, Record, Rectangular, Sine
 from rocking.testing.isolated_reference import (
     isolated_restitution,
@@ -325,10 +327,26 @@ def test_compiled_model_clearance_and_options():
         rocking.simulate(BLOCK, mot, model=Isolated, isolation_damping=-0.1)
 
 
+@dataclass(frozen=True)
+class PendulumOptions(IsolatedOptions):
+    # friction above tan(alpha): the plate transmits enough for the contract's motions to
+    # rock the blocks
+    isolation: str = option("pendulum", choices=("linear", "pendulum"), help="isolator")
+    radius: float = option(0.5, unit="m", lo=0.0, hi=1e4, help="radius")
+    friction: float = option(0.3, lo=0.0, hi=1.0, lo_open=False, help="friction")
+
+
+class IsolatedPendulum(Isolated):
+    """The isolated model with the friction pendulum by default."""
+
+    name = "isolated-pendulum"
+    Options = PendulumOptions
+
+
 def test_compiled_model_passes_the_contract():
-    # not registered yet (registering needs the README's spec-key table regenerated), so
-    # tests/test_check_model.py does not run it: run the contract here
-    rocking.testing.check_model(Isolated)
+    # tests/test_check_model.py runs the registered model (the linear isolator by
+    # default): run the contract with the friction pendulum here
+    rocking.testing.check_model(IsolatedPendulum)
 
 
 # ---------------------------------------------------------------- vertical motion
@@ -468,3 +486,32 @@ def test_floor_motion(vertical):
     assert r.max_abs_theta == pytest.approx(ref.max_abs_theta, rel=1e-5)
     np.testing.assert_allclose(r.impact_times, ref.impact_times, atol=1e-6)
     assert r.info["max_base_displacement"] == pytest.approx(ref.max_abs_u, rel=1e-5)
+
+
+# ------------------------------------------------------------------ per-row blocks
+@pytest.mark.parametrize("mu", [None, 0.9])
+def test_a_batch_of_blocks_is_one_compiled_call_and_equals_the_single_runs(mu, monkeypatch):
+    """Campaigns with uncertain alpha and p: one block per row runs as one compiled call
+    (mp rebuilt per row, the derived restitution included) and each row is bit-identical
+    to its single run."""
+    blocks = [BLOCK, BLOCK.with_params(alpha=1.1 * BLOCK.alpha),
+              BLOCK.with_params(p=0.8 * BLOCK.p), RECT]
+    mots = [OneSine(0.7 * THR, 0.6)] * len(blocks)
+    kw = dict(isolation_period=0.5, isolation_damping=0.05, mass_ratio=0.8, mu=mu)
+    calls = []
+    compiled = Isolated.batch_kernel
+
+    def counting(*a):
+        calls.append(1)
+        return compiled(*a)
+
+    monkeypatch.setattr(Isolated, "batch_kernel", counting)
+    b = rocking.simulate_many(blocks, mots, model=Isolated, duration=3.0, **kw)
+    assert len(calls) == 1
+    assert len(set(b.max_abs_theta.tolist())) == len(blocks)
+    for i, (blk, m) in enumerate(zip(blocks, mots, strict=True)):
+        r = rocking.simulate(blk, m, model=Isolated, duration=3.0, **kw)
+        assert b.max_abs_theta[i] == r.max_abs_theta and b.n_impacts[i] == r.n_impacts
+        assert b.uplift_time[i] == r.uplift_time
+        for name in ("max_base_displacement", "max_plate_acceleration"):
+            assert b.outputs[name][i] == r.info[name]

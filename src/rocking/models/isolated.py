@@ -51,11 +51,14 @@ once the ground is still (``t_quiet``) a block at rest is settled when an energy
 the plate's free motion shows that ``|A|`` can no longer reach ``g tan(alpha)`` (with a
 friction pendulum whose ``mu_f g`` exceeds it, the run goes to its time cap).
 
+Batches may hold one block per row (campaigns with uncertain ``alpha`` and ``p``): one
+compiled call, :meth:`Isolated.block_row` ``(alpha, p, R)`` and :func:`with_block`
+rebuilding ``lambda`` and a derived restitution with the same compiled
+:func:`block_terms` as :meth:`Isolated.kernel_params` (rows bit-identical to single runs).
+
 Checked against :func:`rocking.testing.isolated_reference.simulate_isolated_reference`
-and with :func:`rocking.testing.check_model` in ``tests/test_isolated.py``. Not yet in
-:data:`rocking.models.MODELS` (pass ``model=Isolated``): registering it is one line of
-``models/registry.py`` plus the README's spec-key table regenerated
-(``tests/test_spec_catalog.py`` says how).
+and with :func:`rocking.testing.check_model` in ``tests/test_isolated.py``. Registered as
+``model="isolated"`` (:data:`rocking.models.MODELS`).
 """
 
 from __future__ import annotations
@@ -512,8 +515,25 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
 
 
 @njit(cache=True)
+def block_terms(alpha, p, R, gam, mu_given):
+    """``(lambda, mu)`` of a block (``lambda = R p^2 / g``; ``mu``: ``mu_given``, or the
+    derived restitution ``1 - 2 lambda sin^2(alpha) / (1 - gamma lambda cos^2(alpha))``
+    where it is NaN). Compiled, and used by both :meth:`Isolated.kernel_params` and
+    :func:`with_block`, so that batch rows are bit-identical to single runs."""
+    lam = R * p * p / G
+    if mu_given == mu_given:
+        return lam, mu_given
+    return lam, 1.0 - 2.0 * lam * math.sin(alpha) ** 2 / (
+        1.0 - gam * lam * math.cos(alpha) ** 2)
+
+
+@njit(cache=True)
 def with_block(mp, b):
-    return mp
+    """``mp`` with the block ``b = (alpha, p, R)`` of a batch row (``lambda`` and a derived
+    restitution rebuilt from it)."""
+    lam, mu = block_terms(b[0], b[1], b[2], mp[5], mp[14])
+    return (b[0], b[1], mu, b[2], lam, mp[5], mp[6], mp[7], mp[8], mp[9], mp[10], mp[11],
+            mp[12], mp[13], mp[14])
 
 
 @njit(cache=True, parallel=True)
@@ -567,16 +587,18 @@ class Isolated(Model):
         RowOutput("clearance_time", "s", False, "when |u| reached the clearance (NaN: never)"),
     )
 
+    @classmethod
+    def block_row(cls, block) -> tuple:
+        """``(alpha, p, R)``; ``R`` a rectangle's ``3 g / (4 p^2)`` when the block has none."""
+        R = block.R if block.R is not None else 3.0 * G / (4.0 * block.p ** 2)
+        return (float(block.alpha), float(block.p), float(R))
+
     def kernel_params(self, dt_out, theta0, omega0):
         b, o = self.block, self.options
-        R = b.R if b.R is not None else 3.0 * G / (4.0 * b.p ** 2)
-        lam = R * b.p ** 2 / G
+        alpha, p, R = self.block_row(b)
         gam = 1.0 / (1.0 + o.mass_ratio)
-        if o.mu is None:
-            mu = 1.0 - 2.0 * lam * math.sin(b.alpha) ** 2 / (
-                1.0 - gam * lam * math.cos(b.alpha) ** 2)
-        else:
-            mu = o.mu
+        mu_given = math.nan if o.mu is None else float(o.mu)
+        lam, mu = block_terms(alpha, p, R, gam, mu_given)
         if o.isolation == "linear":
             w = 2.0 * math.pi / o.isolation_period
             iso, c1, c2, veps = 0.0, w * w, 2.0 * o.isolation_damping * w, 1.0
@@ -587,5 +609,5 @@ class Isolated(Model):
             if o.friction > 0.0:  # within the explicit steps' stability on the friction
                 h = min(h, 2.0 * o.v_eps / (o.friction * G))
         clear = math.inf if o.clearance is None else o.clearance
-        return (b.alpha, b.p, mu, R, lam, gam, iso, c1, c2, veps, clear,
-                min(h, o.max_step), o.rest_tol, o.rtol)
+        return tuple(float(x) for x in (alpha, p, mu, R, lam, gam, iso, c1, c2, veps, clear,
+                                        min(h, o.max_step), o.rest_tol, o.rtol, mu_given))
