@@ -601,11 +601,17 @@ def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
             s = comparison.stripes[key]
             ax.plot(s["im"], s["n_failed"] / s["n"], "o", ms=4, mfc="none", color=c)
             fit = comparison.fits.get(key)
-            if fit is None:
-                note = r["note"].split(";")[0]
-                if unit:
-                    note = note.replace(f" {unit}", f" {unit_label(unit)}")
-                ax.plot([], [], "o", mfc="none", color=c, label=f"{m}: {note}")
+            if fit is None:  # the bound in the legend (short), the note in the table
+                lo, hi = r["median_lower_bound"], r["median_upper_bound"]
+                if np.isfinite(lo) and np.isfinite(hi):
+                    text = f"median in [{lo:.3g}, {hi:.3g}] {unit_label(unit)} (no fit)"
+                elif np.isfinite(lo):
+                    text = f"median > {lo:.3g} {unit_label(unit)} (no failure)"
+                elif np.isfinite(hi):
+                    text = f"median < {hi:.3g} {unit_label(unit)} (all failed)"
+                else:
+                    text = "no fit"
+                ax.plot([], [], "o", mfc="none", color=c, label=f"{m}: {text}")
                 continue
             ax.plot(grid, fit.probability(grid), color=c,
                     label=f"{m}: median {fit.median:.3g} {unit_label(unit)}, "
