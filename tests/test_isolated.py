@@ -515,3 +515,79 @@ def test_a_batch_of_blocks_is_one_compiled_call_and_equals_the_single_runs(mu, m
         assert b.uplift_time[i] == r.uplift_time
         for name in ("max_base_displacement", "max_plate_acceleration"):
             assert b.outputs[name][i] == r.info[name]
+
+
+# ------------------------------------------------------------------ the moat's stop
+def contact(v0, c, Tb, Ts):
+    """Free linear isolator (zeta 0) from u = 0 at u' = v0 onto a stop spring at c:
+    the velocity at contact, the contact's duration and the largest |u| (closed form:
+    in contact x = u - u_e oscillates at omega^2 = omega_b^2 + omega_s^2 about
+    u_e = omega_s^2 c / omega^2)."""
+    wb, ws = 2 * math.pi / Tb, 2 * math.pi / Ts
+    w = math.hypot(wb, ws)
+    vc = math.sqrt(v0 * v0 - (wb * c) ** 2)
+    x0 = c - ws * ws * c / (w * w)
+    phi = math.atan2(w * x0, vc)
+    X = math.hypot(x0, vc / w)
+    return vc, (math.pi - 2 * phi) / w, ws * ws * c / (w * w) + X
+
+
+def test_stop_is_an_elastic_spring_in_closed_form():
+    c, Tb, Ts, v0 = 1e-3, 2.0, 0.05, 0.01
+    vc, dt, umax = contact(v0, c, Tb, Ts)
+    r = iso(BLOCK, None, 1.5, 1.0, "linear", period=Tb, damping=0.0, clearance=c,
+            stop_period=Ts, v0=v0)
+    assert r.clearance_exceeded and r.max_abs_theta == 0.0  # |A| stays below g tan(alpha)
+    t_in = r.clearance_time
+    assert t_in == pytest.approx(math.asin(2 * math.pi / Tb * c / v0) * Tb / (2 * math.pi),
+                                 rel=1e-9)
+    t_out = next(tb for ta, tb, _, _ in r.pieces if ta == t_in)  # leaves the stop
+    assert t_out - t_in == pytest.approx(dt, rel=1e-8)
+    assert r.state_at(t_out)[3] == pytest.approx(-vc, rel=1e-8)  # elastic rebound
+    assert r.max_abs_u == pytest.approx(umax, rel=1e-8)
+    ws2 = (2 * math.pi / Ts) ** 2
+    amax = (2 * math.pi / Tb) ** 2 * umax + ws2 * (umax - c)
+    # (the reference samples |A| at its points and 8 dense points per step: 2.5e-5)
+    assert r.max_plate_acc == pytest.approx(amax, rel=1e-4)
+    with pytest.raises(ParameterError, match="stop_period"):
+        rocking.simulate(BLOCK, OneSine(THR, 0.5), model=Isolated, stop_period=0.05)
+
+
+def test_stop_conserves_energy():
+    """A rocking block on a plate that strikes the stop (zeta_b = 0, restitution 1):
+    T + V + V_s conserved across the contacts."""
+    q, Tb, Ts, c = 0.5, 1.0, 0.05, 0.01
+    r = iso(RECT, None, 3.0, q, "linear", period=Tb, damping=0.0, mu=1.0, clearance=c,
+            stop_period=Ts, theta0=0.6 * RECT.alpha, u0=0.02, rtol=1e-11, max_step=Ts)
+    assert r.clearance_exceeded and r.n_impacts >= 3 and not r.overturned
+    contacts = [1 for ta, tb, sol, _ in r.pieces if abs(sol.y[2, 0]) == c]
+    assert len(contacts) >= 4  # in and out, at least twice
+    m, R, a, p = 1.0, RECT.R, RECT.alpha, RECT.p
+    M = m * (1 + q)
+    I_O = m * G * R / p ** 2
+    th, om, u, v = r.theta, r.omega, r.u, r.v
+    phi = a - np.sign(th) * th
+    V = 0.5 * M * (2 * math.pi / Tb) ** 2 * u ** 2
+    Vs = 0.5 * M * (2 * math.pi / Ts) ** 2 * np.maximum(np.abs(u) - c, 0.0) ** 2
+    E = (0.5 * M * v ** 2 - m * R * np.cos(phi) * v * om + 0.5 * I_O * om ** 2
+         + m * G * R * np.cos(phi) + V + Vs)
+    assert Vs.max() > 0.1 * (E[0] - m * G * R * math.cos(a))
+    assert np.ptp(E) < 1e-8 * (E[0] - m * G * R * math.cos(a))  # measured: 2e-9
+
+
+def test_compiled_model_with_a_stop_matches_the_reference():
+    mot = OneSine(2.0 * THR, 0.6)
+    kw = dict(isolation_period=1.0, isolation_damping=0.05, clearance=0.02, stop_period=0.1)
+    r = rocking.simulate(BLOCK, mot, model=Isolated, duration=3.0, mass_ratio=0.8, **kw)
+    ref = iso(BLOCK, mot, 3.0, 0.8, "linear", period=1.0, damping=0.05, clearance=0.02,
+              stop_period=0.1)
+    free = iso(BLOCK, mot, 3.0, 0.8, "linear", period=1.0, damping=0.05)
+    assert free.max_abs_u > 0.03 and ref.max_abs_u < free.max_abs_u  # the stop holds it
+    assert r.overturned == ref.overturned and r.n_impacts == ref.n_impacts >= 3
+    assert r.info["clearance_exceeded"] and ref.clearance_exceeded
+    assert r.info["clearance_time"] == pytest.approx(ref.clearance_time, abs=1e-8)
+    assert r.uplift_time == pytest.approx(ref.uplift_time, abs=1e-8)
+    assert r.max_abs_theta == pytest.approx(ref.max_abs_theta, rel=1e-5)
+    np.testing.assert_allclose(r.impact_times, ref.impact_times, atol=1e-6)
+    assert r.info["max_base_displacement"] == pytest.approx(ref.max_abs_u, rel=1e-5)
+    assert r.info["max_plate_acceleration"] == pytest.approx(ref.max_plate_acc, rel=1e-4)

@@ -8,7 +8,11 @@ regularisation ``v_eps``). The block rocks under the plate's absolute accelerati
 coupled to the plate's displacement ``u``; it uplifts when ``|A|`` exceeds ``g tan(alpha)``;
 at impacts ``theta'`` is multiplied by ``mu_iso = 1 - 2 lambda sin^2(alpha) / (1 - gamma
 lambda cos^2(alpha))`` (or ``mu``) and the plate's velocity jumps by ``gamma h (mu_iso - 1)
-theta'``. The run stops when ``|u|`` reaches ``clearance``.
+theta'``. The run stops when ``|u|`` reaches ``clearance`` (the moat wall), unless the
+wall is modelled as a stiff linear spring beyond it (``stop_period``: the period of block
+and plate on that spring alone, ``omega_s = 2 pi / stop_period``, a force
+``omega_s^2 (|u| - clearance) sgn(u)`` per unit of the isolated mass, elastic: the energy
+is conserved; the contacts are located as events, and ``clearance_time`` is the first).
 
 Integration: adaptive Dormand-Prince 5(4) on ``(theta, theta', u, u')`` (the tableau and
 Hermite interpolants of :mod:`rocking.models._numerics.dopri`, as the classical model),
@@ -16,7 +20,8 @@ mixed error control (``rtol``; absolute tolerances ``1e-3 rtol alpha`` on ``thet
 b`` on ``u``, ``b = R sin(alpha)`` the block's half-width, and these times ``p`` on the
 velocities), stepping onto the motion's breakpoints, at most ``max_step``, ``0.05 / p``, 4
 scan steps, a twentieth of the isolator's period and, with friction, ``2 v_eps / (mu_f
-g)`` (the explicit steps' stability on the regularised friction). The pivot is frozen
+g)`` (the explicit steps' stability on the regularised friction) and a twentieth of
+``stop_period``. The pivot is frozen
 within a step; events are located on the exact Dormand-Prince sub-step: impacts by
 safeguarded Newton from the Hermite estimate, uplift and clearance by bisection (the
 uplift margin and ``|A|`` are also sampled at a quarter, half and three quarters of each
@@ -69,6 +74,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange
 
+from ..errors import ParameterError
 from ..motions._kernel import (
     ground_acc,
     ground_acc_hv,
@@ -88,10 +94,15 @@ DEFAULT_RTOL = 1e-8
 @njit(cache=True)
 def _force(mp, u, v, gf):
     """Isolator force per unit of the isolated mass (m/s^2); ``gf = 1 + a_v / g`` scales
-    the friction pendulum's (its normal force), not the linear isolator's."""
+    the friction pendulum's (its normal force), not the linear isolator's. Beyond the
+    clearance, the stop's spring ``omega_s^2 (|u| - clearance) sgn(u)`` (``mp[15]``)."""
     if mp[6] == 0.0:
-        return mp[7] * u + mp[8] * v
-    return gf * (mp[7] * u + mp[8] * math.tanh(v / mp[9]))
+        f = mp[7] * u + mp[8] * v
+    else:
+        f = gf * (mp[7] * u + mp[8] * math.tanh(v / mp[9]))
+    if mp[15] > 0.0 and abs(u) > mp[10]:
+        f += mp[15] * (u - mp[10]) if u > 0.0 else mp[15] * (u + mp[10])
+    return f
 
 
 @njit(cache=True)
@@ -263,7 +274,9 @@ def _event(mp, which, th, u, v, t, s, prm, samples, thr):
     if which == 1:
         gf = _gf(prm, samples, t)
         return abs(_force(mp, u, v, gf)) - thr * gf if gf > 0.0 else -1.0
-    return abs(u) - mp[10]
+    if which == 2:
+        return abs(u) - mp[10]
+    return mp[10] - abs(u)  # 4: the plate leaves the stop
 
 
 @njit(cache=True)
@@ -310,7 +323,10 @@ def _locate_impact(mp, t, y, d, hh, y1, d1, s, rock, kind, prm, samples):
 
 @njit(cache=True)
 def _amp_bound(mp, y):
-    """An upper bound of the plate's |A| in free motion of the resting system."""
+    """An upper bound of the plate's |A| in free motion of the resting system (infinite
+    while the energy could still carry the plate onto the stop)."""
+    if mp[15] > 0.0 and (y[3] * y[3] / mp[7] + y[2] * y[2]) >= mp[10] * mp[10]:
+        return math.inf
     if mp[6] == 0.0:
         w2 = mp[7]
         e2 = y[3] * y[3] + w2 * y[2] * y[2]
@@ -413,16 +429,21 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
                 ev, sig = 1, _locate(mp, 1, t, y, d, x_up * hh, s, rock, kind, prm, samples,
                                      thr)
         x_cl = 2.0  # clearance: at the end or at the extremum of u inside the step
-        if abs(y1[2]) >= mp[10]:
+        w_cl = 2  # reaching the clearance; 4: leaving the stop (stop_period)
+        if abs(y[2]) >= mp[10]:  # on the stop (only with a stop: otherwise the run ended)
+            w_cl = 4
+            if abs(y1[2]) < mp[10]:
+                x_cl = 1.0
+        elif abs(y1[2]) >= mp[10]:
             x_cl = 1.0
         elif y[3] * y1[3] < 0.0:
             z = D.hermite_root(y[2], y[3], d[1], y1[2], y1[3], d1[1], hh, 0.0, 1, y[3])
             if abs(D.hermite5(y[2], y[3], d[1], y1[2], y1[3], d1[1], hh, z)[0]) >= mp[10]:
                 x_cl = z
         if x_cl <= 1.0 and x_cl * hh <= sig:
-            sc = _locate(mp, 2, t, y, d, x_cl * hh, s, rock, kind, prm, samples, thr)
+            sc = _locate(mp, w_cl, t, y, d, x_cl * hh, s, rock, kind, prm, samples, thr)
             if ev < 0 or sc < sig:
-                ev, sig = 2, sc
+                ev, sig = w_cl, sc
         if hv:  # the base falls away (g + a_v <= 0): the model cannot represent flight
             tl = E.first_lift_off(prm, samples, t, t + sig, h_scan)
             if tl == tl and tl - t <= sig:
@@ -471,9 +492,12 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
         if ev == 3:
             t_lift = t
             break
-        if ev == 2:
-            cleared, t_clear = True, t
-            break
+        if ev == 2 or ev == 4:
+            if ev == 2 and not cleared:
+                cleared, t_clear = True, t
+            if mp[15] == 0.0:
+                break  # no stop modelled: the run ends at the clearance
+            continue
         if ev == 1:
             rock = True
             s = 1.0 if -_force(mp, y[2], y[3], _gf(prm, samples, t)) > 0.0 else -1.0
@@ -533,7 +557,7 @@ def with_block(mp, b):
     restitution rebuilt from it)."""
     lam, mu = block_terms(b[0], b[1], b[2], mp[5], mp[14])
     return (b[0], b[1], mu, b[2], lam, mp[5], mp[6], mp[7], mp[8], mp[9], mp[10], mp[11],
-            mp[12], mp[13], mp[14])
+            mp[12], mp[13], mp[14], mp[15])
 
 
 @njit(cache=True, parallel=True)
@@ -560,7 +584,12 @@ class IsolatedOptions(ModelOptions):
                           help="velocity of the tanh regularisation of friction")
     clearance: float | None = option(None, unit="m", lo=0.0, hi=1e3,
                                      help="moat clearance: the run stops when |u| reaches "
-                                          "it (None: no moat)")
+                                          "it, unless stop_period is given (None: no moat)")
+    stop_period: float | None = option(None, unit="s", lo=0.0, hi=100.0,
+                                       help="the moat wall as a stiff linear spring beyond "
+                                            "the clearance: the period of block and plate "
+                                            "on it alone (None: the run stops at the "
+                                            "clearance)")
     mu: float | None = option(None, lo=0.0, hi=1.0,
                               help="restitution (None: derived from the momentum balance)")
     rest_tol: float = option(1e-12, lo=0.0, hi=1e-2, lo_open=False,
@@ -569,6 +598,7 @@ class IsolatedOptions(ModelOptions):
                              help="largest time step of the adaptive steps")
     rtol: float = option(DEFAULT_RTOL, lo=1e-13, hi=1e-2, lo_open=False,
                          help="relative tolerance of the adaptive Dormand-Prince steps")
+
 
 
 class Isolated(Model):
@@ -583,8 +613,9 @@ class Isolated(Model):
         RowOutput("max_plate_acceleration", "m/s^2", False,
                   "max absolute acceleration of the plate"),
         RowOutput("clearance_exceeded", "", True, "|u| reached the clearance (the run "
-                                                 "stopped there)"),
-        RowOutput("clearance_time", "s", False, "when |u| reached the clearance (NaN: never)"),
+                                                 "stopped there, unless stop_period)"),
+        RowOutput("clearance_time", "s", False, "when |u| first reached the clearance "
+                                                "(NaN: never)"),
     )
 
     @classmethod
@@ -609,5 +640,13 @@ class Isolated(Model):
             if o.friction > 0.0:  # within the explicit steps' stability on the friction
                 h = min(h, 2.0 * o.v_eps / (o.friction * G))
         clear = math.inf if o.clearance is None else o.clearance
+        ws2 = 0.0
+        if o.stop_period is not None:
+            if o.clearance is None:
+                raise ParameterError("stop_period (s) needs a clearance (m): the stop is the "
+                                     "moat wall at |u| = clearance")
+            ws2 = (2.0 * math.pi / o.stop_period) ** 2
+            h = min(h, o.stop_period / 20.0)
         return tuple(float(x) for x in (alpha, p, mu, R, lam, gam, iso, c1, c2, veps, clear,
-                                        min(h, o.max_step), o.rest_tol, o.rtol, mu_given))
+                                        min(h, o.max_step), o.rest_tol, o.rtol, mu_given,
+                                        ws2))

@@ -161,9 +161,18 @@ the plate cannot uplift the block there, the block is put at rest; the plate the
 the common velocity that conserves ``P``, ``v -> v - gamma h theta'``.
 
 Overturning: ``|theta|`` reaches ``pi/2`` (the run stops). Clearance: ``|u|`` reaches
-``clearance`` (the moat wall; no stop is modelled, so the run stops there and the time is
-an outcome). Energy in free motion (``a_g = 0``): ``T + V`` above, conserved with
-``zeta_b = 0`` (``mu_f = 0``) and restitution 1.
+``clearance`` (the moat wall). Without a stop the run stops there and the time is an
+outcome; with ``stop_period`` ``T_s`` the wall is a linear spring beyond the clearance, a
+force per unit of ``M``
+
+.. math:: F_s / M = \omega_s^2\,(|u| - c)\,\operatorname{sgn}(u) \quad (|u| > c),
+          \qquad \omega_s = 2\pi / T_s,
+
+(``T_s``: the period of block and plate on the spring alone), added to ``F``; it derives
+from ``V_s = M omega_s^2 (|u| - c)^2 / 2``, so it conserves the energy, and the contacts
+(``|u|`` crossing ``c`` either way) are located as events. Energy in free motion (``a_g =
+0``): ``T + V`` above (``+ V_s``), conserved with ``zeta_b = 0`` (``mu_f = 0``) and
+restitution 1.
 """
 
 from __future__ import annotations
@@ -276,7 +285,8 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
                                 isolation: str = "linear", *, period: float | None = None,
                                 damping: float = 0.0, radius: float | None = None,
                                 friction: float = 0.0, v_eps: float = 1e-4,
-                                clearance: float = math.inf, mu: float | None = None,
+                                clearance: float = math.inf,
+                                stop_period: float | None = None, mu: float | None = None,
                                 theta0: float = 0.0, omega0: float = 0.0, u0: float = 0.0,
                                 v0: float = 0.0, rtol: float = 1e-10, atol=None,
                                 method: str = "DOP853", rest_tol: float = DEFAULT_REST_TOL,
@@ -295,7 +305,9 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
     isolation : ``"linear"`` (``period`` ``T_b``, s, and ``damping`` ``zeta_b``) or
         ``"pendulum"`` (``radius`` ``R_c``, m, ``friction`` ``mu_f``, ``v_eps``, m/s).
     clearance : float
-        The run stops when ``|u|`` reaches it (m).
+        The moat wall (m): the run stops when ``|u|`` reaches it, unless ``stop_period``.
+    stop_period : float, optional
+        The wall as a linear spring beyond ``clearance`` (module docstring; s).
     mu : float, optional
         Restitution ``theta'_after / theta'_before``; default :func:`isolated_restitution`.
     theta0, omega0, u0, v0 : the initial state (rad, rad/s, m, m/s).
@@ -315,6 +327,12 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
     else:
         exc = Excitation(_Callable(motion_fn, positive("scan_step", scan_step, "s")))
     has_v = exc.vfns is not None
+    ws2 = 0.0
+    if stop_period is not None:
+        stop_period = positive("stop_period", stop_period, "s")
+        if not math.isfinite(clearance):
+            raise ParameterError("stop_period needs a finite clearance (m)")
+        ws2 = (2.0 * math.pi / stop_period) ** 2
 
     alpha, p = block.alpha, block.p
     p2 = p * p
@@ -327,8 +345,11 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
         atol = [1e-3 * rtol * alpha, 1e-3 * rtol * alpha * p, 1e-12, 1e-12]
 
     def force(u, v, ge=G):
-        return isolation_force(isolation, u, v, period=period, damping=damping,
-                               radius=radius, friction=friction, v_eps=v_eps, g_e=ge)
+        f = isolation_force(isolation, u, v, period=period, damping=damping,
+                            radius=radius, friction=friction, v_eps=v_eps, g_e=ge)
+        if ws2 > 0.0 and abs(u) > clearance:
+            f += ws2 * (abs(u) - clearance) * math.copysign(1.0, u)
+        return f
 
     def plate_acc(y, s, rocking, ge=G):
         """The plate's absolute acceleration A and theta'' under the gravity ``ge``."""
@@ -386,7 +407,14 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
         def ev_over(tt, yy, s=s):
             return s * yy[0] - HALF_PI
 
-        def ev_clear(tt, yy):
+        def ev_clear(tt, yy, t_start=t):
+            if tt == t_start and abs(yy[2]) == clearance:
+                return 1e-300  # just left or reached the stop: not a new contact
+            return abs(yy[2]) - clearance
+
+        def ev_leave(tt, yy, t_start=t):
+            if tt == t_start and abs(yy[2]) == clearance:
+                return -1e-300
             return abs(yy[2]) - clearance
 
         def ev_up_p(tt, yy, vfn=vfn):
@@ -409,19 +437,23 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
         ev_impact.terminal, ev_impact.direction = True, -1.0
         ev_over.terminal, ev_over.direction = True, 1.0
         ev_clear.terminal, ev_clear.direction = True, 1.0
+        ev_leave.terminal, ev_leave.direction = True, -1.0
         ev_up_p.terminal, ev_up_p.direction = True, 1.0
         ev_up_m.terminal, ev_up_m.direction = True, -1.0
         ev_lift.terminal, ev_lift.direction = True, -1.0
         if rocking:
-            events = [ev_impact, ev_over, ev_clear, ev_peak, ev_lift, ev_peak_u]
+            events = [ev_impact, ev_over, ev_clear, ev_peak, ev_leave, ev_lift, ev_peak_u]
         else:
-            events = [ev_up_p, ev_up_m, ev_clear, ev_lift, ev_peak_u]
+            events = [ev_up_p, ev_up_m, ev_clear, ev_leave, ev_lift, ev_peak_u]
         opts = {}
         if rocking and y[0] == 0.0 and y[1] != 0.0:
             acc0 = rhs(t, y)[1]
             if s * acc0 < 0.0:  # keep the first step within a small excursion
                 fs = max(0.5 * abs(y[1] / acc0), 100.0 * math.ulp(max(t, 1.0)))
                 opts["first_step"] = min(fs, tb - t)
+        if ws2 > 0.0 and abs(y[2]) == clearance:  # on the wall: steps of the stop's scale
+            opts["first_step"] = min(opts.get("first_step", math.inf), 0.01 * stop_period,
+                                     tb - t)
         sol = solve_ivp(rhs, (t, tb), y, method=method, rtol=rtol, atol=atol,
                         events=events, dense_output=True, max_step=max_step, **opts)
         if sol.status < 0:
@@ -443,9 +475,13 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
             peak_a = max(peak_a, abs(plate_acc(yy, s, rocking, G + vfn(x))[0]))
         y = sol.y[:, -1].copy()
         t = t1
-        if sol.t_events[2].size:
-            cleared, t_clear = True, float(sol.t_events[2][0])
-            break
+        if sol.t_events[2].size or sol.t_events[-3].size:
+            if sol.t_events[2].size and not cleared:
+                cleared, t_clear = True, float(sol.t_events[2][0])
+            if ws2 == 0.0:
+                break
+            y[2] = math.copysign(clearance, y[2])  # on the wall, to the event's accuracy
+            continue
         if sol.t_events[-2].size:
             lift_off_time = float(sol.t_events[-2][0])
             break
