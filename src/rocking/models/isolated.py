@@ -250,6 +250,18 @@ def _extremum(x0, v0, a0, x1, v1, a1, h, peak):
 
 
 @njit(cache=True)
+def _extremum_to(x0, v0, a0, x1, v1, a1, h, xe, peak):
+    """:func:`_extremum` over the fraction ``[0, xe]`` of the segment only."""
+    xv, vv = D.hermite5(x0, v0, a0, x1, v1, a1, h, xe)
+    peak = max(peak, abs(xv))
+    if v0 * vv < 0.0 and h > 0.0:
+        z = D.hermite_root(x0, v0, a0, x1, v1, a1, h, 0.0, 1, v0)
+        if z <= xe:
+            peak = max(peak, abs(D.hermite5(x0, v0, a0, x1, v1, a1, h, z)[0]))
+    return peak
+
+
+@njit(cache=True)
 def _acc_at(mp, seg, x, s, rock, prm, samples):
     """``A`` at the fraction ``x`` of the step ``seg`` (``t, h`` and both ends' states and
     accelerations), on the Hermite interpolants of ``theta`` and ``u``."""
@@ -491,15 +503,15 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
                                      max(peak_a, abs(d1[2])), thr)
             if ev == 0:
                 y1[0] = 0.0
-        elif rock and abs(y1[0]) >= HALF_PI:  # overturning inside the step
-            x = D.hermite_root(y[0], y[1], d[0], y1[0], y1[1], d1[0], hh, s * HALF_PI, 0,
+        if rock and ev != 0 and abs(y1[0]) >= HALF_PI:  # overturning inside the step
+            x = D.hermite_root(y[0], y[1], d[0], y1[0], y1[1], d1[0], sig, s * HALF_PI, 0,
                                -s)
-            t_over = t + x * hh
-            thx, omx = D.hermite5(y[0], y[1], d[0], y1[0], y1[1], d1[0], hh, x)
+            t_over = t + x * sig
+            thx, omx = D.hermite5(y[0], y[1], d[0], y1[0], y1[1], d1[0], sig, x)
             if n_out > 0:
                 k = _emit(t, y[0], y[1], d[0], t_over, s * HALF_PI, omx, d1[0], dt_out, k,
                           out_th, out_om)
-            peak_u = _extremum(y[2], y[3], d[1], y1[2], y1[3], d1[1], hh, peak_u)
+            peak_u = _extremum_to(y[2], y[3], d[1], y1[2], y1[3], d1[1], sig, x, peak_u)
             over, peak, peak_a = True, HALF_PI, pa
             t = t_over
             break
