@@ -1,6 +1,8 @@
 """A rigid block on a seismically isolated base (issue 19, part 1): the plain reference
 :mod:`rocking.testing.isolated_reference` against closed forms, independent integrations
-and the classical model.
+and the classical model; the compiled model (``model="isolated"``) against the reference,
+under horizontal, vertical and floor motions, with one block per batch row and with the
+moat's stop.
 
 Tolerances. The reference integrates with ``solve_ivp`` (DOP853 or Radau, ``rtol`` 1e-9 to
 1e-11); closed forms and directly integrated oscillators are matched to 1e-7 (relative)
