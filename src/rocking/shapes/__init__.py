@@ -1,0 +1,37 @@
+"""Rigid bodies from 3-D meshes (a scan of a statue, a vase): rocking parameters per
+direction of horizontal shaking (issue 20).
+
+* :func:`load_shape` reads an STL, OBJ or PLY file (trimesh), welds and validates the
+  mesh (watertight, consistent winding, positive volume; ``repair="hull"`` for the convex
+  hull of a defective one), computes its mass properties and finds its support (the
+  contact patch on the lowest plane along ``up`` and its convex hull): a :class:`Shape`.
+* :func:`directional_parameters` tabulates, per direction ``phi`` of shaking, the planar
+  block of each side (alpha, R, p, the restitution, the uplift acceleration);
+  :func:`weakest_direction` / :func:`strongest_direction` pick from it;
+  :func:`plot_directional` draws it (polar).
+* :meth:`Shape.block` is the planar :class:`rocking.Block` of one direction and
+  :meth:`Shape.polygon` its outline for the DEM.
+* :func:`example_mesh_path` / :func:`load_example`: a small synthetic statue shipped with
+  the package (``data/statue.ply``, written by ``data/make_example.py``).
+
+The planar analysis in every direction is the standard engineering answer for a 3-D body
+until a 3-D model exists: the body is assumed to rock about one pivot line at a time, in
+the vertical plane of the shaking (no wobbling, no twisting, no sliding).
+"""
+
+from __future__ import annotations
+
+from .directional import (
+    COLUMNS,
+    Direction,
+    directional_parameters,
+    strongest_direction,
+    weakest_direction,
+)
+from .example import example_mesh_path, load_example
+from .plot import plot_directional
+from .shape import MeshRepairWarning, Shape, load_shape
+
+__all__ = ["COLUMNS", "Direction", "MeshRepairWarning", "Shape", "directional_parameters",
+           "example_mesh_path", "load_example", "load_shape", "plot_directional",
+           "strongest_direction", "weakest_direction"]

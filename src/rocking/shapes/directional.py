@@ -1,0 +1,171 @@
+r"""Rocking parameters of a 3-D body for every horizontal direction of shaking.
+
+**Directions** (:mod:`rocking.shapes.support` for the frame): ``phi`` (rad) is measured
+counter-clockwise from the frame's e1 (the mesh's x axis when ``up="z"``), looking down
+the ``up`` axis; the ground acceleration ``a(t)`` of the planar analysis acts along
+``e_phi = (cos phi, sin phi)``. A positive ``a`` tips the body towards ``-e_phi`` (the
+inertial force is ``-m a e_phi``), about the "+" pivot (``theta > 0``, the sign convention
+of Eq 1, :mod:`rocking.models.housner`): the support's supporting line normal to
+``e_phi`` on the ``-e_phi`` side. The "-" pivot is the one on the ``+e_phi`` side. With
+``S`` the support hull's vertices relative to the centre of mass's vertical,
+
+.. math:: b_+(\varphi) = \max_{s \in S} (-s \cdot e_\varphi), \qquad
+          b_-(\varphi) = \max_{s \in S} (s \cdot e_\varphi) ,
+
+the support function of the hull (one matrix product for all directions), so that
+``phi + pi`` swaps the sides. The body rotates about the pivot line, a horizontal axis
+along ``u = (-sin phi, cos phi, 0)``; only the moment of inertia about that axis enters
+(the products of inertia load the pivot, not the rotation): with ``I_G`` the inertia
+tensor about the centre of mass, ``r_g^2 = u . I_G . u / m``.
+
+**Per side** ``s`` (the contract of issue 20; ``h`` is the centre of mass's height above
+the base, ``o`` the other side): ``alpha_s = atan(b_s / h)``, ``R_s = hypot(b_s, h)``,
+``I_s = m (r_g^2 + R_s^2)`` (parallel axes), ``p_s^2 = m g R_s / I_s = g R_s / (r_g^2 +
+R_s^2)`` (Eq 3), the uplift acceleration ``g tan(alpha_s) = g b_s / h`` (moments about the
+pivot at rest) and the restitution of the impact that ends rocking on side ``s``:
+
+.. math:: \mu_s = \frac{r_g^2 + h^2 - b_s b_o}{r_g^2 + R_o^2} .
+
+*Derivation* (Housner's argument for a general body: the impact is instantaneous, the
+impulse acts at the new pivot O' only, no bounce and no slip, so the angular momentum
+about O' is conserved). In the plane of shaking put the centre of mass G at ``(0, h)``,
+the old pivot O at ``(-b_s, 0)`` and the new one O' at ``(b_o, 0)``. Before the impact the
+body turns about O at the rate ``w1``: ``v_G = w1 x (G - O) = w1 (-h, b_s)``. Its angular
+momentum about O' is ``I_G w1 + m (G - O') x v_G`` with ``G - O' = (-b_o, h)``:
+``(G - O') x v_G = (-b_o)(w1 b_s) - h(-w1 h) = w1 (h^2 - b_s b_o)``, so ``H_O' = m w1
+(r_g^2 + h^2 - b_s b_o)``. After the impact it turns about O' at ``w2``: ``H_O' = I_o w2 =
+m (r_g^2 + R_o^2) w2``, hence ``mu_s = w2 / w1`` above. For a rectangle (``b_s = b_o = b``,
+``r_g^2 = R^2/3``) it is ``(R^2/3 + h^2 - b^2) / (4 R^2/3) = 1 - 1.5 sin^2(alpha)``, Eq 4.
+
+The columns of :func:`directional_parameters` (SI units; angles in rad except
+``phi_deg``): phi, phi_deg, h, b_plus, b_minus, radius_of_gyration, alpha_plus,
+alpha_minus, R_plus, R_minus, I_plus, I_minus (kg m^2), p_plus, p_minus, mu_plus,
+mu_minus, uplift_plus, uplift_minus (m/s^2), alpha_min, uplift_min (m/s^2), weak_side
+("+" or "-", the side of ``uplift_min``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .._validate import as_int
+from ..errors import ParameterError
+from ..units import G
+
+COLUMNS = ("phi", "phi_deg", "h", "b_plus", "b_minus", "radius_of_gyration", "alpha_plus",
+           "alpha_minus", "R_plus", "R_minus", "I_plus", "I_minus", "p_plus", "p_minus",
+           "mu_plus", "mu_minus", "uplift_plus", "uplift_minus", "alpha_min", "uplift_min",
+           "weak_side")
+
+
+def as_directions(directions) -> np.ndarray:
+    """``directions`` as an array of angles (rad): an int ``n`` gives ``n`` directions
+    evenly spaced over [0, 2 pi); a number or a sequence is taken in rad."""
+    if isinstance(directions, int | np.integer) and not isinstance(directions, bool):
+        n = as_int("directions", directions, lo=1)
+        return np.arange(n) * (2.0 * math.pi / n)
+    try:
+        phi = np.array(directions, dtype=np.float64).reshape(-1)
+    except (TypeError, ValueError):
+        raise ParameterError("directions must be a count or angles in rad, got "
+                             f"{directions!r}") from None
+    if len(phi) == 0 or not np.all(np.isfinite(phi)):
+        raise ParameterError(f"directions must be finite angles in rad, got {directions!r}")
+    return phi
+
+
+def side_arrays(support, h, inertia_local, mass, phi) -> dict:
+    """The table's numeric columns as arrays (module docstring), vectorised over ``phi``.
+
+    ``support`` (k, 2): the support hull relative to the centre of mass's vertical;
+    ``inertia_local`` (3, 3) about the centre of mass in the frame (e1, e2, up)."""
+    phi = np.asarray(phi, dtype=np.float64)
+    c, s = np.cos(phi), np.sin(phi)
+    proj = np.asarray(support) @ np.vstack([c, s])  # (k, n): s . e_phi
+    b_minus = proj.max(axis=0)
+    b_plus = -proj.min(axis=0)
+    ii = np.asarray(inertia_local)
+    rg2 = (ii[0, 0] * s * s - 2.0 * ii[0, 1] * s * c + ii[1, 1] * c * c) / mass
+    out = {"phi": phi, "phi_deg": np.degrees(phi), "h": np.full_like(phi, h),
+           "b_plus": b_plus, "b_minus": b_minus, "radius_of_gyration": np.sqrt(rg2)}
+    R = {"plus": np.hypot(b_plus, h), "minus": np.hypot(b_minus, h)}
+    b = {"plus": b_plus, "minus": b_minus}
+    for side in ("plus", "minus"):
+        out[f"alpha_{side}"] = np.arctan2(b[side], h)
+        out[f"R_{side}"] = R[side]
+        out[f"I_{side}"] = mass * (rg2 + R[side] ** 2)
+        out[f"p_{side}"] = np.sqrt(G * R[side] / (rg2 + R[side] ** 2))
+    for side, other in (("plus", "minus"), ("minus", "plus")):
+        out[f"mu_{side}"] = (rg2 + h * h - b[side] * b[other]) / (rg2 + R[other] ** 2)
+    for side in ("plus", "minus"):
+        out[f"uplift_{side}"] = G * b[side] / h
+    out["alpha_min"] = np.minimum(out["alpha_plus"], out["alpha_minus"])
+    out["uplift_min"] = np.minimum(out["uplift_plus"], out["uplift_minus"])
+    out["weak_side"] = np.where(out["uplift_plus"] <= out["uplift_minus"], "+", "-")
+    return out
+
+
+def directional_parameters(shape, directions=360):
+    """The rocking parameters of ``shape`` (:class:`rocking.shapes.Shape`) per direction
+    of shaking: a :class:`pandas.DataFrame`, one row per ``phi`` (rad; an int ``n``: ``n``
+    directions evenly spaced over [0, 2 pi), default one per degree), the columns of
+    :data:`COLUMNS` (module docstring)."""
+    import pandas as pd
+
+    phi = as_directions(directions)
+    cols = side_arrays(shape.support, shape.h, shape.inertia_local, shape.mass, phi)
+    return pd.DataFrame({k: cols[k] for k in COLUMNS})
+
+
+@dataclass(frozen=True)
+class Direction:
+    """One direction of a directional table: ``phi`` (rad), ``phi_deg``, the ``side``
+    ("+" or "-") that uplifts first there, its ``alpha`` (rad) and ``uplift`` acceleration
+    (m/s^2; ``uplift_g`` in g), and ``index``, the table's row label."""
+
+    phi: float
+    phi_deg: float
+    side: str
+    alpha: float
+    uplift: float
+    uplift_g: float
+    index: object
+
+
+def pick(table, which: str) -> Direction:
+    """The row of the smallest (``which="weakest"``) or largest (``"strongest"``)
+    ``min(uplift_plus, uplift_minus)`` of a directional table (first one on ties)."""
+    missing = [c for c in ("phi", "uplift_plus", "uplift_minus", "alpha_plus", "alpha_minus")
+               if c not in getattr(table, "columns", ())]
+    if missing or len(table) == 0:
+        raise ParameterError("expected a non-empty table of directional_parameters, "
+                             f"missing columns {missing}" if missing else "the table is empty")
+    up = np.minimum(table["uplift_plus"].to_numpy(), table["uplift_minus"].to_numpy())
+    i = int(np.argmin(up) if which == "weakest" else np.argmax(up))
+    row = table.iloc[i]
+    side = "+" if row["uplift_plus"] <= row["uplift_minus"] else "-"
+    key = "plus" if side == "+" else "minus"
+    return Direction(phi=float(row["phi"]), phi_deg=math.degrees(float(row["phi"])),
+                     side=side, alpha=float(row[f"alpha_{key}"]),
+                     uplift=float(row[f"uplift_{key}"]), uplift_g=float(row[f"uplift_{key}"]) / G,
+                     index=table.index[i])
+
+
+def weakest_direction(table) -> Direction:
+    """The direction of the table with the smallest uplift acceleration
+    ``min(uplift_plus, uplift_minus)`` and its side. The table samples the directions:
+    the exact minimum is at a normal of the support hull's edge nearest to the centre of
+    mass (the support function's minimum); :meth:`Shape.weakest` gives it."""
+    return pick(table, "weakest")
+
+
+def strongest_direction(table) -> Direction:
+    """The direction of the table whose smaller uplift acceleration is the largest."""
+    return pick(table, "strongest")
+
+
+__all__ = ["COLUMNS", "Direction", "as_directions", "directional_parameters", "pick",
+           "side_arrays", "strongest_direction", "weakest_direction"]

@@ -1,0 +1,45 @@
+"""Polar plot of a directional table (:func:`rocking.shapes.directional_parameters`)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..units import G
+from .directional import weakest_direction
+
+
+def plot_directional(table, *, title: str | None = None):
+    """A :class:`matplotlib.figure.Figure` with two polar panels against the direction of
+    shaking ``phi``: the smaller critical angle ``alpha_min`` (deg) and the smaller uplift
+    acceleration ``min(uplift_plus, uplift_minus)`` (g), the weakest direction marked
+    (:func:`rocking.shapes.weakest_direction`). No pyplot state is touched."""
+    from matplotlib.figure import Figure
+
+    weak = weakest_direction(table)
+    order = np.argsort(table["phi"].to_numpy() % (2 * np.pi))
+    phi = table["phi"].to_numpy()[order]
+    alpha = np.degrees(table["alpha_min"].to_numpy()[order])
+    uplift = np.minimum(table["uplift_plus"].to_numpy(),
+                        table["uplift_minus"].to_numpy())[order] / G
+    closed = len(phi) > 2 and np.ptp(phi) > 1.5 * np.pi
+    if closed:
+        phi, alpha, uplift = (np.append(a, a[0]) for a in (phi, alpha, uplift))
+    fig = Figure(figsize=(10, 4.8), layout="constrained")
+    for k, (values, label) in enumerate(((alpha, "alpha_min (deg)"),
+                                         (uplift, "uplift acceleration (g)"))):
+        ax = fig.add_subplot(1, 2, k + 1, projection="polar")
+        ax.plot(phi, values, color="C0", lw=1.5)
+        w = weak.alpha * 180.0 / np.pi if k == 0 else weak.uplift_g
+        ax.plot([weak.phi, weak.phi], [0.0, w], color="C3", lw=1.2)
+        ax.plot([weak.phi], [w], "o", color="C3",
+                label=f"weakest: phi = {weak.phi_deg:.1f} deg, side {weak.side}")
+        ax.set_ylim(0.0, 1.1 * float(np.nanmax(values)))
+        ax.set_title(label, fontsize=10)
+        if k == 1:
+            ax.legend(loc="lower left", bbox_to_anchor=(-0.15, -0.15), fontsize=8)
+    if title:
+        fig.suptitle(title)
+    return fig
+
+
+__all__ = ["plot_directional"]

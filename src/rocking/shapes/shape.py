@@ -1,0 +1,231 @@
+"""A rigid body from a triangle mesh: validated, with its mass properties and its support.
+
+Build one with :func:`load_shape` (a file: STL, OBJ, PLY), :meth:`Shape.from_trimesh`
+or :meth:`Shape.from_arrays`. Each welds and validates the mesh
+(:mod:`rocking.shapes.mesh`: refused with one line naming the defect unless
+``repair="hull"``), computes the mass properties (:mod:`rocking.shapes.mass`; exactly one
+of ``density`` in kg/m^3 and ``mass`` in kg), sets up the vertical frame of ``up`` and
+finds the support (:mod:`rocking.shapes.support`). Lengths are in m; a file in mm or cm is
+read with ``units="mm"`` / ``"cm"`` (a body taller than 50 m gets a warning: likely mm
+read as m).
+
+Attributes (SI): ``mass``, ``density``, ``volume``, ``com`` (3,) and ``inertia`` (3, 3,
+about the centre of mass) in the mesh's own coordinates; ``frame`` (rows e1, e2, up);
+``local_vertices`` (the vertices in the frame, relative to the centre of mass's vertical,
+base at z = 0: the centre of mass is at ``(0, 0, h)``), ``inertia_local`` (the inertia
+tensor in the frame), ``h`` (the centre of mass's height above the base), ``height``,
+``support`` (the contact patch's convex hull, (k, 2), counter-clockwise, in the frame's
+horizontal coordinates relative to the centre of mass's vertical), ``support_area``,
+``contact_points`` (the patch's size), ``tol`` (m), ``repaired`` (the convex hull was used).
+
+Per direction: :func:`rocking.shapes.directional_parameters` (the table),
+:meth:`Shape.parameters` (one direction as a dict), :meth:`Shape.block` (a
+:class:`rocking.Block`), :meth:`Shape.polygon` (the planar outline for the DEM) and
+:meth:`Shape.weakest` (the exact weakest direction).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .._validate import as_float, warn_implausible
+from ..errors import ParameterError
+from ..units import G
+from .directional import Direction, side_arrays
+from .mass import resolve_mass, volume_properties
+from .mesh import read_mesh, size_of, validated
+from .support import contact_tolerance, frame, inside_margin, support_hull
+
+PLAUSIBLE_HEIGHT = 50.0
+"""A body taller than this (m) gets a warning (likely a mesh in mm read as m)."""
+
+
+class MeshRepairWarning(UserWarning):
+    """A defective mesh was replaced by its convex hull (``repair="hull"``)."""
+
+
+@dataclass(frozen=True, eq=False)
+class Shape:
+    """A validated watertight mesh with its mass properties and support (module
+    docstring). Build it with :func:`load_shape` or :meth:`from_trimesh`."""
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    mass: float
+    density: float
+    volume: float
+    com: np.ndarray
+    inertia: np.ndarray
+    frame: np.ndarray
+    local_vertices: np.ndarray
+    inertia_local: np.ndarray
+    h: float
+    height: float
+    support: np.ndarray
+    contact_points: int
+    tol: float
+    up: object = "z"
+    name: str = ""
+    repaired: bool = False
+    source: str | None = None
+    _hull: list = field(default_factory=list, init=False, repr=False)
+
+    # ------------------------------------------------------------------ constructors
+    @classmethod
+    def from_arrays(cls, vertices, faces, *, density=None, mass=None, up="z", repair=None,
+                    tol=None, weld=None, name="", source=None) -> Shape:
+        """A shape from vertices (n, 3) in m and triangles (m, 3) (module docstring)."""
+        notes = []
+        v, f = validated(vertices, faces, repair=repair, weld_tol=weld, warn=notes.append)
+        for note in notes:
+            warn_implausible(note, MeshRepairWarning)
+        props = volume_properties(v, f)
+        m, rho = resolve_mass(props["volume"], density, mass)
+        fr = frame(up)
+        com = props["com"]
+        inertia = props["inertia"] * rho
+        z = v @ fr[2]
+        zmin = float(z.min())
+        height = float(z.max()) - zmin
+        if height > PLAUSIBLE_HEIGHT:
+            warn_implausible(f"the mesh is {height:g} m tall along up={up!r}: is it in mm? "
+                             "(units='mm')")
+        local = np.column_stack([(v - com) @ fr[0], (v - com) @ fr[1], z - zmin])
+        tol_m = contact_tolerance(tol, height)
+        patch, hull2 = support_hull(local, tol_m)
+        margin = inside_margin(hull2, np.zeros(2))
+        if not margin > 1e-9 * size_of(v):
+            raise ParameterError(
+                f"the centre of mass's vertical falls {'on' if margin >= 0 else 'outside'} "
+                f"the support's edge ({abs(margin):.3g} m {'outside' if margin < 0 else ''}"
+                f"): the body cannot stand on its base along up={up!r}".replace(" )", ")"))
+        return cls(vertices=v, faces=f, mass=float(m), density=float(rho),
+                   volume=props["volume"], com=com, inertia=inertia, frame=fr,
+                   local_vertices=local, inertia_local=fr @ inertia @ fr.T,
+                   h=float(float(com @ fr[2]) - zmin), height=height, support=hull2,
+                   contact_points=int(len(patch)), tol=tol_m, up=up, name=str(name or ""),
+                   repaired=bool(notes), source=source)
+
+    @classmethod
+    def from_trimesh(cls, mesh, **kwargs) -> Shape:
+        """A shape from a :class:`trimesh.Trimesh` (its vertices and faces; keyword
+        arguments as :func:`load_shape`)."""
+        return cls.from_arrays(np.asarray(mesh.vertices), np.asarray(mesh.faces), **kwargs)
+
+    # ------------------------------------------------------------------ properties
+    @property
+    def support_area(self) -> float:
+        """The support hull's area (m^2)."""
+        x, y = self.support[:, 0], self.support[:, 1]
+        return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+    def describe(self) -> dict:
+        """The mass properties and the support as a dict of plain values (SI)."""
+        return {"name": self.name, "source": self.source, "vertices": int(len(self.vertices)),
+                "triangles": int(len(self.faces)), "volume": self.volume, "mass": self.mass,
+                "density": self.density, "com": self.com.tolist(),
+                "inertia": self.inertia.tolist(), "up": self.frame[2].tolist(),
+                "height": self.height, "h": self.h, "support_area": self.support_area,
+                "contact_points": self.contact_points, "tol": self.tol,
+                "repaired": self.repaired}
+
+    # ------------------------------------------------------------------ per direction
+    def parameters(self, direction: float = 0.0) -> dict:
+        """The directional parameters of one direction (rad) as a dict of floats (the
+        columns of :func:`rocking.shapes.directional_parameters`)."""
+        phi = as_float("direction", direction)
+        cols = side_arrays(self.support, self.h, self.inertia_local, self.mass,
+                           np.array([phi]))
+        return {k: (v[0].item() if hasattr(v[0], "item") else v[0]) for k, v in cols.items()}
+
+    def block(self, direction: float = 0.0, *, name: str | None = None, mu=None):
+        """The planar :class:`rocking.Block` of the direction ``direction`` (rad): its
+        sides' geometry through :meth:`rocking.Block.from_geometry`, with the mesh's mass
+        (``mu``: None for the derived restitutions, a number for both sides)."""
+        from ..blocks.block import Block
+
+        q = self.parameters(direction)
+        label = name if name is not None else (
+            f"{self.name or 'mesh'} @ {math.degrees(q['phi']):g} deg")
+        return Block.from_geometry(q["h"], q["b_plus"], q["b_minus"],
+                                   q["radius_of_gyration"], mass=self.mass, name=label, mu=mu)
+
+    def hull_points(self) -> np.ndarray:
+        """The vertices of the body's 3-D convex hull in the local frame (cached)."""
+        if not self._hull:
+            from scipy.spatial import ConvexHull
+
+            self._hull.append(self.local_vertices[ConvexHull(self.local_vertices).vertices])
+        return self._hull[0]
+
+    def polygon(self, direction: float = 0.0) -> np.ndarray:
+        """The body's outline for planar (DEM) analysis in the direction ``direction``
+        (rad): the convex hull of the vertices projected on the vertical plane of shaking,
+        (n, 2) counter-clockwise, ``x`` along ``e_phi`` from the centre of mass's
+        vertical, ``z`` up from the base (the contact patch, within ``tol``, is flattened
+        onto z = 0). The centre of mass is at ``(0, h)``; the DEM must use the mesh's
+        ``mass`` and ``parameters(direction)["radius_of_gyration"]``, not the polygon's
+        area and inertia."""
+        from scipy.spatial import ConvexHull
+
+        phi = as_float("direction", direction)
+        pts = self.hull_points()
+        x = pts[:, 0] * math.cos(phi) + pts[:, 1] * math.sin(phi)
+        z = np.where(pts[:, 2] <= self.tol, 0.0, pts[:, 2])
+        p2 = np.column_stack([x, z])
+        ring = p2[ConvexHull(p2).vertices]
+        # drop the nearly collinear corners (qhull may keep them)
+        size = self.height + float(np.ptp(x))
+        keep = []
+        n = len(ring)
+        for i in range(n):
+            a, b, c = ring[i - 1], ring[i], ring[(i + 1) % n]
+            cr = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0])
+            if cr > 1e-9 * size * size:
+                keep.append(i)
+        ring = ring[keep]
+        start = int(np.argmin(ring[:, 1] * size * 1e3 + ring[:, 0]))  # left end of the base
+        return np.roll(ring, -start, axis=0)
+
+    def weakest(self) -> Direction:
+        """The exact weakest direction: the normal of the support hull's edge nearest to
+        the centre of mass's vertical (where the support function is smallest), as the
+        direction whose "+" side tips over that edge."""
+        a = self.support
+        b = np.roll(a, -1, axis=0)
+        edge = b - a
+        length = np.hypot(edge[:, 0], edge[:, 1])
+        dist = (edge[:, 0] * -a[:, 1] - edge[:, 1] * -a[:, 0]) / length
+        i = int(np.argmin(dist))
+        normal = np.array([edge[i, 1], -edge[i, 0]]) / length[i]  # outward (ccw ring)
+        phi = math.atan2(-normal[1], -normal[0]) % (2.0 * math.pi)
+        q = self.parameters(phi)
+        return Direction(phi=phi, phi_deg=math.degrees(phi), side="+", alpha=q["alpha_plus"],
+                         uplift=q["uplift_plus"], uplift_g=q["uplift_plus"] / G,
+                         index=None)
+
+
+def load_shape(path, *, density=None, mass=None, up="z", repair=None, tol=None,
+               units="m", weld=None, name=None) -> Shape:
+    """Read, weld and validate the mesh in ``path`` (STL, OBJ or PLY) and return its
+    :class:`Shape`.
+
+    ``density`` (kg/m^3) or ``mass`` (kg): exactly one. ``up``: the vertical axis ("z",
+    "-y", ... or a 3-vector). ``repair="hull"``: use the convex hull of a defective mesh
+    (with a :class:`MeshRepairWarning` stating the volume added) instead of refusing it.
+    ``tol``: the contact patch's tolerance (m, or "2mm"; default 1e-3 of the height).
+    ``units``: the file's length unit ("m", "cm", "mm"). ``weld``: the vertex-merging
+    distance (m; default 1e-9 of the bounding box's diagonal)."""
+    import os
+
+    v, f = read_mesh(path, units)
+    stem = os.path.splitext(os.path.basename(os.fspath(path)))[0]
+    return Shape.from_arrays(v, f, density=density, mass=mass, up=up, repair=repair,
+                             tol=tol, weld=weld, name=stem if name is None else name,
+                             source=os.fspath(path))
+
+
+__all__ = ["MeshRepairWarning", "PLAUSIBLE_HEIGHT", "Shape", "load_shape"]
