@@ -293,8 +293,9 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     """Simulate blocks under many motions in one compiled, parallel call.
 
     ``block`` is one block for every motion, or one block per motion (Monte Carlo over the
-    block's parameters; the classical and CCRR models still run a single compiled call, the
-    DEM one call per distinct block). ``theta0``, ``omega0`` (rad, rad/s): the initial
+    block's parameters; a model with a ``block_row`` -- the classical, CCRR, anchored and
+    isolated models -- still runs a single compiled call, the DEM one call per distinct
+    block). ``theta0``, ``omega0`` (rad, rad/s): the initial
     state, one value or one per motion (default: at rest). Row ``i`` of the result is
     bit-identical to ``simulate(block_i, motions[i], theta0=theta0_i, ...)``: each run
     depends on its own inputs only, never on the rest of the batch, so chunking a study
