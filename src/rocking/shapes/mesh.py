@@ -97,9 +97,14 @@ def weld(vertices, faces, tol=None) -> tuple[np.ndarray, np.ndarray]:
     diag = float(np.linalg.norm(np.ptp(v, axis=0))) if len(v) else 0.0
     if tol is None:
         tol = 1e-9 * diag
-    # exact duplicates first (fast), then the near ones
-    uniq, inv = np.unique(v, axis=0, return_inverse=True)
-    inv = inv.reshape(-1)
+    # exact duplicates first (a lexicographic sort; -0.0 + 0.0 is 0.0), then the near ones
+    w = v + 0.0
+    order = np.lexsort(w.T[::-1])
+    srt = w[order]
+    new = np.concatenate([[True], np.any(srt[1:] != srt[:-1], axis=1)])
+    inv = np.empty(len(w), dtype=np.int64)
+    inv[order] = np.cumsum(new) - 1
+    uniq = srt[new]
     if tol > 0.0 and len(uniq) > 1:
         from scipy.sparse import coo_matrix
         from scipy.sparse.csgraph import connected_components
