@@ -511,3 +511,23 @@ def test_the_example_mesh_is_the_scripts_statue():
     # the weakest direction is none of the footprint's axes
     d = sh.weakest().phi_deg % 90.0
     assert 5.0 < d < 85.0
+
+
+def test_an_overhang_below_the_overturning_angle_is_flagged():
+    """A narrow stem (0.2 m wide, 0.1 m high) under a wide slab (1 m x 0.1 m): rocking on
+    the stem, the slab's underside 0.4 m beyond the pivot touches the ground at a tilt of
+    atan(0.1 / 0.4), well below alpha."""
+    prof = [(-0.1, 0), (0.1, 0), (0.1, 0.1), (0.5, 0.1), (0.5, 0.2), (-0.5, 0.2), (-0.5, 0.1),
+            (-0.1, 0.1)]
+    tris = [(0, 1, 2), (0, 2, 7), (6, 7, 5), (7, 2, 5), (2, 4, 5), (2, 3, 4)]
+    sh = shape(*ref.extrude(prof, tris, 0.2))
+    zc = (0.02 * 0.05 + 0.1 * 0.15) / 0.12
+    tab = directional_parameters(sh, [0.0, math.pi / 2])
+    row = tab.iloc[0]
+    assert math.isclose(row["alpha_plus"], math.atan(0.1 / zc), rel_tol=1e-9)
+    for s in SIDES:
+        assert math.isclose(row[f"contact_{s}"], math.atan(0.1 / 0.4), rel_tol=1e-9)
+    assert bool(row["overhang"]) and not bool(tab.iloc[1]["overhang"])
+    assert tab.iloc[1]["contact_plus"] == math.pi / 2
+    # the statue does not overhang its base in any direction
+    assert not directional_parameters(load_example(), 72)["overhang"].any()

@@ -37,11 +37,20 @@ momentum about O' is ``I_G w1 + m (G - O') x v_G`` with ``G - O' = (-b_o, h)``:
 m (r_g^2 + R_o^2) w2``, hence ``mu_s = w2 / w1`` above. For a rectangle (``b_s = b_o = b``,
 ``r_g^2 = R^2/3``) it is ``(R^2/3 + h^2 - b^2) / (4 R^2/3) = 1 - 1.5 sin^2(alpha)``, Eq 4.
 
+**Other contacts.** While the body rocks on side ``s`` by the tilt ``theta``, a point of
+it beyond the pivot (outward distance ``d > 0``, height ``z``) reaches the ground when
+``tan(theta) = z / d``: the column ``contact_s`` is the smallest such tilt over the
+body's convex hull (``pi/2`` if nothing overhangs the pivot). Where ``contact_s <
+alpha_s`` the body would land on that overhang before passing its overturning angle, which
+the planar model of one pivot per side does not represent: such a direction is flagged
+(``overhang``) rather than trusted.
+
 The columns of :func:`directional_parameters` (SI units; angles in rad except
 ``phi_deg``): phi, phi_deg, h, b_plus, b_minus, radius_of_gyration, alpha_plus,
 alpha_minus, R_plus, R_minus, I_plus, I_minus (kg m^2), p_plus, p_minus, mu_plus,
 mu_minus, uplift_plus, uplift_minus (m/s^2), alpha_min, uplift_min (m/s^2), weak_side
-("+" or "-", the side of ``uplift_min``).
+("+" or "-", the side of ``uplift_min``), contact_plus, contact_minus (rad) and overhang
+(bool: ``contact_s < alpha_s`` on either side).
 """
 
 from __future__ import annotations
@@ -58,7 +67,7 @@ from ..units import G
 COLUMNS = ("phi", "phi_deg", "h", "b_plus", "b_minus", "radius_of_gyration", "alpha_plus",
            "alpha_minus", "R_plus", "R_minus", "I_plus", "I_minus", "p_plus", "p_minus",
            "mu_plus", "mu_minus", "uplift_plus", "uplift_minus", "alpha_min", "uplift_min",
-           "weak_side")
+           "weak_side", "contact_plus", "contact_minus", "overhang")
 
 
 def as_directions(directions) -> np.ndarray:
@@ -77,11 +86,13 @@ def as_directions(directions) -> np.ndarray:
     return phi
 
 
-def side_arrays(support, h, inertia_local, mass, phi) -> dict:
-    """The table's numeric columns as arrays (module docstring), vectorised over ``phi``.
+def side_arrays(support, h, inertia_local, mass, phi, hull=None) -> dict:
+    """The table's columns as arrays (module docstring), vectorised over ``phi``.
 
     ``support`` (k, 2): the support hull relative to the centre of mass's vertical;
-    ``inertia_local`` (3, 3) about the centre of mass in the frame (e1, e2, up)."""
+    ``inertia_local`` (3, 3) about the centre of mass in the frame (e1, e2, up); ``hull``
+    (j, 3): the body's convex hull's vertices in that frame (base at z = 0), for the
+    other contacts (None: not computed)."""
     phi = np.asarray(phi, dtype=np.float64)
     c, s = np.cos(phi), np.sin(phi)
     proj = np.asarray(support) @ np.vstack([c, s])  # (k, n): s . e_phi
@@ -105,6 +116,16 @@ def side_arrays(support, h, inertia_local, mass, phi) -> dict:
     out["alpha_min"] = np.minimum(out["alpha_plus"], out["alpha_minus"])
     out["uplift_min"] = np.minimum(out["uplift_plus"], out["uplift_minus"])
     out["weak_side"] = np.where(out["uplift_plus"] <= out["uplift_minus"], "+", "-")
+    if hull is not None:
+        hull = np.asarray(hull)
+        x = hull[:, :2] @ np.vstack([c, s])  # (j, n)
+        z = hull[:, 2:3]
+        eps = 1e-9 * (float(np.ptp(hull[:, 2])) + float(np.ptp(hull[:, :2])))
+        for side, d in (("plus", -b_plus[None, :] - x), ("minus", x - b_minus[None, :])):
+            ang = np.where(d > eps, np.arctan2(z, np.where(d > eps, d, 1.0)), 0.5 * np.pi)
+            out[f"contact_{side}"] = ang.min(axis=0)
+        out["overhang"] = ((out["contact_plus"] < out["alpha_plus"])
+                           | (out["contact_minus"] < out["alpha_minus"]))
     return out
 
 
@@ -116,7 +137,8 @@ def directional_parameters(shape, directions=360):
     import pandas as pd
 
     phi = as_directions(directions)
-    cols = side_arrays(shape.support, shape.h, shape.inertia_local, shape.mass, phi)
+    cols = side_arrays(shape.support, shape.h, shape.inertia_local, shape.mass, phi,
+                       shape.hull_points())
     return pd.DataFrame({k: cols[k] for k in COLUMNS})
 
 

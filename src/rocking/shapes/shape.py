@@ -138,7 +138,7 @@ class Shape:
         columns of :func:`rocking.shapes.directional_parameters`)."""
         phi = as_float("direction", direction)
         cols = side_arrays(self.support, self.h, self.inertia_local, self.mass,
-                           np.array([phi]))
+                           np.array([phi]), self.hull_points())
         return {k: (v[0].item() if hasattr(v[0], "item") else v[0]) for k, v in cols.items()}
 
     def block(self, direction: float = 0.0, *, name: str | None = None, mu=None):
@@ -148,6 +148,12 @@ class Shape:
         from ..blocks.block import Block
 
         q = self.parameters(direction)
+        if q["overhang"]:
+            tilt = math.degrees(min(q["contact_plus"], q["contact_minus"]))
+            warn_implausible(
+                f"direction {math.degrees(q['phi']):g} deg: the body touches the ground "
+                f"beyond its pivot at a tilt of {tilt:.3g} deg, before its overturning "
+                "angle; the planar block ignores that contact")
         label = name if name is not None else (
             f"{self.name or 'mesh'} @ {math.degrees(q['phi']):g} deg")
         return Block.from_geometry(q["h"], q["b_plus"], q["b_minus"],
