@@ -531,3 +531,22 @@ def test_an_overhang_below_the_overturning_angle_is_flagged():
     assert tab.iloc[1]["contact_plus"] == math.pi / 2
     # the statue does not overhang its base in any direction
     assert not directional_parameters(load_example(), 72)["overhang"].any()
+
+
+def test_a_hollow_body_is_one_rigid_body_of_two_parts():
+    """A box with a box-shaped cavity (the inner surface wound inwards): the mass
+    properties are the difference of the two boxes', with a warning about the parts."""
+    vo, fo = ref.box(1.0, 0.8, 2.0)
+    vi, fi = ref.box(0.5, 0.4, 1.0)
+    vi = vi + [0.1, 0.0, 0.5]
+    v = np.vstack([vo, vi])
+    f = np.vstack([fo, fi[:, ::-1] + len(vo)])
+    with pytest.warns(UserWarning, match="2 separate parts"):
+        sh = shape(v, f)
+    m_o, m_i = RHO * 1.6, RHO * 0.2
+    assert math.isclose(sh.mass, m_o - m_i, rel_tol=1e-12)
+    assert np.allclose(sh.com, [-0.1 * m_i / (m_o - m_i), 0.0, 1.0], rtol=0, atol=1e-12)
+    # parallel axes: the inner box's centre is 0.1 from the axis, the body's com at com_x
+    izz = (m_o * (1.64 / 12 + sh.com[0] ** 2)
+           - m_i * (0.41 / 12 + (0.1 - sh.com[0]) ** 2))
+    assert math.isclose(sh.inertia[2, 2], izz, rel_tol=1e-12)

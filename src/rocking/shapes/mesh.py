@@ -20,7 +20,9 @@ overlap twice): this is the scan software's job.
 
 Welding merges the vertices closer than ``weld`` (m; default 1e-9 of the bounding box's
 diagonal; STL files store every triangle's corners separately), drops the faces that
-welding made degenerate (two equal corners) and the unused vertices.
+welding made degenerate (two equal corners) and the unused vertices. A mesh of several
+closed parts is accepted as one rigid body, with a warning (a hollow body's inner surface,
+wound inwards, is one of them; floating debris of a scan is another).
 
 Only numpy and scipy are needed (trimesh's readers for STL, OBJ and PLY need numpy alone;
 nothing here calls the functions of trimesh that need networkx).
@@ -150,6 +152,19 @@ def edge_defects(faces) -> dict:
             "inconsistent": int(np.sum(two & (forward != 1)))}
 
 
+def count_parts(faces) -> int:
+    """The number of connected parts of a mesh (faces linked through shared vertices)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    f = np.asarray(faces, dtype=np.int64)
+    n = int(f.max()) + 1
+    a = f.reshape(-1)
+    b = np.roll(f, -1, axis=1).reshape(-1)
+    graph = coo_matrix((np.ones(len(a), dtype=np.int8), (a, b)), shape=(n, n))
+    return int(connected_components(graph, directed=False)[0])
+
+
 def signed_volume(vertices, faces) -> float:
     """The signed volume enclosed by the triangles (divergence theorem; positive for
     outward normals), about the vertices' mean for accuracy."""
@@ -240,5 +255,6 @@ def size_of(vertices) -> float:
     return float(np.max(np.ptp(np.asarray(vertices), axis=0)))
 
 
-__all__ = ["FORMATS", "UNITS", "as_arrays", "check_mesh", "convex_hull", "edge_defects",
-           "read_mesh", "signed_volume", "size_of", "unit_scale", "validated", "weld"]
+__all__ = ["FORMATS", "UNITS", "as_arrays", "check_mesh", "convex_hull", "count_parts",
+           "edge_defects", "read_mesh", "signed_volume", "size_of", "unit_scale", "validated",
+           "weld"]

@@ -36,7 +36,7 @@ from ..errors import ParameterError
 from ..units import G
 from .directional import Direction, side_arrays
 from .mass import resolve_mass, volume_properties
-from .mesh import read_mesh, size_of, validated
+from .mesh import count_parts, read_mesh, size_of, validated
 from .support import contact_tolerance, frame, inside_margin, support_hull
 
 PLAUSIBLE_HEIGHT = 50.0
@@ -82,6 +82,10 @@ class Shape:
         v, f = validated(vertices, faces, repair=repair, weld_tol=weld, warn=notes.append)
         for note in notes:
             warn_implausible(note, MeshRepairWarning)
+        parts = count_parts(f)
+        if parts > 1:
+            warn_implausible(f"the mesh has {parts} separate parts, taken as one rigid body "
+                             "(a hollow body's inner surface is one of them)")
         props = volume_properties(v, f)
         m, rho = resolve_mass(props["volume"], density, mass)
         fr = frame(up)
