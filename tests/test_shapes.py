@@ -97,6 +97,24 @@ def test_box_principal_directions_give_alpha_p_and_eq4():
     assert math.isclose(sh.mass, RHO * a * b * c, rel_tol=1e-12)
 
 
+def test_the_3d_uplift_is_where_the_resultant_leaves_the_support():
+    """A box shaken at 60 deg from its long axis: the resultant's ray leaves the 0.5 x 0.3
+    footprint through a long edge, at the distance 0.15 / sin(60 deg) < the planar b."""
+    a, b, c = 0.5, 0.3, 1.2
+    sh = shape(*ref.box(a, b, c))
+    phi = math.radians(60.0)
+    row = sh.parameters(phi)
+    t = min(a / 2 / math.cos(phi), b / 2 / math.sin(phi))
+    for s in SIDES:
+        assert math.isclose(row[f"uplift_3d_{s}"], G * t / (c / 2), rel_tol=1e-12)
+        assert math.isclose(row[f"b_{s}"], (a * math.cos(phi) + b * math.sin(phi)) / 2,
+                            rel_tol=1e-12)
+    # along an axis and along the diagonal both agree
+    for phi in (0.0, math.pi / 2, math.atan2(b, a)):
+        row = sh.parameters(phi)
+        assert math.isclose(row["uplift_3d_plus"], row["uplift_plus"], rel_tol=1e-12)
+
+
 def polygon_k2(r, n):
     """Second moment per unit area of the regular n-gon (circumradius r) about any
     centroidal axis: J/(2A) with J/A = r^2 (1 + 2 cos^2(pi/n)) / 6."""

@@ -37,6 +37,21 @@ momentum about O' is ``I_G w1 + m (G - O') x v_G`` with ``G - O' = (-b_o, h)``:
 m (r_g^2 + R_o^2) w2``, hence ``mu_s = w2 / w1`` above. For a rectangle (``b_s = b_o = b``,
 ``r_g^2 = R^2/3``) it is ``(R^2/3 + h^2 - b^2) / (4 R^2/3) = 1 - 1.5 sin^2(alpha)``, Eq 4.
 
+**Uplift of the 3-D body.** At rest, the body under the acceleration ``a e_phi`` tips
+when the resultant of its weight and inertial force, the line from the centre of mass
+along ``(-a e_phi, -g)``, leaves the support: at ``a = g t_s / h`` with ``t_s`` the
+distance from the centre of mass's vertical to the support's boundary along ``-e_phi``
+(side "+"; along ``+e_phi`` for "-"), through whichever edge the ray crosses. The planar
+pivot line, normal to ``e_phi`` through the support's extreme point, gives ``b_s >= t_s``
+instead: equal where the ray leaves through a vertex or an edge normal to ``e_phi``,
+larger where it crosses an edge obliquely (a box shaken along a direction between its
+axes tips about its long edge first, a planar block of that direction does not). The
+columns ``uplift_3d_plus`` / ``uplift_3d_minus`` (m/s^2) give ``g t_s / h``: where they
+are below ``uplift_s``, the planar block of that direction overestimates the uplift
+acceleration (unconservative). Both agree on the weakest direction and its uplift (the
+normal of the support edge nearest to the centre of mass, where the support function and
+the ray distance have the same minimum: that edge's distance).
+
 **Other contacts.** While the body rocks on side ``s`` by the tilt ``theta``, a point of
 it beyond the pivot (outward distance ``d > 0``, height ``z``) reaches the ground when
 ``tan(theta) = z / d``: the column ``contact_s`` is the smallest such tilt over the
@@ -49,8 +64,9 @@ The columns of :func:`directional_parameters` (SI units; angles in rad except
 ``phi_deg``): phi, phi_deg, h, b_plus, b_minus, radius_of_gyration, alpha_plus,
 alpha_minus, R_plus, R_minus, I_plus, I_minus (kg m^2), p_plus, p_minus, mu_plus,
 mu_minus, uplift_plus, uplift_minus (m/s^2), alpha_min, uplift_min (m/s^2), weak_side
-("+" or "-", the side of ``uplift_min``), contact_plus, contact_minus (rad) and overhang
-(bool: ``contact_s < alpha_s`` on either side).
+("+" or "-", the side of ``uplift_min``), uplift_3d_plus, uplift_3d_minus (m/s^2),
+contact_plus, contact_minus (rad) and overhang (bool: ``contact_s < alpha_s`` on either
+side).
 """
 
 from __future__ import annotations
@@ -67,7 +83,8 @@ from ..units import G
 COLUMNS = ("phi", "phi_deg", "h", "b_plus", "b_minus", "radius_of_gyration", "alpha_plus",
            "alpha_minus", "R_plus", "R_minus", "I_plus", "I_minus", "p_plus", "p_minus",
            "mu_plus", "mu_minus", "uplift_plus", "uplift_minus", "alpha_min", "uplift_min",
-           "weak_side", "contact_plus", "contact_minus", "overhang")
+           "weak_side", "uplift_3d_plus", "uplift_3d_minus", "contact_plus", "contact_minus",
+           "overhang")
 
 
 def as_directions(directions) -> np.ndarray:
@@ -116,6 +133,18 @@ def side_arrays(support, h, inertia_local, mass, phi, hull=None) -> dict:
     out["alpha_min"] = np.minimum(out["alpha_plus"], out["alpha_minus"])
     out["uplift_min"] = np.minimum(out["uplift_plus"], out["uplift_minus"])
     out["weak_side"] = np.where(out["uplift_plus"] <= out["uplift_minus"], "+", "-")
+    # the ray from the centre of mass's vertical to the support's boundary: edge i is the
+    # half-plane n_i . x <= c_i (outward unit normal, c_i > 0 for a point inside)
+    sup = np.asarray(support)
+    edge = np.roll(sup, -1, axis=0) - sup
+    normal = np.column_stack([edge[:, 1], -edge[:, 0]]) / np.hypot(edge[:, 0], edge[:, 1])[:, None]
+    dist = np.einsum("ij,ij->i", normal, sup)[:, None]  # (k, 1)
+    ne = normal @ np.vstack([c, s])  # (k, n): n_i . e_phi
+    with np.errstate(divide="ignore"):
+        t_minus = np.where(ne > 1e-15, dist / np.where(ne > 1e-15, ne, 1.0), np.inf).min(axis=0)
+        t_plus = np.where(ne < -1e-15, dist / np.where(ne < -1e-15, -ne, 1.0), np.inf).min(axis=0)
+    out["uplift_3d_plus"] = G * np.minimum(t_plus, b_plus) / h
+    out["uplift_3d_minus"] = G * np.minimum(t_minus, b_minus) / h
     if hull is not None:
         hull = np.asarray(hull)
         x = hull[:, :2] @ np.vstack([c, s])  # (j, n)

@@ -119,6 +119,16 @@ class Shape:
         arguments as :func:`load_shape`)."""
         return cls.from_arrays(np.asarray(mesh.vertices), np.asarray(mesh.faces), **kwargs)
 
+    def __post_init__(self):
+        for name in ("vertices", "faces", "com", "inertia", "frame", "local_vertices",
+                     "inertia_local", "support"):
+            getattr(self, name).setflags(write=False)
+
+    def __repr__(self) -> str:
+        return (f"Shape({self.name!r}, mass={self.mass:.6g} kg, volume={self.volume:.6g} m^3, "
+                f"height={self.height:.4g} m, h={self.h:.4g} m, {len(self.faces)} triangles"
+                f"{', repaired' if self.repaired else ''})")
+
     # ------------------------------------------------------------------ properties
     @property
     def support_area(self) -> float:
