@@ -500,6 +500,23 @@ def test_polygon_is_the_projected_hull():
     assert math.isclose(-poly[0, 0], row["b_plus"]) and math.isclose(poly[1, 0], row["b_minus"])
 
 
+def test_the_polygon_is_a_valid_dem_outline_and_the_true_inertia_is_at_hand():
+    from rocking.blocks.block import Block
+
+    sh = load_example()
+    for phi in np.linspace(0.0, 2 * np.pi, 36, endpoint=False):
+        poly = sh.polygon(phi)
+        row = sh.parameters(phi)
+        blk = Block.polygon(poly, mass=sh.mass)  # strictly convex, on a horizontal base
+        base = [x for x, z in blk.vertices if z == 0.0]
+        assert math.isclose(max(base) - min(base), row["b_plus"] + row["b_minus"],
+                            rel_tol=1e-12)
+        assert math.isclose(sh.inertia_about(phi), sh.mass * row["radius_of_gyration"] ** 2,
+                            rel_tol=1e-12)
+    # the axis normal to the plane of shaking along x is y: I_yy of the mesh
+    assert math.isclose(sh.inertia_about(0.0), sh.inertia[1, 1], rel_tol=1e-12)
+
+
 def test_plot_directional_marks_the_weakest_direction():
     tab = directional_parameters(load_example(), 90)
     fig = plot_directional(tab, title="statue")

@@ -93,6 +93,8 @@ def as_directions(directions) -> np.ndarray:
     if isinstance(directions, int | np.integer) and not isinstance(directions, bool):
         n = as_int("directions", directions, lo=1)
         return np.arange(n) * (2.0 * math.pi / n)
+    if isinstance(directions, bool | np.bool_):
+        raise ParameterError(f"directions must be a count or angles in rad, got {directions!r}")
     try:
         phi = np.array(directions, dtype=np.float64).reshape(-1)
     except (TypeError, ValueError):

@@ -155,6 +155,14 @@ class Shape:
                            np.array([phi]), self.hull_points())
         return {k: (v[0].item() if hasattr(v[0], "item") else v[0]) for k, v in cols.items()}
 
+    def inertia_about(self, direction: float = 0.0) -> float:
+        """The moment of inertia (kg m^2) about the horizontal axis through the centre of
+        mass normal to the plane of shaking of ``direction`` (rad): ``u . I . u``, ``u =
+        (-sin phi, cos phi, 0)`` in the frame (the DEM's body inertia)."""
+        phi = as_float("direction", direction)
+        u = np.array([-math.sin(phi), math.cos(phi), 0.0])
+        return float(u @ self.inertia_local @ u)
+
     def block(self, direction: float = 0.0, *, name: str | None = None, mu=None):
         """The planar :class:`rocking.Block` of the direction ``direction`` (rad): its
         sides' geometry through :meth:`rocking.Block.from_geometry`, with the mesh's mass
