@@ -102,10 +102,10 @@ class Shape:
         patch, hull2 = support_hull(local, tol_m)
         margin = inside_margin(hull2, np.zeros(2))
         if not margin > 1e-9 * size_of(v):
-            raise ParameterError(
-                f"the centre of mass's vertical falls {'on' if margin >= 0 else 'outside'} "
-                f"the support's edge ({abs(margin):.3g} m {'outside' if margin < 0 else ''}"
-                f"): the body cannot stand on its base along up={up!r}".replace(" )", ")"))
+            where = (f"{-margin:.3g} m outside the support" if margin < 0.0
+                     else "on the support's edge")
+            raise ParameterError(f"the centre of mass's vertical falls {where}: the body "
+                                 f"cannot stand on its base along up={up!r}")
         return cls(vertices=v, faces=f, mass=float(m), density=float(rho),
                    volume=props["volume"], com=com, inertia=inertia, frame=fr,
                    local_vertices=local, inertia_local=fr @ inertia @ fr.T,
