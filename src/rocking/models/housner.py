@@ -95,7 +95,6 @@ from ._numerics import dopri as D
 from ._numerics import events as E
 from .base import KernelResult, Model, ModelOptions, option, row_args, store_row
 
-HALF_PI = 0.5 * math.pi
 INV_G = 1.0 / G
 
 
@@ -118,63 +117,9 @@ def _acc(th, t, s, alpha, p2, lin, kind, prm, samples):
 
 
 @njit(cache=True)
-def _step(t, th, om, a1, h, s, alpha, p2, lin, kind, prm, samples):
-    """One Dormand-Prince step; returns (theta, omega, acc_end, err_theta, err_omega)."""
-    k1t, k1o = om, a1
-    k2t = om + h * D.A21 * k1o
-    k2o = _acc(th + h * D.A21 * k1t, t + D.C2 * h, s, alpha, p2, lin, kind, prm, samples)
-    k3t = om + h * (D.A31 * k1o + D.A32 * k2o)
-    k3o = _acc(th + h * (D.A31 * k1t + D.A32 * k2t), t + D.C3 * h, s, alpha, p2, lin,
-               kind, prm, samples)
-    k4t = om + h * (D.A41 * k1o + D.A42 * k2o + D.A43 * k3o)
-    k4o = _acc(th + h * (D.A41 * k1t + D.A42 * k2t + D.A43 * k3t), t + D.C4 * h, s, alpha,
-               p2, lin, kind, prm, samples)
-    k5t = om + h * (D.A51 * k1o + D.A52 * k2o + D.A53 * k3o + D.A54 * k4o)
-    k5o = _acc(th + h * (D.A51 * k1t + D.A52 * k2t + D.A53 * k3t + D.A54 * k4t),
-               t + D.C5 * h, s, alpha, p2, lin, kind, prm, samples)
-    k6t = om + h * (D.A61 * k1o + D.A62 * k2o + D.A63 * k3o + D.A64 * k4o + D.A65 * k5o)
-    k6o = _acc(th + h * (D.A61 * k1t + D.A62 * k2t + D.A63 * k3t + D.A64 * k4t
-                         + D.A65 * k5t), t + h, s, alpha, p2, lin, kind, prm, samples)
-    th1 = th + h * (D.B1 * k1t + D.B3 * k3t + D.B4 * k4t + D.B5 * k5t + D.B6 * k6t)
-    om1 = om + h * (D.B1 * k1o + D.B3 * k3o + D.B4 * k4o + D.B5 * k5o + D.B6 * k6o)
-    k7o = _acc(th1, t + h, s, alpha, p2, lin, kind, prm, samples)
-    k7t = om1
-    et = h * (D.E1 * k1t + D.E3 * k3t + D.E4 * k4t + D.E5 * k5t + D.E6 * k6t + D.E7 * k7t)
-    eo = h * (D.E1 * k1o + D.E3 * k3o + D.E4 * k4o + D.E5 * k5o + D.E6 * k6o + D.E7 * k7o)
-    return th1, om1, k7o, et, eo
-
-
-@njit(cache=True)
-def _emit(t0, th0, om0, a0, t1, th1, om1, a1, dt_out, k, out_th, out_om):
-    """Write output samples k*dt_out in (t0, t1] by Hermite interpolation; returns next k."""
-    n = out_th.shape[0]
-    h = t1 - t0
-    while k < n and k * dt_out <= t1 + 1e-12:
-        tk = k * dt_out
-        if h > 0.0:
-            x = min(max((tk - t0) / h, 0.0), 1.0)
-            th, om = D.hermite5(th0, om0, a0, th1, om1, a1, h, x)
-        else:
-            th, om = th1, om1
-        out_th[k] = th
-        out_om[k] = om
-        k += 1
-    return k
-
-
-@njit(cache=True)
-def _seg_peak(th0, om0, a0, th1, om1, a1, h, peak):
-    """Update the running max |theta| with the extremum inside a segment, if any."""
-    peak = max(peak, abs(th1))
-    if om0 * om1 < 0.0 and h > 0.0:
-        x = D.hermite_root(th0, om0, a0, th1, om1, a1, h, 0.0, 1, om0)
-        peak = max(peak, abs(D.hermite5(th0, om0, a0, th1, om1, a1, h, x)[0]))
-    return peak
-
-
-@njit(cache=True)
-def _amplitude_from_energy(om, alpha, p2, lin):
-    """Amplitude reached in free motion from theta = 0 with angular velocity om."""
+def amplitude_from_energy(om, alpha, p2, lin):
+    """Amplitude reached in free motion from theta = 0 with angular velocity om (Eq 1 with
+    ``a = 0``, energy conserved; infinite if it passes the tipping point)."""
     if lin:
         d = alpha * alpha - om * om / p2
         return alpha - math.sqrt(d) if d > 0.0 else math.inf
@@ -208,16 +153,29 @@ def free_outcome(th, om, s, alpha, p2, mu, lin):
         bottom = p2 * math.cos(alpha)
     away = th * om > 0.0 or (th == 0.0 and s * om > 0.0)
     if a > alpha and (away or e <= top):
-        return True, HALF_PI  # past the tipping point and not coming back over it
+        return True, D.HALF_PI  # past the tipping point and not coming back over it
     if not away:
         e = bottom + mu * mu * (e - bottom)
     if e > top:
-        return True, HALF_PI
+        return True, D.HALF_PI
     if lin:
         amp = alpha - math.sqrt(max(-2.0 * e / p2, 0.0))
     else:
         amp = alpha - math.acos(min(e / p2, 1.0))
     return False, amp
+
+
+@njit(cache=True)
+def free_cap(th, om, s, alpha, p, mu, lin, t, free_time, peak):
+    """At the cap of the free motion (the ground still) the energy decides the outcome
+    exactly (:func:`free_outcome`). Returns ``(decided, peak, t_end)``: decided, the block
+    returns to rest and ``peak`` includes the amplitude it will still reach; else it will
+    overturn and the run follows it there, up to ``t_end``: near the top the motion is
+    slow, ~ (1/p) ln(1/(E - p^2)), and 100/p covers any margin above double precision."""
+    will, amp = free_outcome(th, om, s, alpha, p * p, mu, lin)
+    if not will:
+        return True, max(peak, amp), t
+    return False, peak, t + max(free_time, 100.0 / p)
 
 
 @njit(cache=True)
@@ -235,28 +193,12 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, r
     c = alpha if lin else math.tan(alpha)
     thr = G * c
     hv = has_vertical(prm)
-    t_lift = math.nan
-    atol_th = rtol * alpha * 1e-3
-    atol_om = atol_th * p
-    n_out = out_th.shape[0]
-    cap = imp.shape[0]
-    t = 0.0
-    th = th0
-    om = om0
-    k = 0
-    n_imp = 0
-    n_steps = 0
-    peak = abs(th0)
-    overturned = False
-    decided = False
-    t_over = math.nan
-    t_up = math.nan
-    resting = th0 == 0.0 and om0 == 0.0
-    if not resting:
-        t_up = 0.0
-    s = 1.0
-    if th0 < 0.0 or (th0 == 0.0 and om0 < 0.0):
-        s = -1.0
+    atol_th, atol_om = D.abs_tols(rtol, alpha, p)
+    t, th, om, peak = 0.0, th0, om0, abs(th0)
+    k = n_imp = n_steps = 0
+    overturned = decided = False
+    t_over = t_lift = math.nan
+    resting, s, t_up = E.initial_state(th0, om0)
     h = min(h_max, 0.01 / p)
     a_cur = 0.0
     need_a = True
@@ -267,15 +209,10 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, r
             if resting or overturned or t_quiet > t_end or extended:
                 break
             # the cap of the free motion: the energy decides the outcome exactly
-            will, amp = free_outcome(th, om, s, alpha, p2, mu, lin)
-            if not will:
-                peak = max(peak, amp)
-                decided = True
+            decided, peak, t_end = free_cap(th, om, s, alpha, p, mu, lin, t, free_time, peak)
+            if decided:
                 break
-            # it will overturn: follow it there. Near the top the motion is slow, ~ (1/p)
-            # ln(1/(E - p^2)): 100/p covers any margin above double precision
-            t_end = t + max(free_time, 100.0 / p)
-            extended = True
+            extended = True  # it will overturn: follow it there
             continue
         if resting:
             if t >= t_quiet - 1e-12:
@@ -293,104 +230,55 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, r
         if need_a:
             a_cur = _acc(th, t, s, alpha, p2, lin, kind, prm, samples)
             need_a = False
-        bp = next_breakpoint(kind, prm, samples, t)
-        hh = min(h, h_max, t_end - t)
-        hit_bp = False
-        if t + hh >= bp - 1e-12:
-            hh = bp - t
-            hit_bp = True
-        th1, om1, a1, et, eo = _step(t, th, om, a_cur, hh, s, alpha, p2, lin, kind, prm,
-                                     samples)
+        args = (s, alpha, p2, lin, kind, prm, samples)
+        hh, hit_bp, th1, om1, a1, ok, h_next = D.trial(
+            _acc, args, t, th, om, a_cur, h, h_max, t_end, next_breakpoint(kind, prm, samples, t),
+            s, atol_th, atol_om, rtol)
         n_steps += 1
-        err = D.err_norm(et, eo, th, th1, om, om1, atol_th, atol_om, rtol)
-        if not (err <= 1.0):
-            fac = 0.9 * err ** -0.2 if err == err else 0.1
-            h = hh * max(0.1, fac)
+        if not ok:  # too large an error, or two crossings hidden in the step: shorter
+            h = h_next
             continue
-        # ---- accepted step: events. A step that hides two crossings is retried shorter.
-        if D.sign_changes(th, om, a_cur, th1, om1, a1, hh, s) >= 2:
-            h = 0.5 * hh
-            continue
+        # ---- accepted step: events
         tc = E.first_lift_off(prm, samples, t, t + hh, h_scan) if hv else math.nan
         if tc == tc:
             # the base falls away (g + a_v <= 0): the model cannot represent flight
-            thc, omc, ac, _e1, _e2 = _step(t, th, om, a_cur, tc - t, s, alpha, p2, lin, kind,
-                                           prm, samples)
-            if s * thc >= 0.0 and abs(thc) < HALF_PI:  # else an event comes first
-                if n_out > 0:
-                    k = _emit(t, th, om, a_cur, tc, thc, omc, ac, dt_out, k, out_th, out_om)
-                peak = _seg_peak(th, om, a_cur, thc, omc, ac, tc - t, peak)
-                t, th, om = tc, thc, omc
-                t_lift = tc
+            stops, thc, omc, k, pk = D.stop_inside(_acc, args, t, th, om, a_cur, tc, s, dt_out,
+                                                   k, out_th, out_om, peak)
+            if stops:
+                t, th, om, peak, t_lift = tc, thc, omc, pk, tc
                 break
         if s * th1 < 0.0:
             # impact inside the step: safeguarded Newton on the step length
-            x = D.hermite_root(th, om, a_cur, th1, om1, a1, hh, 0.0, 0, s)
-            lo, hi = 0.0, hh
-            sig = x * hh
-            thc, omc, ac = th1, om1, a1
-            for _ in range(40):
-                thc, omc, ac, _e1, _e2 = _step(t, th, om, a_cur, sig, s, alpha, p2, lin,
-                                               kind, prm, samples)
-                if s * thc > 0.0:
-                    lo = sig
-                else:
-                    hi = sig
-                if abs(thc) <= 1e-15 * alpha or hi - lo <= 1e-15 * (1.0 + t):
-                    break
-                new = sig - thc / omc if omc != 0.0 else -1.0
-                if not (lo < new < hi):
-                    new = 0.5 * (lo + hi)
-                sig = new
-            tc = t + sig
-            k = _emit(t, th, om, a_cur, tc, 0.0, omc, ac, dt_out, k, out_th, out_om) \
-                if n_out > 0 else k
-            peak = _seg_peak(th, om, a_cur, 0.0, omc, ac, sig, peak)
-            if n_imp < cap:
-                imp[n_imp] = tc
-            n_imp += 1
-            t = tc
+            t, sig, omc, k, peak, n_imp = D.impact(_acc, args, t, th, om, a_cur, th1, om1, a1,
+                                                   hh, s, 1e-15 * alpha, dt_out, k, out_th,
+                                                   out_om, peak, imp, n_imp)
             th = 0.0
             om = mu * omc
             ag = ground_acc(kind, prm, samples, t)
             p2e = p2 * (1.0 + vertical_acc(prm, samples, t) / G) if hv else p2
             rt = rest_tol if t < t_quiet else max(rest_tol, free_rest_tol)
-            if om == 0.0 or _amplitude_from_energy(om, alpha, p2e, lin) < rt * alpha:
+            if om == 0.0 or amplitude_from_energy(om, alpha, p2e, lin) < rt * alpha:
                 if abs(ag) <= E.threshold(thr, c, prm, samples, t):
                     resting = True
                     om = 0.0
                     continue
-            if om != 0.0:
-                s = 1.0 if om > 0.0 else -1.0
-            else:  # velocity underflow while the ground can uplift: go its way
-                s = 1.0 if ag > 0.0 else -1.0
+            s = E.rebound_side(om, ag)
             a_cur = _acc(0.0, t, s, alpha, p2, lin, kind, prm, samples)
             need_a = False
-            h = min(h_max, max(hh, 1e-6 / p))
-            if om * a_cur < 0.0:
-                # the rebound lasts 2|om/a|: the first step must not jump over it
-                h = min(h, 0.5 * abs(om / a_cur))
+            h = D.rebound_length(hh, 1e-6 / p, h_max, om, a_cur)
             continue
-        if abs(th1) >= HALF_PI:
-            x = D.hermite_root(th, om, a_cur, th1, om1, a1, hh, s * HALF_PI, 0, -s)
-            t_over = t + x * hh
-            thx, omx = D.hermite5(th, om, a_cur, th1, om1, a1, hh, x)
-            if n_out > 0:
-                k = _emit(t, th, om, a_cur, t_over, s * HALF_PI, omx, a1, dt_out, k,
-                          out_th, out_om)
-            overturned = True
-            peak = HALF_PI
-            t = t_over
+        if abs(th1) >= D.HALF_PI:
+            t_over, k = D.overturn(t, th, om, a_cur, th1, om1, a1, hh, s, dt_out, k, out_th,
+                                   out_om)
+            t, overturned, peak = t_over, True, D.HALF_PI
             break
-        if n_out > 0:
-            k = _emit(t, th, om, a_cur, t + hh, th1, om1, a1, dt_out, k, out_th, out_om)
-        peak = _seg_peak(th, om, a_cur, th1, om1, a1, hh, peak)
+        k, peak = D.segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th,
+                            out_om, peak)
         t = t + hh
         th, om, a_cur = th1, om1, a1
         if hit_bp:
             need_a = True  # the excitation has a kink or jump here
-        fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
-        h = hh * min(5.0, max(0.2, fac)) if not hit_bp or hh >= h else max(h, hh)
+        h = h_next
     settled = overturned or decided or (resting and t_lift != t_lift)
     return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
 
@@ -442,8 +330,9 @@ the free motion (``benchmarks/bench_campaign.py --only tail``)."""
 
 
 @dataclass(frozen=True)
-class HousnerOptions(ModelOptions):
-    """Options of the classical model."""
+class ClassicalTolerances(ModelOptions):
+    """The options of the classical integration (error control and Zeno rule), shared by
+    the models built on it (:mod:`rocking.models.anchored`)."""
 
     rtol: float = option(DEFAULT_RTOL, lo=1e-13, hi=1e-2, lo_open=False,
                          help="relative tolerance of the adaptive Dormand-Prince steps")
@@ -454,6 +343,12 @@ class HousnerOptions(ModelOptions):
                                   help="Zeno rule once the ground is still (after the "
                                        "motion): free amplitude (fraction of alpha) below "
                                        "which the block is at rest")
+
+
+@dataclass(frozen=True)
+class HousnerOptions(ClassicalTolerances):
+    """Options of the classical model."""
+
     linear: bool = option(False, help="small-angle form of Eq 1")
 
 

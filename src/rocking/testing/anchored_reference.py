@@ -99,7 +99,7 @@ from ..errors import ParameterError
 from ..motions import Motion
 from ..motions.ground import GroundMotion
 from ..units import G
-from .housner_reference import Excitation
+from .housner_reference import Excitation, FunctionMotion, free_amplitude
 
 HALF_PI = 0.5 * math.pi
 DEFAULT_REST_TOL = 1e-12
@@ -147,19 +147,6 @@ class AnchoredResponse:
             return 0.0, 0.0
         y = sol.sol(min(max(t, ta), tb))
         return float(y[0]), float(y[1])
-
-
-class _Callable:
-    """A plain function ``a(t)`` (m/s^2) as something :class:`Excitation` takes."""
-
-    def __init__(self, fn, scan_step):
-        self.acceleration = fn
-        self.scan_step = scan_step
-
-
-def _free_amplitude(om, alpha, p):
-    c = math.cos(alpha) + 0.5 * (om / p) ** 2
-    return alpha - math.acos(c) if c < 1.0 else math.inf
 
 
 def _point_values(exc: Excitation, t: float) -> tuple[float, ...]:
@@ -272,7 +259,7 @@ def simulate_anchored_reference(block, motion, t_end: float, anchor_strength: fl
     elif callable(motion):
         if scan_step is None:
             raise ParameterError("a motion given as a function needs scan_step (s)")
-        exc = Excitation(_Callable(motion, positive("scan_step", scan_step, "s")))
+        exc = Excitation(FunctionMotion(motion, positive("scan_step", scan_step, "s")))
     else:
         raise ParameterError("motion must be a rocking Motion or a function a(t)")
     alpha, p, mu = block.alpha, block.p, block.mu
@@ -393,7 +380,7 @@ def simulate_anchored_reference(block, motion, t_end: float, anchor_strength: fl
             th, t = 0.0, te
             a_t = _point_values(exc, t)[0]
             can_lift = a_t > thr(1.0) or -a_t > thr(-1.0)
-            if om == 0.0 or (_free_amplitude(om, alpha, p) < rest_tol * alpha
+            if om == 0.0 or (free_amplitude(om, alpha, p) < rest_tol * alpha
                              and not can_lift):
                 resting, om = True, 0.0
                 continue

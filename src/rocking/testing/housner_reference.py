@@ -76,7 +76,7 @@ from ..units import G
 HALF_PI = 0.5 * math.pi
 METHODS = ("DOP853", "RK45", "RK23", "Radau", "BDF", "LSODA")
 
-__all__ = ["simulate_reference", "Excitation"]
+__all__ = ["simulate_reference", "Excitation", "FunctionMotion", "free_amplitude"]
 
 
 # ------------------------------------------------------------------------- excitation
@@ -181,6 +181,15 @@ class Excitation:
             if abs(w) > abs(v):
                 v = w
         return v
+
+
+class FunctionMotion:
+    """A plain function ``a(t)`` (m/s^2) as something :class:`Excitation` takes, scanned
+    every ``scan_step`` (s) for the crossings of a level."""
+
+    def __init__(self, fn, scan_step):
+        self.acceleration = fn
+        self.scan_step = scan_step
 
 
 def _const(c):
@@ -322,7 +331,7 @@ def _refine(fn, lo, hi, thr):
 
 
 # ------------------------------------------------------------------------------ model
-def _free_amplitude(om, alpha, p, linear):
+def free_amplitude(om, alpha, p, linear=False):
     """Amplitude reached in free motion from theta = 0 with angular velocity ``om``
     (energy conservation of Eq 1 with a = 0); inf if the block would pass alpha."""
     if linear:
@@ -511,7 +520,7 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             gf = 1.0 + exc.vertical(t) / G
             thr_t = c_up * G * gf if has_v else thr
             rt = rest_tol if t < t_quiet else max(rest_tol, free_rest_tol)
-            if om == 0.0 or (_free_amplitude(om, alpha, p * math.sqrt(max(gf, 1e-300)),
+            if om == 0.0 or (free_amplitude(om, alpha, p * math.sqrt(max(gf, 1e-300)),
                                              linear) < rt * alpha
                              and abs(exc(t)) <= thr_t):
                 resting = True  # uplift test again from here (immediate if |a| > thr)

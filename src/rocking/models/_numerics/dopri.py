@@ -1,7 +1,14 @@
 """Compiled building blocks shared by the model kernels: a Dormand-Prince 5(4) step for a
-second-order scalar equation ``theta'' = f(t, theta)`` and quintic Hermite interpolation.
+second-order scalar equation ``theta'' = f(t, theta)``, its step-size control, quintic
+Hermite interpolation, and the location of crossings (impact ``theta = 0``, overturning
+``|theta| = pi/2``, a level of ``theta``) inside a step, with the output and peak of a
+segment.
 
-Kept model-agnostic: the right-hand side is passed in as a compiled function.
+Kept model-agnostic: the right-hand side is passed in as a compiled function ``acc`` with
+its arguments ``args`` (``acc(theta, t, *args)``). The helpers that take ``acc`` are
+``inline="always"``: inlined, the call is resolved at compile time, whereas a compiled
+function passed on as a run-time value would keep its address in the machine code and
+numba would refuse to cache the kernel ("dynamic globals").
 """
 
 from __future__ import annotations
@@ -9,6 +16,8 @@ from __future__ import annotations
 import math
 
 from numba import njit
+
+HALF_PI = 0.5 * math.pi
 
 # Dormand-Prince 5(4) tableau (Hairer, Norsett & Wanner, Table II.5.2)
 C2, C3, C4, C5 = 1 / 5, 3 / 10, 4 / 5, 8 / 9
@@ -84,8 +93,183 @@ def sign_changes(th0, om0, a0, th1, om1, a1, h, s):
 
 
 @njit(cache=True)
+def abs_tols(rtol, alpha, p):
+    """Absolute tolerances ``(angle, velocity)`` of the error norm for a block of
+    slenderness ``alpha`` and frequency parameter ``p``: ``1e-3 rtol alpha``, times ``p``."""
+    atol_th = rtol * alpha * 1e-3
+    return atol_th, atol_th * p
+
+
+@njit(cache=True)
 def err_norm(e_th, e_om, th0, th1, om0, om1, atol_th, atol_om, rtol):
     """RMS of the scaled error estimates (the usual mixed absolute/relative norm)."""
     s1 = atol_th + rtol * max(abs(th0), abs(th1))
     s2 = atol_om + rtol * max(abs(om0), abs(om1))
     return math.sqrt(0.5 * ((e_th / s1) ** 2 + (e_om / s2) ** 2))
+
+
+@njit(cache=True, inline="always")
+def step(acc, t, th, om, a1, h, args):
+    """One Dormand-Prince step of ``theta'' = acc(theta, t, *args)`` from ``(th, om)`` at
+    ``t``, with ``a1`` the acceleration there (first same as last); returns
+    ``(theta, omega, acc_end, err_theta, err_omega)``."""
+    k1t, k1o = om, a1
+    k2t = om + h * A21 * k1o
+    k2o = acc(th + h * A21 * k1t, t + C2 * h, *args)
+    k3t = om + h * (A31 * k1o + A32 * k2o)
+    k3o = acc(th + h * (A31 * k1t + A32 * k2t), t + C3 * h, *args)
+    k4t = om + h * (A41 * k1o + A42 * k2o + A43 * k3o)
+    k4o = acc(th + h * (A41 * k1t + A42 * k2t + A43 * k3t), t + C4 * h, *args)
+    k5t = om + h * (A51 * k1o + A52 * k2o + A53 * k3o + A54 * k4o)
+    k5o = acc(th + h * (A51 * k1t + A52 * k2t + A53 * k3t + A54 * k4t), t + C5 * h, *args)
+    k6t = om + h * (A61 * k1o + A62 * k2o + A63 * k3o + A64 * k4o + A65 * k5o)
+    k6o = acc(th + h * (A61 * k1t + A62 * k2t + A63 * k3t + A64 * k4t + A65 * k5t), t + h,
+              *args)
+    th1 = th + h * (B1 * k1t + B3 * k3t + B4 * k4t + B5 * k5t + B6 * k6t)
+    om1 = om + h * (B1 * k1o + B3 * k3o + B4 * k4o + B5 * k5o + B6 * k6o)
+    k7o = acc(th1, t + h, *args)
+    k7t = om1
+    et = h * (E1 * k1t + E3 * k3t + E4 * k4t + E5 * k5t + E6 * k6t + E7 * k7t)
+    eo = h * (E1 * k1o + E3 * k3o + E4 * k4o + E5 * k5o + E6 * k6o + E7 * k7o)
+    return th1, om1, k7o, et, eo
+
+
+@njit(cache=True, inline="always")
+def locate(acc, args, t, th, om, a0, th1, om1, a1, h, s, level, rising, tol, iters):
+    """Where ``g = s theta - level`` reaches 0 inside the step ``(t, th, om, a0) -> (th1,
+    om1, a1)`` of length ``h`` (``rising``: g goes from < 0 to >= 0, else from > 0 to <= 0):
+    safeguarded Newton on the length of the Dormand-Prince step from the Hermite estimate,
+    at most ``iters`` steps, until ``|g| <= tol`` or the bracket is 1e-15 (1 + t) wide.
+    Returns ``(length, theta, omega, acc)`` there."""
+    x = hermite_root(th, om, a0, th1, om1, a1, h, s * level, 0, -s if rising else s)
+    lo, hi = 0.0, h
+    sig = x * h
+    thc, omc, ac = th1, om1, a1
+    for _ in range(iters):
+        thc, omc, ac, _e1, _e2 = step(acc, t, th, om, a0, sig, args)
+        g = s * thc - level
+        past = g >= 0.0 if rising else not (g > 0.0)
+        if past:
+            hi = sig
+        else:
+            lo = sig
+        if abs(g) <= tol or hi - lo <= 1e-15 * (1.0 + t):
+            break
+        new = sig - g / (s * omc) if omc != 0.0 else -1.0
+        if not (lo < new < hi):
+            new = 0.5 * (lo + hi)
+        sig = new
+    return sig, thc, omc, ac
+
+
+@njit(cache=True)
+def emit(t0, th0, om0, a0, t1, th1, om1, a1, dt_out, k, out_th, out_om):
+    """Write output samples k*dt_out in (t0, t1] by Hermite interpolation; returns next k."""
+    n = out_th.shape[0]
+    h = t1 - t0
+    while k < n and k * dt_out <= t1 + 1e-12:
+        tk = k * dt_out
+        if h > 0.0:
+            x = min(max((tk - t0) / h, 0.0), 1.0)
+            th, om = hermite5(th0, om0, a0, th1, om1, a1, h, x)
+        else:
+            th, om = th1, om1
+        out_th[k] = th
+        out_om[k] = om
+        k += 1
+    return k
+
+
+@njit(cache=True)
+def seg_peak(th0, om0, a0, th1, om1, a1, h, peak):
+    """``max(peak, |theta|)`` over a segment: its end and its interior extremum, if any."""
+    peak = max(peak, abs(th1))
+    if om0 * om1 < 0.0 and h > 0.0:
+        x = hermite_root(th0, om0, a0, th1, om1, a1, h, 0.0, 1, om0)
+        peak = max(peak, abs(hermite5(th0, om0, a0, th1, om1, a1, h, x)[0]))
+    return peak
+
+
+@njit(cache=True, inline="always")
+def trial(acc, args, t, th, om, a0, h, h_max, t_end, bp, s, atol_th, atol_om, rtol):
+    """One trial step from ``t`` of length ``hh = min(h, h_max, t_end - t)``, shortened onto
+    the breakpoint ``bp`` of the excitation when it reaches it (``hit_bp``). Returns ``(hh,
+    hit_bp, theta, omega, acc_end, ok, h_next)``: ``ok`` False if the error is too large or
+    the step hides two crossings of ``theta = 0`` on branch ``s`` (``h_next``: the length to
+    retry with), else ``h_next`` is the proposal for the next step (a step cut short by a
+    breakpoint keeps the proposal ``h``)."""
+    hh = min(h, h_max, t_end - t)
+    hit_bp = False
+    if t + hh >= bp - 1e-12:
+        hh = bp - t
+        hit_bp = True
+    th1, om1, a1, et, eo = step(acc, t, th, om, a0, hh, args)
+    err = err_norm(et, eo, th, th1, om, om1, atol_th, atol_om, rtol)
+    if not (err <= 1.0):
+        fac = 0.9 * err ** -0.2 if err == err else 0.1
+        return hh, hit_bp, th1, om1, a1, False, hh * max(0.1, fac)
+    if sign_changes(th, om, a0, th1, om1, a1, hh, s) >= 2:
+        return hh, hit_bp, th1, om1, a1, False, 0.5 * hh
+    fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
+    h_next = hh * min(5.0, max(0.2, fac)) if not hit_bp or hh >= h else max(h, hh)
+    return hh, hit_bp, th1, om1, a1, True, h_next
+
+
+@njit(cache=True)
+def rebound_length(hh, h_min, h_max, om, a):
+    """The first step after an impact (velocity ``om``, acceleration ``a``): the rebound
+    lasts ``2 |om/a|`` when ``a`` pulls back, and the step must not jump over it."""
+    h = min(h_max, max(hh, h_min))
+    if om * a < 0.0:
+        h = min(h, 0.5 * abs(om / a))
+    return h
+
+
+@njit(cache=True)
+def segment(t0, th0, om0, a0, t1, th1, om1, a1, h, dt_out, k, out_th, out_om, peak):
+    """A segment of length ``h`` from ``t0`` to ``t1`` is done: its output samples
+    (:func:`emit`, none if ``out_th`` is empty) and ``max(peak, |theta|)`` over it
+    (:func:`seg_peak`). Returns ``(k, peak)``."""
+    if out_th.shape[0] > 0:
+        k = emit(t0, th0, om0, a0, t1, th1, om1, a1, dt_out, k, out_th, out_om)
+    return k, seg_peak(th0, om0, a0, th1, om1, a1, h, peak)
+
+
+@njit(cache=True, inline="always")
+def stop_inside(acc, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om, peak):
+    """The state at ``tc`` inside a step from ``t``, where the run stops (lift-off) if the
+    block is still on branch ``s`` and below ``pi/2`` there (else an event comes first):
+    returns ``(stops, theta, omega, k, peak)`` (:func:`segment` up to ``tc`` if it stops)."""
+    thc, omc, ac, _e1, _e2 = step(acc, t, th, om, a0, tc - t, args)
+    if not (s * thc >= 0.0 and abs(thc) < HALF_PI):
+        return False, thc, omc, k, peak
+    k, peak = segment(t, th, om, a0, tc, thc, omc, ac, tc - t, dt_out, k, out_th, out_om,
+                      peak)
+    return True, thc, omc, k, peak
+
+
+@njit(cache=True, inline="always")
+def impact(acc, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k, out_th, out_om,
+           peak, imp, n_imp):
+    """The impact (``s theta`` falls to 0) inside the step: located by :func:`locate`
+    (``|theta| <= tol``), :func:`segment` up to it, its time stored in ``imp`` (up to its
+    length). Returns ``(t_impact, length, omega_before, k, peak, n_imp + 1)``."""
+    sig, thc, omc, ac = locate(acc, args, t, th, om, a0, th1, om1, a1, h, s, 0.0, False, tol,
+                               40)
+    tc = t + sig
+    k, peak = segment(t, th, om, a0, tc, 0.0, omc, ac, sig, dt_out, k, out_th, out_om, peak)
+    if n_imp < imp.shape[0]:
+        imp[n_imp] = tc
+    return tc, sig, omc, k, peak, n_imp + 1
+
+
+@njit(cache=True)
+def overturn(t, th, om, a0, th1, om1, a1, h, s, dt_out, k, out_th, out_om):
+    """The block reaches ``|theta| = pi/2`` inside the step: returns ``(t_over, k)`` (the
+    output up to it)."""
+    x = hermite_root(th, om, a0, th1, om1, a1, h, s * HALF_PI, 0, -s)
+    t_over = t + x * h
+    thx, omx = hermite5(th, om, a0, th1, om1, a1, h, x)
+    if out_th.shape[0] > 0:
+        k = emit(t, th, om, a0, t_over, s * HALF_PI, omx, a1, dt_out, k, out_th, out_om)
+    return t_over, k

@@ -80,6 +80,36 @@ def first_lift_off(prm, samples, t0, t1, h_scan):
 
 
 @njit(cache=True)
+def initial_state(th0, om0):
+    """``(resting, s, t_up)`` of a run from ``(th0, om0)``: at rest iff both are 0; the
+    branch ``s`` (pivot, +1/-1) of the angle, or of the velocity at ``th0 = 0``; the uplift
+    time 0 if the block starts rocking (NaN: not yet)."""
+    resting = th0 == 0.0 and om0 == 0.0
+    s = -1.0 if th0 < 0.0 or (th0 == 0.0 and om0 < 0.0) else 1.0
+    return resting, s, math.nan if resting else 0.0
+
+
+@njit(cache=True)
+def rebound_side(om, ag):
+    """The branch (pivot, +1/-1) after an impact: that of the velocity ``om``, or of the
+    ground acceleration ``ag`` if ``om`` underflowed to 0 while the ground can uplift."""
+    if om != 0.0:
+        return 1.0 if om > 0.0 else -1.0
+    return 1.0 if ag > 0.0 else -1.0
+
+
+@njit(cache=True)
+def rest_fill(k, t_lim, dt_out, out_th, out_om):
+    """Write zeros (at rest) to the output samples ``k * dt_out < t_lim``; returns next k."""
+    n_out = out_th.shape[0]
+    while k < n_out and k * dt_out < t_lim:
+        out_th[k] = 0.0
+        out_om[k] = 0.0
+        k += 1
+    return k
+
+
+@njit(cache=True)
 def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c, dt_out, k, out_th, out_om,
                  t_up):
     """Advance a block at rest until the uplift criterion ``|a_h| > c (g + a_v)`` holds or
@@ -95,10 +125,7 @@ def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c, dt_out, k, out_th
     n_out = out_th.shape[0]
     while True:
         if _trips(kind, prm, samples, t, thr, c):
-            while k < n_out and k * dt_out < t - 1e-12:
-                out_th[k] = 0.0
-                out_om[k] = 0.0
-                k += 1
+            k = rest_fill(k, t - 1e-12, dt_out, out_th, out_om)
             if lifts_off(prm, samples, t):
                 return t, k, LIFT_OFF, t_up
             ag = ground_acc(kind, prm, samples, t)
@@ -125,8 +152,5 @@ def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c, dt_out, k, out_th
                 if hi - lo < 1e-13:
                     break
             t1 = hi
-        while k < n_out and k * dt_out < t1 - 1e-12:
-            out_th[k] = 0.0
-            out_om[k] = 0.0
-            k += 1
+        k = rest_fill(k, t1 - 1e-12, dt_out, out_th, out_om)
         t = t1
