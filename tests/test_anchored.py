@@ -271,3 +271,16 @@ def test_elastic_anchors_pass_the_model_contract():
         Options = ElasticOptions
 
     check_model(AnchoredElastic)
+
+
+def test_an_intact_elastic_anchor_at_overturning_carries_kappa():
+    """An elastic anchor weaker in stiffness than in strength (kappa < q) never breaks:
+    when the block overturns its force is kappa sin(pi/2) = kappa (fraction of m g),
+    the largest it reached."""
+    pulse = OneSine(6.0 * THR, 1.0, duration=1.0)
+    kappa, q = 0.05, 0.5
+    r = rocking.simulate(BLOCK, pulse, model="anchored", anchors="elastic",
+                         anchor_strength=q, anchor_stiffness=kappa, duration=3.0)
+    assert r.overturned
+    assert r.info["anchor_broken"] == [False, False]
+    assert r.info["max_anchor_force"] == pytest.approx(kappa, rel=1e-12)

@@ -156,7 +156,8 @@ def integrate(alpha, p, mu, q, kappa, rigid, kind, prm, samples, t_end, t_quiet,
     p2 = p * p
     c = math.tan(alpha)
     hv = has_vertical(prm)
-    th_b = math.asin(min(q / kappa, 1.0)) if not rigid else 0.0
+    # the elastic anchor breaks at kappa sin|theta| = q; never before pi/2 if q >= kappa
+    th_b = (math.asin(q / kappa) if q < kappa else math.inf) if not rigid else 0.0
     atol_th, atol_om = D.abs_tols(rtol, alpha, p)
     bp = bm = overturned = decided = False  # bp, bm: the anchor +, - has broken
     tbp = tbm = t_over = t_lift = math.nan
@@ -282,6 +283,8 @@ def integrate(alpha, p, mu, q, kappa, rigid, kind, prm, samples, t_end, t_quiet,
             t_over, k = D.overturn(t, th, om, a_cur, th1, om1, a1, hh, s, dt_out, k, out_th,
                                    out_om)
             t, overturned, peak = t_over, True, D.HALF_PI
+            if ka > 0.0:  # an intact elastic anchor at pi/2 carries kappa sin(pi/2)
+                fmax = max(fmax, kappa)
             break
         k, pk = D.segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th,
                           out_om, abs(th))
@@ -337,7 +340,7 @@ class AnchoredOptions(ClassicalTolerances):
     """Options of the anchored block (after those of the classical integration)."""
 
     anchor_strength: float = option(
-        0.5, lo=0.0, hi=1e3, lo_open=False, unit="",
+        0.5, lo=0.0, hi=1e3, lo_open=False, quantity="ratio", unit="",
         help="tensile strength of each anchor as a fraction of the block's weight, "
              "q = F_a/(m g)")
     anchors: str = option("rigid", choices=("rigid", "elastic"),

@@ -616,21 +616,22 @@ class IsolatedOptions(ModelOptions):
     isolation: str = option("linear", choices=("linear", "pendulum"),
                             help="isolator: linear (period, damping ratio) or friction "
                                  "pendulum (radius, friction)")
-    isolation_period: float = option(2.0, unit="s", lo=0.0, hi=100.0,
+    isolation_period: float = option(2.0, quantity="time", unit="s", lo=0.0, hi=100.0,
                                      help="period of block and plate on the linear isolator")
-    isolation_damping: float = option(0.05, unit="", lo=0.0, hi=10.0, lo_open=False,
+    isolation_damping: float = option(0.05, quantity="ratio", unit="", lo=0.0, hi=10.0,
+                                      lo_open=False,
                                       help="damping ratio of the linear isolator")
     mass_ratio: float = option(1.0, lo=0.0, hi=1e12, help="plate mass / block mass")
-    radius: float = option(2.0, unit="m", lo=0.0, hi=1e4,
+    radius: float = option(2.0, quantity="length", unit="m", lo=0.0, hi=1e4,
                            help="radius of curvature of the friction pendulum")
     friction: float = option(0.05, lo=0.0, hi=1.0, lo_open=False,
                              help="friction coefficient of the friction pendulum")
     v_eps: float = option(1e-3, unit="m/s", lo=0.0, hi=1.0,
                           help="velocity of the tanh regularisation of friction")
-    clearance: float | None = option(None, unit="m", lo=0.0, hi=1e3,
+    clearance: float | None = option(None, quantity="length", unit="m", lo=0.0, hi=1e3,
                                      help="moat clearance: the run stops when |u| reaches "
                                           "it, unless stop_period is given (None: no moat)")
-    stop_period: float | None = option(None, unit="s", lo=0.0, hi=100.0,
+    stop_period: float | None = option(None, quantity="time", unit="s", lo=0.0, hi=100.0,
                                        help="the moat wall as a stiff linear spring beyond "
                                             "the clearance: the period of block and plate "
                                             "on it alone (None: the run stops at the "
@@ -639,7 +640,7 @@ class IsolatedOptions(ModelOptions):
                               help="restitution (None: derived from the momentum balance)")
     rest_tol: float = option(1e-12, lo=0.0, hi=1e-2, lo_open=False,
                              help="Zeno threshold (fraction of alpha)")
-    max_step: float = option(0.01, unit="s", lo=0.0, hi=0.1,
+    max_step: float = option(0.01, quantity="time", unit="s", lo=0.0, hi=0.1,
                              help="largest time step of the adaptive steps")
     rtol: float = option(DEFAULT_RTOL, lo=1e-13, hi=1e-2, lo_open=False,
                          help="relative tolerance of the adaptive Dormand-Prince steps")
