@@ -640,7 +640,7 @@ class IsolatedOptions(ModelOptions):
                               help="restitution (None: derived from the momentum balance)")
     rest_tol: float = option(1e-12, lo=0.0, hi=1e-2, lo_open=False,
                              help="Zeno threshold (fraction of alpha)")
-    max_step: float = option(0.01, quantity="time", unit="s", lo=0.0, hi=0.1,
+    max_step: float = option(0.01, unit="s", lo=0.0, hi=0.1,
                              help="largest time step of the adaptive steps")
     rtol: float = option(DEFAULT_RTOL, lo=1e-13, hi=1e-2, lo_open=False,
                          help="relative tolerance of the adaptive Dormand-Prince steps")
