@@ -177,7 +177,7 @@ class Shape:
                 f"beyond its pivot at a tilt of {tilt:.3g} deg, before its overturning "
                 "angle; the planar block ignores that contact")
         label = name if name is not None else (
-            f"{self.name or 'mesh'} @ {math.degrees(q['phi']):g} deg")
+            f"{self.name or 'mesh'} @ {math.degrees(q['phi']):.1f} deg")
         return Block.from_geometry(q["h"], q["b_plus"], q["b_minus"],
                                    q["radius_of_gyration"], mass=self.mass, name=label, mu=mu)
 
