@@ -24,6 +24,30 @@ which is ``1 - (2 M R^2 / I_O) sin^2(alpha)`` for a symmetric block and Eq 4 for
 rectangle. The discrete element model (``model="dem"``) uses the polygon as the contact
 geometry.
 
+Asymmetric blocks (issue 20; Contento and Di Egidio 2009) rock about two pivots with
+different parameters: side "+" is the pivot of ``theta > 0`` (a positive ground
+acceleration drives ``theta`` positive, Eq 1), side "-" the other.
+:meth:`Block.from_geometry` builds one from the centre of mass's height ``h``, its
+horizontal distances ``b_plus``, ``b_minus`` to the two pivots and the centroidal radius
+of gyration ``r_g``: per side ``s``
+
+.. math:: \\alpha_s = \\arctan(b_s/h),\\quad R_s = \\sqrt{b_s^2 + h^2},\\quad
+          p_s^2 = \\frac{g R_s}{r_g^2 + R_s^2},\\quad
+          \\mu_s = \\frac{r_g^2 + h^2 - b_s b_{\\bar s}}{r_g^2 + R_{\\bar s}^2},
+
+``mu_s`` being the restitution of the impact that ends rocking on side ``s`` (the body
+lands on the other pivot ``s̄``; angular momentum about the new pivot is conserved: before
+the impact the centre of mass moves with ``omega x (c - O_s)``, so ``H_{O_s̄} = m omega
+(r_g^2 + h^2 - b_s b_s̄)``, after it ``m (r_g^2 + R_s̄^2) omega'``). For a rectangle
+(``b_s = b``, ``r_g^2 = R^2/3``) these are Eqs 2-4. The per-side values are the
+attributes ``alpha_plus``/``alpha_minus``, ``p_*``, ``R_*``, ``mu_*`` (equal to ``alpha``,
+``p``, ``R``, ``mu`` for a symmetric block); the one-number summaries ``alpha``, ``p``,
+``R``, ``mu`` (and ``uplift_acceleration``) of an asymmetric block are those of its
+*weaker side*, the one with the smaller ``alpha`` ("+" on a tie): the side it uplifts and
+overturns towards first. ``mu`` is then the restitution of the impact that ends rocking on
+that side. The classical model and CCRR use both sides; the other models refuse an
+asymmetric block.
+
 All quantities are SI: m, kg, kg m^2, rad, 1/s.
 """
 
@@ -31,7 +55,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from .._validate import as_float, in_range, non_negative, positive, warn_implausible
 from ..errors import ParameterError
@@ -104,6 +128,35 @@ def _check_polygon(vertices) -> tuple:
     return tuple((x - xm, 0.0 if y - ymin <= 1e-9 * size else y - ymin) for x, y in pts)
 
 
+_SIDE_KEYS = {f"{k}_{s}": (i, j) for i, s in enumerate(("plus", "minus"))
+              for j, k in enumerate(("alpha", "p", "mu", "R"))}
+
+
+def _check_sides(sides) -> tuple:
+    """``((alpha, p, mu, R), (alpha, p, mu, R))`` of sides + and -, validated (R may be
+    None on both sides)."""
+    try:
+        pair = tuple(tuple(s) for s in sides)
+    except TypeError:
+        pair = ()
+    if len(pair) != 2 or any(len(s) != 4 for s in pair):
+        raise ParameterError("sides must be ((alpha, p, mu, R) of side +, the same of side -)")
+    out = []
+    for s, (alpha, p, mu, R) in zip(("plus", "minus"), pair, strict=True):
+        out.append((in_range(f"alpha_{s}", alpha, 0.0, math.pi / 2, shown="(0, pi/2) rad"),
+                    positive(f"p_{s}", p, "1/s"),
+                    in_range(f"mu_{s}", mu, 0.0, 1.0, hi_open=False),
+                    None if R is None else positive(f"R_{s}", R, "m")))
+    if (out[0][3] is None) != (out[1][3] is None):
+        raise ParameterError("R_plus and R_minus must be both given or both None")
+    return (out[0], out[1])
+
+
+def _weaker(sides) -> int:
+    """Index of the weaker side (the smaller alpha; "+" on a tie)."""
+    return 1 if sides[1][0] < sides[0][0] else 0
+
+
 def housner_mu(alpha: float) -> float:
     """Housner's coefficient of restitution of a rectangular block, Eq 4."""
     return 1.0 - 1.5 * math.sin(alpha) ** 2
@@ -130,12 +183,27 @@ class Block:
     thickness: float | None = None
     name: str = ""
     vertices: tuple | None = None
+    # asymmetric blocks only: ((alpha, p, mu, R) of side "+", the same of side "-");
+    # None for a symmetric block (so a symmetric block's fields, equality and hash are
+    # those it had before asymmetric blocks existed)
+    sides: tuple | None = field(default=None, hash=False, repr=False)
 
     def __post_init__(self):
         object.__setattr__(self, "alpha", in_range("alpha", self.alpha, 0.0, math.pi / 2,
                                                    shown="(0, pi/2) rad"))
         object.__setattr__(self, "p", positive("p", self.p, "1/s"))
         object.__setattr__(self, "mu", in_range("mu", self.mu, 0.0, 1.0, hi_open=False))
+        if self.sides is not None:
+            object.__setattr__(self, "sides", _check_sides(self.sides))
+            if self.sides[0] == self.sides[1]:
+                object.__setattr__(self, "sides", None)
+            else:
+                weak = self.sides[_weaker(self.sides)]
+                if (self.alpha, self.p, self.mu) != weak[:3] or (
+                        self.R is not None and self.R != weak[3]):
+                    raise ParameterError(
+                        "an asymmetric block's alpha, p, mu and R are those of its weaker "
+                        "side; change a side with with_params(alpha_plus=..., mu_minus=...)")
         for f in ("R", "mass", "I_O", "width", "height", "thickness"):
             v = getattr(self, f)
             if v is not None:
@@ -264,13 +332,135 @@ class Block:
                    height=max(ys) - min(ys), thickness=thickness, name=name, vertices=verts)
 
     @classmethod
+    def from_geometry(cls, h: float, b_plus: float, b_minus: float,
+                      radius_of_gyration: float, *, mass: float | None = None,
+                      name: str | None = None, mu: float | None = None) -> Block:
+        """A planar block from its geometry (m): the centre of mass at height ``h`` above
+        the base, at horizontal distances ``b_plus``/``b_minus`` from the pivots of
+        ``theta > 0``/``theta < 0``, centroidal radius of gyration ``radius_of_gyration``
+        (``I_G = m r_g^2``). Per side: ``alpha_s = atan(b_s/h)``, ``R_s``, ``p_s^2 = g R_s /
+        (r_g^2 + R_s^2)`` and the restitution ``mu_s`` of the module docstring (angular
+        momentum about the new pivot), unless ``mu`` (both sides) is given. Equal sides
+        give a symmetric block. ``mass`` (kg) sets ``I_O`` of the weaker side."""
+        h = positive("h", h, "m")
+        bp = positive("b_plus", b_plus, "m")
+        bm = positive("b_minus", b_minus, "m")
+        rg = positive("radius_of_gyration", radius_of_gyration, "m")
+        for what, x in (("h", h), ("b_plus", bp), ("b_minus", bm)):
+            if x > PLAUSIBLE_SIZE:
+                warn_implausible(f"Block.from_geometry: {what} {x:g} m is above 50 m; check "
+                                 "the units (lengths are in m: 170 mm is 0.17)")
+        if mass is not None:
+            mass = positive("mass", mass, "kg")
+        if mu is not None:
+            mu = in_range("mu", mu, 0.0, 1.0, hi_open=False)
+        rg2 = rg * rg
+        side = []
+        for b, other in ((bp, bm), (bm, bp)):
+            R, R_o = math.hypot(b, h), math.hypot(other, h)
+            m_s = (rg2 + h * h - b * other) / (rg2 + R_o * R_o)
+            if mu is None and m_s <= 0.0:
+                raise ParameterError(
+                    f"the restitution from angular momentum is {m_s:.3f} <= 0 for this squat "
+                    "body (b_plus, b_minus, h, radius_of_gyration); pass mu explicitly, in "
+                    "(0, 1]")
+            side.append((math.atan(b / h), math.sqrt(G * R / (rg2 + R * R)),
+                         m_s if mu is None else mu, R))
+        sides = (side[0], side[1])
+        alpha, p, mu_w, R = sides[_weaker(sides)]
+        return cls(alpha=alpha, p=p, mu=mu_w, R=R, mass=mass,
+                   I_O=None if mass is None else mass * (rg2 + R * R),
+                   name="" if name is None else str(name),
+                   sides=None if sides[0] == sides[1] else sides)
+
+    @classmethod
+    def from_mesh(cls, path, *, density: float | None = None, mass: float | None = None,
+                  direction: float = 0.0, up="z", repair=None) -> Block:
+        """The planar block of a 3-D mesh (STL, OBJ, PLY) for shaking along ``direction``
+        (rad, from the mesh's x axis): :func:`rocking.shapes.load_shape` then
+        :meth:`rocking.shapes.Shape.block`."""
+        # rocking.shapes is built on this module (Shape.block makes a Block): this thin
+        # convenience calls up into it at run time only, by name, so that the import graph
+        # (tests/test_architecture.py) keeps blocks below shapes; trimesh loads only here
+        import importlib
+
+        shapes = importlib.import_module("rocking.shapes")
+        shape = shapes.load_shape(path, density=density, mass=mass, up=up, repair=repair)
+        return shape.block(direction)
+
+    @classmethod
     def from_params(cls, alpha: float, p: float, mu: float, *, name: str = "", **geometry) -> Block:
         """A block given by its classical parameters ``alpha`` (rad), ``p`` (1/s), ``mu``."""
         return cls(alpha=alpha, p=p, mu=mu, name=name, **geometry)
 
     def with_params(self, **changes) -> Block:
-        """A copy with fields replaced (validated again), e.g. ``block.with_params(mu=0.9)``."""
-        return dataclasses.replace(self, **changes)
+        """A copy with fields replaced (validated again), e.g. ``block.with_params(mu=0.9)``.
+
+        An asymmetric block's sides change with ``alpha_plus``, ``p_minus``, ``mu_plus``,
+        ... (``mu`` sets both sides' restitution); its ``alpha``, ``p`` and ``R`` follow
+        from the sides."""
+        side_keys = {k for k in changes if k in _SIDE_KEYS}
+        if self.sides is None and not side_keys:
+            return dataclasses.replace(self, **changes)
+        for k in ("alpha", "p", "R"):
+            if k in changes and self.sides is not None:
+                raise ParameterError(f"{k} of an asymmetric block is that of its weaker "
+                                     f"side; set {k}_plus or {k}_minus instead")
+        if "mu" in changes:
+            changes.setdefault("mu_plus", changes["mu"])
+            changes.setdefault("mu_minus", changes.pop("mu"))
+        sides = [list(self.sides[0]), list(self.sides[1])] if self.sides is not None else [
+            [self.alpha, self.p, self.mu, self.R], [self.alpha, self.p, self.mu, self.R]]
+        for k in list(changes):
+            if k in _SIDE_KEYS:
+                i, j = _SIDE_KEYS[k]
+                sides[i][j] = changes.pop(k)
+        sides = _check_sides(sides)
+        alpha, p, mu, R = sides[_weaker(sides)]
+        if self.R is None and sides[0][3] is None:
+            R = None
+        return dataclasses.replace(self, alpha=alpha, p=p, mu=mu, R=R,
+                                   sides=None if sides[0] == sides[1] else sides, **changes)
+
+    def mirrored(self) -> Block:
+        """The block with its sides swapped (the same body seen from behind): under the
+        ground acceleration ``-a`` it rocks as this block under ``a``, with ``theta``
+        negated. The polygon, if any, is mirrored too."""
+        verts = None if self.vertices is None else tuple((-x, y) for x, y in self.vertices)
+        sides = None if self.sides is None else (self.sides[1], self.sides[0])
+        if sides is None:
+            return dataclasses.replace(self, vertices=verts)
+        alpha, p, mu, R = sides[_weaker(sides)]
+        return dataclasses.replace(self, alpha=alpha, p=p, mu=mu, R=R, sides=sides,
+                                   vertices=verts)
+
+    # ------------------------------------------------------------------ the two sides
+    @property
+    def symmetric(self) -> bool:
+        """True when both sides have the same ``alpha``, ``p``, ``mu`` and ``R`` (every
+        block but those built asymmetric by :meth:`from_geometry` or ``with_params``)."""
+        return self.sides is None
+
+    def _side(self, i: int, j: int):
+        if self.sides is None:
+            return (self.alpha, self.p, self.mu, self.R)[j]
+        return self.sides[i][j]
+
+    alpha_plus = property(lambda self: self._side(0, 0),
+                          doc="Critical angle (rad) of side + (the pivot of theta > 0).")
+    alpha_minus = property(lambda self: self._side(1, 0),
+                           doc="Critical angle (rad) of side - (the pivot of theta < 0).")
+    p_plus = property(lambda self: self._side(0, 1), doc="Frequency parameter (1/s) of side +.")
+    p_minus = property(lambda self: self._side(1, 1),
+                       doc="Frequency parameter (1/s) of side -.")
+    mu_plus = property(lambda self: self._side(0, 2),
+                       doc="Restitution of an impact that ends rocking on side +.")
+    mu_minus = property(lambda self: self._side(1, 2),
+                        doc="Restitution of an impact that ends rocking on side -.")
+    R_plus = property(lambda self: self._side(0, 3),
+                      doc="Distance (m) from the + pivot to the centre of mass (or None).")
+    R_minus = property(lambda self: self._side(1, 3),
+                       doc="Distance (m) from the - pivot to the centre of mass (or None).")
 
     # ------------------------------------------------------------------ derived values
     @property
@@ -288,6 +478,8 @@ class Block:
         """``(alpha_O, alpha_O')``: the critical angles for ``theta > 0`` (pivot O, the left
         base corner) and ``theta < 0`` (pivot O'); equal for symmetric blocks and
         ``(alpha, alpha)`` when the block has no polygon."""
+        if self.sides is not None:
+            return (self.alpha_plus, self.alpha_minus)
         if self.vertices is None:
             return (self.alpha, self.alpha)
         cx, cy = polygon_properties(self.vertices)["centroid"]
@@ -308,10 +500,18 @@ class Block:
         return G * math.tan(self.alpha)
 
     def params(self) -> dict:
-        """The classical parameters as a plain dict (``alpha``, ``p``, ``mu``, ``R``)."""
-        return {"alpha": self.alpha, "p": self.p, "mu": self.mu, "R": self.R}
+        """The classical parameters as a plain dict (``alpha``, ``p``, ``mu``, ``R``; an
+        asymmetric block adds ``alpha_plus``, ..., ``R_minus``)."""
+        d = {"alpha": self.alpha, "p": self.p, "mu": self.mu, "R": self.R}
+        if self.sides is not None:
+            d.update({k: getattr(self, k) for k in _SIDE_KEYS})
+        return d
 
     def __repr__(self) -> str:  # short and readable in notebooks
         name = f"{self.name!r}, " if self.name else ""
+        if self.sides is not None:
+            return (f"Block({name}asymmetric: alpha={self.alpha_plus:.4f}/"
+                    f"{self.alpha_minus:.4f} rad, p={self.p_plus:.4f}/{self.p_minus:.4f} 1/s, "
+                    f"mu={self.mu_plus:.4f}/{self.mu_minus:.4f} (+/-))")
         return (f"Block({name}alpha={self.alpha:.4f} rad, p={self.p:.4f} 1/s, mu={self.mu:.4f}"
                 + (f", R={self.R:.4f} m" if self.R else "") + ")")
