@@ -23,6 +23,7 @@ from .ec8 import DesignSpectrum, ec8_spectrum, paper_target
 from .ground import GroundMotion
 from .harmonic import HanningSine, Sine
 from .io import builtin_records, builtin_sets, read_record, write_csv
+from .pair import HorizontalPair
 from .processing import (
     arias_intensity,
     bandpass,
@@ -53,7 +54,7 @@ from .synthetic import (
 __all__ = [
     "Motion", "Sine", "HanningSine", "OneSine", "OneCosine", "HalfSine", "Rectangular",
     "Ricker", "Record", "sample", "read_record", "write_csv", "builtin_records",
-    "GroundMotion", "builtin_sets",
+    "GroundMotion", "builtin_sets", "HorizontalPair",
     "MavroeidisPapageorgiou",
     "load_builtin",
     "ec8_spectrum", "DesignSpectrum", "paper_target",

@@ -1,0 +1,322 @@
+r"""Two horizontal components of one earthquake (and optionally the vertical one).
+
+A :class:`HorizontalPair` holds two horizontal accelerograms recorded on orthogonal axes
+on a common time grid, with the compass azimuths of their positive directions, and gives
+the acceleration projected on any horizontal direction (:meth:`HorizontalPair.along`):
+the input of the planar analysis of a 3-D body in every direction of shaking
+(:func:`rocking.analysis.direction_sweep`).
+
+**Conventions.**
+
+* ``azimuths = (A1, A2)`` (rad; ``"228deg"`` accepted): the compass bearings, clockwise
+  from north looking down, of the positive directions of the first and the second
+  component, as the PEER NGA files state them in their header (``Rinaldi228`` /
+  ``Rinaldi318``: 228 and 318 deg; Kocaeli at Duzce ``DZC180`` / ``DZC270``: 180 and 270
+  deg). They must be orthogonal (to 0.01 deg); only the handedness of the pair is taken
+  from ``A2`` (the second is then exactly ``A1 + 90`` or ``A1 - 90`` deg). Without
+  azimuths (``None``) the second component is taken 90 deg counter-clockwise of the first
+  (``A2 = A1 - 90`` deg with ``A1 = 0``): a right-handed ground frame, first = x, second =
+  y. Both NGA built-in pairs are numbered clockwise (``A2 = A1 + 90`` deg).
+* ``phi`` (rad): a direction of the OBJECT's horizontal frame, counter-clockwise from its
+  x axis looking down its ``up`` axis (the convention of :mod:`rocking.shapes`: the
+  frame ``(x, y, up)`` is right-handed).
+* ``orientation`` (rad or ``"228deg"``): the compass bearing of the object's x axis. The
+  direction ``phi`` has the bearing ``B = orientation - phi``. ``None`` (default): the
+  object's x axis along the first component (``orientation = A1``).
+* The projection (the components are the projections of the ground acceleration vector on
+  orthogonal axes): ``a_phi(t) = a1(t) cos(B - A1) + a2(t) cos(B - A2)``; for a pair with
+  no azimuths (``A1 = 0``, ``A2 = -90`` deg), ``a_phi = a1 cos(phi - o) + a2 sin(phi - o)``
+  with ``o`` the orientation. Hence, with the default orientation, ``phi = 0`` is the
+  first component exactly, and ``phi = 90`` deg is the second for a counter-clockwise
+  pair (no azimuths) and MINUS the second for a clockwise one (the NGA pairs: there
+  ``phi = -90`` deg is the second); ``phi + 180`` deg is ``-a_phi``. Angles within 1e-9
+  rad of a multiple of 90 deg are taken as exact (cos, sin in {-1, 0, 1}), so the
+  projection on a component's own axis is that component bit for bit.
+
+**Time grid.** Both components must have the same time step (to 1e-9 relative; resample
+one with :meth:`~rocking.motions.Record.resampled` otherwise); a shorter one is padded with
+zeros to the longer one's length (a record is zero after its last sample). A component's
+load factor (``Record.scale``) is applied. The vertical component (positive upwards) is
+any :class:`~rocking.motions.Motion`, not projected: :meth:`HorizontalPair.motion` returns
+a :class:`~rocking.motions.GroundMotion` with it.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ParameterError
+from ..units import parse_quantity
+from .base import Motion
+from .ground import GroundMotion
+from .records import Record, load_builtin
+
+ORTHOGONALITY_TOL = math.radians(0.01)
+"""How far (rad) the stated azimuths may be from orthogonal."""
+EXACT_TOL = 1e-9
+"""Angles (rad) within this of a multiple of 90 deg are taken as exact."""
+DT_RTOL = 1e-9
+"""Relative tolerance on the equality of the two components' time steps."""
+
+
+def angle(name: str, value) -> float:
+    """An angle in rad: a number (rad) or a string with a unit (``"228deg"``)."""
+    if isinstance(value, bool) or value is None:
+        raise ParameterError(f"{name} must be an angle (rad, or a string such as '30deg'), "
+                             f"got {value!r}")
+    if isinstance(value, numbers.Real):
+        x = float(value)
+    else:
+        try:
+            x = parse_quantity(value, "angle", name=name, default_unit="rad")
+        except Exception as exc:
+            raise ParameterError(str(exc)) from None
+    if not math.isfinite(x):
+        raise ParameterError(f"{name} must be finite, got {value!r}")
+    return float(x)
+
+
+def cos_sin(a: float) -> tuple[float, float]:
+    """``(cos a, sin a)``, exact (in {-1, 0, 1}) within :data:`EXACT_TOL` of a multiple of
+    90 deg."""
+    q = a / (0.5 * math.pi)
+    k = round(q)
+    if abs(a - k * 0.5 * math.pi) <= EXACT_TOL:
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
+    return math.cos(a), math.sin(a)
+
+
+def _component_azimuth(rec) -> float | None:
+    """The compass azimuth (rad) an NGA header states for a component, or None."""
+    comp = (getattr(rec, "meta", None) or {}).get("component")
+    try:
+        return math.radians(float(str(comp).strip()))
+    except (TypeError, ValueError):
+        return None
+
+
+@dataclass(frozen=True, eq=False)
+class HorizontalPair:
+    """Two orthogonal horizontal components on a common time grid (module docstring).
+
+    ``first``, ``second``: :class:`~rocking.motions.Record` (m/s^2); ``azimuths``: their
+    compass bearings (rad, or ``"228deg"``; None: second 90 deg counter-clockwise of the
+    first); ``vertical``: an optional vertical motion (positive upwards); ``name``.
+    Attributes after construction: ``a1``, ``a2`` (the samples with their load factors,
+    padded to a common length, read-only), ``dt`` (s), ``handedness`` (+1: the second is
+    90 deg clockwise of the first, -1: counter-clockwise).
+    """
+
+    first: Record
+    second: Record
+    azimuths: tuple | None = None
+    vertical: Motion | None = None
+    name: str = ""
+
+    def __post_init__(self):
+        for nm in ("first", "second"):
+            r = getattr(self, nm)
+            if not isinstance(r, Record):
+                raise ParameterError(f"{nm} must be a rocking.motions.Record (a sampled "
+                                     f"horizontal component), got {type(r).__name__}")
+        d1, d2 = self.first.dt, self.second.dt
+        if abs(d1 - d2) > DT_RTOL * max(d1, d2):
+            raise ParameterError(
+                f"second: its time step {d2:g} s differs from the first's {d1:g} s; "
+                "resample one (Record.resampled(dt)) so that both share a time grid")
+        if self.vertical is not None and (isinstance(self.vertical, GroundMotion)
+                                          or not isinstance(self.vertical, Motion)):
+            raise ParameterError("vertical must be a rocking.motions.Motion (positive "
+                                 f"upwards) or None, got {type(self.vertical).__name__}")
+        v1, v2 = self.first.values, self.second.values
+        for nm, v in (("first", v1), ("second", v2)):
+            if not np.all(np.isfinite(v)):
+                raise ParameterError(f"{nm}: non-finite acceleration (check its scale)")
+        n = max(v1.size, v2.size)
+        a1 = np.zeros(n)
+        a2 = np.zeros(n)
+        a1[: v1.size] = v1
+        a2[: v2.size] = v2
+        a1.setflags(write=False)
+        a2.setflags(write=False)
+        object.__setattr__(self, "a1", a1)
+        object.__setattr__(self, "a2", a2)
+        object.__setattr__(self, "dt", float(d1))
+        if self.azimuths is None:
+            object.__setattr__(self, "handedness", -1)
+        else:
+            try:
+                az1, az2 = self.azimuths
+            except (TypeError, ValueError):
+                raise ParameterError("azimuths must be two angles (the compass bearings of "
+                                     f"the components), got {self.azimuths!r}") from None
+            az1, az2 = angle("azimuths[0]", az1), angle("azimuths[1]", az2)
+            d = math.remainder(az2 - az1, 2.0 * math.pi)
+            if abs(abs(d) - 0.5 * math.pi) > ORTHOGONALITY_TOL:
+                raise ParameterError(
+                    f"azimuths must be orthogonal (90 deg apart), got "
+                    f"{math.degrees(az1):g} and {math.degrees(az2):g} deg")
+            object.__setattr__(self, "azimuths", (az1, az2))
+            object.__setattr__(self, "handedness", 1 if d > 0 else -1)
+        if not self.name:
+            object.__setattr__(self, "name", f"{self.first.name} / {self.second.name}")
+
+    # ---------------------------------------------------------------- constructors
+    @classmethod
+    def from_files(cls, first, second, vertical=None, *, units: str = "g",
+                   dt: float | None = None, azimuths="auto", name: str = "") -> HorizontalPair:
+        """Read the two horizontal components (and the vertical one) from files (as
+        :meth:`Record.from_file`, the same ``units``). ``azimuths="auto"``: from the
+        files' headers when both state a number (the NGA component angle), else None."""
+        r1 = Record.from_file(first, units=units, dt=dt)
+        r2 = Record.from_file(second, units=units, dt=dt)
+        v = Record.from_file(vertical, units=units, dt=dt) if vertical is not None else None
+        return cls(r1, r2, azimuths=cls._auto(r1, r2, azimuths), vertical=v, name=name)
+
+    @classmethod
+    def builtin(cls, name: str, second: str | None = None, *, vertical=True) -> HorizontalPair:
+        """A pair shipped with the package: a three-component set by name (``"rinaldi"``,
+        ``"duzce"``; :func:`rocking.motions.builtin_sets`) with its vertical component
+        unless ``vertical=False``, or two built-in record names (``"Rinaldi228"``,
+        ``"Rinaldi318"``; ``vertical``: a record name or False). The azimuths come from
+        the records' headers."""
+        from .io import builtin_sets
+
+        sets = builtin_sets()
+        if second is None:
+            if str(name).lower() not in sets:
+                raise ParameterError(f"name must be a three-component set ({', '.join(sets)})"
+                                     f" or two record names, got {name!r}")
+            h1, h2, up = sets[str(name).lower()]
+            label = str(name).lower()
+            vname = up if vertical is True else (vertical or None)
+        else:
+            h1, h2, label = name, second, ""
+            vname = None if vertical is True or not vertical else vertical
+        r1, r2 = load_builtin(h1), load_builtin(h2)
+        v = load_builtin(vname) if vname else None
+        return cls(r1, r2, azimuths=cls._auto(r1, r2, "auto"), vertical=v, name=label)
+
+    @staticmethod
+    def _auto(r1, r2, azimuths):
+        if not (isinstance(azimuths, str) and azimuths == "auto"):
+            return azimuths
+        a1, a2 = _component_azimuth(r1), _component_azimuth(r2)
+        return None if a1 is None or a2 is None else (a1, a2)
+
+    # ---------------------------------------------------------------- grid
+    @property
+    def n(self) -> int:
+        return int(self.a1.size)
+
+    @property
+    def duration(self) -> float:
+        """Time of the last sample (s)."""
+        return (self.n - 1) * self.dt
+
+    @property
+    def t(self) -> np.ndarray:
+        return np.arange(self.n) * self.dt
+
+    @property
+    def azimuths_deg(self) -> tuple | None:
+        return None if self.azimuths is None else tuple(math.degrees(a) for a in self.azimuths)
+
+    # ---------------------------------------------------------------- projection
+    def weights(self, phi, orientation=None) -> tuple[float, float]:
+        """``(w1, w2)`` with ``along(phi) = w1 a1 + w2 a2`` (module docstring)."""
+        p = angle("phi", phi)
+        az1 = 0.0 if self.azimuths is None else self.azimuths[0]
+        o = az1 if orientation is None else angle("orientation", orientation)
+        c, s = cos_sin((o - p) - az1)  # B - A1
+        # a_phi = a1 cos(B - A1) + a2 cos(B - A2), A2 = A1 + h 90 deg:
+        # cos(B - A1 - h 90deg) = h sin(B - A1)
+        return c, self.handedness * s
+
+    def along(self, phi, orientation=None) -> Record:
+        """The horizontal acceleration along the object's direction ``phi`` (rad) as a
+        :class:`Record` (m/s^2, the pair's time step; module docstring for
+        ``orientation``)."""
+        w1, w2 = self.weights(phi, orientation)
+        if w2 == 0.0:
+            acc = w1 * self.a1
+        elif w1 == 0.0:
+            acc = w2 * self.a2
+        else:
+            acc = w1 * self.a1 + w2 * self.a2
+        p = angle("phi", phi)
+        return Record(acc, self.dt, name=f"{self.name} @ {math.degrees(p):.1f} deg",
+                      meta={"pair": self.name, "phi": p, "weights": (w1, w2)})
+
+    def motion(self, phi, orientation=None, *, vertical: bool = True) -> Motion:
+        """:meth:`along` with the vertical component (a :class:`GroundMotion`) when the
+        pair has one and ``vertical`` is True; else the :class:`Record`."""
+        h = self.along(phi, orientation)
+        return GroundMotion(h, self.vertical) if vertical and self.vertical is not None \
+            else h
+
+    def rotated(self, angle_: float) -> HorizontalPair:
+        """The same ground motion recorded on axes turned clockwise by ``angle_`` (rad,
+        looking down; the azimuths grow by it): its first component is the projection on
+        bearing ``A1 + angle_``. Turning a clockwise pair by 90 deg makes the second
+        component the first (and minus the first the second). A pair without azimuths
+        gets those of its ground frame (``A1 = 0``, ``A2 = -90`` deg) turned by
+        ``angle_``."""
+        d = angle("angle", angle_)
+        az = self.azimuths if self.azimuths is not None else (0.0, -0.5 * math.pi)
+        h = self.handedness
+        c, s = cos_sin(d)
+        # a along bearing A1 + d: a1 cos d + a2 cos(d - h 90) = a1 c + h a2 s
+        # a along bearing A2 + d = A1 + h 90 + d: a1 cos(h 90 + d) + a2 cos d = -h a1 s + a2 c
+        n1 = _mix(self.a1, self.a2, c, h * s)
+        n2 = _mix(self.a1, self.a2, -h * s, c)
+        r1 = Record(n1, self.dt, name=f"{self.first.name} rotated {math.degrees(d):g} deg")
+        r2 = Record(n2, self.dt, name=f"{self.second.name} rotated {math.degrees(d):g} deg")
+        tau = 2.0 * math.pi
+        return HorizontalPair(r1, r2, azimuths=((az[0] + d) % tau, (az[1] + d) % tau),
+                              vertical=self.vertical,
+                              name=f"{self.name} rotated {math.degrees(d):g} deg")
+
+    def scaled(self, factor: float) -> HorizontalPair:
+        """Every component (the vertical one too) times ``factor``."""
+        from .._validate import as_float
+
+        f = as_float("factor", factor)
+        return HorizontalPair(self.first.scaled(f), self.second.scaled(f),
+                              azimuths=self.azimuths,
+                              vertical=None if self.vertical is None
+                              else self.vertical.scaled(f), name=self.name)
+
+    # ---------------------------------------------------------------- peaks
+    @property
+    def pga_components(self) -> tuple[float, float]:
+        """The PGA (m/s^2) of each component."""
+        return float(np.max(np.abs(self.a1))), float(np.max(np.abs(self.a2)))
+
+    @property
+    def peak_resultant(self) -> float:
+        """``max_t |a(t)|`` (m/s^2), the largest horizontal acceleration vector: the largest
+        PGA of :meth:`along` over every direction (RotD100 of the PGA)."""
+        return float(np.max(np.hypot(self.a1, self.a2)))
+
+    def __repr__(self) -> str:
+        az = "" if self.azimuths is None else \
+            ", azimuths=({:g}, {:g}) deg".format(*self.azimuths_deg)
+        v = ", with vertical" if self.vertical is not None else ""
+        return (f"HorizontalPair({self.name!r}, n={self.n}, dt={self.dt:g} s{az}{v}, "
+                f"pga={self.pga_components[0]:.3f}/{self.pga_components[1]:.3f} m/s^2)")
+
+
+def _mix(a1, a2, w1, w2):
+    if w2 == 0.0:
+        return w1 * a1
+    if w1 == 0.0:
+        return w2 * a2
+    return w1 * a1 + w2 * a2
+
+
+__all__ = ["HorizontalPair"]
