@@ -1,0 +1,267 @@
+r"""The weakest direction of a 3-D body under two horizontal components (issue 20).
+
+:func:`direction_sweep` runs, for every direction ``phi`` of the body's horizontal frame,
+the planar analysis of the body's planar block of that direction
+(:meth:`rocking.shapes.Shape.block`: the sides' alpha, R, p and restitutions) under the
+ground acceleration projected on ``phi`` (:meth:`rocking.motions.HorizontalPair.along`),
+all directions in one :func:`rocking.simulate_many` batch (one block per row), and
+returns the table and the worst direction (:class:`DirectionSweep`).
+
+**What this is, and is not.** This planar-per-direction analysis is the standard
+engineering answer until a 3-D model exists: in each direction the body is assumed to rock
+in the vertical plane of that direction only, about one pivot line at a time, under the
+component of the shaking along it. The other component, which acts at the same time, is
+ignored in that run; there is no coupling between directions, no twisting about the
+vertical axis, no wobbling (rolling on the edge of a round base) and no sliding. A body
+shaken obliquely to the edges of its base can uplift earlier than either planar block
+says (:func:`rocking.shapes.directional_parameters`' ``uplift_3d_*`` columns).
+
+**Directions.** ``phi`` (rad) is counter-clockwise from the body's x axis (the frame of
+:mod:`rocking.shapes`); ``orientation`` is the compass bearing of that axis (None: along
+the pair's first component; see :mod:`rocking.motions.pair`). The direction ``phi + pi``
+is the mirror image of ``phi``: the same planar block with its sides swapped under the
+negated acceleration, so theta is negated and max |theta|, overturning and the times are
+the same. The default directions therefore cover [0, 180) deg every 15 deg for a
+:class:`~rocking.shapes.Shape` or a symmetric block, [0, 360) deg otherwise.
+
+**The worst direction.** Ranked by, in turn: overturned first; the earliest overturning
+time; the largest ``max_abs_theta_over_alpha``; the largest ``uplift_demand`` (which
+ranks the directions when none of them rocks). ``max_abs_theta_over_alpha`` is the peak
+rotation over the overturning angle of the side on which it happened: ``max |theta| /
+alpha`` for a symmetric block; for an asymmetric one ``max(theta_+ / alpha_plus, theta_- /
+alpha_minus)`` with the peaks on each side (``max_theta_plus``, ``max_theta_minus``) read
+from the histories sampled every ``dt_out`` (the larger of the two is the run's exact
+max |theta|). ``uplift_demand`` is the static measure ``max(max(a) / (g tan alpha_plus),
+max(-a) / (g tan alpha_minus))`` of the projected horizontal acceleration ``a`` (> 1: the
+block lifts off from rest; a positive ``a`` lifts it on side +; without the vertical
+component).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from .._validate import as_float, positive
+from ..blocks import Block
+from ..errors import ParameterError
+from ..models import simulate_many
+from ..motions import HorizontalPair
+from ..motions.pair import angle
+from ..plot import PALETTE
+from ..units import G
+
+DEFAULT_STEP = math.radians(15.0)
+"""The default spacing of the directions (rad)."""
+DEFAULT_DT_OUT = 0.005
+"""The sampling (s) of the histories that give an asymmetric block's peaks per side."""
+
+COLUMNS = ("phi", "phi_deg", "alpha_plus", "alpha_minus", "p_plus", "p_minus", "pga",
+           "uplift_demand", "max_abs_theta", "max_theta_plus", "max_theta_minus",
+           "max_abs_theta_over_alpha", "overturned", "overturn_time", "uplift_time",
+           "n_impacts", "settled", "worst")
+"""The columns of :attr:`DirectionSweep.table` (SI; angles in rad, ``phi_deg`` in deg)."""
+
+
+@dataclass(frozen=True, eq=False)
+class DirectionSweep:
+    """The result of :func:`direction_sweep`: ``table`` (one row per direction,
+    :data:`COLUMNS`), ``worst`` (its row of the worst direction, module docstring), the
+    ``pair``, ``model``, ``orientation`` (rad, the bearing of the body's x axis) and
+    ``scale`` (the load factor of the pair)."""
+
+    table: pd.DataFrame
+    worst: pd.Series
+    pair: HorizontalPair
+    model: str
+    orientation: float
+    scale: float
+
+    @property
+    def worst_phi(self) -> float:
+        """The worst direction (rad)."""
+        return float(self.worst["phi"])
+
+    def plot(self, ax=None, *, label: str | None = None, mirror: bool = True):
+        """max |theta| / alpha against ``phi`` on polar axes (overturned directions at
+        the rim, marked x); ``mirror`` also draws ``phi + 180`` deg (the same response).
+        Returns the figure."""
+        if ax is None:
+            from matplotlib.figure import Figure
+
+            fig = Figure(figsize=(5.0, 5.0), layout="constrained")
+            ax = fig.add_subplot(projection="polar")
+        fig = ax.figure
+        t = self.table.sort_values("phi")
+        phi = t.phi.to_numpy(float)
+        r = np.minimum(t.max_abs_theta_over_alpha.to_numpy(float), 1.0)
+        ovt = t.overturned.to_numpy(bool)
+        if mirror:
+            phi = np.concatenate([phi, phi + math.pi])
+            r = np.concatenate([r, r])
+            ovt = np.concatenate([ovt, ovt])
+        o = np.argsort(phi % (2 * math.pi))
+        phi, r, ovt = phi[o] % (2 * math.pi), r[o], ovt[o]
+        line, = ax.plot(np.append(phi, phi[0]), np.append(r, r[0]), marker="o", ms=3,
+                        label=label)
+        ax.plot(phi[ovt], r[ovt], "x", color=line.get_color(), ms=8)
+        ax.set_ylim(0.0, 1.05)
+        ax.set_theta_zero_location("E")
+        ax.set_theta_direction(1)
+        return fig
+
+
+def _directions(directions, mirrored: bool) -> np.ndarray:
+    if directions is None:
+        stop = math.pi if mirrored else 2.0 * math.pi
+        return np.arange(0.0, stop - 1e-12, DEFAULT_STEP)
+    if isinstance(directions, int | np.integer) and not isinstance(directions, bool):
+        if directions < 1:
+            raise ParameterError(f"directions must be >= 1 (a count), got {directions}")
+        stop = math.pi if mirrored else 2.0 * math.pi
+        return np.arange(int(directions)) * (stop / int(directions))
+    try:
+        d = np.atleast_1d(np.asarray(directions, dtype=float))
+    except (TypeError, ValueError):
+        raise ParameterError("directions must be angles in rad (a number or a sequence), "
+                             f"or a count; got {directions!r}") from None
+    if d.ndim != 1 or d.size == 0 or not np.all(np.isfinite(d)):
+        raise ParameterError("directions must be a non-empty 1-D sequence of finite angles "
+                             "(rad)")
+    return d
+
+
+def _blocks_of(body, phis: np.ndarray) -> tuple[list, bool]:
+    """One planar block per direction, and whether ``phi + pi`` mirrors ``phi``."""
+    if isinstance(body, Block):
+        return [body] * phis.size, bool(body.symmetric)
+    if hasattr(body, "block") and hasattr(body, "parameters"):  # a rocking.shapes.Shape
+        return [body.block(float(p)) for p in phis], True
+    if callable(body):
+        blocks = [body(float(p)) for p in phis]
+        bad = [type(b).__name__ for b in blocks if not isinstance(b, Block)]
+        if bad:
+            raise ParameterError(f"body(phi) must return a rocking.Block, got {bad[0]}")
+        return blocks, False
+    raise ParameterError("body must be a rocking.shapes.Shape, a rocking.Block or a function "
+                         f"phi -> Block, got {type(body).__name__}")
+
+
+def direction_sweep(body, pair: HorizontalPair, directions=None, *, model="housner",
+                    orientation=None, scale: float = 1.0, vertical: bool = True,
+                    duration: float | None = None, dt_out: float = DEFAULT_DT_OUT,
+                    **options) -> DirectionSweep:
+    """The planar analysis in every direction under a horizontal pair (module docstring).
+
+    ``body``: a :class:`rocking.shapes.Shape` (the planar block of each direction,
+    :meth:`~rocking.shapes.Shape.block`), a :class:`rocking.Block` (the same block in
+    every direction: a footprint symmetric about every vertical plane, such as a
+    cylinder) or a function ``phi -> Block``. ``pair``: a
+    :class:`~rocking.motions.HorizontalPair`. ``directions``: angles (rad), a count, or
+    None (every 15 deg; module docstring). ``orientation``: the compass bearing of the
+    body's x axis (rad or ``"228deg"``; None: along the first component). ``scale``: a
+    load factor on the pair (vertical component too). ``vertical``: use the pair's
+    vertical component when it has one. ``model``, ``duration``, ``**options``: as in
+    :func:`rocking.simulate_many`; ``dt_out`` (s): the sampling of the histories that
+    give an asymmetric block's peak on each side.
+
+    Row ``i`` is bit-identical to ``rocking.simulate(block_i, pair.motion(phi_i))``.
+    """
+    if not isinstance(pair, HorizontalPair):
+        raise ParameterError("pair must be a rocking.motions.HorizontalPair, got "
+                             f"{type(pair).__name__}")
+    if not isinstance(vertical, bool | np.bool_):
+        raise ParameterError(f"vertical must be True or False, got {vertical!r}")
+    s = as_float("scale", scale)
+    if s <= 0.0:
+        raise ParameterError(f"scale must be > 0 (a load factor), got {scale!r}")
+    dt_out = positive("dt_out", dt_out, "s")
+    _, mirrored = _blocks_of(body, np.zeros(0))  # checks body
+    phis = _directions(directions, mirrored)
+    blocks, _ = _blocks_of(body, phis)
+    o = None if orientation is None else angle("orientation", orientation)
+    motions = []
+    for p in phis:
+        m = pair.motion(float(p), o, vertical=vertical)
+        motions.append(m if s == 1.0 else m.scaled(s))
+    horiz = [pair.along(float(p), o).values * s for p in phis]
+    asym = any(not b.symmetric for b in blocks)
+    res = simulate_many(blocks if len(set(map(id, blocks))) > 1 else blocks[0], motions,
+                        model=model, duration=duration, return_histories=asym,
+                        dt_out=dt_out, **options)
+    ap = np.array([b.alpha_plus for b in blocks])
+    am = np.array([b.alpha_minus for b in blocks])
+    mx = np.asarray(res.max_abs_theta, dtype=float)
+    if asym:
+        with np.errstate(all="ignore"):
+            th = np.asarray(res.theta, dtype=float)
+            tp = np.fmax(np.nanmax(np.where(np.isnan(th), -np.inf, th), axis=1), 0.0)
+            tm = np.fmax(np.nanmax(np.where(np.isnan(th), -np.inf, -th), axis=1), 0.0)
+        plus_side = tp >= tm
+        tp = np.where(plus_side, mx, np.minimum(tp, mx))
+        tm = np.where(plus_side, np.minimum(tm, mx), mx)
+        ratio = np.maximum(tp / ap, tm / am)
+    else:
+        tp = tm = np.full(mx.size, np.nan)
+        ratio = mx / ap
+    up_p = np.array([max(float(a.max()), 0.0) for a in horiz]) / (G * np.tan(ap))
+    up_m = np.array([max(float(-a.min()), 0.0) for a in horiz]) / (G * np.tan(am))
+    table = pd.DataFrame({
+        "phi": phis, "phi_deg": np.degrees(phis), "alpha_plus": ap, "alpha_minus": am,
+        "p_plus": [b.p_plus for b in blocks], "p_minus": [b.p_minus for b in blocks],
+        "pga": [float(np.max(np.abs(a))) for a in horiz],
+        "uplift_demand": np.maximum(up_p, up_m), "max_abs_theta": mx,
+        "max_theta_plus": tp, "max_theta_minus": tm, "max_abs_theta_over_alpha": ratio,
+        "overturned": np.asarray(res.overturned, dtype=bool),
+        "overturn_time": np.asarray(res.overturn_time, dtype=float),
+        "uplift_time": np.asarray(res.uplift_time, dtype=float),
+        "n_impacts": np.asarray(res.n_impacts, dtype=int),
+        "settled": np.asarray(res.settled, dtype=bool),
+    })
+    w = worst_index(table)
+    table["worst"] = np.arange(len(table)) == w
+    bearing = o if o is not None else (
+        pair.azimuths[0] if pair.azimuths is not None else 0.0)
+    table.attrs.update({"model": str(model), "pair": pair.name, "scale": s,
+                        "orientation": bearing,
+                        "vertical": bool(vertical and pair.vertical is not None)})
+    return DirectionSweep(table=table, worst=table.iloc[w], pair=pair, model=str(model),
+                          orientation=bearing, scale=s)
+
+
+def worst_index(table: pd.DataFrame) -> int:
+    """The position of the worst direction in a sweep's table (module docstring)."""
+    if len(table) == 0:
+        raise ParameterError("the table has no direction")
+    ovt = table.overturned.to_numpy(bool)
+    t = np.where(ovt, table.overturn_time.to_numpy(float), np.inf)
+    t = np.where(np.isnan(t), np.inf, t)
+    r = np.nan_to_num(table.max_abs_theta_over_alpha.to_numpy(float), nan=-np.inf)
+    d = np.nan_to_num(table.uplift_demand.to_numpy(float), nan=-np.inf)
+    return int(np.lexsort((-d, -r, t, ~ovt))[0])
+
+
+def plot_sweeps(sweeps, labels=None, *, reference=None, ax=None):
+    """Several sweeps' max |theta| / alpha against ``phi`` (polar); ``reference``: a
+    direction (rad) to mark (e.g. the static weakest direction). Returns the figure."""
+    if ax is None:
+        from matplotlib.figure import Figure
+
+        fig = Figure(figsize=(5.6, 5.6), layout="constrained")
+        ax = fig.add_subplot(projection="polar")
+    labels = labels or [f"scale {s.scale:g}" for s in sweeps]
+    for i, (sw, lab) in enumerate(zip(sweeps, labels, strict=True)):
+        sw.plot(ax, label=lab)
+        ax.lines[-2].set_color(PALETTE[i % len(PALETTE)])
+        ax.lines[-1].set_color(PALETTE[i % len(PALETTE)])
+    if reference is not None:
+        for ph in (reference, reference + math.pi):
+            ax.plot([ph, ph], [0.0, 1.05], color="k", lw=1.0, ls="--")
+    ax.legend(fontsize=8, loc="lower left", bbox_to_anchor=(-0.1, -0.12), frameon=False)
+    return ax.figure
+
+
+__all__ = ["COLUMNS", "DirectionSweep", "direction_sweep", "plot_sweeps", "worst_index"]
