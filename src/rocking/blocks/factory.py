@@ -13,18 +13,36 @@ help; ``rocking blocks`` and the README's spec-key table are made from them)::
     Stack(...)
 
 The form is told by its distinguishing key: ``specimen``, ``width`` (with ``height``),
-``alpha`` (with ``p`` and ``mu``), ``vertices`` or ``stack``. Values are SI numbers or
-strings with a unit (``"170mm"``, ``"9.6deg"``); ``name`` names the block in tables.
+``alpha`` (with ``p`` and ``mu``), ``vertices``, ``mesh`` or ``stack``. Values are SI numbers
+or strings with a unit (``"170mm"``, ``"9.6deg"``); ``name`` names the block in tables.
+
+The ``mesh`` form (issue 20) is the planar block of a 3-D mesh (STL, OBJ, PLY) for one
+direction of shaking, through :mod:`rocking.shapes`: its two sides from
+:meth:`rocking.shapes.Shape.block` and, for the DEM, the outline
+:meth:`~rocking.shapes.Shape.polygon` with the mesh's true mass and moment of inertia
+(:func:`mesh_block`). ``direction`` is in degrees (a bare number; ``"30deg"``,
+``"0.5rad"``), ``"weakest"`` or ``"strongest"``; a list gives one block per direction
+(:func:`make_blocks`, a campaign spec). With ``plinth_width``, ``plinth_depth`` and
+``plinth_height`` the statue stands on a rectangular plinth: a two-block
+:class:`~rocking.Stack` for the DEM (:func:`statue_on_plinth`). A relative ``mesh`` path
+starts from ``base_dir`` (a campaign spec's folder).
 """
 
 from __future__ import annotations
 
 import dataclasses
+import functools
+import math
+import os
 from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
 
 from ..errors import ParameterError
 from ..options import REQUIRED, Options, option
+from ..units import parse_quantity
 from .block import Block
 from .specimens import PARAM_SETS, SHAPES, specimen, specimen_ids
 from .stack import Stack
@@ -99,6 +117,204 @@ class StackForm(Options):
                                    kind=object)
 
 
+MESH_UNITS = ("m", "cm", "mm")
+"""Length units of a mesh file (:func:`rocking.shapes.load_shape`)."""
+NAMED_DIRECTIONS = ("weakest", "strongest")
+
+
+@dataclass(frozen=True)
+class MeshForm(Options):
+    mesh: str = option(REQUIRED, help="3-D mesh file (STL, OBJ, PLY; relative to the spec "
+                       "in a campaign): rocking.shapes", kind=str, required=True)
+    density: float | None = option(REQUIRED, help="density (give density or mass)",
+                                   unit="kg/m^3", lo=0.0)
+    mass: float | None = _mass("mass (instead of density)")
+    direction: object = option(0.0, help="direction of shaking from the mesh's x axis, "
+                               "counter-clockwise looking down up (a number in deg, '30deg', "
+                               "'weakest', 'strongest'; a list in a campaign: one block per "
+                               "direction)", unit="deg", kind=object)
+    up: str = option("z", help="the mesh's vertical axis (x, y, z, -x, -y, -z)", kind=str)
+    units: str = option("m", help="length unit of the mesh file", choices=MESH_UNITS)
+    repair: str | None = option(REQUIRED, help="'hull': the convex hull of an open or "
+                                "inconsistent mesh (default: refused)", choices=("hull",))
+    mu: float | None = _mu("coefficient of restitution of both sides (default: angular "
+                           "momentum about the new pivot)")
+    plinth_width: float | None = _length("plinth: size along the mesh's x axis (with "
+                                         "plinth_depth and plinth_height: a stack, the DEM)")
+    plinth_depth: float | None = _length("plinth: size along the mesh's y axis")
+    plinth_height: float | None = _length("plinth: height")
+    plinth_density: float | None = option(REQUIRED, help="plinth: density (or plinth_mass)",
+                                          unit="kg/m^3", lo=0.0)
+    plinth_mass: float | None = _mass("plinth: mass (instead of plinth_density)")
+
+    def check(self):
+        if (self.density is None) == (self.mass is None):
+            raise ParameterError("density or mass: give exactly one (density in kg/m^3 or "
+                                 "mass in kg) of the mesh block"
+                                 + ("" if self.density is None else ", not both"))
+        mesh_directions(self.direction)
+        sizes = (self.plinth_width, self.plinth_depth, self.plinth_height)
+        given = [k for k, v in zip(("plinth_width", "plinth_depth", "plinth_height"), sizes,
+                                   strict=True) if v is not None]
+        if given and len(given) < 3:
+            missing = sorted({"plinth_width", "plinth_depth", "plinth_height"} - set(given))
+            raise ParameterError(f"{missing[0]} is required with {given[0]} (a plinth "
+                                 "needs plinth_width, plinth_depth and plinth_height)")
+        rho_m = (self.plinth_density, self.plinth_mass)
+        if given and (rho_m[0] is None) == (rho_m[1] is None):
+            raise ParameterError("plinth_density or plinth_mass: give exactly one with a "
+                                 "plinth")
+        if not given and any(v is not None for v in rho_m):
+            raise ParameterError("plinth_density or plinth_mass applies with plinth_width, "
+                                 "plinth_depth and plinth_height only")
+
+
+def mesh_direction(value):
+    """One ``direction`` of a mesh block: an angle in rad (a bare number is in degrees;
+    a string may carry its unit, ``"30deg"``, ``"0.5rad"``), or ``"weakest"`` /
+    ``"strongest"``."""
+    if isinstance(value, str) and value.strip().lower() in NAMED_DIRECTIONS:
+        return value.strip().lower()
+    if isinstance(value, bool) or not isinstance(value, int | float | str):
+        raise ParameterError("direction must be an angle (a number in deg, '30deg'), "
+                             f"'weakest' or 'strongest'; got {value!r}")
+    phi = parse_quantity(value, "angle", name="direction", default_unit="deg")
+    return phi
+
+
+def mesh_directions(value) -> list:
+    """``direction`` as a list (:func:`mesh_direction` of each item; a list must not be
+    empty)."""
+    if isinstance(value, list | tuple):
+        if not value:
+            raise ParameterError("direction must be an angle, 'weakest', 'strongest' or a "
+                                 "non-empty list of them; got []")
+        return [mesh_direction(v) for v in value]
+    return [mesh_direction(value)]
+
+
+@functools.lru_cache(maxsize=16)
+def _load(path: str, stamp: tuple, density, mass, up, units, repair):
+    import rocking.shapes as shapes  # lazy: trimesh
+
+    return shapes.load_shape(path, density=density, mass=mass, up=up, repair=repair,
+                             units=units)
+
+
+def load_mesh(f: MeshForm):
+    """The :class:`rocking.shapes.Shape` of a mesh form (cached per file content stamp)."""
+    path = os.fspath(f.mesh)
+    try:
+        st = os.stat(path)
+        stamp = (st.st_mtime_ns, st.st_size)
+    except OSError:
+        stamp = ()
+    return _load(path, stamp, f.density, f.mass, f.up, f.units, f.repair)
+
+
+def resolve_direction(shape, direction) -> float:
+    """The angle (rad) of one :func:`mesh_direction` for ``shape``: ``"weakest"`` is
+    :meth:`rocking.shapes.Shape.weakest` (exact: the normal of the support edge nearest to
+    the centre of mass), ``"strongest"`` the largest smaller uplift acceleration over 3600
+    directions refined by a bounded search."""
+    if direction == "weakest":
+        return float(shape.weakest().phi)
+    if direction == "strongest":
+        from scipy.optimize import minimize_scalar
+
+        from .. import shapes
+
+        table = shapes.directional_parameters(shape, 3600)
+        d = shapes.strongest_direction(table)
+        step = 2.0 * math.pi / 3600
+
+        def minus_uplift(phi):
+            q = shape.parameters(phi)
+            return -min(q["uplift_plus"], q["uplift_minus"])
+
+        r = minimize_scalar(minus_uplift, bounds=(d.phi - step, d.phi + step),
+                            method="bounded", options={"xatol": 1e-10})
+        phi = float(r.x) if r.fun <= -d.uplift else d.phi
+        return phi % (2.0 * math.pi)
+    return float(direction)
+
+
+def direction_label(direction, phi: float) -> str:
+    """``30 deg`` for an angle, ``weakest (254.4 deg)`` for a named direction."""
+    deg = math.degrees(phi)
+    if isinstance(direction, str):
+        return f"{direction} ({deg:.1f} deg)"
+    return f"{round(deg, 9):g} deg"
+
+
+def mesh_block(shape, direction: float, *, name: str | None = None, mu=None) -> Block:
+    """The planar block of ``shape`` (:class:`rocking.shapes.Shape`) for shaking along
+    ``direction`` (rad): :meth:`~rocking.shapes.Shape.block` (both sides, the mesh's
+    mass, ``I_O = m (r_g^2 + R^2)`` of the weaker side) with the outline
+    :meth:`~rocking.shapes.Shape.polygon` as its :attr:`~rocking.Block.vertices`, so that
+    the DEM (geometry ``"body"``, :func:`rocking.models.dem.body_of`) rocks the outline
+    with the mesh's true mass, centre of mass and moment of inertia
+    (:meth:`~rocking.shapes.Shape.inertia_about`), not the polygon's."""
+    block = shape.block(direction, name=name, mu=mu)
+    poly = shape.polygon(direction)
+    return dataclasses.replace(block, vertices=tuple(map(tuple, poly.tolist())),
+                               width=float(np.ptp(poly[:, 0])),
+                               height=float(np.ptp(poly[:, 1])))
+
+
+def plinth_shape(width: float, depth: float, height: float, *, density=None, mass=None):
+    """A rectangular plinth as a :class:`rocking.shapes.Shape` (a box mesh: ``width``
+    along x, ``depth`` along y, ``height`` along z, m)."""
+    import trimesh
+
+    from .. import shapes
+
+    box = trimesh.creation.box(extents=(width, depth, height))
+    return shapes.Shape.from_trimesh(box, density=density, mass=mass, name="plinth")
+
+
+def statue_on_plinth(shape, direction: float, plinth, *, name: str | None = None,
+                     mu=None) -> Stack:
+    """``shape`` (the statue, :class:`rocking.shapes.Shape`) standing on ``plinth`` (a
+    box, :func:`plinth_shape`, in the statue's horizontal frame) with its centre of mass
+    over the plinth's centre, for shaking along ``direction`` (rad): a two-block
+    :class:`~rocking.Stack` for the DEM, each block the :func:`mesh_block` of its body
+    (true mass and inertia). The statue's support must lie on the plinth's top face. The
+    plinth's own restitution is not used by the DEM (its contact damping is calibrated to
+    the top block's); a squat plinth gets a nominal one."""
+    half = 0.5 * np.ptp(plinth.support, axis=0)
+    sup = np.asarray(shape.support)
+    if np.any(np.abs(sup) > half[None, :] * (1.0 + 1e-9)):
+        ext = np.abs(sup).max(axis=0)
+        raise ParameterError(
+            f"plinth_width or plinth_depth: the statue's base reaches {ext[0]:.4g} m along "
+            f"x and {ext[1]:.4g} m along y from its centre of mass, beyond the plinth's "
+            f"half-sizes {half[0]:.4g} x {half[1]:.4g} m")
+    q = plinth.parameters(direction)
+    squat = min(q["mu_plus"], q["mu_minus"]) <= 0.0
+    base = mesh_block(plinth, direction, name="plinth", mu=1.0 if squat else None)
+    top = mesh_block(shape, direction, name=name, mu=mu)
+    p = shape.parameters(direction)
+    offset = 0.5 * (p["b_minus"] - p["b_plus"])  # the centre of mass over the plinth's axis
+    return Stack([base, top], offsets=(0.0, offset),
+                 name=f"{top.name} on a plinth")
+
+
+def _mesh(f: MeshForm, direction=None) -> Block | Stack:
+    shape = load_mesh(f)
+    dirs = mesh_directions(f.direction if direction is None else direction)
+    if len(dirs) != 1:
+        raise ParameterError("direction: a list gives one block per direction (a campaign "
+                             "spec, or rocking.blocks.factory.make_blocks); give one here")
+    phi = resolve_direction(shape, dirs[0])
+    label = f"{shape.name or 'mesh'} @ {direction_label(dirs[0], phi)}"
+    if f.plinth_width is None:
+        return mesh_block(shape, phi, name=label, mu=f.mu)
+    plinth = plinth_shape(f.plinth_width, f.plinth_depth, f.plinth_height,
+                          density=f.plinth_density, mass=f.plinth_mass)
+    return statue_on_plinth(shape, phi, plinth, name=label, mu=f.mu)
+
+
 def _specimen(f: SpecimenForm) -> Block:
     b = specimen(f.specimen, f.params, shape=f.shape)
     changes = {k: v for k, v in (("p", f.p), ("mu", f.mu)) if v is not None}
@@ -147,6 +363,10 @@ class BlockForm:
     Params: type[Options]
     make: Callable
     summary: str
+    paths: tuple = ()
+    """Keys that name files (relative to ``base_dir`` in :func:`make_block`)."""
+    several: str | None = None
+    """The key whose list gives several blocks (:func:`make_blocks`)."""
 
     def describe(self) -> list[dict]:
         return self.Params.describe()
@@ -161,6 +381,9 @@ FORMS: dict[str, BlockForm] = {f.name: f for f in (
               "the classical parameters (rocking.Block.from_params)"),
     BlockForm("polygon", "vertices", PolygonForm, _polygon,
               "a convex polygon (rocking.Block.polygon)"),
+    BlockForm("mesh", "mesh", MeshForm, _mesh,
+              "the planar block of a 3-D mesh in one direction of shaking (rocking.shapes; "
+              "with a plinth: a stack)", paths=("mesh",), several="direction"),
     BlockForm("stack", "stack", StackForm, _stack,
               "blocks stacked bottom to top (rocking.Stack; the DEM)"),
 )}
@@ -178,13 +401,15 @@ def form_of(mapping: dict) -> BlockForm:
     return forms[0]
 
 
-def make_block(mapping: dict, *, name: str | None = None):
-    """The :class:`~rocking.Block` (or :class:`~rocking.Stack`) described by ``mapping``
-    (see the module docstring); ``name`` (or ``mapping["name"]``) names it.
+def renamed(block, name: str):
+    """``block`` (a Block or a Stack) with the name ``name``."""
+    return (dataclasses.replace(block, name=name) if isinstance(block, Block)
+            else Stack(block.blocks, block.offsets, name=name))
 
-    Raises :class:`~rocking.errors.ParameterError` naming the key: an unknown key, a
-    missing one, or a value out of its range.
-    """
+
+def _prepared(mapping: dict, name, base_dir) -> tuple:
+    """``(form, values, name)`` of ``mapping``: the form, its keys (file paths resolved
+    against ``base_dir``) and the name."""
     if not isinstance(mapping, dict):
         raise ParameterError(f"block must be a table of keys, got {mapping!r}")
     values = dict(mapping)
@@ -193,11 +418,45 @@ def make_block(mapping: dict, *, name: str | None = None):
         raise ParameterError(f"name must be a string, got {name!r}")
     form = form_of(values)
     form.Params.unknown(values, f"a {form.name} block")
+    for key in form.paths:
+        v = values.get(key)
+        if v is not None and not isinstance(v, str | os.PathLike):
+            raise ParameterError(f"{key} must be a file path, got {type(v).__name__} {v!r}")
+        if v is not None and base_dir is not None and not Path(v).is_absolute():
+            values[key] = str(Path(base_dir) / v)
+    return form, values, name
+
+
+def make_block(mapping: dict, *, name: str | None = None, base_dir=None):
+    """The :class:`~rocking.Block` (or :class:`~rocking.Stack`) described by ``mapping``
+    (see the module docstring); ``name`` (or ``mapping["name"]``) names it; relative file
+    paths (``mesh``) start from ``base_dir`` (default: the working directory).
+
+    Raises :class:`~rocking.errors.ParameterError` naming the key: an unknown key, a
+    missing one, or a value out of its range.
+    """
+    form, values, name = _prepared(mapping, name, base_dir)
     block = form.make(form.Params(**values))
-    if name:
-        return (dataclasses.replace(block, name=name) if isinstance(block, Block)
-                else Stack(block.blocks, block.offsets, name=name))
-    return block
+    return renamed(block, name) if name else block
+
+
+def make_blocks(mapping: dict, *, name: str | None = None, base_dir=None) -> list:
+    """The blocks described by ``mapping``: one (:func:`make_block`), or one per item of
+    the list of its form's ``several`` key (a mesh's ``direction = [0, 45, "weakest"]``),
+    each named ``"<name> @ <direction>"`` (``statue @ 30 deg``)."""
+    form, values, name = _prepared(mapping, name, base_dir)
+    key = form.several
+    if key is None or not isinstance(values.get(key), list | tuple):
+        block = form.make(form.Params(**values))
+        return [renamed(block, name) if name else block]
+    params = form.Params(**values)  # every item checked before any block is built
+    out = []
+    for item in values[key]:
+        block = form.make(params, item)
+        if name:
+            block = renamed(block, f"{name} @ {block.name.partition(' @ ')[2]}")
+        out.append(block)
+    return out
 
 
 def table() -> list[dict]:

@@ -302,28 +302,37 @@ def nominal(block) -> Block:
     return block.top if isinstance(block, Stack) else block
 
 
-def _block(i: int, t):
-    """``[[blocks]]`` table ``i`` through :func:`rocking.blocks.factory.make_block`; without
-    a ``name``, the form's name and the block's place (``0.25 x 1 m block (blocks[1])``),
-    except a specimen's, which says which it is."""
+def _block(i: int, t, base_dir) -> tuple[list, list]:
+    """``[[blocks]]`` table ``i`` through :func:`rocking.blocks.factory.make_blocks` (one
+    block, or one per item of a mesh's ``direction`` list, in place); without a ``name``,
+    the form's name and the block's place (``0.25 x 1 m block (blocks[1])``), except a
+    specimen's, which says which it is. Also the content digests of the files the table
+    names (a mesh; relative paths start from ``base_dir``)."""
     key = f"blocks[{i}]"
     t = _table(key, t)
     try:
         form = factory.form_of({k: v for k, v in t.items() if k != "name"})
-        b = factory.make_block(t)
+        bs = factory.make_blocks(t, base_dir=base_dir)
         if "name" not in t and form.name != "specimen":
-            b = factory.make_block(t, name=f"{b.name} ({key})")
+            bs = [factory.renamed(b, f"{b.name} ({key})") for b in bs]
     except (RockingError, TypeError, ValueError) as e:
         _param_fail(key, e, BLOCK_KEYS)
-    return b
+    digests = [_digest(f"{key}.{k}", Path(base_dir) / t[k]) for k in form.paths if k in t]
+    return bs, digests
 
 
-def _blocks(raw: dict) -> tuple:
+def _blocks(raw: dict, base_dir=".") -> tuple[tuple, tuple]:
+    """The blocks of ``[[blocks]]`` and the digests of the files they name."""
     if "blocks" not in raw:
         _fail("blocks", "missing (one [[blocks]] table per block)")
     if not isinstance(raw["blocks"], list) or not raw["blocks"]:
         _fail("blocks", "must be one or more [[blocks]] tables")
-    return tuple(_block(i, b) for i, b in enumerate(raw["blocks"]))
+    blocks, digests = [], []
+    for i, b in enumerate(raw["blocks"]):
+        bs, ds = _block(i, b, base_dir)
+        blocks += bs
+        digests += ds
+    return tuple(blocks), tuple(digests)
 
 
 # ------------------------------------------------------------------------------ motions
@@ -699,6 +708,8 @@ class CampaignSpec:
     mitigations: tuple = ()
     """The checked ``[[mitigation]]`` entries (:class:`Mitigation`), or ``()``: none given
     (the mitigation axis has size 1 and the table no ``mitigation`` column)."""
+    block_digests: tuple = ()
+    """Content digests of the files that ``[[blocks]]`` name (a mesh), in :attr:`hash`."""
 
     @property
     def runs(self) -> tuple[tuple[str, dict], ...]:
@@ -717,11 +728,13 @@ class CampaignSpec:
     @property
     def hash(self) -> str:
         """SHA-256 of what the results depend on: the parsed TOML (not its formatting or
-        comments; without ``[run] window``, which only schedules) and, for record files,
-        their contents (a digest each), not where they are."""
+        comments; without ``[run] window``, which only schedules) and, for record and mesh
+        files, their contents (a digest each), not where they are."""
         raw = {k: v for k, v in self.raw.items() if k != "run"}
         raw["run"] = {k: v for k, v in self.raw.get("run", {}).items() if k != "window"}
         content = {"raw": raw, "digests": self.motions.get("digests")}
+        if self.block_digests:  # a mesh file's content (absent: the hash of older specs)
+            content["block_digests"] = list(self.block_digests)
         return hashlib.sha256(json.dumps(content, sort_keys=True, default=str)
                               .encode()).hexdigest()
 
@@ -1028,7 +1041,7 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
         raise SpecError(f"spec: not valid TOML: {e}") from None
     _known("", raw, SECTIONS)
     c = _campaign(raw)
-    blocks = _blocks(raw)
+    blocks, block_digests = _blocks(raw, Path(base_dir).resolve())
     if "motions" not in raw:
         _fail("motions", "missing (a [motions] table with kind)")
     motions = _motions(raw["motions"], Path(base_dir).resolve(), c["seed"])
@@ -1047,7 +1060,7 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
                         uncertain=uncertain, chunk_size=chunk, window=window, options=options,
                         text=text, raw=raw, base_dir=str(Path(base_dir).resolve()),
                         max_free_time=c["max_free_time"], building=building,
-                        mitigations=mitigations)
+                        mitigations=mitigations, block_digests=block_digests)
 
 
 def read_spec(path) -> CampaignSpec:

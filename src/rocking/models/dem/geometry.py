@@ -16,7 +16,10 @@ DEFAULT_SETTLEMENT = 1e-7
 """Default static settlement of a block under its own weight, as a fraction of its height."""
 ROUNDING = 1e-3
 """Rounding length of the corners (span tolerance), as a fraction of the smaller block size."""
-GEOMETRIES = ("auto", "polygon", "equivalent", "classical")
+GEOMETRIES = ("auto", "polygon", "body", "equivalent", "classical")
+BODY_TOL = 1e-9
+"""Relative tolerance of the checks that a block's sides, mass and ``I_O`` describe a rigid
+body standing on its polygon's base face (:func:`rigid_body`)."""
 
 
 @dataclass
@@ -72,6 +75,38 @@ def _default_mass(block: Block, area: float) -> float:
     return GRANITE_DENSITY * area * (block.thickness or 1.0)
 
 
+def rigid_body(block: Block) -> tuple[float, float, float] | None:
+    """``(x_G, y_G, I_G)``: the centre of mass (m, in the frame of :attr:`Block.vertices`)
+    and the moment of inertia about it (kg m^2) of a block whose polygon is only its
+    outline, the body's mass and inertia being its own (a mesh block of
+    :mod:`rocking.shapes`: the hull projected on the plane of shaking, with the mesh's mass
+    and inertia). Read from the block's two sides: ``b_s = R_s sin(alpha_s)``, ``h = R_s
+    cos(alpha_s)`` put the centre of mass at ``(x_O + b_+, h)`` above the base face's ends
+    ``O`` (left, the pivot of ``theta > 0``) and ``O'``, and ``I_G = I_O - m R^2`` (``R``
+    of the weaker side, whose ``I_O`` the block carries). None unless the block has a
+    polygon, ``R``, ``mass`` and ``I_O``, both sides give the same ``h``, ``b_+ + b_-`` is
+    the base face's length, ``I_G > 0`` and each side's ``p^2 = g R_s / (I_G/m + R_s^2)``
+    (Eq 3), all to :data:`BODY_TOL`."""
+    v = block.vertices
+    if v is None or block.R is None or block.mass is None or block.I_O is None:
+        return None
+    (xl, _), (xr, _) = v[0], v[1]
+    size = max(block.width or 0.0, block.height or 0.0, block.R)
+    sides = [(block.alpha_plus, block.p_plus, block.R_plus),
+             (block.alpha_minus, block.p_minus, block.R_minus)]
+    b = [R * math.sin(a) for a, _, R in sides]
+    h = [R * math.cos(a) for a, _, R in sides]
+    if abs(h[0] - h[1]) > BODY_TOL * size or abs((xr - xl) - (b[0] + b[1])) > BODY_TOL * size:
+        return None
+    rg2 = block.I_O / block.mass - block.R * block.R
+    if not rg2 > 0.0:
+        return None
+    for _, p, R in sides:
+        if abs(G * R / (rg2 + R * R) - p * p) > 2.0 * BODY_TOL * p * p:
+            return None
+    return xl + b[0], 0.5 * (h[0] + h[1]), block.mass * rg2
+
+
 def body_of(block: Block, geometry: str = "auto") -> Body:
     """The DEM body of ``block`` (see the module docstring for ``geometry``)."""
     if geometry not in GEOMETRIES:
@@ -83,6 +118,18 @@ def body_of(block: Block, geometry: str = "auto") -> Body:
             a, p = _polygon_alpha_p(block)
             if abs(a - block.alpha) <= 1e-9 * a and abs(p - block.p) <= 1e-9 * p:
                 geometry = "polygon"
+            elif rigid_body(block) is not None:
+                geometry = "body"
+    if geometry == "body":
+        rb = rigid_body(block)
+        if rb is None:
+            raise ParameterError(
+                "geometry='body' needs a block whose polygon outlines a rigid body of known "
+                "mass, inertia and centre of mass (a mesh block: rocking.shapes, the block "
+                "form 'mesh')")
+        xg, yg, i_g = rb
+        v = np.array(block.vertices, dtype=np.float64) - np.array([xg, yg])
+        return Body(v, float(block.mass), i_g, "body", block.alpha, block.p)
     if geometry == "polygon":
         if block.vertices is None:
             raise ParameterError("geometry='polygon' needs a block with a polygon "

@@ -42,8 +42,9 @@ class DEMOptions(ModelOptions):
     cohesion: float = option(0.0, unit="N", lo=0.0, lo_open=False,
                              help="cohesive shear strength of one contact point")
     geometry: str = option("auto", choices=GEO.GEOMETRIES,
-                           help="body of a Block: auto, polygon, equivalent (Eq 18), "
-                                "classical")
+                           help="body of a Block: auto, polygon, body (a mesh block's "
+                                "outline with its own mass and inertia), equivalent (Eq "
+                                "18), classical")
     dt: float | None = option(None, unit="s", lo=0.0,
                               help="time step (default: from the stability limit)")
     settled: bool = option(True, help="start at static equilibrium on the contacts")
