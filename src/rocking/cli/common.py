@@ -101,9 +101,20 @@ def json_default(o):
 
 
 # ----------------------------------------------------------------------------- blocks
+MESH_FLAGS = {"mesh": "--mesh", "density": "--density", "mass": "--mass", "up": "--up",
+              "direction": "--direction", "units": "--mesh-units", "repair": "--repair"}
+"""The flags of the ``mesh`` block form (:mod:`rocking.blocks.factory`) by its key."""
+MESH_META = "rocking.mesh"
+"""Where :func:`block_options` leaves the mesh flags for :func:`make_block` (the click
+context's ``meta``), so that every command taking a block takes ``--mesh`` too."""
+
+
 def block_options(classical: bool = False, mass: bool = False):
     """Decorator adding ``--specimen --params --width --height`` (and ``--mass``, or
-    ``--alpha --p --mu`` for a block given by its classical parameters)."""
+    ``--alpha --p --mu`` for a block given by its classical parameters), and the mesh
+    block's ``--mesh --density --mass --up --direction --mesh-units --repair`` (the factory
+    form ``mesh``: :func:`make_block` reads them from the click context; the command's
+    callback does not see them, except ``--mass`` where the command has it)."""
     opts = [
         click.option("--specimen", metavar="N",
                      help="Specimen of Pena et al. (2007), Table I (1-4)."),
@@ -113,7 +124,8 @@ def block_options(classical: bool = False, mass: bool = False):
         click.option("--height", metavar="H", help="Full height 2h (bare number: m)."),
     ]
     if mass:
-        opts.append(click.option("--mass", metavar="M", help="Mass (kg), with --width/--height."))
+        opts.append(click.option("--mass", metavar="M",
+                                 help="Mass (kg), with --width/--height or --mesh."))
     if classical:
         opts += [
             click.option("--alpha", metavar="A",
@@ -123,36 +135,73 @@ def block_options(classical: bool = False, mass: bool = False):
             click.option("--mu", metavar="MU",
                          help="Coefficient of restitution in (0, 1]; overrides."),
         ]
+    mesh_dest = {"mesh": "mesh_path", "density": "mesh_density", "up": "mesh_up",
+                 "direction": "mesh_direction", "units": "mesh_units",
+                 "repair": "mesh_repair"}
+    if not mass:
+        mesh_dest["mass"] = "mesh_mass"
+    mesh_help = {
+        "mesh": ("FILE", "A 3-D mesh (STL, OBJ, PLY): its planar block in --direction "
+                 "(rocking.shapes; 'rocking shape FILE' tabulates the directions)."),
+        "density": ("RHO", "Density of the --mesh (kg/m^3), or --mass."),
+        "mass": ("M", "Mass of the --mesh (kg), instead of --density."),
+        "up": ("AXIS", "The --mesh's vertical axis: x, y, z (default), -x, -y, -z."),
+        "direction": ("DIR", "Direction of shaking of the --mesh from its x axis, "
+                      "counter-clockwise looking down --up (bare number: deg; 0.5rad), "
+                      "weakest or strongest (default 0)."),
+        "units": ("U", "Length unit of the --mesh file: m (default), cm, mm."),
+        "repair": ("hull", "Use the convex hull of an open or inconsistent --mesh."),
+    }
+    opts += [click.option(MESH_FLAGS[k], dest, metavar=mesh_help[k][0], help=mesh_help[k][1])
+             for k, dest in mesh_dest.items()]
 
     def decorate(f):
+        import functools
+
+        @functools.wraps(f)
+        def callback(*args, **kwargs):
+            given = {k: kwargs.pop(dest) for k, dest in mesh_dest.items()}
+            ctx = click.get_current_context(silent=True)
+            if ctx is not None:
+                ctx.meta[MESH_META] = {k: v for k, v in given.items() if v is not None}
+            return f(*args, **kwargs)
+
         for o in reversed(opts):
-            f = o(f)
-        return f
+            callback = o(callback)
+        return callback
 
     return decorate
 
 
 BLOCK_FLAGS = {"specimen": "--specimen", "rectangular": "--width/--height",
-               "classical": "--alpha"}
+               "classical": "--alpha", "mesh": "--mesh"}
 """The block forms of :mod:`rocking.blocks.factory` that the flags give, by the flag that
 tells them."""
 _BLOCK_USAGE = {"specimen": "--specimen N", "rectangular": "--width W --height H",
-                "classical": "--alpha A --p P --mu MU"}
-_BLOCK_UNITS = {"mass": ("kg",), "p": ("1/s", "rad/s")}
+                "classical": "--alpha A --p P --mu MU",
+                "mesh": "--mesh FILE --density RHO (or --mass M)"}
+_BLOCK_UNITS = {"mass": ("kg",), "p": ("1/s", "rad/s"), "density": ("kg/m^3", "kg/m3")}
 """Units a bare-number key may carry on the command line (taken off before the factory)."""
 
 
-def _block_form(specimen, width, height, alpha, allow_classical: bool) -> str:
+def _block_form(specimen, width, height, alpha, allow_classical: bool, mesh=None) -> str:
     """The factory form that the flags describe (exactly one)."""
     given = [f for f, v in (("specimen", specimen), ("rectangular", width or height),
-                            ("classical", alpha)) if v is not None]
+                            ("classical", alpha), ("mesh", mesh)) if v is not None]
     if len(given) > 1:
         raise ParameterError(f"block: give only one of "
                              f"{' or '.join(BLOCK_FLAGS[f] for f in given)}")
     if not given:
-        forms = ("specimen", "rectangular", "classical")[:3 if allow_classical else 2]
+        forms = ("specimen", "rectangular", *(("classical",) if allow_classical else ()),
+                 "mesh")
         raise ParameterError(f"block: give {', or '.join(_BLOCK_USAGE[f] for f in forms)}")
     return given[0]
+
+
+def mesh_flags() -> dict:
+    """The mesh flags given to the running command (:func:`block_options`), by key."""
+    ctx = click.get_current_context(silent=True)
+    return dict(ctx.meta.get(MESH_META, {})) if ctx is not None else {}
 
 
 def _bare(text, units: tuple[str, ...]) -> str:
@@ -166,15 +215,21 @@ def _bare(text, units: tuple[str, ...]) -> str:
 
 def make_block(specimen=None, params=None, width=None, height=None, mass=None, alpha=None,
                p=None, mu=None, allow_classical: bool = False):
-    """``(block, info)`` from exactly one of: specimen, width/height, alpha/p/mu, built by
+    """``(block, info)`` from exactly one of: specimen, width/height, alpha/p/mu, or the
+    mesh flags of :func:`block_options` (``--mesh``), built by
     :func:`rocking.blocks.factory.make_block` (which checks the values)."""
     from ..blocks.factory import FORMS
     from ..blocks.factory import make_block as build
 
-    form = _block_form(specimen, width, height, alpha, allow_classical)
+    meshed = mesh_flags()
+    if "mass" in meshed:
+        mass = meshed.pop("mass")
+    form = _block_form(specimen, width, height, alpha, allow_classical, meshed.get("mesh"))
+    if form != "mesh" and meshed:
+        raise ParameterError(f"{MESH_FLAGS[next(iter(meshed))][2:]} applies to --mesh only")
     texts = {k: v for k, v in (("specimen", specimen), ("params", params), ("width", width),
                                ("height", height), ("mass", mass), ("alpha", alpha),
-                               ("p", p), ("mu", mu)) if v is not None}
+                               ("p", p), ("mu", mu), *meshed.items()) if v is not None}
     keys = FORMS[form].Params.names()
     for k in texts:
         if k not in keys:
@@ -183,7 +238,8 @@ def make_block(specimen=None, params=None, width=None, height=None, mass=None, a
             raise ParameterError(f"{k} does not apply to {BLOCK_FLAGS[form]} (only to "
                                  f"{where})")
     given = {k: _bare(v, _BLOCK_UNITS.get(k, ())) for k, v in texts.items()}
-    words = {k: (k, v) for k, v in texts.items()}
+    words = {k: (MESH_FLAGS.get(k, "--" + k)[2:] if form == "mesh" else k, v)
+             for k, v in texts.items()}
     try:
         checked = FORMS[form].Params(**given)  # the factory's checks, for the info below
     except ParameterError as e:
@@ -194,6 +250,8 @@ def make_block(specimen=None, params=None, width=None, height=None, mass=None, a
     try:
         block = build(given)
     except ParameterError as e:  # valid keys, but no block (sizes beyond floating point)
+        if form == "mesh":
+            raise type(e)(one_line(in_flag_words(e, words))) from None
         if form != "rectangular":
             raise
         raise ParameterError(_size_problem(width, height, e)) from None
@@ -204,6 +262,10 @@ def _block_info(form: str, checked, block, texts: dict) -> dict:
     """What summary.json records of the block's source (and the overrides)."""
     if form == "classical":
         return {"alpha": block.alpha, "p": block.p, "mu": block.mu}
+    if form == "mesh":
+        return {"mesh": checked.mesh, "density": checked.density, "mass": block.mass,
+                "up": checked.up, "direction": texts.get("direction", 0.0),
+                "block_name": block.name}
     if form == "specimen":
         info = {"specimen": checked.specimen, "params": checked.params}
     else:
@@ -698,6 +760,7 @@ __all__ = ["CONTEXT", "quantity", "number", "check_positive", "positive_quantity
            "ModelChoice", "option_value", "parse_options", "validate_options",
            "models_with_option", "options_table", "describe_table", "one_line",
            "read_record_arg", "output_too_large_message", "error_report", "in_flag_words",
-           "BLOCK_FLAGS", "BUILDING_FLAGS", "building_options", "make_building",
+           "BLOCK_FLAGS", "MESH_FLAGS", "mesh_flags", "BUILDING_FLAGS", "building_options",
+           "make_building",
            "QUANTITY_OF_UNIT", "MODEL_FLAG_DEST", "option_flag", "option_declarations",
            "declared_value", "model_flag_values", "ModelFlagsCommand", "model_flags_given"]
