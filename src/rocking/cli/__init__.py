@@ -16,13 +16,14 @@
     rocking reproduce --out results [--quick] [--full]
     rocking campaign run SPEC.toml --out STORE [--executor dask --dask-local 2]
     rocking campaign status|report STORE
+    rocking shape MESH.stl --density 2600 [--up z] [--out DIR] [--json]
 
 Modules: :mod:`~rocking.cli.params`, :mod:`~rocking.cli.simulate`,
 :mod:`~rocking.cli.models`, :mod:`~rocking.cli.catalog` (``motions``, ``blocks``,
 ``buildings``),
 :mod:`~rocking.cli.motion`, :mod:`~rocking.cli.dem`,
 :mod:`~rocking.cli.identify`, :mod:`~rocking.cli.reproduce`,
-:mod:`~rocking.cli.campaign`; each imports only
+:mod:`~rocking.cli.campaign`, :mod:`~rocking.cli.shape`; each imports only
 :mod:`~rocking.cli.common` (and the library), and this module registers them.
 
 Errors: :func:`main` prints bad input -- a :class:`~rocking.errors.RockingError` from the
@@ -51,6 +52,7 @@ from .models import models_cmd
 from .motion import motion
 from .params import params_cmd
 from .reproduce import reproduce_cmd
+from .shape import shape_cmd
 from .simulate import simulate_cmd
 
 
@@ -64,7 +66,7 @@ def cli():
 
 
 for _command in (params_cmd, simulate_cmd, reproduce_cmd, identify, dem_params, motion,
-                 models_cmd, motions_cmd, blocks_cmd, buildings_cmd, campaign):
+                 models_cmd, motions_cmd, blocks_cmd, buildings_cmd, campaign, shape_cmd):
     cli.add_command(_command)
 
 _NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())
