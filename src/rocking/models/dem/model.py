@@ -94,10 +94,27 @@ class DEM(Model):
     append_overturn = False
     response_class = DEMResponse
 
+    @staticmethod
+    def check_bodies(block, assembly: GEO.Assembly) -> None:
+        """An asymmetric block (its two sides differ) is simulated as the rigid body its
+        polygon outlines (geometry ``"body"``: a mesh block, :mod:`rocking.shapes`); the
+        rectangles of ``"classical"``/``"equivalent"`` and a polygon's own mass and
+        inertia would be another, symmetric body: refused."""
+        blocks = block.blocks if isinstance(block, Stack) else (block,)
+        for b, bd in zip(blocks, assembly.bodies, strict=True):
+            if not b.symmetric and bd.mode != "body":
+                raise ParameterError(
+                    f"model 'dem' takes an asymmetric block ({b.name or 'the block'}: "
+                    f"alpha_plus = {b.alpha_plus:.4g}, alpha_minus = {b.alpha_minus:.4g} "
+                    "rad) only as the rigid body of its outline (geometry 'body': a mesh "
+                    "block, rocking.shapes, the block form 'mesh'); got geometry "
+                    f"{bd.mode!r}; use model='housner' or 'ccrr'")
+
     def __init__(self, block, options=None):
         super().__init__(block, options)
         o = self.options
         self.assembly = md = GEO.build_assembly(block, o.geometry)
+        self.check_bodies(block, md)
         self.K = GEO.default_stiffness(md) if o.stiffness is None else o.stiffness
         self.Ks = self.K if o.shear_stiffness is None else o.shear_stiffness
         top = block.blocks[-1] if isinstance(block, Stack) else block
