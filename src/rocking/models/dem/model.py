@@ -104,10 +104,10 @@ class DEM(Model):
         for b, bd in zip(blocks, assembly.bodies, strict=True):
             if not b.symmetric and bd.mode != "body":
                 raise ParameterError(
-                    f"model 'dem' takes an asymmetric block ({b.name or 'the block'}: "
-                    f"alpha_plus = {b.alpha_plus:.4g}, alpha_minus = {b.alpha_minus:.4g} "
-                    "rad) only as the rigid body of its outline (geometry 'body': a mesh "
-                    "block, rocking.shapes, the block form 'mesh'); got geometry "
+                    f"model 'dem' takes symmetric blocks only, or an asymmetric one as the "
+                    "rigid body of its outline (geometry 'body': a mesh block, "
+                    f"rocking.shapes); {b.name or 'the block'} has alpha_plus = "
+                    f"{b.alpha_plus:.4g}, alpha_minus = {b.alpha_minus:.4g} rad and geometry "
                     f"{bd.mode!r}; use model='housner' or 'ccrr'")
 
     def __init__(self, block, options=None):
