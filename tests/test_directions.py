@@ -269,3 +269,20 @@ def test_bad_sweeps(shape, rinaldi):
         direction_sweep(shape, rinaldi, vertical="yes")
     with pytest.raises(ParameterError, match="body\\(phi\\) must return"):
         direction_sweep(lambda phi: 3.0, rinaldi, [0.0])
+
+
+def test_uplift_side_of_an_asymmetric_block():
+    """A positive acceleration lifts the block on side + (Eq 1's sign), at g tan
+    alpha_plus: a one-signed pulse between the two sides' uplift accelerations lifts an
+    asymmetric block in one direction and not in the opposite one, as uplift_demand says."""
+    blk = rocking.Block.from_geometry(0.6, 0.25, 0.15, 0.35, mass=100.0)
+    assert blk.alpha_plus > blk.alpha_minus
+    amp = 0.5 * (math.tan(blk.alpha_plus) + math.tan(blk.alpha_minus)) * 9.80665
+    t = np.arange(201) * 0.005
+    pulse = amp * np.sin(np.pi * t / t[-1])
+    pair = HorizontalPair(Record(pulse, 0.005), Record(np.zeros(201), 0.005))
+    sw = direction_sweep(blk, pair, [0.0, math.pi], duration=3.0).table
+    assert sw.uplift_demand[0] < 1.0 < sw.uplift_demand[1]
+    assert np.isnan(sw.uplift_time[0]) and sw.max_abs_theta[0] == 0.0
+    assert np.isfinite(sw.uplift_time[1]) and sw.max_theta_minus[1] > 0.0
+    assert sw.max_theta_plus[1] <= sw.max_theta_minus[1]
