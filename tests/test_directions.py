@@ -286,3 +286,52 @@ def test_uplift_side_of_an_asymmetric_block():
     assert np.isnan(sw.uplift_time[0]) and sw.max_abs_theta[0] == 0.0
     assert np.isfinite(sw.uplift_time[1]) and sw.max_theta_minus[1] > 0.0
     assert sw.max_theta_plus[1] <= sw.max_theta_minus[1]
+
+
+# ------------------------------------------------------------------ fragility per direction
+def test_direction_fragility_runs_are_the_sweeps_runs(shape, rinaldi, short_pair):
+    """Each run of the fragility batch equals the sweep of its pair at its load factor
+    (the same planar block and projected motion), and the levels are the pairs' IM."""
+    from rocking.analysis import direction_fragility
+    from rocking.analysis.directions import pair_im
+
+    pairs = [rinaldi, short_pair]
+    levels = np.array([[2.0, 6.0], [3.0, 9.0]])
+    phis = np.radians([0.0, 50.0, 110.0])
+    fr = direction_fragility(shape, pairs, levels, phis, im="resultant", vertical=False,
+                             n_boot=0)
+    assert len(fr.runs) == 2 * 2 * 3 and len(fr.table) == 3
+    for r in fr.runs.itertuples():
+        pair = pairs[r.pair]
+        assert r.scale * pair_im(pair, "resultant") == pytest.approx(r.level, rel=1e-12)
+        sw = direction_sweep(shape, pair, [phis[r.direction]], scale=r.scale,
+                             vertical=False).table.iloc[0]
+        assert sw.max_abs_theta == r.max_abs_theta and sw.overturned == r.overturned
+    assert (fr.table.n_overturned == fr.runs.groupby("direction").overturned.sum()).all()
+    assert pair_im(rinaldi, "geomean") <= pair_im(rinaldi, "larger") \
+        <= pair_im(rinaldi, "resultant")
+
+
+def test_direction_fragility_of_a_symmetric_block_is_mirror_symmetric(rinaldi):
+    from rocking.analysis import direction_fragility
+
+    blk = rocking.specimen(2)
+    fr = direction_fragility(blk, rinaldi, np.geomspace(0.5, 6.0, 10), [0.4, 0.4 + math.pi],
+                             vertical=False, n_boot=0)
+    a, b = fr.table.iloc[0], fr.table.iloc[1]
+    assert a.n_overturned == b.n_overturned
+    for k in ("median", "median_lower_bound", "median_upper_bound"):
+        assert a[k] == pytest.approx(b[k], rel=1e-9, nan_ok=True)
+
+
+def test_direction_fragility_refusals(shape, rinaldi):
+    from rocking.analysis import direction_fragility
+
+    with pytest.raises(ParameterError, match="pairs must be"):
+        direction_fragility(shape, [], [1.0])
+    with pytest.raises(ParameterError, match="im must be one of"):
+        direction_fragility(shape, rinaldi, [1.0], im="rotd50")
+    with pytest.raises(ParameterError, match="levels must be finite and > 0"):
+        direction_fragility(shape, rinaldi, [1.0, -2.0])
+    with pytest.raises(ParameterError, match="one row per pair"):
+        direction_fragility(shape, [rinaldi, rinaldi], np.ones((3, 2)))

@@ -16,11 +16,18 @@ every function returns a tidy :class:`pandas.DataFrame` or a result object with 
 * :func:`compare_mitigations`: fragility, hazard and isolator demand per mitigation
   (:class:`MitigationComparison`, :func:`plot_mitigations`; issue 19);
 * :func:`direction_sweep`: a 3-D body's planar analysis in every direction under two
-  horizontal components, and its worst direction (:class:`DirectionSweep`; issue 20).
+  horizontal components, and its worst direction (:class:`DirectionSweep`), and
+  :func:`direction_fragility`, a fragility curve per direction (issue 20).
 """
 
 from .damage import DEFAULT_THRESHOLDS, FragilityCurves, damage_state, fragility_curves
-from .directions import DirectionSweep, direction_sweep, plot_sweeps
+from .directions import (
+    DirectionFragility,
+    DirectionSweep,
+    direction_fragility,
+    direction_sweep,
+    plot_sweeps,
+)
 from .fourier import FourierSpectrum, fourier_spectrum
 from .fragility import FragilityFit, annual_frequency, fragility, fragility_ida
 from .harmonic import motion_space, plot_motion_space
@@ -43,5 +50,6 @@ __all__ = [
     "fragility_curves", "FragilityCurves", "damage_state", "DEFAULT_THRESHOLDS",
     "fourier_spectrum", "FourierSpectrum", "overturning_spectrum", "outcome_map",
     "plot_overturning_spectrum", "plot_outcome_map", "pulse_motion", "PULSES",
-    "direction_sweep", "DirectionSweep", "plot_sweeps",
+    "direction_sweep", "DirectionSweep", "plot_sweeps", "direction_fragility",
+    "DirectionFragility",
 ]

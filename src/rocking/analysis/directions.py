@@ -5,7 +5,9 @@ the planar analysis of the body's planar block of that direction
 (:meth:`rocking.shapes.Shape.block`: the sides' alpha, R, p and restitutions) under the
 ground acceleration projected on ``phi`` (:meth:`rocking.motions.HorizontalPair.along`),
 all directions in one :func:`rocking.simulate_many` batch (one block per row), and
-returns the table and the worst direction (:class:`DirectionSweep`).
+returns the table and the worst direction (:class:`DirectionSweep`);
+:func:`direction_fragility` fits an overturning fragility curve per direction from pairs
+scaled to levels of an intensity measure.
 
 **What this is, and is not.** This planar-per-direction analysis is the standard
 engineering answer until a 3-D model exists: in each direction the body is assumed to rock
@@ -264,4 +266,122 @@ def plot_sweeps(sweeps, labels=None, *, reference=None, ax=None):
     return ax.figure
 
 
-__all__ = ["COLUMNS", "DirectionSweep", "direction_sweep", "plot_sweeps", "worst_index"]
+PAIR_IMS = ("larger", "resultant", "geomean")
+"""Intensity measures of a pair for :func:`direction_fragility` (m/s^2): the larger of
+the two components' PGAs, the peak of the horizontal acceleration vector
+(:attr:`~rocking.motions.HorizontalPair.peak_resultant`), the geometric mean of the two
+PGAs."""
+
+
+def pair_im(pair: HorizontalPair, im: str = "larger") -> float:
+    """The intensity measure ``im`` (:data:`PAIR_IMS`, m/s^2) of a pair."""
+    p1, p2 = pair.pga_components
+    if im == "larger":
+        return max(p1, p2)
+    if im == "resultant":
+        return pair.peak_resultant
+    if im == "geomean":
+        return math.sqrt(p1 * p2)
+    raise ParameterError(f"im must be one of {', '.join(PAIR_IMS)}, got {im!r}")
+
+
+@dataclass(frozen=True, eq=False)
+class DirectionFragility:
+    """The result of :func:`direction_fragility`: ``table`` (one row per direction:
+    ``phi``, ``phi_deg``, ``alpha_plus``, ``alpha_minus``, ``n``, ``n_overturned``,
+    ``median``, ``beta``, ``median_se`` (m/s^2), ``median_lower_bound`` /
+    ``median_upper_bound`` where no fit exists, ``note``), ``runs`` (one row per run:
+    ``pair``, ``level``, ``scale``, ``phi``... and the outcomes), ``fits`` (the
+    :class:`~rocking.analysis.FragilityFit` of each direction that has one, by row of
+    ``table``) and ``im``."""
+
+    table: pd.DataFrame
+    runs: pd.DataFrame
+    fits: dict
+    im: str
+
+
+def direction_fragility(body, pairs, levels, directions=None, *, im: str = "larger",
+                        model="housner", orientation=None, vertical: bool = True,
+                        duration: float | None = None, n_boot: int = 200, seed: int | None = 0,
+                        **options) -> DirectionFragility:
+    """An overturning fragility curve per direction: every pair scaled to every level of
+    its intensity measure ``im`` (:data:`PAIR_IMS`, m/s^2), run in every direction as in
+    :func:`direction_sweep` (one :func:`rocking.simulate_many` batch), and a lognormal
+    fit per direction (:func:`rocking.analysis.fragility`; the median bounded by the
+    largest level that did not overturn and the smallest that did where no fit exists).
+
+    ``levels``: one sequence of levels (m/s^2) for every pair, or an array ``(pairs,
+    levels)``, one row per pair (a design whose pairs cover distinct levels). The
+    orientation (module docstring of :mod:`rocking.motions.pair`) is the same for every
+    pair (None: the body's x axis along each pair's first component). The same caveats
+    as :func:`direction_sweep`: planar analysis per direction.
+    """
+    from .fragility import fragility
+
+    plist = [pairs] if isinstance(pairs, HorizontalPair) else list(pairs)
+    if not plist or not all(isinstance(p, HorizontalPair) for p in plist):
+        raise ParameterError("pairs must be a rocking.motions.HorizontalPair or a non-empty "
+                             "sequence of them")
+    if im not in PAIR_IMS:
+        raise ParameterError(f"im must be one of {', '.join(PAIR_IMS)}, got {im!r}")
+    try:
+        lev = np.asarray(levels, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError("levels must be numbers (m/s^2)") from None
+    if lev.ndim == 1:
+        lev = np.broadcast_to(lev, (len(plist), lev.size))
+    if lev.ndim != 2 or lev.shape[0] != len(plist) or lev.size == 0:
+        raise ParameterError(f"levels must be a sequence or an array of one row per pair "
+                             f"({len(plist)}), got shape {np.shape(levels)}")
+    if not (np.all(np.isfinite(lev)) and np.all(lev > 0.0)):
+        raise ParameterError("levels must be finite and > 0 (m/s^2)")
+    if not isinstance(vertical, bool | np.bool_):
+        raise ParameterError(f"vertical must be True or False, got {vertical!r}")
+    _, mirrored = _blocks_of(body, np.zeros(0))
+    phis = _directions(directions, mirrored)
+    dblocks, _ = _blocks_of(body, phis)
+    o = None if orientation is None else angle("orientation", orientation)
+    blocks, motions, meta = [], [], []
+    for k, pair in enumerate(plist):
+        base = pair_im(pair, im)
+        for lv in lev[k]:
+            f = float(lv) / base
+            for i, phi in enumerate(phis):
+                m = pair.motion(float(phi), o, vertical=vertical)
+                motions.append(m.scaled(f))
+                blocks.append(dblocks[i])
+                meta.append((k, pair.name, float(lv), f, i))
+    res = simulate_many(blocks, motions, model=model, duration=duration, **options)
+    runs = pd.DataFrame(meta, columns=["pair", "name", "level", "scale", "direction"])
+    runs["phi"] = phis[runs.direction.to_numpy()]
+    runs["max_abs_theta"] = np.asarray(res.max_abs_theta, dtype=float)
+    runs["overturned"] = np.asarray(res.overturned, dtype=bool)
+    runs["overturn_time"] = np.asarray(res.overturn_time, dtype=float)
+    runs["uplift_time"] = np.asarray(res.uplift_time, dtype=float)
+    rows, fits = [], {}
+    for i, phi in enumerate(phis):
+        g = runs[runs.direction == i]
+        x, y = g.level.to_numpy(float), g.overturned.to_numpy(bool)
+        b = dblocks[i]
+        row = {"phi": float(phi), "phi_deg": math.degrees(phi), "alpha_plus": b.alpha_plus,
+               "alpha_minus": b.alpha_minus, "n": len(g), "n_overturned": int(y.sum()),
+               "median": math.nan, "beta": math.nan, "median_se": math.nan,
+               "median_lower_bound": math.nan, "median_upper_bound": math.nan, "note": ""}
+        try:
+            fit = fragility(x, y, n_boot=n_boot, seed=seed, im_name=f"pga_{im}",
+                            im_unit="m/s^2", label=f"overturning, {math.degrees(phi):g} deg")
+            fits[i] = fit
+            row.update(median=fit.median, beta=fit.beta, median_se=fit.median_se)
+        except ParameterError as exc:
+            row["note"] = str(exc)
+            if (~y).any():
+                row["median_lower_bound"] = float(x[~y].max())
+            if y.any():
+                row["median_upper_bound"] = float(x[y].min())
+        rows.append(row)
+    return DirectionFragility(table=pd.DataFrame(rows), runs=runs, fits=fits, im=im)
+
+
+__all__ = ["COLUMNS", "PAIR_IMS", "DirectionFragility", "DirectionSweep", "direction_fragility",
+           "direction_sweep", "pair_im", "plot_sweeps", "worst_index"]
