@@ -249,19 +249,25 @@ def test_a_plinth_smaller_than_the_statue_s_base_is_refused():
 
 
 def test_dem_rocks_an_asymmetric_mesh_block_like_the_classical_model():
-    """The statue across its x axis (alpha_plus = 21.8, alpha_minus = 16.5 deg): with a
-    plastic impact (damping at its cap, where the DEM body's restitution is the angular
-    momentum balance of the mesh body, i.e. mu_plus and mu_minus), the DEM's free rocking
-    follows the asymmetric classical model (tests/test_dem.py's tolerances)."""
+    """The statue across its x axis (alpha_plus = 21.8, alpha_minus = 16.5 deg): the DEM
+    damps an asymmetric body's impacts plastically (the damping at its cap, where the DEM's
+    restitutions are the angular-momentum balance of the mesh body, i.e. mu_plus and
+    mu_minus), and its free rocking follows the asymmetric classical model
+    (tests/test_dem.py's tolerances). Restitutions given otherwise need a damping."""
     sh = load_example(density=2600.0)
     blk = mesh_block(sh, 0.0)
     assert not blk.symmetric and abs(blk.alpha_plus - blk.alpha_minus) > 0.05
     th0 = 0.5 * blk.alpha_plus
-    r = simulate(blk, None, model="dem", duration=3.0, theta0=th0, dt_out=5e-4,
-                 damping=D.damping_cap(blk))
+    r = simulate(blk, None, model="dem", duration=3.0, theta0=th0, dt_out=5e-4)
+    assert r.info["damping_source"] == "plastic impact (asymmetric body)"
+    assert r.info["damping"] == pytest.approx(D.damping_cap(blk), rel=1e-12)
     h = simulate(sh.block(0.0), None, duration=3.0, theta0=th0, dt_out=5e-4)
     a, a0 = np.abs(r.half_cycle_peaks()[1]), np.abs(h.half_cycle_peaks()[1])
     n = min(len(a), len(a0), 6)
     assert n >= 4
     assert np.max(np.abs(a[1:n] / a0[1:n] - 1)) < 0.03
     assert np.max(np.abs(r.impact_times[:n - 1] / h.impact_times[:n - 1] - 1)) < 0.02
+    with pytest.raises(ParameterError, match="give damping"):
+        simulate(blk.with_params(mu=0.95), None, model="dem", duration=0.1, theta0=0.01)
+    simulate(blk.with_params(mu=0.95), None, model="dem", duration=0.1, theta0=0.01,
+             damping=1e-4)

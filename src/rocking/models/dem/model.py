@@ -16,7 +16,7 @@ from ...units import G
 from ..base import Model, ModelOptions, option
 from . import geometry as GEO
 from . import statics as ST
-from .calibration import calibrate_damping
+from .calibration import calibrate_damping, damping_cap
 from .friction import DEFAULT_FRICTION_ANGLE, HALF_PI, degrees_if_bare
 from .kernel import batch_kernel, kernel
 from .parameters import paper_parameters
@@ -110,6 +110,29 @@ class DEM(Model):
                     f"{b.alpha_plus:.4g}, alpha_minus = {b.alpha_minus:.4g} rad and geometry "
                     f"{bd.mode!r}; use model='housner' or 'ccrr'")
 
+    @staticmethod
+    def plastic_impact_damping(block, K, geometry, Ks) -> float:
+        """The damping of an asymmetric block's body (geometry ``"body"``): the cap of
+        :func:`~rocking.models.dem.damping_cap`, where the DEM's impact is plastic and its
+        restitutions are the angular-momentum balance of the body about the new pivot,
+        i.e. the block's ``mu_plus`` and ``mu_minus`` when derived (Housner's argument; the
+        calibration of :func:`~rocking.models.dem.calibrate_damping` measures one
+        symmetric restitution). A block whose restitutions were given otherwise is
+        refused: give ``damping`` (s)."""
+        xg, yg, i_g = GEO.rigid_body(block)
+        (xl, _), (xr, _) = block.vertices[0], block.vertices[1]
+        bp, bm, rg2 = xg - xl, xr - xg, i_g / block.mass
+        derived = ((rg2 + yg * yg - bp * bm) / (rg2 + bm * bm + yg * yg),
+                   (rg2 + yg * yg - bp * bm) / (rg2 + bp * bp + yg * yg))
+        given = (block.mu_plus, block.mu_minus)
+        if any(abs(d - g) > 1e-6 for d, g in zip(derived, given, strict=True)):
+            raise ParameterError(
+                f"damping: the DEM's damping of an asymmetric block is that of a plastic "
+                f"impact, whose restitutions are the body's (mu_plus = {derived[0]:.4f}, "
+                f"mu_minus = {derived[1]:.4f}); {block.name or 'the block'} has mu_plus = "
+                f"{given[0]:.4f}, mu_minus = {given[1]:.4f}: give damping (s) explicitly")
+        return damping_cap(block, K, geometry, Ks)
+
     def __init__(self, block, options=None):
         super().__init__(block, options)
         o = self.options
@@ -118,7 +141,10 @@ class DEM(Model):
         self.K = GEO.default_stiffness(md) if o.stiffness is None else o.stiffness
         self.Ks = self.K if o.shear_stiffness is None else o.shear_stiffness
         top = block.blocks[-1] if isinstance(block, Stack) else block
-        if o.damping is None or o.damping == "calibrated":
+        if (o.damping is None or o.damping == "calibrated") and not top.symmetric:
+            self.b = self.plastic_impact_damping(top, self.K, o.geometry, self.Ks)
+            self.damping_source = "plastic impact (asymmetric body)"
+        elif o.damping is None or o.damping == "calibrated":
             cal = calibrate_damping(top, top.mu, self.K, geometry=o.geometry,
                                     friction_angle=o.friction_angle,
                                     shear_stiffness=self.Ks, full=True)
