@@ -1,5 +1,14 @@
 """DEM geometry: the body of each block (Eq 18 and the classical body) and the packed
-assembly of blocks that the kernel integrates (see :mod:`rocking.models.dem`)."""
+assembly of blocks that the kernel integrates (see :mod:`rocking.models.dem`).
+
+Besides the geometries of :mod:`rocking.models.dem`, ``"body"`` (issue 20) is a block's
+polygon as the *outline* of a rigid body whose mass, centre of mass and moment of inertia
+are the block's own (:func:`rigid_body`): the planar block of a 3-D mesh
+(:func:`rocking.blocks.factory.mesh_block`: the mesh's hull projected on the plane of
+shaking, with the mesh's mass and its inertia about the axis normal to that plane), not
+the polygon's area and second moment. ``"auto"`` takes it for a block whose polygon is not
+its own body but whose sides, mass and ``I_O`` describe one standing on that polygon's
+base face."""
 
 from __future__ import annotations
 
