@@ -203,7 +203,7 @@ def _load(path: str, stamp: tuple, density, mass, up, units, repair):
 
 def load_mesh(f: MeshForm):
     """The :class:`rocking.shapes.Shape` of a mesh form (cached per file content stamp)."""
-    path = os.fspath(f.mesh)
+    path = os.path.abspath(os.fspath(f.mesh))
     try:
         st = os.stat(path)
         stamp = (st.st_mtime_ns, st.st_size)
