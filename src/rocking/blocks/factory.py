@@ -195,7 +195,7 @@ def mesh_directions(value) -> list:
 
 @functools.lru_cache(maxsize=16)
 def _load(path: str, stamp: tuple, density, mass, up, units, repair):
-    import rocking.shapes as shapes  # lazy: trimesh
+    from .. import shapes  # lazy: trimesh
 
     return shapes.load_shape(path, density=density, mass=mass, up=up, repair=repair,
                              units=units)
@@ -280,8 +280,9 @@ def statue_on_plinth(shape, direction: float, plinth, *, name: str | None = None
     over the plinth's centre, for shaking along ``direction`` (rad): a two-block
     :class:`~rocking.Stack` for the DEM, each block the :func:`mesh_block` of its body
     (true mass and inertia). The statue's support must lie on the plinth's top face. The
-    plinth's own restitution is not used by the DEM (its contact damping is calibrated to
-    the top block's); a squat plinth gets a nominal one."""
+    plinth's own restitution is not used by the DEM (its contact damping follows the top
+    block's); a squat plinth, for which the angular-momentum restitution is not positive,
+    gets a nominal 1."""
     half = 0.5 * np.ptp(plinth.support, axis=0)
     sup = np.asarray(shape.support)
     if np.any(np.abs(sup) > half[None, :] * (1.0 + 1e-9)):
