@@ -109,7 +109,7 @@ def test_bad_keys_name_the_key(box_file, keys, name):
         make_block({"mesh": str(box_file), **keys})
 
 
-def test_the_command_line_takes_mesh_flags(capsys, box_file):
+def test_the_command_line_takes_mesh_flags(capsys, box_file, tmp_path):
     code, out, err = run_main(capsys, "params", "--mesh", box_file, "--density", RHO,
                               "--direction", "90", "--json")
     assert code == 0, err
@@ -117,6 +117,16 @@ def test_the_command_line_takes_mesh_flags(capsys, box_file):
     assert math.isclose(d["alpha"], math.atan(B / C), rel_tol=1e-9)
     code, _, err = run_main(capsys, "params", "--mesh", box_file)
     assert_one_line_error(code, err, "density")
+    out_dir = tmp_path / "run"
+    code, _, err = run_main(capsys, "simulate", "--mesh", example_mesh_path(), "--mass", "250",
+                            "--direction", "weakest", "--motion", "ricker", "--amp", "0.1g",
+                            "--freq", "2Hz", "--out", out_dir)
+    assert code == 0, err
+    given = json.loads((out_dir / "summary.json").read_text())["inputs"]["block"]
+    weak = load_example(mass=250.0).weakest()
+    assert given["direction"] == "weakest"
+    assert given["direction_deg"] == pytest.approx(weak.phi_deg, abs=1e-9)
+    assert given["alpha"] == pytest.approx(weak.alpha, rel=1e-12)
     code, _, err = run_main(capsys, "params", "--width", "1", "--height", "2", "--up", "y")
     assert_one_line_error(code, err, "--mesh")
     code, _, err = run_main(capsys, "simulate", "--mesh", box_file, "--mass", "10",

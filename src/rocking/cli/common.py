@@ -263,9 +263,12 @@ def _block_info(form: str, checked, block, texts: dict) -> dict:
     if form == "classical":
         return {"alpha": block.alpha, "p": block.p, "mu": block.mu}
     if form == "mesh":
+        from ..blocks.factory import load_mesh, mesh_directions, resolve_direction
+
+        phi = resolve_direction(load_mesh(checked), mesh_directions(checked.direction)[0])
         return {"mesh": checked.mesh, "density": checked.density, "mass": block.mass,
-                "up": checked.up, "direction": texts.get("direction", 0.0),
-                "block_name": block.name}
+                "up": checked.up, "direction": texts.get("direction", "0"),
+                "direction_deg": math.degrees(phi)}
     if form == "specimen":
         info = {"specimen": checked.specimen, "params": checked.params}
     else:
