@@ -335,3 +335,15 @@ def test_direction_fragility_refusals(shape, rinaldi):
         direction_fragility(shape, rinaldi, [1.0, -2.0])
     with pytest.raises(ParameterError, match="one row per pair"):
         direction_fragility(shape, [rinaldi, rinaldi], np.ones((3, 2)))
+
+
+def test_pair_from_files_reads_the_azimuths(rinaldi):
+    paths = [rinaldi.first.meta["path"], rinaldi.second.meta["path"],
+             rinaldi.vertical.meta["path"]]
+    p = HorizontalPair.from_files(*paths)
+    assert p.azimuths == rinaldi.azimuths and p.vertical is not None
+    np.testing.assert_array_equal(p.a2, rinaldi.a2)
+    q = HorizontalPair.from_files(*paths[:2], azimuths=None)
+    assert q.azimuths is None and q.handedness == -1 and q.vertical is None
+    r = HorizontalPair.builtin("Rinaldi228", "Rinaldi318", vertical="RinaldiUP")
+    np.testing.assert_array_equal(r.vertical.acc, rinaldi.vertical.acc)
