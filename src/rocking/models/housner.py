@@ -179,27 +179,109 @@ def free_cap(th, om, s, alpha, p, mu, lin, t, free_time, peak):
 
 
 @njit(cache=True)
-def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,
-              rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th, out_om, imp):
+def _energy(a, om, alpha, p2, lin):
+    """``(E, E_top, E_bottom)`` per unit moment of inertia on one side at ``|th| = a``
+    (:func:`free_outcome`)."""
+    if lin:
+        return 0.5 * om * om - 0.5 * p2 * (a - alpha) ** 2, 0.0, -0.5 * p2 * alpha * alpha
+    return 0.5 * om * om + p2 * math.cos(alpha - a), p2, p2 * math.cos(alpha)
+
+
+@njit(cache=True)
+def _amplitude(e, alpha, p2, lin):
+    """The largest ``|th|`` reached on one side with the energy ``e`` (below the top)."""
+    if lin:
+        return alpha - math.sqrt(max(-2.0 * e / p2, 0.0))
+    return alpha - math.acos(min(e / p2, 1.0))
+
+
+@njit(cache=True)
+def free_outcome_sides(th, om, s, alpha_p, p2_p, mu_p, alpha_m, p2_m, mu_m, lin):
+    """:func:`free_outcome` of an asymmetric block (side + for ``theta > 0``, side - for
+    ``theta < 0``; ``mu_s`` ends rocking on side ``s``); equal sides call
+    :func:`free_outcome` itself (the same arithmetic).
+
+    On each side its own energy is conserved; an impact ending rocking on side ``s``
+    turns the kinetic energy ``K`` at ``theta = 0`` (per unit inertia) into ``mu_s^2 K``
+    on the other side. ``K`` falls at every impact, so the block can overturn only on the
+    current side (moving away), on the other side after the next impact, or back on this
+    side after the one after (when it now moves towards ``theta = 0`` with more energy
+    than this side's top: a smaller restitution on the way there may not be enough); the
+    amplitude is the largest of those excursions."""
+    if alpha_p == alpha_m and p2_p == p2_m and mu_p == mu_m:
+        return free_outcome(th, om, s, alpha_p, p2_p, mu_p, lin)
+    if s > 0.0:
+        al, p2, mu, al_o, p2_o, mu_o = alpha_p, p2_p, mu_p, alpha_m, p2_m, mu_m
+    else:
+        al, p2, mu, al_o, p2_o, mu_o = alpha_m, p2_m, mu_m, alpha_p, p2_p, mu_p
+    a = abs(th)
+    e, top, bottom = _energy(a, om, al, p2, lin)
+    away = th * om > 0.0 or (th == 0.0 and s * om > 0.0)
+    if a > al and (away or e <= top):
+        return True, D.HALF_PI
+    amp = 0.0
+    if away:
+        if e > top:
+            return True, D.HALF_PI
+        amp = _amplitude(e, al, p2, lin)
+    k1 = mu * mu * (e - bottom)  # kinetic energy after the next impact (other side)
+    e1, top1, bottom1 = _energy(0.0, 0.0, al_o, p2_o, lin)
+    e1 = bottom1 + k1
+    if e1 > top1:
+        return True, D.HALF_PI
+    amp = max(amp, _amplitude(e1, al_o, p2_o, lin))
+    e2 = bottom + mu_o * mu_o * k1  # back on this side
+    if e2 > top:
+        return True, D.HALF_PI
+    return False, max(amp, _amplitude(e2, al, p2, lin))
+
+
+@njit(cache=True)
+def free_cap_sides(th, om, s, alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, t, free_time,
+                   peak):
+    """:func:`free_cap` of an asymmetric block (:func:`free_outcome_sides`; the run is
+    followed for ``100/p`` of the slower side); equal sides: :func:`free_cap` exactly."""
+    if alpha_p == alpha_m and p_p == p_m and mu_p == mu_m:
+        return free_cap(th, om, s, alpha_p, p_p, mu_p, lin, t, free_time, peak)
+    will, amp = free_outcome_sides(th, om, s, alpha_p, p_p * p_p, mu_p, alpha_m, p_m * p_m,
+                                   mu_m, lin)
+    if not will:
+        return True, max(peak, amp), t
+    return False, peak, t + max(free_time, 100.0 / min(p_p, p_m))
+
+
+@njit(cache=True)
+def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t_end,
+              t_quiet, th0, om0, rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th,
+              out_om, imp):
     """Integrate one simulation. Returns (n_out, n_impacts, max_abs_theta, overturned,
     overturn_time, uplift_time, n_steps, lift_off_time, settled).
 
-    ``out_th``/``out_om`` receive the history at ``k*dt_out`` (length 0: none stored);
-    ``imp`` receives impact times up to its length (impacts are counted beyond it). From
-    ``t_quiet`` on the ground is still: the run stops once the block is at rest; a block
-    still rocking at ``t_end > t_quiet`` is decided by :func:`free_outcome` (exact).
+    The block's sides: ``alpha_p``, ``p_p`` on pivot + (``theta > 0``), ``alpha_m``,
+    ``p_m`` on pivot -; ``mu_p``/``mu_m`` multiply the velocity at an impact that ends
+    rocking on side +/- (equal sides: a symmetric block, the arithmetic of Eq 1 and Eq 4
+    exactly). ``out_th``/``out_om`` receive the history at ``k*dt_out`` (length 0: none
+    stored); ``imp`` receives impact times up to its length (impacts are counted beyond
+    it). From ``t_quiet`` on the ground is still: the run stops once the block is at rest;
+    a block still rocking at ``t_end > t_quiet`` is decided by :func:`free_outcome_sides`
+    (exact).
     """
-    p2 = p * p
-    c = alpha if lin else math.tan(alpha)
-    thr = G * c
+    p2_p = p_p * p_p
+    p2_m = p_m * p_m
+    c_p = alpha_p if lin else math.tan(alpha_p)
+    c_m = alpha_m if lin else math.tan(alpha_m)
+    thr_p = G * c_p
+    thr_m = G * c_m
+    p_hi = max(p_p, p_m)  # the step sizes follow the faster side
     hv = has_vertical(prm)
-    atol_th, atol_om = D.abs_tols(rtol, alpha, p)
+    atol_th, atol_om = D.abs_tols(rtol, min(alpha_p, alpha_m), p_hi)
     t, th, om, peak = 0.0, th0, om0, abs(th0)
     k = n_imp = n_steps = 0
     overturned = decided = False
     t_over = t_lift = math.nan
     resting, s, t_up = E.initial_state(th0, om0)
-    h = min(h_max, 0.01 / p)
+    alpha, p2 = (alpha_p, p2_p) if s > 0.0 else (alpha_m, p2_m)  # the side rocked on
+    h = min(h_max, 0.01 / p_hi)
     a_cur = 0.0
     need_a = True
     free_time = t_end - t_quiet  # the cap of the free motion (when t_quiet < t_end)
@@ -209,7 +291,8 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, r
             if resting or overturned or t_quiet > t_end or extended:
                 break
             # the cap of the free motion: the energy decides the outcome exactly
-            decided, peak, t_end = free_cap(th, om, s, alpha, p, mu, lin, t, free_time, peak)
+            decided, peak, t_end = free_cap_sides(th, om, s, alpha_p, p_p, mu_p, alpha_m, p_m,
+                                                  mu_m, lin, t, free_time, peak)
             if decided:
                 break
             extended = True  # it will overturn: follow it there
@@ -217,15 +300,17 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, r
         if resting:
             if t >= t_quiet - 1e-12:
                 break  # the ground is still: at rest for good
-            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, min(t_end, t_quiet),
-                                           h_scan, thr, c, dt_out, k, out_th, out_om, t_up)
+            t, k, d, t_up = E.rest_advance_sides(kind, prm, samples, t, min(t_end, t_quiet),
+                                                 h_scan, thr_p, c_p, thr_m, c_m, dt_out, k,
+                                                 out_th, out_om, t_up)
             if d == 0.0:
                 break
             if d == E.LIFT_OFF:
                 t_lift = t
                 break
             # uplift towards sign(a), with a fresh acceleration and step
-            resting, s, need_a, h = False, d, True, min(h_max, 0.01 / p)
+            resting, s, need_a, h = False, d, True, min(h_max, 0.01 / p_hi)
+            alpha, p2 = (alpha_p, p2_p) if s > 0.0 else (alpha_m, p2_m)
             continue
         if need_a:
             a_cur = _acc(th, t, s, alpha, p2, lin, kind, prm, samples)
@@ -253,19 +338,21 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, r
                                                    hh, s, 1e-15 * alpha, dt_out, k, out_th,
                                                    out_om, peak, imp, n_imp)
             th = 0.0
-            om = mu * omc
+            om = (mu_p if s > 0.0 else mu_m) * omc  # rocking on side s ends
             ag = ground_acc(kind, prm, samples, t)
-            p2e = p2 * (1.0 + vertical_acc(prm, samples, t) / G) if hv else p2
+            sn = E.rebound_side(om, ag)
+            al_n, p2_n = (alpha_p, p2_p) if sn > 0.0 else (alpha_m, p2_m)
+            p2e = p2_n * (1.0 + vertical_acc(prm, samples, t) / G) if hv else p2_n
             rt = rest_tol if t < t_quiet else max(rest_tol, free_rest_tol)
-            if om == 0.0 or amplitude_from_energy(om, alpha, p2e, lin) < rt * alpha:
-                if abs(ag) <= E.threshold(thr, c, prm, samples, t):
+            if om == 0.0 or amplitude_from_energy(om, al_n, p2e, lin) < rt * al_n:
+                if abs(ag) <= E.threshold_sides(ag, thr_p, c_p, thr_m, c_m, prm, samples, t):
                     resting = True
                     om = 0.0
                     continue
-            s = E.rebound_side(om, ag)
+            s, alpha, p2 = sn, al_n, p2_n
             a_cur = _acc(0.0, t, s, alpha, p2, lin, kind, prm, samples)
             need_a = False
-            h = D.rebound_length(hh, 1e-6 / p, h_max, om, a_cur)
+            h = D.rebound_length(hh, 1e-6 / p_hi, h_max, om, a_cur)
             continue
         if abs(th1) >= D.HALF_PI:
             t_over, k = D.overturn(t, th, om, a_cur, th1, om1, a1, hh, s, dt_out, k, out_th,
@@ -287,18 +374,19 @@ def integrate(alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, r
 def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th, out_om,
            imp, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
-    alpha, p, mu, lin, rtol, rest_tol, free_rest_tol = mp
-    h_max = min(0.05 / p, 8.0 * h_scan)
+    alpha_p, p_p, mu_p, lin, rtol, rest_tol, free_rest_tol, alpha_m, p_m, mu_m = mp
+    h_max = min(0.05 / max(p_p, p_m), 8.0 * h_scan)
     k, n_imp, peak, over, t_over, t_up, n_steps, t_lift, settled = integrate(
-        alpha, p, mu, lin, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, rest_tol,
-        free_rest_tol, h_max, h_scan, dt_out, out_th, out_om, imp)
+        alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t_end, t_quiet, th0,
+        om0, rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th, out_om, imp)
     return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled)
 
 
 @njit(cache=True)
 def with_block(mp, b):
-    """``mp`` with the block parameters ``b = (alpha, p, mu)`` of a batch row."""
-    return (b[0], b[1], b[2], mp[3], mp[4], mp[5], mp[6])
+    """``mp`` with the block parameters ``b = (alpha_plus, p_plus, mu_plus, alpha_minus,
+    p_minus, mu_minus)`` of a batch row."""
+    return (b[0], b[1], b[2], mp[3], mp[4], mp[5], mp[6], b[3], b[4], b[5])
 
 
 @njit(cache=True, parallel=True)
@@ -361,9 +449,12 @@ class Housner(Model):
     kernel = kernel
     batch_kernel = batch_kernel
 
+    accepts_asymmetric = True
+
     @classmethod
     def block_row(cls, block) -> tuple:
-        return (block.alpha, block.p, block.mu)
+        return (block.alpha_plus, block.p_plus, block.mu_plus, block.alpha_minus,
+                block.p_minus, block.mu_minus)
 
     @property
     def result_name(self) -> str:
@@ -371,4 +462,5 @@ class Housner(Model):
 
     def kernel_params(self, dt_out, theta0, omega0) -> tuple:
         b, o = self.block, self.options
-        return (b.alpha, b.p, b.mu, o.linear, o.rtol, o.rest_tol, o.free_rest_tol)
+        return (b.alpha_plus, b.p_plus, b.mu_plus, o.linear, o.rtol, o.rest_tol,
+                o.free_rest_tol, b.alpha_minus, b.p_minus, b.mu_minus)

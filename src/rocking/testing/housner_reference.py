@@ -43,6 +43,13 @@ rather than taken from the compiled motion kernel, so they are checked too.
 
 Peaks of ``|theta|`` are located as non-terminal events ``omega = 0`` on the solver's
 dense output (and at the ends of each piece).
+
+*Asymmetric blocks* (:meth:`rocking.Block.from_geometry`, issue 20): on the branch ``s``
+Eq (1) uses that side's ``alpha_s`` and ``p_s``; the block at rest uplifts towards + when
+``a > g tan(alpha_+)`` and towards - when ``-a > g tan(alpha_-)`` (found on the scan grid
+of every piece, with the interior extrema of ``a`` near a level, by bisection); an impact
+ending rocking on side ``s`` multiplies the velocity by ``mu_s``, and the Zeno rule uses
+the parameters of the side the block rebounds onto.
 """
 
 from __future__ import annotations
@@ -330,6 +337,59 @@ def _refine(fn, lo, hi, thr):
     return hi, math.copysign(1.0, fn(hi))
 
 
+def _first_exceedance_sides(exc: Excitation, t_from: float, t_end: float, c_p: float,
+                            c_m: float):
+    """First time in ``[t_from, t_end]`` at which ``a > c_p (g + a_v)`` (uplift towards +),
+    ``-a > c_m (g + a_v)`` (towards -) or ``g + a_v <= 0`` (lift-off), with the direction
+    (the sign of ``a``); ``None`` if there is none. The margins are checked on the scan
+    grid of every piece (its ends for a linear piece), at the interior extrema of ``a``
+    near a level (bounded minimisation), and the crossing refined by bisection."""
+
+    def trips(t):
+        ge = G + exc.vertical(t)
+        a = exc(t)
+        return ge <= 0.0 or a > c_p * ge or -a > c_m * ge
+
+    def margin(t):  # > 0: trips (without the lift-off)
+        ge = G + exc.vertical(t)
+        a = exc(t)
+        return max(a - c_p * ge, -a - c_m * ge)
+
+    if trips(t_from):
+        return t_from, math.copysign(1.0, exc(t_from))
+    step = exc.scan_step if math.isfinite(exc.scan_step) else t_end - t_from
+    level = min(c_p, c_m) * G
+    k = exc.piece(t_from)
+    t0 = t_from
+    while True:
+        hi = min(exc.end(k), t_end)
+        n = 1 if exc.linear[k] else max(1, math.ceil((hi - t0) / step - 1e-9))
+        grid = np.linspace(t0, hi, n + 1).tolist()
+        for g0, g1 in zip(grid[:-1], grid[1:], strict=True):
+            hit = g1 if trips(g1) else None
+            if hit is None and not exc.linear[k] and max(margin(g0), margin(g1)) > \
+                    -0.05 * level:
+                res = minimize_scalar(lambda t: -margin(t), bounds=(g0, g1), method="bounded",
+                                      options={"xatol": 1e-13})
+                if trips(float(res.x)):
+                    hit = float(res.x)
+            if hit is not None:
+                lo, up = g0, hit
+                for _ in range(200):
+                    mid = 0.5 * (lo + up)
+                    if not lo < mid < up:
+                        break
+                    if trips(mid):
+                        up = mid
+                    else:
+                        lo = mid
+                return up, math.copysign(1.0, exc(up))
+        if hi >= t_end or not math.isfinite(hi):
+            return None
+        t0 = hi
+        k += 1
+
+
 # ------------------------------------------------------------------------------ model
 def free_amplitude(om, alpha, p, linear=False):
     """Amplitude reached in free motion from theta = 0 with angular velocity ``om``
@@ -391,7 +451,9 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         raise ParameterError(f"method must be one of {', '.join(METHODS)}; got {method!r}")
     if dt_out is not None:
         dt_out = positive("dt_out", dt_out, "s")
-    alpha, p, mu = block.alpha, block.p, block.mu
+    sides = {1.0: (block.alpha_plus, block.p_plus, block.mu_plus),
+             -1.0: (block.alpha_minus, block.p_minus, block.mu_minus)}
+    alpha, p = min(sides[1.0][0], sides[-1.0][0]), max(sides[1.0][1], sides[-1.0][1])
     if atol is None:
         atol = [1e-3 * rtol * alpha, 1e-3 * rtol * alpha * p]
     else:
@@ -400,8 +462,8 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             raise ParameterError("atol must be a number or a pair (theta, omega)")
 
     linear = bool(linear)
-    p2 = p * p
-    c_up = alpha if linear else math.tan(alpha)
+    c_side = {s: (a if linear else math.tan(a)) for s, (a, _, _) in sides.items()}
+    c_up = c_side[1.0]  # a symmetric block: one threshold
     thr = G * c_up
     exc = Excitation(motion)
     has_v = exc.vfns is not None
@@ -423,7 +485,8 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             if t >= t_quiet:
                 break  # the ground is still: at rest for good
             t_stop = min(t_end, t_quiet)
-            up = _first_exceedance(exc, t, t_stop, thr, c_up)
+            up = (_first_exceedance(exc, t, t_stop, thr, c_up) if block.symmetric else
+                  _first_exceedance_sides(exc, t, t_stop, c_side[1.0], c_side[-1.0]))
             if up is None:
                 pieces.append((t, t_stop, None))
                 t = t_stop
@@ -446,8 +509,10 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             continue
         fn = exc.fns[k]
         vfn = exc.vfns[k] if has_v else _const(0.0)
+        alpha, p, mu = sides[s]  # the side rocked on
+        p2 = p * p
 
-        def rhs(tt, y, s=s, fn=fn, vfn=vfn):
+        def rhs(tt, y, s=s, fn=fn, vfn=vfn, alpha=alpha, p2=p2):
             a = fn(tt) / G
             gf = 1.0 + vfn(tt) / G
             if linear:
@@ -518,11 +583,14 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
             th = 0.0
             t = te
             gf = 1.0 + exc.vertical(t) / G
-            thr_t = c_up * G * gf if has_v else thr
+            a_t = exc(t)
+            c_t = c_side[1.0 if a_t > 0.0 else -1.0]  # the uplift towards sign(a)
+            thr_t = c_t * G * gf if has_v else G * c_t
+            a_n, p_n, _ = sides[1.0 if om > 0.0 else -1.0]  # the side it rebounds onto
             rt = rest_tol if t < t_quiet else max(rest_tol, free_rest_tol)
-            if om == 0.0 or (free_amplitude(om, alpha, p * math.sqrt(max(gf, 1e-300)),
-                                             linear) < rt * alpha
-                             and abs(exc(t)) <= thr_t):
+            if om == 0.0 or (free_amplitude(om, a_n, p_n * math.sqrt(max(gf, 1e-300)),
+                                             linear) < rt * a_n
+                             and abs(a_t) <= thr_t):
                 resting = True  # uplift test again from here (immediate if |a| > thr)
                 om = 0.0
             else:

@@ -29,6 +29,16 @@ def threshold(thr, c, prm, samples, t):
 
 
 @njit(cache=True)
+def threshold_sides(ag, thr_p, c_p, thr_m, c_m, prm, samples, t):
+    """:func:`threshold` of the side towards which the ground acceleration ``ag`` would
+    uplift a block at rest: side + (``thr_p``, ``c_p``) if ``ag > 0``, else side -
+    (asymmetric blocks; equal sides give :func:`threshold` exactly)."""
+    if ag > 0.0:
+        return threshold(thr_p, c_p, prm, samples, t)
+    return threshold(thr_m, c_m, prm, samples, t)
+
+
+@njit(cache=True)
 def lifts_off(prm, samples, t):
     """Whether the base accelerates downwards at least as fast as gravity at ``t``
     (``g + a_v <= 0``): the block leaves the ground."""
@@ -36,12 +46,18 @@ def lifts_off(prm, samples, t):
 
 
 @njit(cache=True)
-def _trips(kind, prm, samples, t, thr, c):
-    """Uplift (``|a_h| > c (g + a_v)``) or lift-off (``g + a_v <= 0``) at ``t``."""
+def _trips(kind, prm, samples, t, thr_p, c_p, thr_m, c_m):
+    """Uplift (``a_h > c_p (g + a_v)`` towards +, ``-a_h > c_m (g + a_v)`` towards -) or
+    lift-off (``g + a_v <= 0``) at ``t``. With equal sides the comparisons are those of
+    ``|a_h| > c (g + a_v)`` exactly (``|a| = a`` for ``a > 0``, ``-a`` otherwise)."""
     if not has_vertical(prm):
-        return abs(ground_acc(kind, prm, samples, t)) > thr
+        a = ground_acc(kind, prm, samples, t)
+        return a > thr_p if a > 0.0 else -a > thr_m
     ge = G + vertical_acc(prm, samples, t)
-    return ge <= 0.0 or abs(ground_acc(kind, prm, samples, t)) > c * ge
+    if ge <= 0.0:
+        return True
+    a = ground_acc(kind, prm, samples, t)
+    return a > c_p * ge if a > 0.0 else -a > c_m * ge
 
 
 @njit(cache=True)
@@ -112,8 +128,18 @@ def rest_fill(k, t_lim, dt_out, out_th, out_om):
 @njit(cache=True)
 def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c, dt_out, k, out_th, out_om,
                  t_up):
+    """:func:`rest_advance_sides` of a symmetric block (the same threshold both ways)."""
+    return rest_advance_sides(kind, prm, samples, t, t_end, h_scan, thr, c, thr, c, dt_out,
+                              k, out_th, out_om, t_up)
+
+
+@njit(cache=True)
+def rest_advance_sides(kind, prm, samples, t, t_end, h_scan, thr_p, c_p, thr_m, c_m, dt_out,
+                       k, out_th, out_om, t_up):
     """Advance a block at rest until the uplift criterion ``|a_h| > c (g + a_v)`` holds or
-    ``t_end`` (``|a_h| > thr`` without a vertical component).
+    ``t_end`` (``|a_h| > thr`` without a vertical component); ``c``, ``thr`` are those of
+    the side towards which ``a_h`` pushes: ``c_p``, ``thr_p`` (= ``c_p g``) for ``a_h > 0``
+    (uplift onto pivot +), ``c_m``, ``thr_m`` for ``a_h < 0`` (asymmetric blocks).
 
     Scans the excitation with steps ``h_scan`` (and onto every breakpoint), locates the
     first exceedance by bisection, and writes zeros to the output buffers meanwhile.
@@ -124,7 +150,7 @@ def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c, dt_out, k, out_th
     """
     n_out = out_th.shape[0]
     while True:
-        if _trips(kind, prm, samples, t, thr, c):
+        if _trips(kind, prm, samples, t, thr_p, c_p, thr_m, c_m):
             k = rest_fill(k, t - 1e-12, dt_out, out_th, out_om)
             if lifts_off(prm, samples, t):
                 return t, k, LIFT_OFF, t_up
@@ -141,11 +167,11 @@ def rest_advance(kind, prm, samples, t, t_end, h_scan, thr, c, dt_out, k, out_th
             tl = first_lift_off(prm, samples, t, t1, h_scan)
             if tl == tl:
                 t1 = tl
-        if _trips(kind, prm, samples, t1, thr, c):
+        if _trips(kind, prm, samples, t1, thr_p, c_p, thr_m, c_m):
             lo, hi = t, t1
             for _ in range(60):
                 mid = 0.5 * (lo + hi)
-                if _trips(kind, prm, samples, mid, thr, c):
+                if _trips(kind, prm, samples, mid, thr_p, c_p, thr_m, c_m):
                     hi = mid
                 else:
                     lo = mid
