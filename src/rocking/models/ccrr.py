@@ -112,45 +112,64 @@ R1, R3, R4, R5, R6 = 1 / 360, -128 / 4275, -2197 / 75240, 1 / 50, 2 / 55  # 5th 
 
 
 @njit(cache=True)
-def _f(chi, v, psi, t, p, alpha, l, c, kind, prm, samples):
+def _f(chi, v, psi, t, p, alpha, l, sd, kind, prm, samples):
     """Time derivatives (physical time) of (chi, chi_dot, psi); chi_dot is per adim. time.
-    With a vertical component, ``g`` becomes ``g + a_v`` in the gravity term of Eq 10."""
+    With a vertical component, ``g`` becomes ``g + a_v`` in the gravity term of Eq 10.
+
+    ``sd = (alpha_s, q_s, c)``: the side rocked on (:func:`_side`, frozen within a step),
+    ``q_s = (p_s/p)^2``, and the damping ``c``; ``chi = r/alpha``, ``t = p tau`` with the
+    block's ``alpha``, ``p`` (those of its weaker side). Equal sides: ``alpha_s = alpha``,
+    ``q = 1`` and Eq 10's arithmetic exactly."""
     inv = 1.0 / chi
     inv2 = inv * inv
+    cp = math.cos(psi)
+    al, q, c = sd
     if has_vertical(prm):
         ah, av = ground_acc_hv(kind, prm, samples, t)
         a = ah * INV_G
         gf = 1.0 + av * INV_G
-        acc = (l * l * inv2 * inv - gf * math.sin(alpha - alpha * chi) / alpha
-               + c * l * inv2 * v + a / alpha * math.cos(alpha - alpha * chi) * math.cos(psi))
+        acc = (l * l * inv2 * inv - gf * q * math.sin(al - alpha * chi) / alpha
+               + c * l * inv2 * v + q * a / alpha * math.cos(al - alpha * chi) * cp)
     else:
         a = ground_acc(kind, prm, samples, t) / G
-        acc = (l * l * inv2 * inv - math.sin(alpha - alpha * chi) / alpha + c * l * inv2 * v
-               + a / alpha * math.cos(alpha - alpha * chi) * math.cos(psi))
+        acc = (l * l * inv2 * inv - q * math.sin(al - alpha * chi) / alpha + c * l * inv2 * v
+               + q * a / alpha * math.cos(al - alpha * chi) * cp)
     return p * v, p * acc, p * l * inv2
 
 
 @njit(cache=True)
-def _step(t, x, v, s, h, p, alpha, l, c, kind, prm, samples):
+def _side(psi, sides):
+    """``(alpha_s, q_s, c_s)`` of the side ``s`` of the phase ``psi`` (side + where
+    ``cos(psi) >= 0``) from ``sides = (alpha_+, q_+, c_+, alpha_-, q_-, c_-)``; ``c_s =
+    2 ln(mu_s)/pi`` is the damping of the passage that ends rocking on side ``s``. The
+    side is frozen within a step; the adaptive steps of an asymmetric block land on the
+    passages through ``theta = 0``, where it switches (:func:`integrate`)."""
+    if math.cos(psi) >= 0.0:
+        return sides[0], sides[1], sides[2]
+    return sides[3], sides[4], sides[5]
+
+
+@njit(cache=True)
+def _step(t, x, v, s, h, p, alpha, l, sd, kind, prm, samples):
     """One RKF45 step; returns the 4th-order state and the (5th - 4th) error estimates."""
-    k1x, k1v, k1s = _f(x, v, s, t, p, alpha, l, c, kind, prm, samples)
+    k1x, k1v, k1s = _f(x, v, s, t, p, alpha, l, sd, kind, prm, samples)
     k2x, k2v, k2s = _f(x + h * A21 * k1x, v + h * A21 * k1v, s + h * A21 * k1s, t + C2 * h,
-                       p, alpha, l, c, kind, prm, samples)
+                       p, alpha, l, sd, kind, prm, samples)
     k3x, k3v, k3s = _f(x + h * (A31 * k1x + A32 * k2x), v + h * (A31 * k1v + A32 * k2v),
-                       s + h * (A31 * k1s + A32 * k2s), t + C3 * h, p, alpha, l, c, kind, prm,
+                       s + h * (A31 * k1s + A32 * k2s), t + C3 * h, p, alpha, l, sd, kind, prm,
                        samples)
     k4x, k4v, k4s = _f(x + h * (A41 * k1x + A42 * k2x + A43 * k3x),
                        v + h * (A41 * k1v + A42 * k2v + A43 * k3v),
                        s + h * (A41 * k1s + A42 * k2s + A43 * k3s), t + C4 * h,
-                       p, alpha, l, c, kind, prm, samples)
+                       p, alpha, l, sd, kind, prm, samples)
     k5x, k5v, k5s = _f(x + h * (A51 * k1x + A52 * k2x + A53 * k3x + A54 * k4x),
                        v + h * (A51 * k1v + A52 * k2v + A53 * k3v + A54 * k4v),
                        s + h * (A51 * k1s + A52 * k2s + A53 * k3s + A54 * k4s), t + C5 * h,
-                       p, alpha, l, c, kind, prm, samples)
+                       p, alpha, l, sd, kind, prm, samples)
     k6x, k6v, k6s = _f(x + h * (A61 * k1x + A62 * k2x + A63 * k3x + A64 * k4x + A65 * k5x),
                        v + h * (A61 * k1v + A62 * k2v + A63 * k3v + A64 * k4v + A65 * k5v),
                        s + h * (A61 * k1s + A62 * k2s + A63 * k3s + A64 * k4s + A65 * k5s),
-                       t + C6 * h, p, alpha, l, c, kind, prm, samples)
+                       t + C6 * h, p, alpha, l, sd, kind, prm, samples)
     x1 = x + h * (B1 * k1x + B3 * k3x + B4 * k4x + B5 * k5x)
     v1 = v + h * (B1 * k1v + B3 * k3v + B4 * k4v + B5 * k5v)
     s1 = s + h * (B1 * k1s + B3 * k3s + B4 * k4s + B5 * k5s)
@@ -180,40 +199,56 @@ def _herm3(y0, d0, y1, d1, h, u):
 
 
 @njit(cache=True)
-def _amp_chi(x, v, alpha, l):
-    """Modulus reachable with the current energy (centrifugal part included), in alpha units."""
-    e = 0.5 * v * v + 0.5 * l * l / (x * x) + (math.cos(alpha - alpha * x) - math.cos(alpha)) \
+def _amp_chi(x, v, alpha, l, al, q):
+    """Modulus reachable with the current energy (centrifugal part included), in alpha units,
+    on the side of critical angle ``al`` and ``q = (p_side/p)^2`` (``al = alpha``, ``q = 1``:
+    a symmetric block)."""
+    e = 0.5 * v * v + 0.5 * l * l / (x * x) + q * (math.cos(al - alpha * x) - math.cos(al)) \
         / (alpha * alpha)
-    cm = math.cos(alpha) + alpha * alpha * e
+    cm = math.cos(al) + alpha * alpha * e / q
     if cm >= 1.0:
         return math.inf
-    return (alpha - math.acos(cm)) / alpha
+    return (al - math.acos(cm)) / alpha
 
 
 @njit(cache=True)
-def _amp_chi_g(x, v, alpha, l, gf):
+def _amp_chi_g(x, v, alpha, l, gf, al, q):
     """:func:`_amp_chi` under the effective gravity ``gf g`` (``gf = 1 + a_v/g``)."""
-    e = 0.5 * v * v + 0.5 * l * l / (x * x) + gf * (math.cos(alpha - alpha * x)
-                                                    - math.cos(alpha)) / (alpha * alpha)
-    cm = math.cos(alpha) + alpha * alpha * e / gf
+    e = 0.5 * v * v + 0.5 * l * l / (x * x) + gf * q * (math.cos(al - alpha * x)
+                                                        - math.cos(al)) / (alpha * alpha)
+    cm = math.cos(al) + alpha * alpha * e / (gf * q)
     if cm >= 1.0:
         return math.inf
-    return (alpha - math.acos(cm)) / alpha
+    return (al - math.acos(cm)) / alpha
 
 
 @njit(cache=True)
-def integrate(alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, dt_fixed,
-              rest_chi, free_rest_chi, chi_start, h_max, h_scan, dt_out, out_th, out_om,
-              imp):
+def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, l, kind, prm, samples, t_end, t_quiet,
+              th0, om0, rtol, dt_fixed, rest_chi, free_rest_chi, chi_start, h_max, h_scan,
+              dt_out, out_th, out_om, imp):
     """Integrate one CCRR simulation. Returns
     (n_out, n_impacts, max_abs_theta, overturned, overturn_time, uplift_time, n_steps, ok,
     lift_off_time, settled).
-    ``dt_fixed > 0`` selects constant steps; otherwise adaptive with ``rtol``. From
-    ``t_quiet`` on the ground is still: the run stops once the block is at rest.
+    The block's sides: ``alpha_p``, ``p_p`` (``theta > 0``), ``alpha_m``, ``p_m``; ``mu_p``/
+    ``mu_m`` the restitutions of the passages that end rocking on side +/- (equal sides:
+    Eq 10 exactly). ``dt_fixed > 0`` selects constant steps; otherwise adaptive with
+    ``rtol``. From ``t_quiet`` on the ground is still: the run stops once the block is at
+    rest.
     """
-    c = 2.0 * math.log(mu) / math.pi
-    ct = math.tan(alpha)
-    thr = G * ct
+    # chi = r / alpha and t = p tau with the weaker side's alpha, p (on a tie the smaller
+    # p: the scales, and l with them, do not depend on which side is called +)
+    weak_m = alpha_m < alpha_p or (alpha_m == alpha_p and p_m < p_p)
+    alpha, p = (alpha_m, p_m) if weak_m else (alpha_p, p_p)
+    q_p = (p_p / p) ** 2
+    q_m = (p_m / p) ** 2
+    sides = (alpha_p, q_p, 2.0 * math.log(mu_p) / math.pi,
+             alpha_m, q_m, 2.0 * math.log(mu_m) / math.pi)
+    asym = not (alpha_p == alpha_m and p_p == p_m and mu_p == mu_m)
+    ct_p = math.tan(alpha_p)
+    ct_m = math.tan(alpha_m)
+    thr_p = G * ct_p
+    thr_m = G * ct_m
+    p_hi = max(p_p, p_m)
     hv = has_vertical(prm)
     t_lift = math.nan
     x_over = HALF_PI / alpha
@@ -244,13 +279,18 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rto
         s = -HALF_PI if om0 > 0.0 else HALF_PI
         t_up = 0.0
     peak = abs(th0)
-    h = dt_fixed if fixed else min(h_max, 1e-3 / p)
+    # the damping of the next passage: that of the side rocked on, set where the block
+    # starts and at every largest excursion (chi_dot from >= 0 to < 0), where the damping
+    # force c l chi_dot / chi^2 vanishes
+    c_now = _side(s, sides)[2]
+    h = dt_fixed if fixed else min(h_max, 1e-3 / p_hi)
     while t < t_end - 1e-12:
         if resting:
             if t >= t_quiet - 1e-12:
                 break  # the ground is still: at rest for good
-            t, k, d, t_up = E.rest_advance(kind, prm, samples, t, min(t_end, t_quiet), h_scan,
-                                           thr, ct, dt_out, k, out_th, out_om, t_up)
+            t, k, d, t_up = E.rest_advance_sides(kind, prm, samples, t, min(t_end, t_quiet),
+                                                 h_scan, thr_p, ct_p, thr_m, ct_m, dt_out, k,
+                                                 out_th, out_om, t_up)
             resting = d == 0.0
             if resting:  # still at rest at t_end (or t_quiet)
                 break
@@ -259,12 +299,15 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rto
                 break
             x, v = chi_start, 0.0  # uplift from the small modulus, towards sign(a)
             s = 0.0 if d > 0.0 else math.pi
-            h = dt_fixed if fixed else min(h_max, 1e-3 / p)
+            c_now = _side(s, sides)[2]
+            h = dt_fixed if fixed else min(h_max, 1e-3 / p_hi)
             continue
         hh = min(h, t_end - t)
         if not fixed:
             hh = min(hh, h_max, next_breakpoint(kind, prm, samples, t) - t)
-        x1, v1, s1, ex, ev, es = _step(t, x, v, s, hh, p, alpha, l, c, kind, prm, samples)
+        al, q, _c = _side(s, sides)
+        sd = (al, q, c_now)
+        x1, v1, s1, ex, ev, es = _step(t, x, v, s, hh, p, alpha, l, sd, kind, prm, samples)
         if not fixed:  # local extrapolation: carry the fifth-order solution
             x1 += ex
             v1 += ev
@@ -288,11 +331,20 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rto
                     ok = False
                     break
                 continue
+            if asym:
+                # land the step just past the passage through theta = 0, where the side
+                # (frozen within the step) switches
+                sc = HALF_PI + (math.floor((s - HALF_PI) / math.pi) + 1.0) * math.pi
+                if s1 > sc:
+                    frac = (sc - s) / (s1 - s)
+                    if frac < 0.999 and hh * frac > 1e-12:
+                        h = hh * min(frac * 1.0005, 0.999)
+                        continue
         tc = E.first_lift_off(prm, samples, t, t + hh, h_scan) if hv else math.nan
         if tc == tc:
             # the base falls away (g + a_v <= 0): stop at that instant, the model cannot
             # represent flight
-            x2, v2, s2, ex2, ev2, es2 = _step(t, x, v, s, tc - t, p, alpha, l, c, kind, prm,
+            x2, v2, s2, ex2, ev2, es2 = _step(t, x, v, s, tc - t, p, alpha, l, sd, kind, prm,
                                               samples)
             if not fixed:
                 x2 += ex2
@@ -341,13 +393,17 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rto
                     hi = mid
             peak = max(peak, abs(_herm3(th_a, om_a, th_b, om_b, hh, 0.5 * (lo + hi))[0]))
         t += hh
+        if v >= 0.0 and v1 < 0.0:
+            c_now = _side(s1, sides)[2]
         x, v, s = x1, v1, s1
         if not math.isnan(t_lift):
             break
-        amp = (_amp_chi_g(x, v, alpha, l, 1.0 + vertical_acc(prm, samples, t) * INV_G) if hv
-               else _amp_chi(x, v, alpha, l)) if passed else math.inf
+        al, q, _c = _side(s, sides)  # the side now
+        amp = (_amp_chi_g(x, v, alpha, l, 1.0 + vertical_acc(prm, samples, t) * INV_G, al, q)
+               if hv else _amp_chi(x, v, alpha, l, al, q)) if passed else math.inf
         if amp < (rest_chi if t < t_quiet else max(rest_chi, free_rest_chi)):
-            if abs(ground_acc(kind, prm, samples, t)) <= E.threshold(thr, ct, prm, samples, t):
+            ag = ground_acc(kind, prm, samples, t)
+            if abs(ag) <= E.threshold_sides(ag, thr_p, ct_p, thr_m, ct_m, prm, samples, t):
                 resting = True
         if not fixed:
             fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
@@ -360,22 +416,25 @@ def integrate(alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rto
 def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th, out_om,
            imp, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
-    alpha, p, mu, l, rtol, dt_fixed, rest_tol, free_rest_tol = mp
+    alpha_p, p_p, mu_p, l, rtol, dt_fixed, rest_tol, free_rest_tol, alpha_m, p_m, mu_m = mp
+    alpha = min(alpha_p, alpha_m)  # the weaker side: the scale of chi
     chi_c = (l * l * alpha / math.sin(alpha)) ** (1.0 / 3.0)  # orbit that l sustains
     rest_chi = max(rest_tol, 2.0 * chi_c)
     chi_start = math.sqrt(l)
-    h_max = min(0.05 / p, 8.0 * h_scan)
+    h_max = min(0.05 / max(p_p, p_m), 8.0 * h_scan)
     k, n_imp, peak, over, t_over, t_up, n_steps, ok, t_lift, settled = integrate(
-        alpha, p, mu, l, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, dt_fixed,
-        rest_chi, free_rest_tol, chi_start, h_max, h_scan, dt_out, out_th, out_om, imp)
+        alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, l, kind, prm, samples, t_end, t_quiet, th0,
+        om0, rtol, dt_fixed, rest_chi, free_rest_tol, chi_start, h_max, h_scan, dt_out, out_th,
+        out_om, imp)
     return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, t_lift,
                         settled)
 
 
 @njit(cache=True)
 def with_block(mp, b):
-    """``mp`` with the block parameters ``b = (alpha, p, mu)`` of a batch row."""
-    return (b[0], b[1], b[2], mp[3], mp[4], mp[5], mp[6], mp[7])
+    """``mp`` with the block parameters ``b = (alpha_plus, p_plus, mu_plus, alpha_minus,
+    p_minus, mu_minus)`` of a batch row."""
+    return (b[0], b[1], b[2], mp[3], mp[4], mp[5], mp[6], mp[7], b[3], b[4], b[5])
 
 
 @njit(cache=True, parallel=True)
@@ -416,13 +475,17 @@ class CCRR(Model):
     kernel = kernel
     batch_kernel = batch_kernel
 
+    accepts_asymmetric = True
+
     @classmethod
     def block_row(cls, block) -> tuple:
-        return (block.alpha, block.p, block.mu)
+        return (block.alpha_plus, block.p_plus, block.mu_plus, block.alpha_minus,
+                block.p_minus, block.mu_minus)
 
     def kernel_params(self, dt_out, theta0, omega0) -> tuple:
         b, o = self.block, self.options
-        return (b.alpha, b.p, b.mu, o.l, o.rtol, o.dt or 0.0, o.rest_tol, o.free_rest_tol)
+        return (b.alpha_plus, b.p_plus, b.mu_plus, o.l, o.rtol, o.dt or 0.0, o.rest_tol,
+                o.free_rest_tol, b.alpha_minus, b.p_minus, b.mu_minus)
 
     def failure(self, status, t, dt_out=None) -> str:
         at = f" at t = {t:.4g} s" if t == t else ""
