@@ -157,6 +157,19 @@ def _weaker(sides) -> int:
     return 1 if sides[1][0] < sides[0][0] else 0
 
 
+def require_symmetric(block, model: str):
+    """``block`` itself if it (every block of a stack) is symmetric, else one
+    :class:`ParameterError` naming ``model`` (for the models that take symmetric blocks
+    only)."""
+    for b in getattr(block, "blocks", (block,)):
+        if isinstance(b, Block) and not b.symmetric:
+            raise ParameterError(
+                f"model {model!r} takes symmetric blocks only: {b.name or 'the block'} has "
+                f"alpha_plus = {b.alpha_plus:.4g}, alpha_minus = {b.alpha_minus:.4g} rad; "
+                "use model='housner' or 'ccrr' (or a symmetric block)")
+    return block
+
+
 def housner_mu(alpha: float) -> float:
     """Housner's coefficient of restitution of a rectangular block, Eq 4."""
     return 1.0 - 1.5 * math.sin(alpha) ** 2

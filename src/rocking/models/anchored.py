@@ -42,6 +42,7 @@ from dataclasses import dataclass
 
 from numba import njit, prange
 
+from ..blocks.block import require_symmetric
 from ..motions._kernel import (
     ground_acc,
     ground_acc_hv,
@@ -371,6 +372,10 @@ class Anchored(Model):
         RowOutput("anchor_broken_plus", "", True, "the + anchor broke"),
         RowOutput("anchor_broken_minus", "", True, "the - anchor broke"),
     )
+
+    @classmethod
+    def check_block(cls, block):
+        return require_symmetric(super().check_block(block), cls.name)
 
     @classmethod
     def block_row(cls, block) -> tuple:

@@ -107,6 +107,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange
 
+from ..blocks.block import require_symmetric
 from ..errors import ParameterError
 from ..motions._kernel import (
     ground_acc,
@@ -663,6 +664,10 @@ class Isolated(Model):
         RowOutput("clearance_time", "s", False, "when |u| first reached the clearance "
                                                 "(NaN: never)"),
     )
+
+    @classmethod
+    def check_block(cls, block):
+        return require_symmetric(super().check_block(block), cls.name)
 
     @classmethod
     def block_row(cls, block) -> tuple:
