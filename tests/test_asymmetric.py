@@ -160,3 +160,241 @@ def test_from_mesh_delegates_to_shapes(tmp_path):
     for k in ("alpha", "p", "mu"):
         assert getattr(blk, k) == pytest.approx(getattr(ref, k), rel=1e-6)
     assert blk.mass == pytest.approx(2000.0 * 0.3 * 0.2 * 1.0, rel=1e-6)  # STL: float32
+
+
+# ---------------------------------------------------------------------- the models
+from rocking import simulate, simulate_many  # noqa: E402
+from rocking.motions import GroundMotion, OneSine, Record, Sine  # noqa: E402
+from rocking.testing.housner_reference import simulate_reference  # noqa: E402
+from rocking.testing.records import random_record  # noqa: E402
+
+# a body whose centre of mass is off-centre (b_plus < b_minus): "+" is the weaker side
+ASYM = Block.from_geometry(0.45, 0.07, 0.12, 0.22, name="asym")
+SIDES = ("plus", "minus")
+
+
+def _side(blk, s):
+    """(alpha, p, mu) of side s (+1/-1)."""
+    k = "plus" if s > 0 else "minus"
+    return tuple(getattr(blk, f"{q}_{k}") for q in ("alpha", "p", "mu"))
+
+
+def test_asymmetric_block_is_really_asymmetric():
+    a_p, p_p, m_p = _side(ASYM, 1)
+    a_m, p_m, m_m = _side(ASYM, -1)
+    assert a_m / a_p > 1.6 and abs(p_m / p_p - 1) > 5e-3 and abs(m_m / m_p - 1) > 0.03
+
+
+@pytest.mark.parametrize("model", ["housner", "ccrr"])
+def test_sides_differing_only_in_mu_run_as_the_symmetric_block_until_the_first_impact(model):
+    """The kernel selects the side's parameters with the same arithmetic: a block whose
+    sides differ only in mu follows the symmetric block bit for bit until its first
+    impact (and, in the batch, row by row)."""
+    sym = Block.from_params(0.2, 3.0, 0.9)
+    asym = sym.with_params(mu_minus=0.8)
+    assert not asym.symmetric and asym.alpha_minus == sym.alpha
+    m = OneSine(0.26 * G, 0.6, duration=4.0)
+    a = simulate(sym, m, model=model, dt_out=1e-3)
+    b = simulate(asym, m, model=model, dt_out=1e-3)
+    assert a.n_impacts > 2
+    assert a.uplift_time == b.uplift_time
+    before = a.t[:b.t.size] < a.impact_times[0] - 1e-3
+    assert before.sum() > 100
+    if model == "housner":
+        assert np.array_equal(a.theta[:b.t.size][before], b.theta[before])
+        assert a.impact_times[0] == b.impact_times[0]
+    else:  # CCRR's damping acts (weakly) along the whole excursion, not at impacts only
+        np.testing.assert_allclose(a.theta[:b.t.size][before], b.theta[before], rtol=0,
+                                   atol=1e-9)
+    n = min(a.t.size, b.t.size)
+    assert not np.array_equal(a.theta[:n], b.theta[:n])  # side - has another restitution
+
+
+def _ramp(slope, t_end=3.0, dt=0.01):
+    t = np.arange(int(round(t_end / dt)) + 1) * dt
+    return Record(slope * t, dt, name="ramp")
+
+
+@pytest.mark.parametrize("impl", [simulate, simulate_reference], ids=["compiled", "reference"])
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_uplift_at_g_tan_alpha_of_each_side(impl, sign):
+    """A slow ramp a = +-k t uplifts the block at rest when |a| reaches g tan(alpha_s) of
+    the side it pushes towards (s = sign(a)), and it rocks towards that side."""
+    k = 1.0  # m/s^3
+    alpha_s = ASYM.alpha_plus if sign > 0 else ASYM.alpha_minus
+    t_up = G * math.tan(alpha_s) / k
+    r = impl(ASYM, _ramp(sign * k), duration=t_up + 0.05)
+    assert r.uplift_time == pytest.approx(t_up, abs=1e-9)
+    moved = np.flatnonzero(r.theta != 0.0)
+    assert np.sign(r.theta[moved[0]]) == sign
+    # the other side's (lower or higher) threshold plays no role
+    other = ASYM.alpha_minus if sign > 0 else ASYM.alpha_plus
+    assert abs(G * math.tan(other) / k - t_up) > 0.3
+
+
+@pytest.mark.parametrize("model", ["housner", "ccrr"])
+def test_uplift_with_a_vertical_component_uses_the_sides_threshold(model):
+    """Uplift towards s when |a_h| > (g + a_v) tan(alpha_s): a constant a_v = 0.2 g."""
+    k = 1.0
+    ones = np.ones(401)
+    for sign, alpha_s in ((1.0, ASYM.alpha_plus), (-1.0, ASYM.alpha_minus)):
+        gm = GroundMotion(_ramp(sign * k, 4.0), Record(0.2 * G * ones, 0.01))
+        t_up = 1.2 * G * math.tan(alpha_s) / k
+        r = simulate(ASYM, gm, model=model, duration=t_up + 0.05)
+        assert r.uplift_time == pytest.approx(t_up, abs=1e-9)
+
+
+def _free_run(blk, s, model="housner", duration=None, dt_out=1e-4):
+    """Free rocking from 0.4 alpha_+ (side +) or 0.15 alpha_- (side -: the block lands on
+    its weaker side +), released at rest."""
+    th0 = s * (0.4 if s > 0 else 0.15) * _side(blk, s)[0]
+    dur = duration or 3.0
+    return simulate(blk, None, model=model, duration=dur, theta0=th0, dt_out=dt_out,
+                    rtol=1e-10 if model == "housner" else 1e-8)
+
+
+def _energy(om, th, alpha, p):
+    return 0.5 * om * om + p * p * math.cos(alpha - abs(th))
+
+
+@pytest.mark.parametrize("s", [1.0, -1.0])
+def test_impact_restitution_is_the_angular_momentum_ratio(s):
+    """The velocities just before and after the first impact (from the energy of each side,
+    exact in free rocking) have the ratio of the independent angular-momentum
+    computation: mu_s for an impact ending rocking on side s."""
+    h, bp, bm, rg = 0.45, 0.07, 0.12, 0.22
+    r = _free_run(ASYM, s)
+    a_s, p_s, _ = _side(ASYM, s)
+    a_o, p_o, _ = _side(ASYM, -s)
+    th0 = (0.4 if s > 0 else 0.15) * a_s
+    om_before = math.sqrt(2 * p_s ** 2 * (math.cos(a_s - th0) - math.cos(a_s)))
+    t1, t2 = r.impact_times[:2]
+    seg = (r.t > t1) & (r.t < t2)
+    r1 = np.abs(r.theta[seg]).max()  # the excursion on the other side
+    assert np.all(np.sign(r.theta[seg][np.abs(r.theta[seg]) > 1e-9]) == -s)
+    om_after = math.sqrt(2 * p_o ** 2 * (math.cos(a_o - r1) - math.cos(a_o)))
+    want = _impact_ratio(h, bp, bm, rg) if s > 0 else _impact_ratio(h, bm, bp, rg)
+    assert om_after / om_before == pytest.approx(want, rel=1e-6)
+
+
+def test_energy_of_each_side_is_conserved_between_impacts():
+    r = _free_run(ASYM, 1.0, duration=2.0)
+    imp = r.impact_times
+    assert imp.size >= 3
+    for k in range(3):
+        lo = imp[k - 1] if k else 0.0
+        seg = (r.t > lo + 1e-3) & (r.t < imp[k] - 1e-3)
+        s = 1.0 if np.mean(r.theta[seg]) > 0 else -1.0
+        a, p, _ = _side(ASYM, s)
+        e = np.array([_energy(o, t, a, p) for o, t in zip(r.omega[seg], r.theta[seg],
+                                                          strict=True)])
+        assert np.ptp(e) <= 1e-7 * p * p
+
+
+@pytest.mark.parametrize("motion,kw", [
+    pytest.param(None, {"duration": 3.0, "theta0": -0.7 * ASYM.alpha_minus}, id="free"),
+    pytest.param(OneSine(0.30 * G, 0.5, duration=5.0), {}, id="pulse-survives"),
+    pytest.param(OneSine(0.45 * G, 0.5, duration=5.0), {}, id="pulse-big"),
+    pytest.param(-OneSine(0.30 * G, 0.5, duration=5.0), {}, id="pulse-flipped"),
+    pytest.param(random_record(2, 3.0, duration=6.0), {}, id="record"),
+])
+def test_compiled_matches_reference(motion, kw):
+    """The compiled classical kernel against the plain scipy reference, with the
+    tolerances of tests/test_housner.py."""
+    c = simulate(ASYM, motion, rtol=1e-10, **kw)
+    r = simulate_reference(ASYM, motion, rtol=1e-10, **kw)
+    assert r.max_abs_theta > 1e-3
+    assert c.overturned == r.overturned
+    assert c.n_impacts == r.n_impacts
+    assert c.max_abs_theta == pytest.approx(r.max_abs_theta, rel=1e-5)
+    n = min(c.n_impacts, 10)
+    np.testing.assert_allclose(c.impact_times[:n], r.impact_times[:n], rtol=0, atol=1e-6)
+    if c.overturned:
+        assert c.overturn_time == pytest.approx(r.overturn_time, abs=1e-6)
+    if motion is not None:
+        assert c.uplift_time == pytest.approx(r.uplift_time, abs=1e-9)
+
+
+def _amplitudes(r):
+    a = np.abs(r.theta)
+    i = np.flatnonzero((a[1:-1] >= a[:-2]) & (a[1:-1] >= a[2:]) & (a[1:-1] > 0)) + 1
+    return a[i]
+
+
+@pytest.mark.parametrize("s", [1.0, -1.0])
+def test_classical_and_ccrr_agree_on_free_rocking(s):
+    """The tolerance of tests/test_ccrr.py (0.5 % on the first six amplitudes and
+    zero-crossing times)."""
+    n = 6
+    rh = _free_run(ASYM, s, duration=4.0, dt_out=2e-4)
+    rc = _free_run(ASYM, s, model="ccrr", duration=4.0, dt_out=2e-4)
+    amp = np.abs(_amplitudes(rc)[:n] / _amplitudes(rh)[:n] - 1).max()
+    tim = np.abs(rc.impact_times[:n] / rh.impact_times[:n] - 1).max()
+    assert amp < 5e-3 and tim < 5e-3
+
+
+def test_classical_and_ccrr_agree_under_a_sine():
+    """The case and tolerance of tests/test_ccrr.py (2 % on the largest angle)."""
+    m = Sine(5.0, 0.005, 6.0)
+    rh = simulate(ASYM, m)
+    rc = simulate(ASYM, m, model="ccrr")
+    assert 0.2 * ASYM.alpha < rh.max_abs_theta < ASYM.alpha
+    assert rc.max_abs_theta == pytest.approx(rh.max_abs_theta, rel=0.02)
+    assert rc.uplift_time == pytest.approx(rh.uplift_time, abs=1e-6)
+
+
+@pytest.mark.parametrize("model,tol", [("housner", 1e-9), ("ccrr", 1e-9)])
+@pytest.mark.parametrize("motion", [Sine(5.0, 0.005, 6.0), random_record(3, 3.0, 6.0),
+                                    GroundMotion(random_record(3, 3.0, 6.0),
+                                                 random_record(5, 2.0, 6.0))],
+                         ids=["sine", "record", "vertical"])
+def test_mirror_image(model, tol, motion):
+    """The block under -a is its mirror image (sides swapped) under a, theta negated."""
+    kw = {"rtol": 1e-10} if model == "ccrr" else {}
+    a = simulate(ASYM, -motion, model=model, **kw)
+    b = simulate(ASYM.mirrored(), motion, model=model, **kw)
+    assert a.max_abs_theta > 1e-3
+    assert a.t.shape == b.t.shape
+    np.testing.assert_allclose(a.theta, -b.theta, rtol=0, atol=tol)
+    assert a.n_impacts == b.n_impacts and a.overturned == b.overturned
+    # and the asymmetry matters: the unmirrored block under a rocks differently
+    c = simulate(ASYM, motion, model=model, **kw)
+    n = min(a.t.size, c.t.size)
+    assert np.abs(c.theta[:n] + a.theta[:n]).max() > 1e-3
+
+
+@pytest.mark.parametrize("model", ["housner", "ccrr"])
+def test_batch_rows_equal_single_runs(model):
+    """One block per row (asymmetric and symmetric mixed): one compiled call, each row
+    bit-identical to its single run."""
+    blocks = [ASYM, ASYM.mirrored(), Block.rectangular(0.2, 0.8), ASYM.with_params(mu=0.85)]
+    ms = [OneSine(0.35 * G, 0.5, duration=4.0), random_record(1, 3.0, 5.0),
+          GroundMotion(random_record(4, 3.0, 5.0), random_record(6, 2.0, 5.0)),
+          Sine(2.5, 0.025, 4.0)]
+    res = simulate_many(blocks, ms, model=model)
+    for i, (b, m) in enumerate(zip(blocks, ms, strict=True)):
+        r = simulate(b, m, model=model)
+        assert res.max_abs_theta[i] == r.max_abs_theta
+        assert res.n_impacts[i] == r.n_impacts
+        assert res.overturned[i] == r.overturned
+
+
+@pytest.mark.parametrize("amp", [0.30, 0.36, 0.42, 0.5])
+def test_energy_decision_at_the_free_time_cap(amp):
+    """At the cap of the free motion the energy decides the outcome (free_outcome_sides):
+    a short cap gives the outcome and the largest angle of a long one, on either side."""
+    for blk in (ASYM, ASYM.mirrored()):
+        m = OneSine(amp * G, 0.5)
+        short = simulate(blk, m, max_free_time=0.3)
+        long = simulate(blk, m, max_free_time=60.0)
+        assert long.settled and short.settled
+        assert short.overturned == long.overturned
+        assert short.max_abs_theta == pytest.approx(long.max_abs_theta, rel=1e-6)
+
+
+@pytest.mark.parametrize("model", ["anchored", "isolated", "dem"])
+def test_other_models_refuse_asymmetric_blocks(model):
+    with pytest.raises(ParameterError, match=rf"model '{model}' takes symmetric blocks only"):
+        simulate(ASYM, None, model=model, duration=1.0, theta0=0.01)
+    simulate(Block.rectangular(0.2, 0.8, mass=50.0), None, model=model, duration=0.2,
+             theta0=0.01)
