@@ -49,7 +49,8 @@ The checks
     ``simulate_many`` over all motions equals the concatenation over two chunks.
 ``check_blocks_per_row``
     A batch with a different block per row equals the single runs (one compiled call
-    when :meth:`Model.block_row` is not empty, one batch per block otherwise).
+    when :meth:`Model.block_row` is not empty, one batch per block otherwise); a model
+    with ``accepts_asymmetric = True`` gets an asymmetric block among them.
 ``check_initial_state_per_row``
     With ``batch_initial_state``, per-row ``theta0``/``omega0`` equal the single runs;
     without it, a batch refuses a non-zero initial state.
@@ -85,7 +86,7 @@ import functools
 import math
 import warnings
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -154,7 +155,11 @@ def _plan(slow: bool, quick: bool) -> _Plan:
 
 
 def _plan_of(cls, quick: bool) -> _Plan:
-    return _plan(bool(cls.slow), bool(quick))
+    plan = _plan(bool(cls.slow), bool(quick))
+    if getattr(cls, "accepts_asymmetric", False):  # both sides in the per-row checks
+        asym = Block.from_geometry(0.5, 0.08, 0.12, 0.25, name="asymmetric")
+        plan = replace(plan, blocks=(*plan.blocks, asym))
+    return plan
 
 
 # ============================================================================ comparison
