@@ -517,6 +517,31 @@ def test_the_polygon_is_a_valid_dem_outline_and_the_true_inertia_is_at_hand():
     assert math.isclose(sh.inertia_about(0.0), sh.inertia[1, 1], rel_tol=1e-12)
 
 
+def test_block_of_a_direction_carries_both_sides():
+    from rocking.blocks.block import Block
+
+    sh = l_shape()
+    for phi in (0.0, 0.7, math.pi):
+        row, blk = sh.parameters(phi), sh.block(phi)
+        assert not blk.symmetric and blk.mass == sh.mass
+        for s in SIDES:
+            for k in ("alpha", "p", "mu", "R"):
+                assert math.isclose(getattr(blk, f"{k}_{s}"), row[f"{k}_{s}"],
+                                    rel_tol=1e-12), (k, s)
+    both = sh.block(0.7, mu=0.9)
+    assert both.mu_plus == both.mu_minus == 0.9
+    # a box in a principal direction: symmetric, Eqs 2-4
+    a, b, c = 0.5, 0.3, 1.2
+    blk = shape(*ref.box(a, b, c)).block(math.pi / 2)
+    assert blk.symmetric and math.isclose(blk.alpha, math.atan(b / c), rel_tol=1e-12)
+    assert math.isclose(blk.mu, 1 - 1.5 * math.sin(blk.alpha) ** 2, rel_tol=1e-12)
+    # Block.from_mesh is the same block
+    m = Block.from_mesh(example_mesh_path(), density=2600.0, direction=1.0)
+    e = load_example().block(1.0)
+    assert (m.alpha_plus, m.alpha_minus, m.p_plus, m.mu_minus) == (
+        e.alpha_plus, e.alpha_minus, e.p_plus, e.mu_minus)
+
+
 def test_plot_directional_marks_the_weakest_direction():
     tab = directional_parameters(load_example(), 90)
     fig = plot_directional(tab, title="statue")
