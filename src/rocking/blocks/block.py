@@ -182,7 +182,10 @@ class Block:
     Build one with :meth:`rectangular` (from its geometry) or :meth:`from_params` (from
     the classical parameters directly). ``alpha``, ``p`` and ``mu`` are all that the
     classical and CCRR models need; the geometric fields are optional and are ``None``
-    when unknown.
+    when unknown. :meth:`from_geometry` and :meth:`from_mesh` build asymmetric blocks
+    (``alpha_plus``, ``alpha_minus``, ...; module docstring): ``sides`` holds their two
+    sides, None for a symmetric block. :meth:`polygon` keeps one set of parameters (the
+    smaller corner angle; both are in :attr:`alphas`).
     """
 
     alpha: float

@@ -65,6 +65,17 @@ term as in Eq 10 and the sign convention of Eq 1 (see :mod:`rocking.models.housn
   (1e-3, as in :mod:`rocking.models.housner`).
 * Overturning: ``r = alpha chi`` reaches ``pi/2``.
 
+**Asymmetric blocks** (:meth:`rocking.Block.from_geometry`). The side is that of
+``cos(psi)`` (``theta = alpha chi cos(psi)``); Eq 10 there is written with the side's
+``alpha_s`` and ``(p_s/p)^2`` in the gravity and excitation terms, ``chi`` and the time
+being scaled by the weaker side's ``alpha`` and ``p`` (on a tie the smaller ``p``), and
+the uplift thresholds are those of the classical model. The damping of a passage is
+``2 ln(mu_s)/pi`` of the side ``s`` it leaves (set at the start and at every largest
+excursion, where the damping force vanishes): it multiplies the velocity by ``mu_s``, the
+classical restitution of an impact that ends rocking on side ``s``. The side is frozen
+within a step and the adaptive steps land just past each passage through ``theta = 0``,
+where it switches. Equal sides: Eq 10's arithmetic exactly (bit-identical results).
+
 **Integration.** Runge-Kutta-Fehlberg 4(5) as in the paper: with a constant step ``dt``
 (s), for fidelity to the paper, propagating the fourth-order solution; or adaptive (the
 default), with the embedded error estimate controlling the step and the fifth-order

@@ -49,6 +49,17 @@ is the derivative of ``R sin(alpha - theta) theta'``) can vanish a little earlie
 the model does not check (the DEM resolves it through its contacts). Without a vertical
 component the arithmetic is that of Eq (1) exactly (bit-identical results).
 
+**Asymmetric blocks** (:meth:`rocking.Block.from_geometry`; Contento and Di Egidio
+2009). On the branch ``s`` (``theta > 0``: pivot +, ``theta < 0``: pivot -) Eq (1) uses
+that side's ``alpha_s`` and ``p_s``; a block at rest uplifts towards ``s = sign(a)`` when
+``s a > (g + a_v) tan(alpha_s)``; an impact that ends rocking on side ``s`` multiplies
+``theta'`` by ``mu_s`` (angular momentum about the new pivot); the Zeno rule and the
+energy decision at the cap of the free motion (:func:`free_outcome_sides`) use the
+parameters of each side. The step sizes follow the faster side (largest ``p``), the
+error norm the smaller ``alpha``. With equal sides every floating-point operation is that
+of the symmetric model (the side's parameter is selected, the expressions are the same):
+a symmetric block gives bit-identical results.
+
 **Events.**
 
 * *Uplift*: a block at rest uplifts exactly when ``|a| > g tan(alpha)`` (``g alpha`` when
