@@ -336,6 +336,7 @@ def test_energy_of_each_side_is_conserved_between_impacts():
     pytest.param(OneSine(0.45 * G, 0.5, duration=5.0), {}, id="pulse-big"),
     pytest.param(-OneSine(0.30 * G, 0.5, duration=5.0), {}, id="pulse-flipped"),
     pytest.param(random_record(2, 3.0, duration=6.0), {}, id="record"),
+    pytest.param(OneSine(0.22 * G, 0.5, duration=5.0), {"linear": True}, id="pulse-linear"),
 ])
 def test_compiled_matches_reference(motion, kw):
     """The compiled classical kernel against the plain scipy reference, with the
