@@ -144,16 +144,21 @@ def test_bad_geometry_is_refused(args, kw, match):
 
 
 def test_from_mesh_delegates_to_shapes(tmp_path):
-    """Block.from_mesh is Shape.block of the loaded mesh (a box: a symmetric block in its
-    principal direction, Eqs 2-4 to the precision of the mesh's mass properties)."""
-    trimesh = pytest.importorskip("trimesh")
+    """Block.from_mesh is Block.from_shape of the loaded mesh, its ``direction`` in degrees
+    (a number, a string with its unit, or a named direction) as everywhere a user gives it
+    (a box: a symmetric block in its principal direction, Eqs 2-4 to the precision of the
+    mesh's mass properties)."""
+    import trimesh
+
     from rocking.shapes import load_shape
 
     path = tmp_path / "box.stl"
     trimesh.creation.box(extents=(0.3, 0.2, 1.0)).export(path)
-    for phi in (0.0, 1.0):
-        blk = Block.from_mesh(path, density=2000.0, direction=phi)
-        assert blk == load_shape(path, density=2000.0).block(phi)
+    shape = load_shape(path, density=2000.0)
+    for given, phi in ((0.0, 0.0), (57.0, math.radians(57.0)), ("1rad", 1.0),
+                       ("weakest", shape.weakest().phi)):
+        blk = Block.from_mesh(path, density=2000.0, direction=given)
+        assert blk == Block.from_shape(shape, phi)
     blk = Block.from_mesh(path, density=2000.0)
     ref = Block.rectangular(0.3, 1.0)
     assert blk.symmetric

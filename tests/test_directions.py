@@ -144,19 +144,20 @@ def test_sweep_at_the_components_equals_the_planar_runs(shape, rinaldi):
     """phi = 0: the planar block of direction 0 under the first component; phi = -90 deg
     (the second component of the clockwise NGA pair): bit for bit, through
     rocking.simulate; also with a load factor and with the vertical component."""
+    block = rocking.Block.from_shape
     sw = direction_sweep(shape, rinaldi, [0.0, -math.pi / 2], vertical=False)
-    _same(sw.table.iloc[0], rocking.simulate(shape.block(0.0), rinaldi.first))
-    _same(sw.table.iloc[1], rocking.simulate(shape.block(-math.pi / 2), rinaldi.second))
+    _same(sw.table.iloc[0], rocking.simulate(block(shape, 0.0), rinaldi.first))
+    _same(sw.table.iloc[1], rocking.simulate(block(shape, -math.pi / 2), rinaldi.second))
     sw = direction_sweep(shape, rinaldi, [0.0], scale=0.6, vertical=False)
-    _same(sw.table.iloc[0], rocking.simulate(shape.block(0.0), rinaldi.first.scaled(0.6)))
+    _same(sw.table.iloc[0], rocking.simulate(block(shape, 0.0), rinaldi.first.scaled(0.6)))
     sw = direction_sweep(shape, rinaldi, [0.0], scale=0.6)
     gm = rocking.motions.GroundMotion(rinaldi.first, load_builtin("RinaldiUP")).scaled(0.6)
-    _same(sw.table.iloc[0], rocking.simulate(shape.block(0.0), gm))
+    _same(sw.table.iloc[0], rocking.simulate(block(shape, 0.0), gm))
 
 
 def test_sweep_at_90_degrees_of_a_counter_clockwise_pair(shape, short_pair):
     sw = direction_sweep(shape, short_pair.scaled(1.5), [math.pi / 2])
-    _same(sw.table.iloc[0], rocking.simulate(shape.block(math.pi / 2),
+    _same(sw.table.iloc[0], rocking.simulate(rocking.Block.from_shape(shape, math.pi / 2),
                                              short_pair.second.scaled(1.5)))
 
 

@@ -18,7 +18,7 @@ import pytest
 import trimesh
 from cli_helpers import assert_one_line_error, run_main
 
-from rocking import simulate
+from rocking import Block, simulate
 from rocking.blocks.factory import make_block, make_blocks, mesh_block
 from rocking.campaign import parse_spec
 from rocking.errors import ParameterError, SpecError
@@ -68,7 +68,7 @@ def test_the_form_is_shape_block(box_file):
     sh = load_example(mass=300.0)
     for deg in (0.0, 37.0, 200.0):
         b = make_block({"mesh": str(path), "mass": 300, "direction": deg})
-        ref_block = sh.block(math.radians(deg))
+        ref_block = Block.from_shape(sh, math.radians(deg))
         for k in ("alpha_plus", "alpha_minus", "p_plus", "p_minus", "mu_plus", "mu_minus",
                   "mass", "I_O"):
             assert math.isclose(getattr(b, k), getattr(ref_block, k), rel_tol=1e-12), k
@@ -203,7 +203,7 @@ def test_dem_body_is_the_mesh_body_and_rocks_like_the_classical_block(box_file):
     assert np.allclose(0.5 * (bd.verts[0] + bd.verts[1]), [0.0, -C / 2], atol=1e-12)
     th0 = 0.5 * blk.alpha
     r = simulate(blk, None, model="dem", duration=3.0, theta0=th0, dt_out=5e-4)
-    h = simulate(sh.block(phi), None, duration=3.0, theta0=th0, dt_out=5e-4)
+    h = simulate(Block.from_shape(sh, phi), None, duration=3.0, theta0=th0, dt_out=5e-4)
     a, a0 = np.abs(r.half_cycle_peaks()[1]), np.abs(h.half_cycle_peaks()[1])
     assert np.max(np.abs(a[1:6] / a0[1:6] - 1)) < 0.03
     assert np.max(np.abs(r.impact_times[:5] / h.impact_times[:5] - 1)) < 0.02
@@ -212,7 +212,7 @@ def test_dem_body_is_the_mesh_body_and_rocks_like_the_classical_block(box_file):
 def test_asymmetric_block_without_a_body_is_refused_by_the_dem():
     sh = load_example(density=2600.0)
     phi = sh.weakest().phi
-    bare = sh.block(phi)  # both sides, no outline
+    bare = Block.from_shape(sh, phi, outline=False)  # both sides, no outline
     assert not bare.symmetric
     with pytest.raises(ParameterError, match="geometry 'body'"):
         simulate(bare, None, model="dem", duration=0.1, theta0=0.01)
@@ -271,7 +271,7 @@ def test_dem_rocks_an_asymmetric_mesh_block_like_the_classical_model():
     r = simulate(blk, None, model="dem", duration=3.0, theta0=th0, dt_out=5e-4)
     assert r.info["damping_source"] == "plastic impact (asymmetric body)"
     assert r.info["damping"] == pytest.approx(D.damping_cap(blk), rel=1e-12)
-    h = simulate(sh.block(0.0), None, duration=3.0, theta0=th0, dt_out=5e-4)
+    h = simulate(Block.from_shape(sh, 0.0), None, duration=3.0, theta0=th0, dt_out=5e-4)
     a, a0 = np.abs(r.half_cycle_peaks()[1]), np.abs(h.half_cycle_peaks()[1])
     n = min(len(a), len(a0), 6)
     assert n >= 4

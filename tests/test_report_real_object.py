@@ -118,7 +118,7 @@ def test_sweep_at_phi_zero_equals_the_planar_run(section_out):
     sw = _csv(section_out[0], "sweep")
     shape = load_example(density=S.DENSITY)
     pair = HorizontalPair.builtin(S.PAIR)
-    blk = shape.block(0.0)
+    blk = rocking.Block.from_shape(shape, 0.0)
     up = load_builtin("RinaldiUP")
     for s in S.SCALES[0]:
         for vertical in (False, True):

@@ -19,6 +19,7 @@ import trimesh
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from rocking import Block
 from rocking.errors import ParameterError
 from rocking.shapes import (
     MeshRepairWarning,
@@ -518,26 +519,24 @@ def test_the_polygon_is_a_valid_dem_outline_and_the_true_inertia_is_at_hand():
 
 
 def test_block_of_a_direction_carries_both_sides():
-    from rocking.blocks.block import Block
-
     sh = l_shape()
     for phi in (0.0, 0.7, math.pi):
-        row, blk = sh.parameters(phi), sh.block(phi)
+        row, blk = sh.parameters(phi), Block.from_shape(sh, phi)
         assert not blk.symmetric and blk.mass == sh.mass
         for s in SIDES:
             for k in ("alpha", "p", "mu", "R"):
                 assert math.isclose(getattr(blk, f"{k}_{s}"), row[f"{k}_{s}"],
                                     rel_tol=1e-12), (k, s)
-    both = sh.block(0.7, mu=0.9)
+    both = Block.from_shape(sh, 0.7, mu=0.9)
     assert both.mu_plus == both.mu_minus == 0.9
     # a box in a principal direction: symmetric, Eqs 2-4
     a, b, c = 0.5, 0.3, 1.2
-    blk = shape(*ref.box(a, b, c)).block(math.pi / 2)
+    blk = Block.from_shape(shape(*ref.box(a, b, c)), math.pi / 2)
     assert blk.symmetric and math.isclose(blk.alpha, math.atan(b / c), rel_tol=1e-12)
     assert math.isclose(blk.mu, 1 - 1.5 * math.sin(blk.alpha) ** 2, rel_tol=1e-12)
-    # Block.from_mesh is the same block
-    m = Block.from_mesh(example_mesh_path(), density=2600.0, direction=1.0)
-    e = load_example().block(1.0)
+    # Block.from_mesh is the same block (its direction in degrees: "1rad" is phi = 1)
+    m = Block.from_mesh(example_mesh_path(), density=2600.0, direction="1rad")
+    e = Block.from_shape(load_example(), 1.0)
     assert (m.alpha_plus, m.alpha_minus, m.p_plus, m.mu_minus) == (
         e.alpha_plus, e.alpha_minus, e.p_plus, e.mu_minus)
 

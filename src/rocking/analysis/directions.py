@@ -2,7 +2,7 @@ r"""The weakest direction of a 3-D body under two horizontal components (issue 2
 
 :func:`direction_sweep` runs, for every direction ``phi`` of the body's horizontal frame,
 the planar analysis of the body's planar block of that direction
-(:meth:`rocking.shapes.Shape.block`: the sides' alpha, R, p and restitutions) under the
+(:meth:`rocking.Block.from_shape`: the sides' alpha, R, p and restitutions) under the
 ground acceleration projected on ``phi`` (:meth:`rocking.motions.HorizontalPair.along`),
 all directions in one :func:`rocking.simulate_many` batch (one block per row), and
 returns the table and the worst direction (:class:`DirectionSweep`);
@@ -140,8 +140,8 @@ def _blocks_of(body, phis: np.ndarray) -> tuple[list, bool]:
     """One planar block per direction, and whether ``phi + pi`` mirrors ``phi``."""
     if isinstance(body, Block):
         return [body] * phis.size, bool(body.symmetric)
-    if hasattr(body, "block") and hasattr(body, "parameters"):  # a rocking.shapes.Shape
-        return [body.block(float(p)) for p in phis], True
+    if hasattr(body, "parameters") and hasattr(body, "polygon"):  # a rocking.shapes.Shape
+        return [Block.from_shape(body, float(p)) for p in phis], True
     if callable(body):
         blocks = [body(float(p)) for p in phis]
         bad = [type(b).__name__ for b in blocks if not isinstance(b, Block)]
@@ -159,7 +159,7 @@ def direction_sweep(body, pair: HorizontalPair, directions=None, *, model="housn
     """The planar analysis in every direction under a horizontal pair (module docstring).
 
     ``body``: a :class:`rocking.shapes.Shape` (the planar block of each direction,
-    :meth:`~rocking.shapes.Shape.block`), a :class:`rocking.Block` (the same block in
+    :meth:`rocking.Block.from_shape`), a :class:`rocking.Block` (the same block in
     every direction: a footprint symmetric about every vertical plane, such as a
     cylinder) or a function ``phi -> Block``. ``pair``: a
     :class:`~rocking.motions.HorizontalPair`. ``directions``: angles (rad), a count, or

@@ -390,19 +390,60 @@ class Block:
                    sides=None if sides[0] == sides[1] else sides)
 
     @classmethod
-    def from_mesh(cls, path, *, density: float | None = None, mass: float | None = None,
-                  direction: float = 0.0, up="z", repair=None) -> Block:
-        """The planar block of a 3-D mesh (STL, OBJ, PLY) for shaking along ``direction``
-        (rad, from the mesh's x axis): :func:`rocking.shapes.load_shape` then
-        :meth:`rocking.shapes.Shape.block`."""
-        # rocking.shapes is built on this module (Shape.block makes a Block): this thin
-        # convenience calls up into it at run time only, by name, so that the import graph
-        # (tests/test_architecture.py) keeps blocks below shapes; trimesh loads only here
-        import importlib
+    def from_shape(cls, shape, phi: float = 0.0, *, name: str | None = None, mu=None,
+                   outline: bool = True) -> Block:
+        """The planar block of a 3-D body (:class:`rocking.shapes.Shape`) for shaking along
+        ``phi`` (rad, counter-clockwise from the body's x axis seen from above): its two
+        sides (:meth:`rocking.shapes.Shape.parameters`) through :meth:`from_geometry`, with
+        the body's mass; ``mu``: None for the derived restitutions, a number for both
+        sides. With ``outline`` the block also carries the body's outline in the plane of
+        shaking (:meth:`rocking.shapes.Shape.polygon`) as its :attr:`vertices`, so that the
+        DEM rocks that outline with the body's true mass and inertia (geometry
+        ``"body"``). A body that touches the ground beyond a pivot before its overturning
+        angle (an overhang) is warned about: the planar block ignores that contact."""
+        q = shape.parameters(phi)
+        if q["overhang"]:
+            tilt = math.degrees(min(q["contact_plus"], q["contact_minus"]))
+            warn_implausible(
+                f"direction {math.degrees(q['phi']):g} deg: the body touches the ground "
+                f"beyond its pivot at a tilt of {tilt:.3g} deg, before its overturning "
+                "angle; the planar block ignores that contact")
+        label = name if name is not None else (
+            f"{shape.name or 'mesh'} @ {math.degrees(q['phi']):.1f} deg")
+        block = cls.from_geometry(q["h"], q["b_plus"], q["b_minus"], q["radius_of_gyration"],
+                                  mass=shape.mass, name=label, mu=mu)
+        if not outline:
+            return block
+        poly = shape.polygon(phi)
+        xs, zs = poly[:, 0], poly[:, 1]
+        return dataclasses.replace(block, vertices=tuple(map(tuple, poly.tolist())),
+                                   width=float(xs.max() - xs.min()),
+                                   height=float(zs.max() - zs.min()))
 
-        shapes = importlib.import_module("rocking.shapes")
-        shape = shapes.load_shape(path, density=density, mass=mass, up=up, repair=repair)
-        return shape.block(direction)
+    @classmethod
+    def from_mesh(cls, path, *, density: float | None = None, mass: float | None = None,
+                  direction=0.0, up="z", repair=None, units: str = "m",
+                  name: str | None = None, mu=None) -> Block:
+        """The planar block of a 3-D mesh file (STL, OBJ, PLY) for shaking along
+        ``direction``: :func:`rocking.shapes.load_shape` then :meth:`from_shape`.
+
+        ``direction`` is in degrees, as everywhere a user gives it (the spec's ``mesh``
+        blocks, ``--direction``): a number (deg), a string with its unit (``"30deg"``,
+        ``"0.5rad"``), ``"weakest"`` or ``"strongest"``
+        (:func:`rocking.shapes.parse_direction`); ``phi`` is the same angle in rad in
+        :meth:`from_shape` and :func:`rocking.shapes.directional_parameters`.
+
+        >>> from rocking.shapes import example_mesh_path
+        >>> b = Block.from_mesh(example_mesh_path(), density=2600, direction="weakest")
+        >>> round(math.degrees(b.alpha), 2)
+        13.91
+        """
+        from ..shapes import load_shape, parse_direction, resolve_direction  # trimesh: lazy
+
+        shape = load_shape(path, density=density, mass=mass, up=up, repair=repair,
+                           units=units)
+        return cls.from_shape(shape, resolve_direction(shape, parse_direction(direction)),
+                              name=name, mu=mu)
 
     @classmethod
     def from_params(cls, alpha: float, p: float, mu: float, *, name: str = "", **geometry) -> Block:

@@ -18,7 +18,7 @@ or strings with a unit (``"170mm"``, ``"9.6deg"``); ``name`` names the block in 
 
 The ``mesh`` form (issue 20) is the planar block of a 3-D mesh (STL, OBJ, PLY) for one
 direction of shaking, through :mod:`rocking.shapes`: its two sides from
-:meth:`rocking.shapes.Shape.block` and, for the DEM, the outline
+:meth:`rocking.Block.from_shape` and, for the DEM, the outline
 :meth:`~rocking.shapes.Shape.polygon` with the mesh's true mass and moment of inertia
 (:func:`mesh_block`). ``direction`` is in degrees (a bare number; ``"30deg"``,
 ``"0.5rad"``), ``"weakest"`` or ``"strongest"``; a list gives one block per direction
@@ -42,7 +42,6 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..options import REQUIRED, Options, option
-from ..units import parse_quantity
 from .block import Block
 from .specimens import PARAM_SETS, SHAPES, specimen, specimen_ids
 from .stack import Stack
@@ -119,7 +118,6 @@ class StackForm(Options):
 
 MESH_UNITS = ("m", "cm", "mm")
 """Length units of a mesh file (:func:`rocking.shapes.load_shape`)."""
-NAMED_DIRECTIONS = ("weakest", "strongest")
 
 
 @dataclass(frozen=True)
@@ -170,16 +168,12 @@ class MeshForm(Options):
 
 
 def mesh_direction(value):
-    """One ``direction`` of a mesh block: an angle in rad (a bare number is in degrees;
-    a string may carry its unit, ``"30deg"``, ``"0.5rad"``), or ``"weakest"`` /
-    ``"strongest"``."""
-    if isinstance(value, str) and value.strip().lower() in NAMED_DIRECTIONS:
-        return value.strip().lower()
-    if isinstance(value, bool) or not isinstance(value, int | float | str):
-        raise ParameterError("direction must be an angle (a number in deg, '30deg'), "
-                             f"'weakest' or 'strongest'; got {value!r}")
-    phi = parse_quantity(value, "angle", name="direction", default_unit="deg")
-    return phi
+    """One ``direction`` of a mesh block (:func:`rocking.shapes.parse_direction`: an angle
+    in rad from a number in degrees or a string with its unit, or ``"weakest"`` /
+    ``"strongest"``)."""
+    from ..shapes import parse_direction
+
+    return parse_direction(value)
 
 
 def mesh_directions(value) -> list:
@@ -213,30 +207,11 @@ def load_mesh(f: MeshForm):
 
 
 def resolve_direction(shape, direction) -> float:
-    """The angle (rad) of one :func:`mesh_direction` for ``shape``: ``"weakest"`` is
-    :meth:`rocking.shapes.Shape.weakest` (exact: the normal of the support edge nearest to
-    the centre of mass), ``"strongest"`` the largest smaller uplift acceleration over 3600
-    directions refined by a bounded search."""
-    if direction == "weakest":
-        return float(shape.weakest().phi)
-    if direction == "strongest":
-        from scipy.optimize import minimize_scalar
+    """The angle (rad) of one :func:`mesh_direction` for ``shape``
+    (:func:`rocking.shapes.resolve_direction`)."""
+    from ..shapes import resolve_direction as resolve
 
-        from .. import shapes
-
-        table = shapes.directional_parameters(shape, 3600)
-        d = shapes.strongest_direction(table)
-        step = 2.0 * math.pi / 3600
-
-        def minus_uplift(phi):
-            q = shape.parameters(phi)
-            return -min(q["uplift_plus"], q["uplift_minus"])
-
-        r = minimize_scalar(minus_uplift, bounds=(d.phi - step, d.phi + step),
-                            method="bounded", options={"xatol": 1e-10})
-        phi = float(r.x) if r.fun <= -d.uplift else d.phi
-        return phi % (2.0 * math.pi)
-    return float(direction)
+    return resolve(shape, direction)
 
 
 def direction_label(direction, phi: float) -> str:
@@ -249,17 +224,13 @@ def direction_label(direction, phi: float) -> str:
 
 def mesh_block(shape, direction: float, *, name: str | None = None, mu=None) -> Block:
     """The planar block of ``shape`` (:class:`rocking.shapes.Shape`) for shaking along
-    ``direction`` (rad): :meth:`~rocking.shapes.Shape.block` (both sides, the mesh's
-    mass, ``I_O = m (r_g^2 + R^2)`` of the weaker side) with the outline
-    :meth:`~rocking.shapes.Shape.polygon` as its :attr:`~rocking.Block.vertices`, so that
-    the DEM (geometry ``"body"``, :func:`rocking.models.dem.body_of`) rocks the outline
-    with the mesh's true mass, centre of mass and moment of inertia
+    ``direction`` (rad) with its outline: :meth:`rocking.Block.from_shape` (both sides, the
+    mesh's mass, ``I_O = m (r_g^2 + R^2)`` of the weaker side, the outline
+    :meth:`~rocking.shapes.Shape.polygon` as :attr:`~rocking.Block.vertices`), so that the
+    DEM (geometry ``"body"``, :func:`rocking.models.dem.body_of`) rocks the outline with
+    the mesh's true mass, centre of mass and moment of inertia
     (:meth:`~rocking.shapes.Shape.inertia_about`), not the polygon's."""
-    block = shape.block(direction, name=name, mu=mu)
-    poly = shape.polygon(direction)
-    return dataclasses.replace(block, vertices=tuple(map(tuple, poly.tolist())),
-                               width=float(np.ptp(poly[:, 0])),
-                               height=float(np.ptp(poly[:, 1])))
+    return Block.from_shape(shape, direction, name=name, mu=mu)
 
 
 def plinth_shape(width: float, depth: float, height: float, *, density=None, mass=None):

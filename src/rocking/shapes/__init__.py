@@ -9,7 +9,7 @@ direction of horizontal shaking (issue 20).
   block of each side (alpha, R, p, the restitution, the uplift acceleration);
   :func:`weakest_direction` / :func:`strongest_direction` pick from it;
   :func:`plot_directional` draws it (polar).
-* :meth:`Shape.block` is the planar :class:`rocking.Block` of one direction and
+* :meth:`rocking.Block.from_shape` is the planar :class:`rocking.Block` of one direction and
   :meth:`Shape.polygon` its outline for the DEM.
 * :func:`example_mesh_path` / :func:`load_example`: a small synthetic statue shipped with
   the package (``data/statue.ply``, written by ``data/make_example.py``).
@@ -23,8 +23,11 @@ from __future__ import annotations
 
 from .directional import (
     COLUMNS,
+    NAMED_DIRECTIONS,
     Direction,
     directional_parameters,
+    parse_direction,
+    resolve_direction,
     strongest_direction,
     weakest_direction,
 )
@@ -32,6 +35,7 @@ from .example import example_mesh_path, load_example
 from .plot import plot_directional
 from .shape import MeshRepairWarning, Shape, load_shape
 
-__all__ = ["COLUMNS", "Direction", "MeshRepairWarning", "Shape", "directional_parameters",
-           "example_mesh_path", "load_example", "load_shape", "plot_directional",
-           "strongest_direction", "weakest_direction"]
+__all__ = ["COLUMNS", "NAMED_DIRECTIONS", "Direction", "MeshRepairWarning", "Shape",
+           "directional_parameters", "example_mesh_path", "load_example", "load_shape",
+           "parse_direction", "plot_directional", "resolve_direction", "strongest_direction",
+           "weakest_direction"]

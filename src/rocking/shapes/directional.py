@@ -78,7 +78,7 @@ import numpy as np
 
 from .._validate import as_int
 from ..errors import ParameterError
-from ..units import G
+from ..units import G, parse_quantity
 
 COLUMNS = ("phi", "phi_deg", "h", "b_plus", "b_minus", "radius_of_gyration", "alpha_plus",
            "alpha_minus", "R_plus", "R_minus", "I_plus", "I_minus", "p_plus", "p_minus",
@@ -222,3 +222,46 @@ def strongest_direction(table) -> Direction:
 
 __all__ = ["COLUMNS", "Direction", "as_directions", "directional_parameters", "pick",
            "side_arrays", "strongest_direction", "weakest_direction"]
+
+
+NAMED_DIRECTIONS = ("weakest", "strongest")
+"""The named directions of shaking (:func:`parse_direction`)."""
+
+
+def parse_direction(value):
+    """One ``direction`` of shaking as given by a user: an angle, returned in rad (a bare
+    number is in degrees, the unit of ``direction`` at every edge: spec, CLI,
+    :meth:`rocking.Block.from_mesh`; a string may carry its unit, ``"30deg"``,
+    ``"0.5rad"``), or ``"weakest"`` / ``"strongest"`` (returned as such)."""
+    if isinstance(value, str) and value.strip().lower() in NAMED_DIRECTIONS:
+        return value.strip().lower()
+    if isinstance(value, bool) or not isinstance(value, int | float | str):
+        raise ParameterError("direction must be an angle (a number in deg, '30deg'), "
+                             f"'weakest' or 'strongest'; got {value!r}")
+    return parse_quantity(value, "angle", name="direction", default_unit="deg")
+
+
+def resolve_direction(shape, direction) -> float:
+    """The angle ``phi`` (rad) of one :func:`parse_direction` result for ``shape``:
+    ``"weakest"`` is :meth:`Shape.weakest` (exact: the normal of the support edge nearest
+    to the centre of mass), ``"strongest"`` the largest smaller uplift acceleration over
+    3600 directions refined by a bounded search; an angle is returned as it is."""
+    if direction == "weakest":
+        return float(shape.weakest().phi)
+    if direction == "strongest":
+        from scipy.optimize import minimize_scalar
+
+        table = directional_parameters(shape, 3600)
+        d = strongest_direction(table)
+        step = 2.0 * math.pi / 3600
+
+        def minus_uplift(phi):
+            q = shape.parameters(phi)
+            return -min(q["uplift_plus"], q["uplift_minus"])
+
+        r = minimize_scalar(minus_uplift, bounds=(d.phi - step, d.phi + step),
+                            method="bounded", options={"xatol": 1e-10})
+        phi = float(r.x) if r.fun <= -d.uplift else d.phi
+        return phi % (2.0 * math.pi)
+    return float(direction)
+

@@ -19,8 +19,9 @@ horizontal coordinates relative to the centre of mass's vertical), ``support_are
 ``contact_points`` (the patch's size), ``tol`` (m), ``repaired`` (the convex hull was used).
 
 Per direction: :func:`rocking.shapes.directional_parameters` (the table),
-:meth:`Shape.parameters` (one direction as a dict), :meth:`Shape.block` (a
-:class:`rocking.Block`), :meth:`Shape.polygon` (the planar outline for the DEM) and
+:meth:`Shape.parameters` (one direction as a dict), :meth:`rocking.Block.from_shape` (the
+planar :class:`rocking.Block` of a direction), :meth:`Shape.polygon` (the planar outline
+for the DEM) and
 :meth:`Shape.weakest` (the exact weakest direction).
 """
 
@@ -162,24 +163,6 @@ class Shape:
         phi = as_float("direction", direction)
         u = np.array([-math.sin(phi), math.cos(phi), 0.0])
         return float(u @ self.inertia_local @ u)
-
-    def block(self, direction: float = 0.0, *, name: str | None = None, mu=None):
-        """The planar :class:`rocking.Block` of the direction ``direction`` (rad): its
-        sides' geometry through :meth:`rocking.Block.from_geometry`, with the mesh's mass
-        (``mu``: None for the derived restitutions, a number for both sides)."""
-        from ..blocks.block import Block
-
-        q = self.parameters(direction)
-        if q["overhang"]:
-            tilt = math.degrees(min(q["contact_plus"], q["contact_minus"]))
-            warn_implausible(
-                f"direction {math.degrees(q['phi']):g} deg: the body touches the ground "
-                f"beyond its pivot at a tilt of {tilt:.3g} deg, before its overturning "
-                "angle; the planar block ignores that contact")
-        label = name if name is not None else (
-            f"{self.name or 'mesh'} @ {math.degrees(q['phi']):.1f} deg")
-        return Block.from_geometry(q["h"], q["b_plus"], q["b_minus"],
-                                   q["radius_of_gyration"], mass=self.mass, name=label, mu=mu)
 
     def hull_points(self) -> np.ndarray:
         """The vertices of the body's 3-D convex hull in the local frame (cached)."""

@@ -27,6 +27,7 @@ import pandas as pd
 
 from ...analysis import direction_sweep, fragility
 from ...analysis.directions import plot_sweeps
+from ...blocks import Block
 from ...errors import ParameterError
 from ...models import simulate_many
 from ...motions import HorizontalPair, seed_earthquakes
@@ -93,7 +94,7 @@ def fragility_runs(shape, directions: dict, quick: bool) -> pd.DataFrame:
             meta.append((i + 1, float(lev)))
     rows = []
     for label, d in directions.items():
-        blk = shape.block(d.phi)
+        blk = Block.from_shape(shape, d.phi)
         res = simulate_many(blk, motions)
         for j, (rid, lev) in enumerate(meta):
             rows.append({"direction": label, "phi_deg": d.phi_deg,
