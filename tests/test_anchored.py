@@ -284,3 +284,20 @@ def test_an_intact_elastic_anchor_at_overturning_carries_kappa():
     assert r.overturned
     assert r.info["anchor_broken"] == [False, False]
     assert r.info["max_anchor_force"] == pytest.approx(kappa, rel=1e-12)
+
+
+@pytest.mark.parametrize("av", [-0.3 * G, 0.2 * G])
+def test_the_force_of_a_rigid_anchor_at_rest_balances_the_moments_with_a_vertical_motion(av):
+    """At rest under a constant horizontal a and vertical a_v, the moments about the pivot
+    balance: 2 b F = m h a - m (g + a_v) b, so F/(m g) = (a/(g tan(alpha)) - (1 + a_v/g))/2
+    (below the uplift threshold (g + a_v) tan(alpha) + 2 q g tan(alpha))."""
+    from rocking.motions import GroundMotion
+
+    q, k = 0.5, 1.5  # a = k g tan(alpha)
+    a = k * THR
+    motion = GroundMotion(Rectangular(a, 1.0, duration=1.0),
+                          Rectangular(abs(av), 1.0, duration=1.0, scale=math.copysign(1, av)))
+    r = rocking.simulate(BLOCK, motion, model="anchored", anchor_strength=q, duration=1.0)
+    assert math.isnan(r.uplift_time) and r.info["anchor_broken"] == [False, False]
+    assert r.info["max_anchor_force"] == pytest.approx(0.5 * (k - (1.0 + av / G)),
+                                                       rel=1e-12)

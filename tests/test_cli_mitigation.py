@@ -160,7 +160,8 @@ BAD_VALUES = [
     (["--isolation-period", "0s"], "isolation-period", "(0, 100] s"),
     (["--isolation-period", "3m"], "isolation-period", "time unit"),
     (["--isolation-damping", "abc"], "isolation-damping", "abc"),
-    (["--isolation-damping", "-5%"], "isolation-damping", "[0, 10]"),
+    (["--isolation-damping", "-5%"], "isolation-damping", "[0, 1]"),
+    (["--isolation-damping", "10"], "isolation-damping", "[0, 1]"),  # 10 %: "10%"
     (["--clearance", "-1m"], "clearance", "(0, 1000] m"),
     (["--clearance", "1kg"], "clearance", "length unit"),
     (["--isolation", "spring"], "isolation", "linear, pendulum"),

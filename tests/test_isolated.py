@@ -606,3 +606,23 @@ def test_compiled_model_with_a_stop_matches_the_reference():
     np.testing.assert_allclose(r.impact_times, ref.impact_times, atol=1e-6)
     assert r.info["max_base_displacement"] == pytest.approx(ref.max_abs_u, rel=1e-5)
     assert r.info["max_plate_acceleration"] == pytest.approx(ref.max_plate_acc, rel=1e-4)
+
+
+def test_the_derived_restitution_says_when_it_replaces_the_blocks_own_mu():
+    """A block whose mu is not Eq 4 of its geometry (a measured one) is warned about: the
+    model derives its restitution from the momentum balance unless mu is given; an option
+    of the other isolator is warned about too (it is not used); mu given: no warning."""
+    import warnings
+
+    from rocking.errors import PlausibilityWarning
+
+    measured = rocking.specimen(2, "experimental")
+    motion = OneSine(0.5, 1.0)
+    with pytest.warns(PlausibilityWarning, match="own mu = 0.9730 is not used"):
+        rocking.simulate(measured, motion, model="isolated")
+    with pytest.warns(PlausibilityWarning, match="radius applies to isolation='pendulum'"):
+        rocking.simulate(RECT, motion, model="isolated", radius=3.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        rocking.simulate(measured, motion, model="isolated", mu=measured.mu)
+        rocking.simulate(RECT, motion, model="isolated")  # Eq 4: nothing to say

@@ -94,14 +94,18 @@ def _trips(kind, prm, samples, t, rigid, q, bp, bm, c):
 
 @njit(cache=True)
 def _hold(kind, prm, samples, t, rigid, q, bp, bm, c):
-    """Force (fraction of m g) an intact rigid anchor carries at rest at ``t``."""
+    """Force (fraction of m g) an intact rigid anchor carries at rest at ``t``: the moment
+    balance about the pivot, ``2 b F = m h |a| - m (g + a_v) b``, i.e.
+    ``F/(m g) = (|a|/(g tan(alpha)) - (1 + a_v/g)) / 2`` (``a_v``: the vertical ground
+    acceleration, positive upwards)."""
     if not rigid:
         return 0.0
     a = ground_acc(kind, prm, samples, t)
     intact = (not bp) if a > 0.0 else (not bm)
     if not intact:
         return 0.0
-    return min(q, max(0.0, 0.5 * (abs(a) / (c * G) - 1.0)))
+    gf = 1.0 + vertical_acc(prm, samples, t) * INV_G if has_vertical(prm) else 1.0
+    return min(q, max(0.0, 0.5 * (abs(a) / (c * G) - gf)))
 
 
 @njit(cache=True)

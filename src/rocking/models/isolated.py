@@ -107,6 +107,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange
 
+from .._validate import warn_implausible
 from ..blocks.block import require_symmetric
 from ..errors import ParameterError
 from ..motions._kernel import (
@@ -619,16 +620,19 @@ class IsolatedOptions(ModelOptions):
                                  "pendulum (radius, friction)")
     isolation_period: float = option(2.0, quantity="time", unit="s", lo=0.0, hi=100.0,
                                      help="period of block and plate on the linear isolator")
-    isolation_damping: float = option(0.05, quantity="ratio", unit="", lo=0.0, hi=10.0,
+    isolation_damping: float = option(0.05, quantity="ratio", unit="", lo=0.0, hi=1.0,
                                       lo_open=False,
-                                      help="damping ratio of the linear isolator")
+                                      help="damping ratio of the linear isolator (0.1 or "
+                                           "'10%')")
     mass_ratio: float = option(1.0, lo=0.0, hi=1e12, help="plate mass / block mass")
     radius: float = option(2.0, quantity="length", unit="m", lo=0.0, hi=1e4,
                            help="radius of curvature of the friction pendulum")
     friction: float = option(0.05, lo=0.0, hi=1.0, lo_open=False,
                              help="friction coefficient of the friction pendulum")
-    v_eps: float = option(1e-3, unit="m/s", lo=0.0, hi=1.0,
-                          help="velocity of the tanh regularisation of friction")
+    v_eps: float = option(1e-3, unit="m/s", lo=1e-5, hi=1.0, lo_open=False,
+                          help="velocity of the tanh regularisation of friction (below "
+                               "1e-5 m/s the steps it needs, ~2 v_eps/(friction g), make a "
+                               "run of seconds last hours)")
     clearance: float | None = option(None, quantity="length", unit="m", lo=0.0, hi=1e3,
                                      help="moat clearance: the run stops when |u| reaches "
                                           "it, unless stop_period is given (None: no moat)")
@@ -668,6 +672,41 @@ class Isolated(Model):
     @classmethod
     def check_block(cls, block):
         return require_symmetric(super().check_block(block), cls.name)
+
+    LINEAR_ONLY = ("isolation_period", "isolation_damping")
+    PENDULUM_ONLY = ("radius", "friction", "v_eps")
+
+    @classmethod
+    def from_kwargs(cls, block, **options):
+        """The model from keyword options; an option of the other isolator (``radius``
+        with the linear one, ``isolation_period`` with the pendulum) is warned about: it
+        is not used."""
+        iso = options.get("isolation", "linear")
+        unused = cls.PENDULUM_ONLY if iso == "linear" else cls.LINEAR_ONLY
+        for k in unused:
+            if k in options:
+                other = "pendulum" if iso == "linear" else "linear"
+                warn_implausible(f"model 'isolated': {k} applies to isolation={other!r} "
+                                 f"only; with isolation={iso!r} it is not used")
+        return super().from_kwargs(block, **options)
+
+    def __init__(self, block, options=None):
+        super().__init__(block, options)
+        o = self.options
+        if o.clearance is not None and o.clearance > 2.0:
+            warn_implausible(f"model 'isolated': clearance {o.clearance:g} m is above 2 m; "
+                             "check the units (lengths are in m: '15cm' is 0.15)")
+        if o.mu is None:  # the derived restitution replaces the block's own mu: say so
+            alpha, p, R = self.block_row(self.block)
+            lam = R * p * p / G
+            mu_fixed = 1.0 - 2.0 * lam * math.sin(alpha) ** 2
+            if abs(self.block.mu - mu_fixed) > 1e-3:  # Eq 4 to the 3 decimals of tables
+                _, mu_iso = block_terms(alpha, p, R, 1.0 / (1.0 + o.mass_ratio), math.nan)
+                warn_implausible(
+                    f"model 'isolated' derives the impact restitution from the momentum "
+                    f"of block and plate ({mu_iso:.4f} here; {mu_fixed:.4f} on a fixed "
+                    f"base, Eq 4 for this geometry): the block's own mu = "
+                    f"{self.block.mu:.4f} is not used; pass mu=... to impose one")
 
     @classmethod
     def block_row(cls, block) -> tuple:
