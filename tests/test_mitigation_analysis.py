@@ -226,7 +226,7 @@ def isolated_table(seed=3):
 
 def test_clearance_exceedance_is_a_direct_count():
     t, iso, stopped = isolated_table()
-    comp = compare_mitigations(t, clearance="12cm", n_boot=0)
+    comp = compare_mitigations(t, clearance="12cm", failure="overturned", n_boot=0)
     r = row(comp, "isolated")
     d = t["max_base_displacement"].to_numpy()[iso]
     hit = (d >= 0.12) | stopped[iso]
@@ -249,7 +249,15 @@ def test_overturned_or_clearance_counts_both():
     ov = t["overturned"].to_numpy(bool)
     d = t["max_base_displacement"].to_numpy()
     both = compare_mitigations(t, clearance=0.15, failure="overturned_or_clearance", n_boot=0)
-    only = compare_mitigations(t, clearance=0.15, n_boot=0)
+    only = compare_mitigations(t, clearance=0.15, failure="overturned", n_boot=0)
+    # the default ("auto"): runs stopped at the model's clearance are no survivors
+    auto = compare_mitigations(t, clearance=0.15, n_boot=0)
+    any_stop = bool(np.any(t["clearance_exceeded"].to_numpy(bool)))
+    assert any_stop  # the table has runs stopped at the clearance
+    assert auto.failure == "overturned_or_clearance"
+    assert row(auto, "isolated")["n_failed"] == row(both, "isolated")["n_failed"]
+    plain = t.assign(clearance_exceeded=False)  # no stopped run: overturning only
+    assert compare_mitigations(plain, n_boot=0).failure == "overturned"
     with np.errstate(invalid="ignore"):
         failed = ov | stopped | (d >= 0.15)
     assert row(both, "isolated")["n_failed"] == failed[iso].sum()

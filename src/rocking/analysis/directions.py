@@ -54,6 +54,7 @@ from ..models import simulate_many
 from ..motions import HorizontalPair
 from ..motions.pair import angle
 from ..plot import PALETTE
+from ..shapes.directional import warn_if_degrees
 from ..units import G
 
 DEFAULT_STEP = math.radians(15.0)
@@ -133,6 +134,7 @@ def _directions(directions, mirrored: bool) -> np.ndarray:
     if d.ndim != 1 or d.size == 0 or not np.all(np.isfinite(d)):
         raise ParameterError("directions must be a non-empty 1-D sequence of finite angles "
                              "(rad)")
+    warn_if_degrees(d)
     return d
 
 

@@ -170,8 +170,8 @@ def _check_table(table, im, failure, by, mit_col):
                              f"{type(table).__name__}")
     if len(table) == 0:
         raise ParameterError("table is empty: no run to compare")
-    if failure not in FAILURES:
-        raise ParameterError(f"failure must be one of {FAILURES}, got {failure!r}")
+    if failure not in (*FAILURES, "auto"):
+        raise ParameterError(f"failure must be one of {(*FAILURES, 'auto')}, got {failure!r}")
     if not isinstance(im, str):
         raise ParameterError(f"im must be a column name such as 'pga', got {im!r}")
     need = [im, "overturned"]
@@ -308,7 +308,7 @@ class MitigationComparison:
         return plot_mitigations(self, **kw)
 
 
-def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned", by=None,
+def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=None,
                         hazard=None, clearance=None, n_boot=200, seed=0,
                         reference=REFERENCE) -> MitigationComparison:
     """Compare the mitigations of a table of runs, group by group.
@@ -324,12 +324,15 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
     is refused).
 
     ``failure``: ``"overturned"`` or ``"overturned_or_clearance"`` (a run whose isolator
-    reached the clearance, ``clearance_exceeded`` or ``max_base_displacement >=
-    clearance``, failed too). ``by``: the grouping columns (default those of
-    :data:`DEFAULT_BY` present). ``clearance`` (m or a quantity string, ``"0.15m"``): the
-    displacement capacity of the isolator. ``reference``: the unmitigated entry's name;
-    without a ``mitigation`` column and without that name, the one model of the group
-    that is not a mitigation (``Model.mitigation`` false) is the reference.
+    reached the clearance, ``clearance_exceeded`` or ``max_base_displacement >= clearance``,
+    failed too); ``"auto"`` (default): ``"overturned_or_clearance"`` when some runs were
+    stopped at the model's clearance (``clearance_exceeded``: whether they would have
+    overturned is unknown, so they are not counted as survivors), else ``"overturned"``; the
+    rule used is :attr:`MitigationComparison.failure`. ``by``: the grouping columns (default
+    those of :data:`DEFAULT_BY` present). ``clearance`` (m or a quantity string,
+    ``"0.15m"``): the displacement capacity of the isolator. ``reference``: the unmitigated
+    entry's name; without a ``mitigation`` column and without that name, the one model of
+    the group that is not a mitigation (``Model.mitigation`` false) is the reference.
 
     Each (group, mitigation) is fitted with :func:`~.fragility.fragility` (probit GLM MLE,
     Baker 2015; ``n_boot`` draws of the ``"normal"`` bootstrap with ``seed`` give the 95%
@@ -391,6 +394,8 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="overturned
     disp_all = (pd.to_numeric(table["max_base_displacement"], errors="coerce").to_numpy(float)
                 if "max_base_displacement" in table else np.full(len(table), np.nan))
     flag_all = _flags(table, "clearance_exceeded")
+    if failure == "auto":  # runs stopped at the clearance are no survivors to trust
+        failure = "overturned_or_clearance" if np.any(flag_all == 1) else "overturned"
     if failure == "overturned_or_clearance" and not (
             "clearance_exceeded" in table or (math.isfinite(clear)
                                               and "max_base_displacement" in table)):

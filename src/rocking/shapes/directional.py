@@ -76,7 +76,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._validate import as_int
+from .._validate import as_int, warn_implausible
 from ..errors import ParameterError
 from ..units import G, parse_quantity
 
@@ -102,7 +102,17 @@ def as_directions(directions) -> np.ndarray:
                              f"{directions!r}") from None
     if len(phi) == 0 or not np.all(np.isfinite(phi)):
         raise ParameterError(f"directions must be finite angles in rad, got {directions!r}")
+    warn_if_degrees(phi)
     return phi
+
+
+def warn_if_degrees(phi) -> None:
+    """Warn when angles meant in rad look like degrees (some ``|phi| > 4 pi``: ``phi + pi``
+    of a direction up to ``2 pi`` stays below)."""
+    big = np.abs(np.asarray(phi, dtype=float))
+    if big.size and big.max() > 4.0 * math.pi:
+        warn_implausible(f"directions are angles in rad; got {big.max():g}, above 4 pi: "
+                         "degrees? (np.radians(...); a count of directions is an int)")
 
 
 def side_arrays(support, h, inertia_local, mass, phi, hull=None) -> dict:
