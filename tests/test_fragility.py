@@ -269,3 +269,25 @@ def test_degenerate_outcomes():
         fragility(im, im >= 2.0, n_boot=-1)
     with pytest.raises(ParameterError, match="bootstrap"):
         fragility([1.0, 2.0, 1.0, 2.0], [0, 1, 1, 0], bootstrap="jackknife")
+
+
+def test_fit_or_bounds_gives_the_bounds_the_outcomes_allow_and_refuses_bad_input():
+    """No failure: the median is above the largest IM; all failed: below the smallest;
+    separated: between the largest survival and the smallest failure; otherwise a fit
+    equal to fragility()'s. A non-positive IM is still an error, never a 'no fit'."""
+    from rocking.analysis.fragility import fit_or_bounds
+
+    x = np.array([1.0, 2.0, 3.0, 4.0])
+    fit, lo, hi, why = fit_or_bounds(x, [False] * 4)
+    assert fit is None and (lo, why) == (4.0, "none failed") and np.isnan(hi)
+    fit, lo, hi, why = fit_or_bounds(x, [True] * 4)
+    assert fit is None and (hi, why) == (1.0, "all failed") and np.isnan(lo)
+    fit, lo, hi, why = fit_or_bounds(x, [False, False, True, True])
+    assert fit is None and (lo, hi, why) == (2.0, 3.0, "separated")
+    xs = np.repeat(x, 4)
+    ys = np.array([0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 1, 0, 1, 1, 1, 1], bool)
+    fit, lo, hi, why = fit_or_bounds(xs, ys, n_boot=0)
+    ref = fragility(xs, ys, n_boot=0)
+    assert why == "" and fit.median == ref.median and fit.beta == ref.beta
+    with pytest.raises(ParameterError):
+        fit_or_bounds([0.0, 1.0], [False, True])

@@ -319,7 +319,7 @@ def direction_fragility(body, pairs, levels, directions=None, *, im: str = "larg
     pair (None: the body's x axis along each pair's first component). The same caveats
     as :func:`direction_sweep`: planar analysis per direction.
     """
-    from .fragility import fragility
+    from .fragility import fit_or_bounds
 
     plist = [pairs] if isinstance(pairs, HorizontalPair) else list(pairs)
     if not plist or not all(isinstance(p, HorizontalPair) for p in plist):
@@ -370,17 +370,15 @@ def direction_fragility(body, pairs, levels, directions=None, *, im: str = "larg
                "alpha_minus": b.alpha_minus, "n": len(g), "n_overturned": int(y.sum()),
                "median": math.nan, "beta": math.nan, "median_se": math.nan,
                "median_lower_bound": math.nan, "median_upper_bound": math.nan, "note": ""}
-        try:
-            fit = fragility(x, y, n_boot=n_boot, seed=seed, im_name=f"pga_{im}",
-                            im_unit="m/s^2", label=f"overturning, {math.degrees(phi):g} deg")
+        fit, lo, hi, why = fit_or_bounds(x, y, n_boot=n_boot, seed=seed,
+                                         im_name=f"pga_{im}", im_unit="m/s^2",
+                                         label=f"overturning, {math.degrees(phi):g} deg")
+        if fit is not None:
             fits[i] = fit
             row.update(median=fit.median, beta=fit.beta, median_se=fit.median_se)
-        except ParameterError as exc:
-            row["note"] = str(exc)
-            if (~y).any():
-                row["median_lower_bound"] = float(x[~y].max())
-            if y.any():
-                row["median_upper_bound"] = float(x[y].min())
+        else:  # no maximum-likelihood fit: the bounds the outcomes give
+            row.update(median_lower_bound=lo, median_upper_bound=hi,
+                       note=f"no fragility fit ({why}): bounds of the median")
         rows.append(row)
     return DirectionFragility(table=pd.DataFrame(rows), runs=runs, fits=fits, im=im)
 

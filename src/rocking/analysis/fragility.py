@@ -206,6 +206,34 @@ def check_separation(x: np.ndarray, y: np.ndarray, what: str = "failed") -> None
                              "a fragility curve must increase with the IM")
 
 
+def fit_or_bounds(im, failed, **kwargs):
+    """The fragility fit of ``im``/``failed`` (:func:`fragility`, ``kwargs`` passed on), or
+    the bounds of the median that outcomes without a maximum-likelihood fit still give
+    (the cases :func:`check_separation` refuses).
+
+    Returns ``(fit, lower, upper, reason)``: ``fit`` is a :class:`FragilityFit` (bounds
+    NaN, ``reason`` ``""``) or None with ``reason`` ``"none failed"`` (``lower`` = the
+    largest IM run: the median is above it), ``"all failed"`` (``upper`` = the smallest
+    IM run), ``"separated"`` (no failure up to ``lower``, every run failed from
+    ``upper``: the median lies between) or ``"decreasing"`` (failures only below the
+    survivals: no bound). Bounds are what the data show, not confidence bounds. Bad input
+    (a non-positive IM, mismatched lengths, ...) raises as in :func:`fragility`.
+    """
+    x, y = records(im, failed)
+    nan = math.nan
+    n1 = int(y.sum())
+    if n1 == 0:
+        return None, float(x.max()), nan, "none failed"
+    if n1 == y.size:
+        return None, nan, float(x.min()), "all failed"
+    lo_fail, hi_safe = float(x[y].min()), float(x[~y].max())
+    if lo_fail >= hi_safe:
+        return None, hi_safe, lo_fail, "separated"
+    if x[y].max() <= x[~y].min():
+        return None, nan, nan, "decreasing"
+    return fragility(x, y, **kwargs), nan, nan, ""
+
+
 def make_rng(seed):
     """The bootstrap's random generator from ``seed`` (an int, a SeedSequence or None)."""
     if seed is not None and not isinstance(seed, int | np.integer | np.random.SeedSequence):

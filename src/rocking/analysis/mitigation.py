@@ -27,10 +27,16 @@ import math
 import numpy as np
 import pandas as pd
 
-from ..errors import ParameterError, SimulationError
+from ..errors import ParameterError
 from ..plot import PALETTE, im_label, style_axes, unit_label
 from ..units import acceleration_unit, parse_quantity
-from .fragility import IM_UNITS, FragilityFit, annual_frequency, as_bool_array, fragility
+from .fragility import (
+    IM_UNITS,
+    FragilityFit,
+    annual_frequency,
+    as_bool_array,
+    fit_or_bounds,
+)
 
 FAILURES = ("overturned", "overturned_or_clearance")
 """What counts as a failure: the block overturned, or (also) the isolator reached its
@@ -226,25 +232,22 @@ def _fit_one(x, y, *, im, im_unit, n_boot, seed, label):
     out = {"median": math.nan, "beta": math.nan, "median_ci_low": math.nan,
            "median_ci_high": math.nan, "beta_ci_low": math.nan, "beta_ci_high": math.nan,
            "median_lower_bound": math.nan, "median_upper_bound": math.nan, "note": ""}
-    try:
-        fit = fragility(x, y, n_boot=n_boot, seed=seed, im_name=im, im_unit=im_unit,
-                        label=label)
-    except (ParameterError, SimulationError) as e:
-        nf = int(y.sum())
-        if nf == 0:       # P(f | im <= im_max) is small: the median is above im_max
-            out["median_lower_bound"] = float(x.max())
-            out["note"] = f"no failure up to {name} = {x.max():.4g}{unit} ({y.size} runs)"
-        elif nf == y.size:
-            out["median_upper_bound"] = float(x.min())
-            out["note"] = (f"every run failed, down to {name} = {x.min():.4g}{unit} "
+    fit, lo, hi, why = fit_or_bounds(x, y, n_boot=n_boot, seed=seed, im_name=im,
+                                     im_unit=im_unit, label=label)
+    if fit is None:
+        out["median_lower_bound"], out["median_upper_bound"] = lo, hi
+        if why == "none failed":  # P(f | im <= im_max) is small: the median is above
+            out["note"] = f"no failure up to {name} = {lo:.4g}{unit} ({y.size} runs)"
+        elif why == "all failed":
+            out["note"] = (f"every run failed, down to {name} = {hi:.4g}{unit} "
                            f"({y.size} runs)")
-        elif (lo_fail := float(x[y].min())) >= (hi_safe := float(x[~y].max())):
-            out["median_lower_bound"], out["median_upper_bound"] = hi_safe, lo_fail
+        elif why == "separated":
             out["note"] = (f"outcomes separated by the IM (no failure up to {name} = "
-                           f"{hi_safe:.4g}{unit}, every run failed from {lo_fail:.4g}"
+                           f"{lo:.4g}{unit}, every run failed from {hi:.4g}"
                            f"{unit}): no fit (beta -> 0); the median lies between them")
         else:
-            out["note"] = f"no fragility fit: {e}"
+            out["note"] = ("no fragility fit: failures happen only at lower IM than the "
+                           "survivals")
         return None, out
     out.update(median=fit.median, beta=fit.beta)
     if fit.n_boot:

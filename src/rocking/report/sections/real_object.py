@@ -25,10 +25,10 @@ import math
 import numpy as np
 import pandas as pd
 
-from ...analysis import direction_sweep, fragility
+from ...analysis import direction_sweep
 from ...analysis.directions import plot_sweeps
+from ...analysis.fragility import fit_or_bounds
 from ...blocks import Block
-from ...errors import ParameterError
 from ...models import simulate_many
 from ...motions import HorizontalPair, seed_earthquakes
 from ...plot import PALETTE, style_axes
@@ -118,19 +118,15 @@ def fit_fragility(runs: pd.DataFrame, quick: bool) -> tuple[pd.DataFrame, dict]:
                "n_overturned": int(y.sum()), "median_g": math.nan, "beta": math.nan,
                "median_se_g": math.nan, "median_lower_bound_g": math.nan,
                "median_upper_bound_g": math.nan, "note": ""}
-        try:
-            fit = fragility(x, y, n_boot=N_BOOT[not quick], seed=0, im_name="pga",
-                            im_unit="g", label=f"overturning, {label}")
+        fit, lo, hi, why = fit_or_bounds(x, y, n_boot=N_BOOT[not quick], seed=0,
+                                         im_name="pga", im_unit="g",
+                                         label=f"overturning, {label}")
+        if fit is not None:
             fits[label] = fit
             row.update(median_g=fit.median, beta=fit.beta, median_se_g=fit.median_se)
-        except ParameterError as exc:
-            # no MLE (no failure, all failed, or separated): the median lies between the
-            # largest PGA that did not overturn and the smallest that did
-            row["note"] = str(exc)
-            if (~y).any():
-                row["median_lower_bound_g"] = float(x[~y].max())
-            if y.any():
-                row["median_upper_bound_g"] = float(x[y].min())
+        else:  # no MLE: the median lies between the PGAs the outcomes allow
+            row.update(median_lower_bound_g=lo, median_upper_bound_g=hi,
+                       note=f"no fragility fit ({why}): bounds of the median")
         rows.append(row)
     return pd.DataFrame(rows), fits
 
