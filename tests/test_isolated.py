@@ -626,3 +626,12 @@ def test_the_derived_restitution_says_when_it_replaces_the_blocks_own_mu():
         warnings.simplefilter("error")
         rocking.simulate(measured, motion, model="isolated", mu=measured.mu)
         rocking.simulate(RECT, motion, model="isolated")  # Eq 4: nothing to say
+
+
+def test_info_states_the_restitution_used():
+    """Response.info['restitution'] is the momentum balance's (the reference's) or the
+    given mu."""
+    r = rocking.simulate(RECT, OneSine(0.5, 1.0), model="isolated", mass_ratio=2.0)
+    assert r.info["restitution"] == pytest.approx(isolated_restitution(RECT, 2.0), rel=1e-14)
+    r = rocking.simulate(RECT, OneSine(0.5, 1.0), model="isolated", mu=0.9)
+    assert r.info["restitution"] == 0.9

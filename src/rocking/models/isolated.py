@@ -740,3 +740,11 @@ class Isolated(Model):
         return tuple(float(x) for x in (alpha, p, mu, R, lam, gam, iso, c1, c2, veps, clear,
                                         min(h, o.max_step), o.rest_tol, o.rtol, mu_given,
                                         ws2))
+
+    def info(self, dt_out=None):
+        """The options, and ``restitution``: the impact restitution used (``mu``, or the
+        one derived from the momentum of block and plate)."""
+        alpha, p, R = self.block_row(self.block)
+        mu_given = math.nan if self.options.mu is None else float(self.options.mu)
+        _, mu = block_terms(alpha, p, R, 1.0 / (1.0 + self.options.mass_ratio), mu_given)
+        return {**super().info(dt_out), "restitution": float(mu)}
