@@ -17,7 +17,10 @@ every function returns a tidy :class:`pandas.DataFrame` or a result object with 
   (:class:`MitigationComparison`, :func:`plot_mitigations`; issue 19);
 * :func:`direction_sweep`: a 3-D body's planar analysis in every direction under two
   horizontal components, and its worst direction (:class:`DirectionSweep`), and
-  :func:`direction_fragility`, a fragility curve per direction (issue 20).
+  :func:`direction_fragility`, a fragility curve per direction (issue 20);
+* :class:`HazardCurve` (OpenQuake export, CSV, EN 1998-1 code value), :func:`risk` (annual
+  frequency with power-law tails, probability in 50 years), :func:`probability_in`,
+  :func:`plot_risk` (issue 21).
 """
 
 from .damage import DEFAULT_THRESHOLDS, FragilityCurves, damage_state, fragility_curves
@@ -31,6 +34,7 @@ from .directions import (
 from .fourier import FourierSpectrum, fourier_spectrum
 from .fragility import FragilityFit, annual_frequency, fragility, fragility_ida
 from .harmonic import motion_space, plot_motion_space
+from .hazard import HazardCurve, Risk, plot_risk, probability_in, risk
 from .ida import ida, ida_capacity, plot_ida
 from .mitigation import MitigationComparison, compare_mitigations, plot_mitigations
 from .montecarlo import MonteCarloResult, monte_carlo, wilson_interval
@@ -51,5 +55,5 @@ __all__ = [
     "fourier_spectrum", "FourierSpectrum", "overturning_spectrum", "outcome_map",
     "plot_overturning_spectrum", "plot_outcome_map", "pulse_motion", "PULSES",
     "direction_sweep", "DirectionSweep", "plot_sweeps", "direction_fragility",
-    "DirectionFragility",
+    "DirectionFragility", "HazardCurve", "Risk", "risk", "probability_in", "plot_risk",
 ]

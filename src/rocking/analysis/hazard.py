@@ -1,0 +1,436 @@
+"""Seismic hazard curves and the risk of a fragility over a service life (issue 21).
+
+A :class:`HazardCurve` is the annual rate of exceeding an intensity measure (IM), with the
+IM's name and unit. It is built from
+
+* an OpenQuake engine export (:meth:`HazardCurve.from_openquake`, the documented
+  ``hazard_curve-<kind>-<IMT>_<id>.csv``: probabilities of exceedance ``poe`` in the
+  investigation time ``T`` become rates ``-ln(1 - poe) / T``);
+* a plain CSV of IM and annual rate or return period (:meth:`HazardCurve.from_csv`);
+* a code value (:meth:`HazardCurve.from_code_value`): EN 1998-1 (2004) 2.1(4) note,
+  ``lambda(a) = (1/475) (a / a_475)^-k`` with k of the order of 3 -- an approximation,
+  flagged ``approximate=True`` and labelled so.
+
+:func:`risk` integrates a fragility against the curve over the whole IM range
+(Cornell et al. 2002, ``lambda_f = integral P(f | im) |d lambda / d im| d im``). Tail model:
+beyond its first and last points the curve is extended as a power law with the log-log
+slope of its two end points, so the integral runs from 0 to infinity; the share of the
+result that comes from these extrapolated tails is reported (``tail_share``).
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import ParameterError
+from ..plot import PALETTE, figure, im_label, style_axes
+from .fragility import IM_UNITS
+
+#: Reference return periods of EN 1998-1 (no-collapse and a rarer check), years.
+RETURN_PERIODS = (475.0, 2475.0)
+
+
+def _unit_factor(unit: str):
+    """``(kind, SI value of one unit)`` of an IM unit, None if unknown."""
+    for key in (unit, unit.replace(" ", ""), unit.replace(" ", "").lower()):
+        if key in IM_UNITS:
+            return IM_UNITS[key]
+    return None
+
+
+def _positive(name: str, value) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} must be a number > 0, got {value!r}") from None
+    if not math.isfinite(v) or v <= 0:
+        raise ParameterError(f"{name} must be a finite number > 0, got {value!r}")
+    return v
+
+
+def probability_in(t_years, annual_frequency):
+    """Probability of at least one event in ``t_years`` for a Poisson process of annual
+    rate ``annual_frequency``: ``1 - exp(-lambda t)``."""
+    t = np.asarray(t_years, dtype=float)
+    lam = np.asarray(annual_frequency, dtype=float)
+    if np.any(~np.isfinite(t)) or np.any(t < 0):
+        raise ParameterError(f"t_years must be finite and >= 0, got {t_years!r}")
+    if np.any(~np.isfinite(lam)) or np.any(lam < 0):
+        raise ParameterError(f"annual_frequency must be finite and >= 0, got "
+                             f"{annual_frequency!r}")
+    p = -np.expm1(-lam * t)
+    return float(p) if p.ndim == 0 else p
+
+
+class HazardCurve:
+    """Annual rate of exceeding an IM: ``rate[i]`` is the rate of ``IM > im[i]``.
+
+    ``im`` > 0 strictly increasing in ``unit``; ``rate`` > 0 and non-increasing (not
+    constant). Interpolated log-log between points; beyond its ends (:meth:`rate_at`,
+    :func:`risk`) extended as a power law with the slope of the two end points.
+    ``approximate`` flags a curve that is not a hazard model's output (a code value).
+    """
+
+    def __init__(self, im, rate, *, im_name: str, unit: str, label: str = "",
+                 approximate: bool = False):
+        x = np.atleast_1d(np.asarray(im, dtype=float)).ravel()
+        lam = np.atleast_1d(np.asarray(rate, dtype=float)).ravel()
+        if x.size < 2:
+            raise ParameterError(f"im must have at least 2 points, got {x.size}")
+        if lam.size != x.size:
+            raise ParameterError(f"im and rate must have the same length, got {x.size} "
+                                 f"and {lam.size}")
+        if not np.all(np.isfinite(x)) or np.any(x <= 0):
+            raise ParameterError("im must be finite and > 0 (log-log interpolation)")
+        if not np.all(np.diff(x) > 0):
+            raise ParameterError("im must be strictly increasing")
+        if not np.all(np.isfinite(lam)) or np.any(lam <= 0):
+            raise ParameterError("rate must be finite and > 0 (annual rates of exceedance)")
+        if np.any(np.diff(lam) > 0) or lam[0] == lam[-1]:
+            raise ParameterError("rate must be non-increasing with im (a rate of "
+                                 "exceedance) and not constant")
+        if not isinstance(im_name, str) or not im_name.strip():
+            raise ParameterError(f"im_name must be a non-empty string such as 'PGA', got "
+                                 f"{im_name!r}")
+        if not isinstance(unit, str) or _unit_factor(unit.strip()) is None:
+            raise ParameterError(f"unit must be one of {sorted(IM_UNITS)}, got {unit!r}")
+        self.im, self.rate = x, lam
+        self.im_name, self.unit = im_name.strip(), unit.strip()
+        self.approximate = bool(approximate)
+        lab = str(label)
+        if self.approximate and "approximat" not in lab.lower():
+            lab = (lab + " " if lab else "") + "(approximation)"
+        self.label = lab
+
+    def __repr__(self) -> str:
+        approx = ", approximate" if self.approximate else ""
+        return (f"HazardCurve({self.label!r}, {self.im_name} in {self.unit}, "
+                f"{self.im.size} points {self.im[0]:.4g}..{self.im[-1]:.4g}{approx})")
+
+    @property
+    def return_periods(self) -> np.ndarray:
+        """Return period ``1 / rate`` of each point (years)."""
+        return 1.0 / self.rate
+
+    @property
+    def tail_slopes(self) -> tuple[float, float]:
+        """Log-log slopes ``k = -d ln(rate) / d ln(im)`` of the power-law extensions
+        below the first and above the last point."""
+        u, ll = np.log(self.im), np.log(self.rate)
+        return float(-(ll[1] - ll[0]) / (u[1] - u[0])), \
+            float(-(ll[-1] - ll[-2]) / (u[-1] - u[-2]))
+
+    def _log_rate(self, u):
+        """ln(rate) at ln(im) ``u``, log-log interpolated, power-law extended."""
+        lu, ll = np.log(self.im), np.log(self.rate)
+        k0, k1 = self.tail_slopes
+        u = np.asarray(u, dtype=float)
+        out = np.interp(u, lu, ll)
+        out = np.where(u < lu[0], ll[0] - k0 * (u - lu[0]), out)
+        return np.where(u > lu[-1], ll[-1] - k1 * (u - lu[-1]), out)
+
+    def rate_at(self, x):
+        """Annual rate of exceeding ``x`` (in the curve's unit); power law beyond the
+        curve's ends."""
+        xa = np.asarray(x, dtype=float)
+        if np.any(~np.isfinite(xa)) or np.any(xa <= 0):
+            raise ParameterError(f"x must be finite and > 0, got {x!r}")
+        r = np.exp(self._log_rate(np.log(xa)))
+        return float(r) if r.ndim == 0 else r
+
+    def im_at_return_period(self, T):
+        """The IM exceeded once in ``T`` years on average (rate ``1/T``), log-log
+        interpolated; power law beyond the curve's ends (flat parts are refused)."""
+        Ta = np.asarray(T, dtype=float)
+        if np.any(~np.isfinite(Ta)) or np.any(Ta <= 0):
+            raise ParameterError(f"T must be a return period > 0 (years), got {T!r}")
+        target = -np.log(Ta)
+        lu, ll = np.log(self.im), np.log(self.rate)
+        k0, k1 = self.tail_slopes
+        # ll is non-increasing: interpolate on the reversed arrays, keeping strict drops
+        keep = np.r_[True, np.diff(ll) < 0]
+        out = np.interp(-target, -ll[keep], lu[keep])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            lo = lu[0] - (target - ll[0]) / k0
+            hi = lu[-1] - (target - ll[-1]) / k1
+        out = np.where(target > ll[0], lo, out)
+        out = np.where(target < ll[-1], hi, out)
+        if np.any(~np.isfinite(out)):
+            raise ParameterError(f"T={T!r} is beyond a flat end of the hazard curve")
+        r = np.exp(out)
+        return float(r) if r.ndim == 0 else r
+
+    def to_unit(self, unit: str) -> HazardCurve:
+        """The same curve with its IM in ``unit`` (same kind of quantity)."""
+        a, b = _unit_factor(self.unit), _unit_factor(str(unit).strip())
+        if b is None or a[0] != b[0]:
+            raise ParameterError(f"unit must be a {a[0]} unit like {self.unit!r}, got "
+                                 f"{unit!r}")
+        return HazardCurve(self.im * a[1] / b[1], self.rate, im_name=self.im_name,
+                           unit=str(unit).strip(), label=self.label,
+                           approximate=self.approximate)
+
+    # ------------------------------------------------------------------ constructors
+
+    @classmethod
+    def from_code_value(cls, pga_475, k: float = 3.0, *, unit: str = "g",
+                        im_name: str = "PGA", pga_2475=None, points: int = 30,
+                        label: str = ""):
+        """EN 1998-1 2.1(4) note: ``lambda(a) = (1/475) (a / a_475)^-k``, k of the order of
+        3; with ``pga_2475`` the slope is that of the two return periods,
+        ``k = ln(2475/475) / ln(a_2475 / a_475)``. Flagged ``approximate``."""
+        a = _positive("pga_475", pga_475)
+        if pga_2475 is not None:
+            a2 = _positive("pga_2475", pga_2475)
+            if a2 <= a:
+                raise ParameterError(f"pga_2475 must exceed pga_475 ({a}), got {pga_2475!r}")
+            k = math.log(2475.0 / 475.0) / math.log(a2 / a)
+        k = _positive("k", k)
+        x = a * np.logspace(-1.0, 1.0, int(points))
+        lab = label or (f"EN 1998-1 power law: {im_name} {a:g} {unit} at 475 years, "
+                        f"k={k:.3g} (approximation)")
+        return cls(x, (x / a) ** -k / 475.0, im_name=im_name, unit=unit, label=lab,
+                   approximate=True)
+
+    @classmethod
+    def from_csv(cls, path, *, im_name: str | None = None, unit: str | None = None,
+                 label: str = ""):
+        """A CSV with two columns: the IM and the annual rate of exceedance, or the return
+        period (a second header containing ``period`` or ``_T``/``T``; else a rate). The
+        IM unit is taken from the first header (``pga_g``, ``PGA (g)``, ``PGA [m/s^2]``)
+        unless given as ``unit``; lines starting with ``#`` are skipped."""
+        p = Path(path)
+        if not p.is_file():
+            raise ParameterError(f"path: no such hazard-curve file {str(path)!r}")
+        rows = [r for r in csv.reader(line for line in p.read_text().splitlines()
+                                      if line.strip() and not line.lstrip().startswith("#"))]
+        if len(rows) < 3 or len(rows[0]) < 2:
+            raise ParameterError(f"{p.name}: a header and at least 2 rows of two columns "
+                                 "(IM, annual rate or return period) are needed")
+        h_im, h_y = rows[0][0].strip(), rows[0][1].strip()
+        m = re.match(r"^\s*([A-Za-z][\w().]*?)\s*(?:[\[(]\s*([^\])]+)\s*[\])]|_(g|mps2|"
+                     r"m/s\^?2|cm/s\^?2|gal))?\s*$", h_im)
+        name = im_name or (m.group(1) if m else h_im) or "IM"
+        head_unit = (m.group(2) or m.group(3)) if m else None
+        if unit is None and head_unit is None:
+            raise ParameterError(f"unit: {p.name}'s IM header {h_im!r} states no unit; "
+                                 "give unit='g' or write it as 'PGA (g)'")
+        u = (unit or head_unit).strip()
+        if unit and head_unit and _unit_factor(head_unit) != _unit_factor(unit):
+            raise ParameterError(f"unit={unit!r} contradicts the header {h_im!r}")
+        try:
+            data = np.array([[float(r[0]), float(r[1])] for r in rows[1:]])
+        except (ValueError, IndexError):
+            raise ParameterError(f"{p.name}: every row must hold two numbers") from None
+        low = h_y.lower()
+        is_period = "period" in low or re.search(r"(^|[_\s(])t($|[_\s(])", low) is not None
+        y = 1.0 / data[:, 1] if is_period else data[:, 1]
+        if is_period and np.any(data[:, 1] <= 0):
+            raise ParameterError(f"{p.name}: return periods must be > 0")
+        return cls(data[:, 0], y, im_name=name, unit=u, label=label or p.name)
+
+    @classmethod
+    def from_openquake(cls, path, site=0, *, label: str = ""):
+        """An OpenQuake engine hazard-curve export (``hazard_curve-<kind>-<IMT>_<id>.csv``):
+        a first comment line of ``key=value`` metadata (``investigation_time``, ``imt``),
+        then the header ``lon,lat,depth,poe-<level>,...`` and one row per site.
+        ``poe`` in ``investigation_time`` T becomes ``rate = -ln(1 - poe) / T``.
+        ``site``: a row index, or ``(lon, lat)`` for the nearest site (great circle).
+        PGA and SA(T) levels are in g."""
+        p = Path(path)
+        if not p.is_file():
+            raise ParameterError(f"path: no such OpenQuake file {str(path)!r}")
+        lines = p.read_text().splitlines()
+        if not lines or not lines[0].lstrip().startswith("#"):
+            raise ParameterError(f"{p.name}: not an OpenQuake hazard-curve export (no "
+                                 "first comment line of metadata)")
+        meta = dict(re.findall(r"(\w+)\s*=\s*'?([^,']*)'?", lines[0].lstrip("# ")))
+        try:
+            T = float(meta["investigation_time"])
+        except (KeyError, ValueError):
+            raise ParameterError(f"{p.name}: the metadata line states no "
+                                 "investigation_time") from None
+        imt = meta.get("imt", "").strip()
+        if not imt:
+            mt = re.search(r"hazard_curve-[^-]+-(.+?)_\d+\.csv$", p.name)
+            imt = mt.group(1) if mt else ""
+        if not re.fullmatch(r"PGA|SA\([0-9.]+\)", imt):
+            raise ParameterError(f"{p.name}: IMT {imt!r} is not PGA or SA(T) (in g)")
+        rows = list(csv.reader(lines[1:]))
+        header = [h.strip() for h in rows[0]]
+        if header[:2] != ["lon", "lat"]:
+            raise ParameterError(f"{p.name}: header must start with lon,lat, got "
+                                 f"{header[:3]}")
+        cols = [i for i, h in enumerate(header) if h.startswith("poe-")]
+        if not cols:
+            raise ParameterError(f"{p.name}: no poe-<level> columns")
+        levels = np.array([float(header[i][4:]) for i in cols])
+        data = [r for r in rows[1:] if r]
+        if isinstance(site, (tuple, list)):
+            if len(site) != 2:
+                raise ParameterError(f"site must be an index or (lon, lat), got {site!r}")
+            lon0, lat0 = np.radians([float(site[0]), float(site[1])])
+            lon = np.radians([float(r[0]) for r in data])
+            lat = np.radians([float(r[1]) for r in data])
+            hav = (np.sin((lat - lat0) / 2) ** 2
+                   + np.cos(lat) * np.cos(lat0) * np.sin((lon - lon0) / 2) ** 2)
+            idx = int(np.argmin(hav))
+        else:
+            if isinstance(site, bool) or not isinstance(site, (int, np.integer)) \
+                    or not 0 <= site < len(data):
+                raise ParameterError(f"site must be an index 0..{len(data) - 1} or "
+                                     f"(lon, lat), got {site!r}")
+            idx = int(site)
+        row = data[idx]
+        poe = np.array([float(row[i]) for i in cols])
+        if np.any(~np.isfinite(poe)) or np.any(poe < 0) or np.any(poe > 1):
+            raise ParameterError(f"{p.name}: poe must be in [0, 1]")
+        # poe = 1 (infinite rate) and poe = 0 levels carry no rate: dropped and recorded
+        keep = (poe > 0) & (poe < 1)
+        rate = np.full(poe.shape, np.nan)
+        rate[keep] = -np.log1p(-poe[keep]) / T
+        if keep.sum() < 2:
+            raise ParameterError(f"{p.name}: site {idx} has fewer than 2 non-zero poe")
+        lab = label or (f"OpenQuake {imt} at ({row[0].strip()}, {row[1].strip()}), "
+                        f"{meta.get('kind', p.name)}")
+        curve = cls(levels[keep], rate[keep], im_name=imt, unit="g", label=lab)
+        curve.metadata = {**meta, "site_index": idx, "lon": float(row[0]),
+                          "lat": float(row[1]),
+                          "dropped_levels": [float(v) for v in levels[~keep]]}
+        return curve
+
+
+# --------------------------------------------------------------------------- risk
+
+@dataclass(frozen=True)
+class Risk:
+    """The risk of one fragility under one hazard curve (:func:`risk`)."""
+
+    annual_frequency: float
+    tail_share: float
+    probability_50: float
+    label: str = ""
+
+    def probability_in(self, t_years):
+        """Probability in ``t_years`` (``1 - exp(-lambda t)``)."""
+        return probability_in(t_years, self.annual_frequency)
+
+
+def _im_key(name: str) -> str:
+    return re.sub(r"[\s_]", "", str(name)).lower()
+
+
+def _fit_factor(fit, curve: HazardCurve) -> float:
+    """Factor taking the curve's IM into the fit's unit; refuses a mismatch."""
+    own = getattr(fit, "im_unit", None)
+    if not own:
+        raise ParameterError("fit states no im_unit: fit it with im_unit= (e.g. 'm/s^2') "
+                             "so that its IM can be checked against the hazard curve's "
+                             f"({curve.im_name} in {curve.unit})")
+    name = getattr(fit, "im_name", "im")
+    if _im_key(name) != _im_key(curve.im_name):
+        raise ParameterError(f"the fit's IM is {name!r} and the hazard curve's is "
+                             f"{curve.im_name!r}: they must be the same IM")
+    a, b = _unit_factor(curve.unit), _unit_factor(own)
+    if b is None or a[0] != b[0]:
+        raise ParameterError(f"the fit's IM unit {own!r} is not a {a[0]} unit like the "
+                             f"hazard curve's {curve.unit!r}")
+    return a[1] / b[1]
+
+
+def risk(fit, curve: HazardCurve, *, t_years: float = 50.0):
+    """Annual frequency of the state of ``fit`` under ``curve`` over the whole IM range
+    (Cornell et al. 2002), the share from the power-law tails beyond the curve's ends, and
+    the probability in ``t_years`` (``Risk.probability_50`` for the default 50).
+
+    ``lambda_f = integral_0^inf P(f | im) |d lambda / d im| d im``, computed in ``ln im``
+    with ``scipy.integrate.quad``. The IM names must agree and the units be of the same
+    kind (g and m/s^2 are converted). ``fit``: a :class:`FragilityFit` (one :class:`Risk`)
+    or damage-state curves with ``fits`` (a list, one per state)."""
+    from scipy.integrate import quad
+    from scipy.stats import norm
+
+    if not isinstance(curve, HazardCurve):
+        raise ParameterError(f"curve must be a HazardCurve, got {type(curve).__name__}")
+    fits = getattr(fit, "fits", None)
+    if fits is not None:
+        return [risk(f, curve, t_years=t_years) for f in fits]
+    if not callable(getattr(fit, "probability", None)):
+        raise ParameterError(f"fit must be a FragilityFit, got {type(fit).__name__}")
+    t_years = _positive("t_years", t_years)
+    c = _fit_factor(fit, curve)
+    lu = np.log(curve.im)
+    ll = np.log(curve.rate)
+    slopes = -np.diff(ll) / np.diff(lu)
+    k0, k1 = curve.tail_slopes
+
+    lognormal = hasattr(fit, "median") and hasattr(fit, "beta")
+
+    def integrand(u, k):
+        # |d lambda / d ln im| = k lambda(im) on a power-law piece of slope k; in logs,
+        # so that the tails (lambda -> inf, P -> 0 as im -> 0) do not overflow
+        if lognormal:
+            logp = float(norm.logcdf((u + math.log(c) - math.log(fit.median)) / fit.beta))
+        else:
+            x = math.exp(u) * c
+            if not 0.0 < x < math.inf:
+                return 0.0
+            pv = float(fit.probability(x))
+            logp = math.log(pv) if pv > 0 else -math.inf
+        v = logp + math.log(k) + float(curve._log_rate(u))
+        return math.exp(v) if v > -745.0 else 0.0
+
+    opts = {"epsabs": 0.0, "epsrel": 1e-11, "limit": 200}
+    inner = sum(quad(integrand, lu[i], lu[i + 1], args=(slopes[i],), **opts)[0]
+                for i in range(lu.size - 1) if slopes[i] > 0)
+    low = quad(integrand, -np.inf, lu[0], args=(k0,), **opts)[0] if k0 > 0 else 0.0
+    high = quad(integrand, lu[-1], np.inf, args=(k1,), **opts)[0] if k1 > 0 else 0.0
+    total = inner + low + high
+    share = (low + high) / total if total > 0 else 0.0
+    return Risk(total, share, probability_in(t_years, total),
+                label=getattr(fit, "label", ""))
+
+
+def plot_risk(curve: HazardCurve, fit, ax=None):
+    """Hazard curve, fragility and the risk integrand ``P(f|im) |d lambda/d ln im|`` (which
+    IM levels contribute), on a common IM axis in the curve's unit. Returns the Figure."""
+    c = _fit_factor(fit, curve)
+    res = risk(fit, curve)
+    if ax is None:
+        fig, ax = figure((7.0, 4.0))
+    else:
+        fig = ax.figure
+    lo = min(curve.im[0], fit.median / c * math.exp(-4 * fit.beta))
+    hi = max(curve.im[-1], fit.median / c * math.exp(4 * fit.beta))
+    x = np.logspace(math.log10(lo), math.log10(hi), 300)
+    lam = curve.rate_at(x)
+    inside = (x >= curve.im[0]) & (x <= curve.im[-1])
+    ax.loglog(x[inside], lam[inside], color=PALETTE[0], label=curve.label or "hazard")
+    ax.loglog(x, np.where(inside, np.nan, lam), color=PALETTE[0], ls=":",
+              label="power-law tails (extrapolated)")
+    ax.plot(curve.im, curve.rate, "o", ms=3, color=PALETTE[0])
+    style_axes(ax, im_label(curve.im_name, curve.unit), "annual rate of exceedance")
+    ax2 = ax.twinx()
+    pf = np.asarray(fit.probability(x * c), dtype=float)
+    u = np.log(x)
+    dlam = -np.gradient(np.log(lam), u) * lam
+    dens = pf * dlam
+    ax2.plot(x, pf, color=PALETTE[1], label=f"fragility {fit.label}".strip())
+    peak = dens.max() if dens.max() > 0 else 1.0
+    ax2.fill_between(x, 0, dens / peak, color=PALETTE[2], alpha=0.3,
+                     label="integrand P(f|im) |dλ/d ln im| (scaled)")
+    ax2.set_ylim(0, 1.05)
+    ax2.set_ylabel("probability / relative contribution")
+    h1, l1 = ax.get_legend_handles_labels()
+    h2, l2 = ax2.get_legend_handles_labels()
+    ax.legend(h1 + h2, l1 + l2, fontsize=7, loc="lower left")
+    ax.set_title(f"annual frequency {res.annual_frequency:.3g}/yr (tails "
+                 f"{100 * res.tail_share:.0f}%), P(50 yr) {res.probability_50:.3g}",
+                 fontsize=9)
+    return fig

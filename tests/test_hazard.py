@@ -1,0 +1,182 @@
+"""Hazard curves (OpenQuake export, CSV, EN 1998-1 code value) and risk (issue 21)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.stats import norm
+
+from rocking.analysis import HazardCurve, plot_risk, probability_in, risk
+from rocking.analysis.fragility import FragilityFit
+from rocking.errors import ParameterError
+from rocking.units import G
+
+
+def lognormal_fit(median, beta, *, im_name="PGA", im_unit="g"):
+    """A FragilityFit with a given median and beta (no data)."""
+    b1 = 1.0 / beta
+    coef = np.array([-math.log(median) * b1, b1])
+    return FragilityFit(median, beta, 0.0, 0.0, np.zeros((2, 2)), coef, np.zeros((2, 2)),
+                        "given", im_name=im_name, im_unit=im_unit)
+
+
+def cornell(k0, k, median, beta):
+    """Cornell et al. (2002): integral of a lognormal fragility against k0 a^-k."""
+    return k0 * median ** -k * math.exp(k * k * beta * beta / 2)
+
+
+def write_openquake(path, levels, sites, T=50.0, imt="PGA"):
+    """An OpenQuake hazard-curve export in its documented layout."""
+    meta = (f"#,,,,,\"generated_by='OpenQuake engine 3.16', start_date='2026-01-01', "
+            f"checksum=1, kind='mean', investigation_time={T}, imt='{imt}'\"")
+    lines = [meta, ",".join(["lon", "lat", "depth"] + [f"poe-{lv}" for lv in levels])]
+    for lon, lat, poe in sites:
+        lines.append(",".join([f"{lon}", f"{lat}", "0.0"] + [repr(float(p)) for p in poe]))
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+# ------------------------------------------------------------------ the curve
+
+
+def test_power_law_interpolation_and_return_period_inverse():
+    k0, k = 1e-4, 2.7
+    x = np.array([0.05, 0.1, 0.2, 0.4, 0.8])
+    c = HazardCurve(x, k0 * x ** -k, im_name="PGA", unit="g")
+    xs = np.array([0.01, 0.07, 0.3, 2.0])            # inside and beyond both ends
+    assert np.allclose(c.rate_at(xs), k0 * xs ** -k, rtol=1e-12)
+    assert np.allclose(c.return_periods, 1 / c.rate)
+    for T in (10.0, 475.0, 2475.0, 1e6):
+        a = c.im_at_return_period(T)
+        assert c.rate_at(a) == pytest.approx(1 / T, rel=1e-10)
+
+
+@pytest.mark.parametrize("kw, name", [
+    ({"im": [0.1, 0.1], "rate": [1e-2, 1e-3]}, "im"),
+    ({"im": [-0.1, 0.2], "rate": [1e-2, 1e-3]}, "im"),
+    ({"im": [0.1, 0.2], "rate": [1e-3, 1e-2]}, "rate"),
+    ({"im": [0.1, 0.2], "rate": [0.0, 0.0]}, "rate"),
+    ({"im": [0.1, 0.2], "rate": [1e-2, 1e-3], "unit": "furlongs"}, "unit"),
+])
+def test_bad_curves_refused_naming_the_argument(kw, name):
+    kw = {"im_name": "PGA", "unit": "g", **kw}
+    with pytest.raises(ParameterError, match=name):
+        HazardCurve(kw.pop("im"), kw.pop("rate"), **kw)
+
+
+def test_code_value_passes_through_its_anchor_and_is_labelled():
+    c = HazardCurve.from_code_value(0.25, k=3.0)
+    assert c.rate_at(0.25) == pytest.approx(1 / 475, rel=1e-12)
+    assert c.im_at_return_period(475) == pytest.approx(0.25, rel=1e-12)
+    # slope k: doubling the PGA divides the rate by 2^k
+    assert c.rate_at(0.5) / c.rate_at(0.25) == pytest.approx(2.0 ** -3, rel=1e-12)
+    assert c.approximate and "approximation" in c.label and "approximate" in repr(c)
+    two = HazardCurve.from_code_value(0.25, pga_2475=0.45)
+    assert two.im_at_return_period(475) == pytest.approx(0.25, rel=1e-12)
+    assert two.im_at_return_period(2475) == pytest.approx(0.45, rel=1e-12)
+
+
+def test_csv_rate_or_return_period(tmp_path):
+    x = np.array([0.05, 0.1, 0.2, 0.4])
+    lam = 1e-4 * x ** -2.5
+    (tmp_path / "a.csv").write_text("PGA (g),annual_rate\n" + "\n".join(
+        f"{a},{float(r)!r}" for a, r in zip(x, lam, strict=True)))
+    (tmp_path / "b.csv").write_text("# site\npga_g,return_period\n" + "\n".join(
+        f"{a},{float(1 / r)!r}" for a, r in zip(x, lam, strict=True)))
+    a = HazardCurve.from_csv(tmp_path / "a.csv")
+    b = HazardCurve.from_csv(tmp_path / "b.csv")
+    for c in (a, b):
+        assert c.unit == "g" and c.im_name.lower() == "pga"
+        assert np.allclose(c.rate, lam, rtol=1e-12)
+    (tmp_path / "c.csv").write_text("PGA,rate\n0.1,1e-2\n0.2,1e-3\n")
+    with pytest.raises(ParameterError, match="unit"):
+        HazardCurve.from_csv(tmp_path / "c.csv")
+    assert HazardCurve.from_csv(tmp_path / "c.csv", unit="g").unit == "g"
+
+
+def test_openquake_rates_from_poe_and_site_choice(tmp_path):
+    levels = [0.05, 0.1, 0.2, 0.4, 0.8]
+    T = 50.0
+    lam_a = 2e-4 * np.array(levels) ** -2.0
+    lam_b = 5e-5 * np.array(levels) ** -3.0
+    sites = [(13.40, 42.35, -np.expm1(-lam_a * T)), (14.25, 40.85, -np.expm1(-lam_b * T))]
+    # a first level whose poe is 1 (saturated: infinite rate) is dropped, and recorded
+    sat = [(lon, lat, np.r_[1.0, poe]) for lon, lat, poe in sites]
+    f = write_openquake(tmp_path / "hazard_curve-mean-PGA_22.csv", [0.001] + levels, sat,
+                        T=T)
+    c0 = HazardCurve.from_openquake(f)
+    assert c0.im_name == "PGA" and c0.unit == "g"
+    assert c0.metadata["dropped_levels"] == [0.001]
+    assert np.allclose(c0.im, levels) and np.allclose(c0.rate, lam_a, rtol=1e-8)
+    c1 = HazardCurve.from_openquake(f, site=(14.3, 40.9))      # nearest is the second
+    assert np.allclose(c1.rate, lam_b, rtol=1e-8)
+    assert HazardCurve.from_openquake(f, site=1).metadata["lat"] == 40.85
+    with pytest.raises(ParameterError, match="site"):
+        HazardCurve.from_openquake(f, site=2)
+    g = write_openquake(tmp_path / "hazard_curve-mean-SA(0.3)_22.csv", levels, sites[:1],
+                        T=1.0, imt="SA(0.3)")
+    s = HazardCurve.from_openquake(g)
+    assert s.im_name == "SA(0.3)"
+    assert np.allclose(s.rate, T * lam_a, rtol=1e-8)       # the same poe read with T = 1 yr
+
+
+# ------------------------------------------------------------------ risk
+
+
+@pytest.mark.parametrize("k, median, beta", [(3.0, 0.4, 0.5), (2.2, 0.15, 0.3)])
+def test_risk_equals_cornell_closed_form_including_tails(k, median, beta):
+    """A power law k0 a^-k given only on a short range: the tails carry most of the risk
+    and the power-law extension restores the closed form."""
+    k0 = 1e-4
+    x = np.array([0.1, 0.15, 0.2])
+    c = HazardCurve(x, k0 * x ** -k, im_name="PGA", unit="g")
+    r = risk(lognormal_fit(median, beta), c)
+    exact = cornell(k0, k, median, beta)
+    assert r.annual_frequency == pytest.approx(exact, rel=1e-6)
+    assert 0.0 < r.tail_share < 1.0
+    assert r.probability_50 == pytest.approx(1 - math.exp(-50 * exact), rel=1e-6)
+
+
+def test_units_converted_and_mismatches_refused():
+    k0, k, median, beta = 1e-4, 3.0, 0.3, 0.4
+    x = np.array([0.05, 0.1, 0.2, 0.4])
+    c = HazardCurve(x, k0 * x ** -k, im_name="PGA", unit="g")
+    in_si = risk(lognormal_fit(median * G, beta, im_unit="m/s^2"), c)
+    assert in_si.annual_frequency == pytest.approx(cornell(k0, k, median, beta), rel=1e-6)
+    with pytest.raises(ParameterError, match="IM"):
+        risk(lognormal_fit(median, beta, im_name="PGV"), c)
+    with pytest.raises(ParameterError, match="unit"):
+        risk(lognormal_fit(median, beta, im_unit="m/s"), c)
+    with pytest.raises(ParameterError, match="im_unit"):
+        risk(lognormal_fit(median, beta, im_unit=None), c)
+
+
+def test_general_curve_agrees_with_direct_quadrature():
+    """A curved (non power-law) hazard: risk() equals an independent trapezoid sum of
+    lambda(a) dP/da over a fine grid (the curve's own power-law tails included)."""
+    x = np.array([0.02, 0.05, 0.1, 0.2, 0.4, 0.8, 1.5])
+    lam = 1e-2 * np.exp(-2.0 * np.log(x / 0.02) - 0.3 * np.log(x / 0.02) ** 2)
+    c = HazardCurve(x, lam, im_name="PGA", unit="g")
+    fit = lognormal_fit(0.35, 0.45)
+    a = np.logspace(-6, 3, 400001)
+    # integration by parts: integral P |d lambda| = integral lambda dP (P(0)=0, lambda(inf)=0)
+    f = c.rate_at(a) * norm.pdf(np.log(a / 0.35) / 0.45) / (0.45 * a)
+    direct = np.sum(0.5 * (f[1:] + f[:-1]) * np.diff(a))
+    assert risk(fit, c).annual_frequency == pytest.approx(direct, rel=1e-5)
+
+
+def test_probability_in_is_poisson():
+    assert probability_in(50, 1 / 475) == pytest.approx(1 - math.exp(-50 / 475))
+    assert probability_in(0, 1.0) == 0.0
+    # small rates: lambda t
+    assert probability_in(50, 1e-9) == pytest.approx(5e-8, rel=1e-6)
+    with pytest.raises(ParameterError, match="t_years"):
+        probability_in(-1, 1e-3)
+
+
+def test_plot_risk_returns_a_figure():
+    c = HazardCurve.from_code_value(0.25)
+    fig = plot_risk(c, lognormal_fit(0.5, 0.4))
+    assert len(fig.axes) == 2
