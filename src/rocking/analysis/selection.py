@@ -1,0 +1,424 @@
+r"""Selection of amplitude-scaled records that match a target spectrum (issue 21).
+
+EN 1998-1 §3.2.3.1.2 asks for a set of records (at least 3; 7 to use the mean response)
+whose **mean** 5 %-damped elastic spectrum is **not below 90 %** of the target spectrum at
+any period of the range of interest. :func:`select_records` chooses ``n`` of the candidates,
+each multiplied by its own amplitude scale factor ``s_i`` in ``[1/max_scale, max_scale]``:
+
+1. the pseudo-acceleration spectrum of every candidate (m/s^2, 5 % damping,
+   :func:`rocking.motions.spectra.response_spectrum`: one compiled call per record for all
+   periods) is computed once; a 2-D array of precomputed spectra is accepted instead;
+2. forward (greedy) selection: records are added one at a time, each the one that gives
+   the least misfit of the running mean, at the better of two scales (its own best
+   scale, the geometric-mean ratio ``exp(mean ln(target / S_i))``, or the scale that best
+   fills the gap between the running sum and the target); all candidates at once,
+   vectorised over candidates and periods;
+3. the ``n`` scale factors are refined jointly (bounded least squares on ``ln s``), then
+   one selected record is swapped for an unselected one while that lowers the misfit,
+   with a joint refinement after each pass of swaps; the whole search is repeated from
+   each of the ``restarts`` best single records (default 8) and the best set kept, then
+   polished by swaps judged after a joint refinement of all scales;
+4. (the scales stay in ``[1/max_scale, max_scale]`` throughout);
+5. if the mean falls below 90 % of the target somewhere, all factors are multiplied by a
+   common factor that lifts the minimum ratio to 0.9, when the bounds allow it.
+
+The misfit is the root-mean-square log ratio over the periods
+``sqrt(mean_k ln(mean_k / target_k)^2)`` (0 for a perfect match; 0.1 is about 10 %).
+When no factor within ``max_scale`` can honour the 90 % rule the set is returned with
+``compliant=False`` and a :class:`~rocking.errors.PlausibilityWarning` (the factors then
+raised as far as ``max_scale`` allows): never a silently non-compliant set. The search is a
+heuristic (the exact problem is combinatorial): it finds a set that matches the target
+exactly when one exists among well-separated distractors (``tests/test_selection.py``),
+not a proven optimum in general.
+
+**The period range of a rocking block** (:func:`default_periods`) is not a structural
+period. The overturning spectra of :mod:`rocking.analysis.overturning` (Dimitrakopoulos
+and DeJong 2012) are functions of ``omega_p / p`` only: a pulse of period ``T_p = 2 pi /
+omega_p`` overturns the block at an acceleration close to the static ``g tan alpha`` when
+``omega_p / p`` is below about 1 (long pulses: the block sees a slowly varying tilt), and
+at an acceleration that grows about in proportion to ``omega_p / p`` above it; beyond
+``omega_p / p`` of about 10 the required acceleration exceeds what earthquakes provide.
+The spectral ordinates that govern overturning are therefore those at periods from ``2 pi
+/ (10 p)`` to ``2 pi / p`` (and a little beyond, where the quasi-static bound holds): the
+default range is ``[2 pi / (omega_ratio_max p), 2 pi / (omega_ratio_min p)]`` with
+``omega_ratio_max = 10`` and ``omega_ratio_min = 1``, log-spaced.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from .._validate import as_float, as_int, positive
+from ..errors import ParameterError, PlausibilityWarning, UnitError
+from ..motions.base import is_sampled
+from ..motions.spectra import response_spectrum
+from ..units import acceleration_factor
+
+__all__ = ["select_records", "SelectionResult", "default_periods", "candidate_spectra",
+           "log_misfit", "CODE_RATIO"]
+
+CODE_RATIO = 0.9
+"""EN 1998-1 §3.2.3.1.2: the mean spectrum not below 90 % of the target in the range."""
+
+
+def default_periods(block, n: int = 100, omega_ratio_min: float = 1.0,
+                    omega_ratio_max: float = 10.0) -> np.ndarray:
+    """``n`` log-spaced periods (s) from ``2 pi / (omega_ratio_max p)`` to ``2 pi /
+    (omega_ratio_min p)``: the pulse periods that govern a block's overturning (module doc).
+
+    ``block`` is a :class:`~rocking.blocks.Block` (its ``p``, 1/s) or ``p`` itself."""
+    p = getattr(block, "p", block)
+    try:
+        p = positive("block", p, "1/s (the block's frequency parameter p)")
+    except ParameterError:
+        raise ParameterError(f"block must be a Block or its p > 0 (1/s); got {block!r}") from None
+    n = as_int("n", n, lo=2)
+    lo = positive("omega_ratio_min", omega_ratio_min)
+    hi = positive("omega_ratio_max", omega_ratio_max)
+    if not hi > lo:
+        raise ParameterError(f"omega_ratio_max must be > omega_ratio_min = {lo:g}; got {hi!r}")
+    return np.geomspace(2.0 * math.pi / (hi * p), 2.0 * math.pi / (lo * p), n)
+
+
+def _periods(periods) -> np.ndarray:
+    try:
+        T = np.asarray(periods, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ParameterError("periods must be numbers (s) > 0") from None
+    if T.ndim != 1 or T.size < 2:
+        raise ParameterError(f"periods must be a 1-D array of at least 2 periods (s); got "
+                             f"shape {T.shape}")
+    if not np.all(np.isfinite(T)) or np.any(T <= 0.0):
+        raise ParameterError("periods must be finite and > 0 s (the misfit is in log)")
+    return T
+
+
+def _target(target, T: np.ndarray, unit: str) -> np.ndarray:
+    """The target in m/s^2 at ``T`` from an array, a callable or a (periods, values) table."""
+    try:
+        f = acceleration_factor(unit)
+    except UnitError:
+        raise ParameterError(f"target_unit must be an acceleration unit (m/s^2, g, cm/s^2, "
+                             f"gal); got {unit!r}") from None
+    if callable(target):
+        vals = target(T)
+    elif isinstance(target, tuple) and len(target) == 2:
+        try:
+            tp = np.asarray(target[0], dtype=np.float64)
+            tv = np.asarray(target[1], dtype=np.float64)
+        except (TypeError, ValueError):
+            raise ParameterError("target_spectrum table must be (periods, values) of "
+                                 "numbers") from None
+        if tp.ndim != 1 or tp.shape != tv.shape or tp.size < 2 or np.any(np.diff(tp) <= 0) \
+                or np.any(tp <= 0) or np.any(tv <= 0):
+            raise ParameterError("target_spectrum table must be (periods, values): two 1-D "
+                                 "arrays of the same length >= 2, periods increasing > 0, "
+                                 "values > 0")
+        if T[0] < tp[0] * (1 - 1e-12) or T[-1] > tp[-1] * (1 + 1e-12) \
+                or T.min() < tp[0] * (1 - 1e-12) or T.max() > tp[-1] * (1 + 1e-12):
+            raise ParameterError(f"target_spectrum table covers {tp[0]:g} to {tp[-1]:g} s; "
+                                 f"the periods go from {T.min():g} to {T.max():g} s "
+                                 "(no extrapolation)")
+        vals = np.exp(np.interp(np.log(T), np.log(tp), np.log(tv)))
+    else:
+        vals = target
+    try:
+        vals = np.asarray(vals, dtype=np.float64) * f
+    except (TypeError, ValueError):
+        raise ParameterError("target_spectrum must be numbers, a callable T -> Sa or a "
+                             "(periods, values) table") from None
+    if vals.shape != T.shape:
+        raise ParameterError(f"target_spectrum must have one value per period ({T.size}); "
+                             f"got shape {vals.shape}")
+    if not np.all(np.isfinite(vals)) or np.any(vals <= 0):
+        raise ParameterError("target_spectrum must be finite and > 0 at every period")
+    return vals
+
+
+def candidate_spectra(candidates, periods, damping: float = 0.05) -> np.ndarray:
+    """(m, k) pseudo-acceleration spectra (m/s^2) of ``m`` records at ``k`` periods, once
+    per record (a 2-D array of precomputed spectra is checked and returned as is)."""
+    T = _periods(periods)
+    if isinstance(candidates, np.ndarray) and candidates.ndim == 2:
+        S = np.asarray(candidates, dtype=np.float64)
+        if S.shape[1] != T.size:
+            raise ParameterError(f"candidates as precomputed spectra must have one column per "
+                                 f"period ({T.size}); got shape {S.shape}")
+    else:
+        try:
+            items = list(candidates)
+        except TypeError:
+            raise ParameterError("candidates must be a list of Records or an (m, k) array of "
+                                 "spectra (m/s^2)") from None
+        bad = [i for i, r in enumerate(items) if not is_sampled(r)]
+        if bad:
+            raise ParameterError(f"candidates must be Records (sampled motions); item "
+                                 f"{bad[0]} is {type(items[bad[0]]).__name__}")
+        S = np.empty((len(items), T.size))
+        for i, r in enumerate(items):
+            S[i] = response_spectrum(r, T, damping)
+    if not np.all(np.isfinite(S)) or np.any(S <= 0):
+        raise ParameterError("candidates: every spectral ordinate must be finite and > 0")
+    return S
+
+
+def log_misfit(mean, target) -> float:
+    """Root-mean-square log ratio ``sqrt(mean ln(mean / target)^2)``."""
+    d = np.log(np.asarray(mean) / np.asarray(target))
+    return float(np.sqrt(np.mean(d * d)))
+
+
+@dataclass
+class SelectionResult:
+    """The chosen records: ``indices`` into the candidates, their ``scales``, the ``mean``
+    scaled spectrum and ``target`` (m/s^2) at ``periods`` (s), the ``misfit`` (RMS log
+    ratio), ``min_ratio`` (min of mean / target) and ``compliant`` (min_ratio >= 0.9 with
+    every scale within ``max_scale``)."""
+
+    indices: np.ndarray
+    scales: np.ndarray
+    periods: np.ndarray
+    target: np.ndarray
+    mean: np.ndarray
+    spectra: np.ndarray
+    misfit: float
+    min_ratio: float
+    compliant: bool
+    max_scale: float
+    notes: list = field(default_factory=list)
+
+    def records(self, candidates) -> list:
+        """The selected candidates, each scaled (``Record.scaled``) by its factor."""
+        return [candidates[i].scaled(s) for i, s in zip(self.indices, self.scales, strict=True)]
+
+    def plot(self, ax=None):
+        """Target, 90 % of it, the scaled spectra and their mean; returns the Axes."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots()
+        for s in self.spectra:
+            ax.loglog(self.periods, s, color="0.75", lw=0.8)
+        ax.loglog(self.periods, self.target, "k-", lw=2, label="target")
+        ax.loglog(self.periods, CODE_RATIO * self.target, "k--", lw=1, label="90 % target")
+        ax.loglog(self.periods, self.mean, "C3-", lw=2,
+                  label=f"mean of {len(self.indices)} (misfit {self.misfit:.3f})")
+        ax.set_xlabel("period T (s)")
+        ax.set_ylabel("Sa (m/s^2), 5 % damping")
+        title = "record selection (EN 1998-1 3.2.3.1.2)"
+        if not self.compliant:
+            title += ": NOT compliant"
+        ax.set_title(title)
+        ax.legend()
+        return ax
+
+
+def _step_costs(lt, t, S, own, base, j, lo, hi):
+    """Cost (mean squared log misfit) and scale of adding each candidate to ``base`` (the
+    sum of the other ``j - 1`` scaled spectra): the better of the record's own best scale
+    and the scale that best fills the gap ``j t - base`` (least squares relative to t)."""
+    R = S / t
+    g = j - base / t
+    fill = np.exp(np.clip(np.log(np.maximum((R @ g) / np.sum(R * R, axis=1), 1e-300)),
+                          lo, hi))
+    best_c = best_s = None
+    for sc in (own, fill):
+        d = np.log((base + sc[:, None] * S) / j) - lt
+        c = np.mean(d * d, axis=1)
+        if best_c is None:
+            best_c, best_s = c, sc.copy()
+        else:
+            better = c < best_c
+            best_c = np.where(better, c, best_c)
+            best_s = np.where(better, sc, best_s)
+    return best_c, best_s
+
+
+def _refine(lt, S, idx, x0, lo, hi):
+    """Joint bounded least squares on the ln of the selected records' scales."""
+    Ssel = S[idx]
+    n = len(idx)
+
+    def resid(x):
+        return np.log(np.exp(x) @ Ssel / n) - lt
+
+    if not hi > 0:
+        return x0
+    x = least_squares(resid, np.clip(x0, lo, hi), bounds=(lo, hi), xtol=1e-14, ftol=1e-14,
+                      gtol=1e-14).x
+    return x if np.sum(resid(x) ** 2) <= np.sum(resid(x0) ** 2) else x0
+
+
+def _search(lt, S, own, n, lo, hi, first=None):
+    """Forward selection (from record ``first`` if given), then single swaps and joint
+    refinement while they help; returns (indices, ln scales, cost)."""
+    t = np.exp(lt)
+    m = S.shape[0]
+    idx: list[int] = []
+    x: list[float] = []
+    free = np.ones(m, dtype=bool)
+    total = np.zeros(lt.size)
+    for j in range(1, n + 1):
+        cost, sc = _step_costs(lt, t, S, own, total, j, lo, hi)
+        cost[~free] = np.inf
+        i = int(np.argmin(cost)) if (j > 1 or first is None) else int(first)
+        idx.append(i)
+        x.append(math.log(sc[i]))
+        free[i] = False
+        total = total + sc[i] * S[i]
+    xs = np.array(x)
+
+    def cost_of(xs):
+        return float(np.mean((np.log(np.exp(xs) @ S[idx] / n) - lt) ** 2))
+
+    xs = _refine(lt, S, idx, xs, lo, hi)
+    best = cost_of(xs)
+    for _ in range(20):  # outer passes: swaps, then a joint refinement
+        swapped = False
+        for pos in range(n):
+            total = np.exp(xs) @ S[idx]
+            base = total - math.exp(xs[pos]) * S[idx[pos]]
+            cost, sc = _step_costs(lt, t, S, own, base, n, lo, hi)
+            cost[~free] = np.inf
+            i = int(np.argmin(cost))
+            if cost[i] < best * (1 - 1e-9) - 1e-30:
+                free[idx[pos]] = True
+                free[i] = False
+                idx[pos] = i
+                xs[pos] = math.log(sc[i])
+                best = float(cost[i])
+                swapped = True
+        if not swapped:
+            break
+        xs = _refine(lt, S, idx, xs, lo, hi)
+        best = cost_of(xs)
+    return np.array(idx), xs, best
+
+
+def _polish(lt, S, own, idx, xs, best, lo, hi, top: int = 8):
+    """Swaps judged after a joint refinement: for each selected record the ``top`` best
+    replacements (by the cheap swap cost) are tried with all scales re-fitted."""
+    t = np.exp(lt)
+    n = len(idx)
+    idx = list(idx)
+    free = np.ones(S.shape[0], dtype=bool)
+    free[idx] = False
+    for _ in range(10):
+        improved = False
+        for pos in range(n):
+            base = np.exp(xs) @ S[idx] - math.exp(xs[pos]) * S[idx[pos]]
+            cost, sc = _step_costs(lt, t, S, own, base, n, lo, hi)
+            cost[~free] = np.inf
+            for i in np.argsort(cost, kind="stable")[:top]:
+                if not np.isfinite(cost[i]):
+                    break
+                trial = idx.copy()
+                trial[pos] = int(i)
+                x0 = xs.copy()
+                x0[pos] = math.log(sc[i])
+                x1 = _refine(lt, S, trial, x0, lo, hi)
+                c = float(np.mean((np.log(np.exp(x1) @ S[trial] / n) - lt) ** 2))
+                if c < best * (1 - 1e-9) - 1e-30:
+                    free[idx[pos]] = True
+                    free[i] = False
+                    idx, xs, best, improved = trial, x1, c, True
+                    break
+        if not improved:
+            break
+    return np.array(idx), xs
+
+
+def select_records(candidates, target_spectrum, periods=None, n: int = 11,
+                   max_scale: float = 4.0, *, block=None, target_unit: str = "m/s^2",
+                   damping: float = 0.05, restarts: int = 8) -> SelectionResult:
+    """``n`` amplitude-scaled records whose mean spectrum matches a target (module doc).
+
+    Parameters
+    ----------
+    candidates : list of Record or array (m, k)
+        Records (their 5 %-damped pseudo-acceleration spectra, m/s^2, are computed once),
+        or their precomputed spectra at ``periods``.
+    target_spectrum : array, callable or (periods, values)
+        The target over ``periods``: one value per period, a callable ``T -> Sa`` (e.g.
+        :class:`rocking.motions.ec8.DesignSpectrum`), or a table interpolated in log-log.
+    periods : array of float, optional
+        Periods (s) > 0 of the match; default :func:`default_periods` of ``block``.
+    n : int
+        Number of records (1 to the number of candidates; EN 1998-1 asks for >= 3).
+    max_scale : float
+        Scale factors are kept within ``[1/max_scale, max_scale]`` (>= 1).
+    block : Block, optional
+        For the default period range.
+    target_unit : str
+        Unit of the target's values: ``"m/s^2"`` (default), ``"g"``, ``"cm/s^2"``...
+    damping : float
+        Damping ratio of the spectra (0.05; the target must refer to the same).
+    restarts : int
+        The search is repeated from each of the ``restarts`` best first records; the set
+        of least misfit is kept (>= 1; more is slower and rarely better).
+
+    Returns
+    -------
+    SelectionResult
+        ``compliant=False`` (with a PlausibilityWarning) if the 90 % rule cannot be met
+        within ``max_scale``.
+    """
+    if periods is None:
+        if block is None:
+            raise ParameterError("periods (s) must be given, or block= for the default "
+                                 "range of a rocking block (default_periods)")
+        periods = default_periods(block)
+    T = _periods(periods)
+    max_scale = as_float("max_scale", max_scale)
+    if not (max_scale >= 1.0 and math.isfinite(max_scale)):
+        raise ParameterError(f"max_scale must be a finite number >= 1; got {max_scale!r}")
+    target = _target(target_spectrum, T, target_unit)
+    S = candidate_spectra(candidates, T, damping)
+    m = S.shape[0]
+    n = as_int("n", n, lo=1)
+    if n > m:
+        raise ParameterError(f"n must be <= the number of candidates ({m}); got {n}")
+    lt = np.log(target)
+    lo, hi = -math.log(max_scale), math.log(max_scale)
+    own = np.exp(np.clip(np.mean(lt - np.log(S), axis=1), lo, hi))  # each record's own scale
+    restarts = as_int("restarts", restarts, lo=1)
+    c1, _ = _step_costs(lt, target, S, own, np.zeros(T.size), 1, lo, hi)
+    best = None
+    for first in np.argsort(c1, kind="stable")[:restarts]:
+        trial = _search(lt, S, own, n, lo, hi, first)
+        if best is None or trial[2] < best[2] * (1 - 1e-9):
+            best = trial
+    idx, x, cost = best
+    idx, x = _polish(lt, S, own, idx, x, cost, lo, hi)
+    Ssel = S[idx]
+    scales = np.exp(x)
+    mean = scales @ Ssel / n
+    notes: list[str] = []
+    ratio = float(np.min(mean / target))
+    if ratio < CODE_RATIO:
+        c = CODE_RATIO / ratio * (1 + 1e-12)
+        if np.all(scales * c <= max_scale * (1 + 1e-12)):
+            scales = np.minimum(scales * c, max_scale)
+            notes.append(f"all factors multiplied by {c:.4g} to meet the 90 % rule")
+        else:
+            c = min(c, float(max_scale / np.max(scales)))
+            scales = scales * c
+            notes.append("the 90 % rule cannot be met within max_scale")
+        mean = scales @ Ssel / n
+        ratio = float(np.min(mean / target))
+    compliant = bool(ratio >= CODE_RATIO * (1 - 1e-9))
+    if not compliant:
+        warnings.warn(f"select_records: the mean of the {n} selected records is "
+                      f"{100 * ratio:.1f} % of the target at worst (< 90 %, EN 1998-1 "
+                      f"3.2.3.1.2) with scale factors <= max_scale = {max_scale:g}: the "
+                      "set is NOT compliant (result.compliant is False)",
+                      PlausibilityWarning, stacklevel=2)
+    return SelectionResult(indices=idx, scales=scales, periods=T, target=target, mean=mean,
+                           spectra=Ssel * scales[:, None], misfit=log_misfit(mean, target),
+                           min_ratio=ratio, compliant=compliant, max_scale=max_scale,
+                           notes=notes)

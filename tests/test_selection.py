@@ -1,0 +1,168 @@
+"""Record selection (issue 21): planted sets recovered, the 90 % rule, max_scale, refusals."""
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import rocking
+from rocking.analysis import SelectionResult, default_periods, select_records
+from rocking.errors import ParameterError, PlausibilityWarning
+from rocking.motions.ec8 import DesignSpectrum
+from rocking.motions.records import Record
+from rocking.motions.spectra import response_spectrum
+from rocking.units import G
+
+T = np.geomspace(0.1, 2.0, 30)
+
+
+def _record(period, seed, dt=0.01, duration=12.0, amp=1.0):
+    """White noise band-passed (Gaussian in log frequency) around ``1 / period``, enveloped."""
+    rng = np.random.default_rng(seed)
+    t = np.arange(0.0, duration, dt)
+    f = np.fft.rfftfreq(t.size, dt)
+    gain = np.exp(-0.5 * (np.log(np.maximum(f, 1e-9) * period) / 0.3) ** 2)
+    x = np.fft.irfft(np.fft.rfft(rng.standard_normal(t.size)) * gain, t.size)
+    x *= np.sin(np.pi * t / duration) ** 2
+    return Record(amp * x / np.max(np.abs(x)), dt, name=f"T{period:g}-{seed}")
+
+
+def _spectra_set(seed=0, m=40):
+    """Synthetic positive spectra of varied shape (smooth bumps in log T)."""
+    rng = np.random.default_rng(seed)
+    c = rng.uniform(math.log(0.05), math.log(5.0), m)
+    w = rng.uniform(0.4, 1.5, m)
+    a = rng.uniform(0.5, 5.0, m)
+    x = np.log(T)
+    return a[:, None] * (0.2 + np.exp(-0.5 * ((x[None, :] - c[:, None]) / w[:, None]) ** 2))
+
+
+def test_planted_records_recovered_exactly():
+    """Target = mean of 3 planted records at scale 1; distractors of other frequency
+    content. The selection returns the planted set, scales 1 and a zero misfit."""
+    planted = [_record(0.5, 1), _record(0.6, 2), _record(0.45, 3)]
+    distract = [_record(0.03, 4), _record(8.0, 5), _record(0.04, 6), _record(10.0, 7),
+                _record(0.05, 8)]
+    cands = distract[:2] + planted[:1] + distract[2:] + planted[1:]
+    where = [2, 6, 7]
+    target = np.mean([response_spectrum(r, T) for r in planted], axis=0)
+    res = select_records(cands, target, T, n=3, max_scale=4.0)
+    assert isinstance(res, SelectionResult)
+    assert sorted(res.indices.tolist()) == where
+    assert res.misfit < 1e-6
+    np.testing.assert_allclose(res.scales, 1.0, rtol=1e-4)
+    np.testing.assert_allclose(res.mean, target, rtol=1e-5)
+    assert res.compliant and res.min_ratio == pytest.approx(1.0, abs=1e-5)
+    # scaled copies of the selected records give the reported mean
+    mean = np.mean([response_spectrum(r, T) for r in res.records(cands)], axis=0)
+    np.testing.assert_allclose(mean, res.mean, rtol=1e-9)
+
+
+def test_planted_spectra_at_other_scales_recovered():
+    """Precomputed spectra: 4 broad-band planted spectra at scales (0.5, 2, 1.5, 0.8) build
+    the target; 36 distractors are narrow-band. The selection finds the planted ones and
+    their scales."""
+    x = np.log(T)
+    rng = np.random.default_rng(1)
+    c = rng.uniform(math.log(0.02), math.log(10.0), 36)
+    S = rng.uniform(0.5, 3.0, 36)[:, None] * (
+        0.05 + np.exp(-0.5 * ((x[None, :] - c[:, None]) / 0.25) ** 2))
+    planted = np.exp(-0.5 * ((x[None, :] - np.log([[0.15], [0.35], [0.8], [1.6]])) / 0.9) ** 2)
+    where = np.array([3, 11, 20, 33])
+    S = np.insert(S, where - np.arange(4), planted, axis=0)
+    np.testing.assert_array_equal(S[where], planted)
+    k = np.array([0.5, 2.0, 1.5, 0.8])
+    target = (k @ S[where]) / 4
+    res = select_records(S, target, T, n=4, max_scale=3.0)
+    order = np.argsort(res.indices)
+    assert res.indices[order].tolist() == where.tolist()
+    np.testing.assert_allclose(res.scales[order], k, rtol=1e-4)
+    assert res.misfit < 1e-6
+
+
+def test_max_scale_honoured_and_flagged():
+    S = _spectra_set(2)
+    target = 10.0 * S[5]
+    res = select_records(S, target, T, n=1, max_scale=20.0)
+    assert res.indices.tolist() == [5]
+    assert res.scales[0] == pytest.approx(10.0, rel=1e-6)
+    with pytest.warns(PlausibilityWarning, match="NOT compliant"):
+        res = select_records(S, target, T, n=1, max_scale=4.0)
+    assert not res.compliant
+    assert np.all(res.scales <= 4.0 * (1 + 1e-12)) and np.all(res.scales >= 0.25)
+    assert res.min_ratio < 0.9
+
+
+def test_ninety_percent_rule():
+    """A target with a narrow peak the records lack: the least-misfit mean falls below
+    90 % there; the common factor lifts it to exactly 90 %."""
+    S = np.ones((3, T.size)) * np.array([[1.0], [1.1], [1.2]])
+    target = np.ones(T.size)
+    target[10] = 3.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        res = select_records(S, target, T, n=2, max_scale=5.0)
+    assert res.compliant
+    assert res.min_ratio == pytest.approx(0.9, rel=1e-9)
+    assert np.all(res.mean >= 0.9 * res.target * (1 - 1e-9))
+    assert np.all(res.scales <= 5.0)
+    # the same within too tight a bound: flagged, never silently non-compliant
+    with pytest.warns(PlausibilityWarning):
+        res = select_records(S, target, T, n=2, max_scale=1.5)
+    assert not res.compliant and res.min_ratio < 0.9
+    assert np.all(res.scales <= 1.5 * (1 + 1e-12))
+
+
+@pytest.mark.filterwarnings("ignore::rocking.errors.PlausibilityWarning")
+def test_target_forms_agree():
+    """An array, a callable (EC8), a log-log table and the same target in g agree."""
+    ds = DesignSpectrum.ec8(0.25 * G, ground="B")
+    S = _spectra_set(3)
+    a = select_records(S, ds(T), T, n=5)
+    b = select_records(S, ds, T, n=5)
+    c = select_records(S, ds(T) / G, T, n=5, target_unit="g")
+    Tt = np.geomspace(0.05, 3.0, 400)
+    d = select_records(S, (Tt, ds(Tt)), T, n=5)
+    for r in (b, c):
+        assert r.indices.tolist() == a.indices.tolist()
+        np.testing.assert_allclose(r.target, a.target, rtol=1e-12)
+    np.testing.assert_allclose(d.target, a.target, rtol=0.02)
+
+
+def test_default_periods_from_block():
+    blk = rocking.specimen(2)
+    P = default_periods(blk, n=50)
+    assert P[0] == pytest.approx(2 * math.pi / (10 * blk.p))
+    assert P[-1] == pytest.approx(2 * math.pi / blk.p)
+    assert np.all(np.diff(np.log(P)) > 0)
+    np.testing.assert_allclose(np.diff(np.log(P)), np.log(10) / 49)
+    S = np.ones((4, 100)) * np.arange(1, 5)[:, None]
+    res = select_records(S, 2.0 * np.ones(100), n=1, block=blk, max_scale=1.0)
+    np.testing.assert_allclose(res.periods, default_periods(blk))
+    assert res.indices.tolist() == [1] and res.scales[0] == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("kw, name", [
+    (dict(n=0), "n"), (dict(n=50), "n"), (dict(max_scale=0.5), "max_scale"),
+    (dict(max_scale="x"), "max_scale"), (dict(periods=-T), "periods"),
+    (dict(periods=None), "periods"), (dict(target_spectrum=np.ones(3)), "target_spectrum"),
+    (dict(target_unit="furlong"), "target_unit"), (dict(candidates=[1, 2]), "candidates"),
+    (dict(candidates=np.ones((3, 7))), "candidates"),
+    (dict(target_spectrum=(T[5:], np.ones(T.size - 5))), "target_spectrum"),
+])
+def test_bad_input_refused(kw, name):
+    args = dict(candidates=_spectra_set(4), target_spectrum=np.ones(T.size), periods=T,
+                n=3, max_scale=2.0)
+    args.update(kw)
+    with pytest.raises(ParameterError, match=name):
+        select_records(**args)
+
+
+def test_plot(tmp_path):
+    import matplotlib
+    matplotlib.use("Agg")
+    S = _spectra_set(5)
+    res = select_records(S, S[:3].mean(axis=0), T, n=3)
+    ax = res.plot()
+    assert len(ax.lines) == 3 + 3
