@@ -180,3 +180,45 @@ def test_plot_risk_returns_a_figure():
     c = HazardCurve.from_code_value(0.25)
     fig = plot_risk(c, lognormal_fit(0.5, 0.4))
     assert len(fig.axes) == 2
+
+
+# ------------------------------------------------------------------ CLI
+
+
+def test_cli_hazard_show_openquake_and_csv(capsys, tmp_path):
+    from cli_helpers import run_main
+
+    k0, k = 2e-4, 2.5
+    levels = [0.05, 0.1, 0.2, 0.4, 0.8]
+    lam = k0 * np.array(levels) ** -k
+    f = write_openquake(tmp_path / "hazard_curve-mean-PGA_1.csv", levels,
+                        [(10.0, 45.0, -np.expm1(-lam * 50.0))])
+    code, out, err = run_main(capsys, "hazard", "show", f)
+    assert code == 0, err
+    assert "PGA in g" in out
+    for T in (475, 2475):                      # the power law inverted: (k0 T)^(1/k)
+        line = next(s for s in out.splitlines() if s.startswith(f"{T} years"))
+        assert float(line.split("=")[1].split()[0]) == pytest.approx((k0 * T) ** (1 / k),
+                                                                       rel=1e-3)
+    (tmp_path / "c.csv").write_text("PGA (g),return_period\n0.1,100\n0.3,1000\n0.6,5000\n")
+    code, out, err = run_main(capsys, "hazard", "show", tmp_path / "c.csv", "--json")
+    assert code == 0, err
+    import json
+    d = json.loads(out)
+    assert d["unit"] == "g" and d["rate"][0] == pytest.approx(1 / 100)
+
+
+@pytest.mark.parametrize("args, name", [
+    (["missing.csv"], "FILE"),
+    (["c.csv"], "unit"),
+    (["oq.csv", "--site", "7"], "site"),
+    (["oq.csv", "--site", "x,y,z"], "site"),
+])
+def test_cli_hazard_bad_input_is_one_line(capsys, tmp_path, monkeypatch, args, name):
+    from cli_helpers import assert_one_line_error, run_main
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "c.csv").write_text("PGA,rate\n0.1,1e-2\n0.2,1e-3\n")
+    write_openquake(tmp_path / "oq.csv", [0.1, 0.2], [(10.0, 45.0, [0.3, 0.1])])
+    code, _, err = run_main(capsys, "hazard", "show", *args)
+    assert_one_line_error(code, err, name)

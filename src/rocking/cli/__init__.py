@@ -47,6 +47,7 @@ from .campaign import campaign
 from .catalog import blocks_cmd, buildings_cmd, motions_cmd
 from .common import CONTEXT, error_report, one_line
 from .dem import dem_params
+from .hazard import hazard
 from .identify import identify
 from .models import models_cmd
 from .motion import motion
@@ -66,7 +67,8 @@ def cli():
 
 
 for _command in (params_cmd, simulate_cmd, reproduce_cmd, identify, dem_params, motion,
-                 models_cmd, motions_cmd, blocks_cmd, buildings_cmd, campaign, shape_cmd):
+                 models_cmd, motions_cmd, blocks_cmd, buildings_cmd, campaign, shape_cmd,
+                 hazard):
     cli.add_command(_command)
 
 _NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())

@@ -1,0 +1,93 @@
+"""``rocking hazard show FILE``: a hazard curve as read by :class:`~rocking.analysis.HazardCurve`.
+
+::
+
+    rocking hazard show hazard_curve-mean-PGA_22.csv [--site 0 | --site 13.4,42.35] [--json]
+    rocking hazard show site.csv [--unit g]
+
+An OpenQuake engine export (first line a ``#`` comment with ``investigation_time``) is read
+with :meth:`HazardCurve.from_openquake`, any other CSV with :meth:`HazardCurve.from_csv`
+(IM and annual rate or return period). Prints the curve's label, IM and unit, its points
+and the IM exceeded at 475 and 2475 years (rate 1/475, 1/2475). Bad input: one line, exit 2.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+
+from ..analysis.hazard import RETURN_PERIODS, HazardCurve
+from ..errors import ParameterError
+from .common import CONTEXT, json_default
+
+
+def _site(text):
+    if text is None:
+        return 0
+    parts = [t.strip() for t in str(text).split(",")]
+    try:
+        if len(parts) == 1:
+            return int(parts[0])
+        if len(parts) == 2:
+            return (float(parts[0]), float(parts[1]))
+    except ValueError:
+        pass
+    raise ParameterError(f"--site must be a site index (0, 1, ...) or LON,LAT, got {text!r}")
+
+
+def read_curve(path, site=None, unit=None) -> HazardCurve:
+    """The hazard curve in ``path``: an OpenQuake export or a plain CSV (by content)."""
+    p = Path(path)
+    if not p.is_file():
+        raise ParameterError(f"FILE: no such file {str(path)!r}")
+    try:
+        with p.open() as fh:
+            first = fh.readline()
+    except (OSError, UnicodeDecodeError) as e:
+        raise ParameterError(f"FILE: cannot read {p.name} as text ({e})") from None
+    if first.lstrip().startswith("#") and "investigation_time" in first:
+        if unit is not None:
+            raise ParameterError("--unit is not used with an OpenQuake export (its PGA and "
+                                 "SA levels are in g)")
+        return HazardCurve.from_openquake(p, site=_site(site))
+    if site is not None:
+        raise ParameterError("--site applies to an OpenQuake export only")
+    return HazardCurve.from_csv(p, unit=unit)
+
+
+@click.group("hazard", context_settings=CONTEXT)
+def hazard():
+    """Seismic hazard curves (OpenQuake exports, CSV of IM and rate or return period)."""
+
+
+@hazard.command("show", context_settings=CONTEXT)
+@click.argument("file", metavar="FILE")
+@click.option("--site", default=None, help="OpenQuake: site index or LON,LAT (nearest).")
+@click.option("--unit", default=None, help="CSV: unit of the IM column if its header "
+              "states none (g, m/s^2).")
+@click.option("--json", "as_json", is_flag=True, help="Print JSON.")
+def show_cmd(file, site, unit, as_json):
+    """The hazard curve in FILE, its IM and unit, and the IM at 475 and 2475 years."""
+    c = read_curve(file, site, unit)
+    at = {int(T): c.im_at_return_period(T) for T in RETURN_PERIODS}
+    outside = {int(T): not (c.rate[-1] <= 1 / T <= c.rate[0]) for T in RETURN_PERIODS}
+    if as_json:
+        click.echo(json.dumps({
+            "label": c.label, "im_name": c.im_name, "unit": c.unit,
+            "approximate": c.approximate, "im": c.im.tolist(), "rate": c.rate.tolist(),
+            "im_at_return_period": {str(k): v for k, v in at.items()},
+            "extrapolated": {str(k): v for k, v in outside.items()},
+            "metadata": getattr(c, "metadata", {}),
+        }, default=json_default, indent=2))
+        return
+    click.echo(f"{c.label}")
+    click.echo(f"IM: {c.im_name} in {c.unit}; {c.im.size} points"
+               + ("; APPROXIMATION (code value)" if c.approximate else ""))
+    click.echo(f"{'IM (' + c.unit + ')':>14} {'rate (1/yr)':>12} {'T (yr)':>10}")
+    for x, r in zip(c.im, c.rate, strict=True):
+        click.echo(f"{x:14.4g} {r:12.4g} {1 / r:10.4g}")
+    for T, x in at.items():
+        note = " (power-law extrapolation beyond the curve)" if outside[T] else ""
+        click.echo(f"{T} years (rate {1 / T:.4g}/yr): {c.im_name} = {x:.4g} {c.unit}{note}")
