@@ -115,6 +115,10 @@ def test_openquake_rates_from_poe_and_site_choice(tmp_path):
     assert HazardCurve.from_openquake(f, site=1).metadata["lat"] == 40.85
     with pytest.raises(ParameterError, match="site"):
         HazardCurve.from_openquake(f, site=2)
+    bad = tmp_path / "hazard_curve-mean-PGA_23.csv"
+    bad.write_text(f.read_text().replace(",42.35,0.0,", ",north,0.0,"))
+    with pytest.raises(ParameterError, match="numbers"):
+        HazardCurve.from_openquake(bad)
     g = write_openquake(tmp_path / "hazard_curve-mean-SA(0.3)_22.csv", levels, sites[:1],
                         T=1.0, imt="SA(0.3)")
     s = HazardCurve.from_openquake(g)
@@ -137,6 +141,18 @@ def test_risk_equals_cornell_closed_form_including_tails(k, median, beta):
     assert r.annual_frequency == pytest.approx(exact, rel=1e-6)
     assert 0.0 < r.tail_share < 1.0
     assert r.probability_50 == pytest.approx(1 - math.exp(-50 * exact), rel=1e-6)
+
+
+def test_each_damage_state_gets_its_closed_form():
+    """Damage-state curves (anything with ``fits``): one Risk per state, each Cornell's."""
+    k0, k = 1e-4, 2.5
+    x = np.array([0.1, 0.2, 0.3])
+    c = HazardCurve(x, k0 * x ** -k, im_name="pga", unit="g")
+    states = type("States", (), {"fits": (lognormal_fit(0.2, 0.4), lognormal_fit(0.5, 0.3))})
+    out = risk(states(), c)
+    assert [r.annual_frequency for r in out] == pytest.approx(
+        [cornell(k0, k, 0.2, 0.4), cornell(k0, k, 0.5, 0.3)], rel=1e-6)
+    assert out[0].annual_frequency > out[1].annual_frequency     # rarer worse state
 
 
 def test_units_converted_and_mismatches_refused():

@@ -264,20 +264,29 @@ class HazardCurve:
             raise ParameterError(f"{p.name}: IMT {imt!r} is not PGA or SA(T) (in g)")
         rows = list(csv.reader(lines[1:]))
         header = [h.strip() for h in rows[0]]
-        if header[:2] != ["lon", "lat"]:
-            raise ParameterError(f"{p.name}: header must start with lon,lat, got "
-                                 f"{header[:3]}")
+        if "lon" not in header or "lat" not in header:
+            raise ParameterError(f"{p.name}: header must hold lon,lat (and poe-<level> "
+                                 f"columns), got {header[:4]}")
+        ilon, ilat = header.index("lon"), header.index("lat")
         cols = [i for i, h in enumerate(header) if h.startswith("poe-")]
         if not cols:
             raise ParameterError(f"{p.name}: no poe-<level> columns")
-        levels = np.array([float(header[i][4:]) for i in cols])
         data = [r for r in rows[1:] if r]
+        try:
+            levels = np.array([float(header[i][4:]) for i in cols])
+            for r in data:
+                [float(r[i]) for i in (ilon, ilat, *cols)]
+        except (ValueError, IndexError):
+            raise ParameterError(f"{p.name}: the poe-<level> header and every site row "
+                                 "must hold numbers") from None
+        if not data:
+            raise ParameterError(f"{p.name}: no site rows")
         if isinstance(site, (tuple, list)):
             if len(site) != 2:
                 raise ParameterError(f"site must be an index or (lon, lat), got {site!r}")
             lon0, lat0 = np.radians([float(site[0]), float(site[1])])
-            lon = np.radians([float(r[0]) for r in data])
-            lat = np.radians([float(r[1]) for r in data])
+            lon = np.radians([float(r[ilon]) for r in data])
+            lat = np.radians([float(r[ilat]) for r in data])
             hav = (np.sin((lat - lat0) / 2) ** 2
                    + np.cos(lat) * np.cos(lat0) * np.sin((lon - lon0) / 2) ** 2)
             idx = int(np.argmin(hav))
@@ -297,11 +306,11 @@ class HazardCurve:
         rate[keep] = -np.log1p(-poe[keep]) / T
         if keep.sum() < 2:
             raise ParameterError(f"{p.name}: site {idx} has fewer than 2 non-zero poe")
-        lab = label or (f"OpenQuake {imt} at ({row[0].strip()}, {row[1].strip()}), "
+        lab = label or (f"OpenQuake {imt} at ({row[ilon].strip()}, {row[ilat].strip()}), "
                         f"{meta.get('kind', p.name)}")
         curve = cls(levels[keep], rate[keep], im_name=imt, unit="g", label=lab)
-        curve.metadata = {**meta, "site_index": idx, "lon": float(row[0]),
-                          "lat": float(row[1]),
+        curve.metadata = {**meta, "site_index": idx, "lon": float(row[ilon]),
+                          "lat": float(row[ilat]),
                           "dropped_levels": [float(v) for v in levels[~keep]]}
         return curve
 
