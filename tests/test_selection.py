@@ -81,6 +81,37 @@ def test_planted_spectra_at_other_scales_recovered():
     assert res.misfit < 1e-6
 
 
+@pytest.mark.parametrize("max_scale", [1.0, 3.0])
+def test_agrees_with_exhaustive_search(max_scale):
+    """On 9 candidates, n = 2, the least misfit equals that of all 36 pairs, each with its
+    two scales fitted jointly (scipy) or fixed at 1 (max_scale = 1)."""
+    from itertools import combinations
+
+    from scipy.optimize import minimize
+
+    S = _spectra_set(7, m=9)
+    target = DesignSpectrum.ec8(1.0, ground="C")(T)
+    lo, hi = -math.log(max_scale), math.log(max_scale)
+    cost = {}
+    for pair in combinations(range(9), 2):
+        P = S[list(pair)]
+
+        def f(x, P=P):
+            return np.mean((np.log(np.exp(x) @ P / 2) - np.log(target)) ** 2)
+
+        if max_scale == 1.0:
+            cost[pair] = f(np.zeros(2))
+        else:
+            cost[pair] = min(minimize(f, [x0, x1], bounds=[(lo, hi)] * 2, method="L-BFGS-B",
+                                      options={"ftol": 1e-15, "gtol": 1e-12}).fun
+                             for x0 in (lo / 2, hi / 2) for x1 in (lo / 2, hi / 2))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", PlausibilityWarning)
+        res = select_records(S, target, T, n=2, max_scale=max_scale, restarts=9)
+    got = cost[tuple(sorted(res.indices.tolist()))]
+    assert got == pytest.approx(min(cost.values()), rel=1e-6, abs=1e-12)
+
+
 def test_max_scale_honoured_and_flagged():
     S = _spectra_set(2)
     target = 10.0 * S[5]
@@ -150,6 +181,7 @@ def test_default_periods_from_block():
     (dict(target_unit="furlong"), "target_unit"), (dict(candidates=[1, 2]), "candidates"),
     (dict(candidates=np.ones((3, 7))), "candidates"),
     (dict(target_spectrum=(T[5:], np.ones(T.size - 5))), "target_spectrum"),
+    (dict(target_spectrum=DesignSpectrum.ec8(2.0, damping=0.1)), "damping"),
 ])
 def test_bad_input_refused(kw, name):
     args = dict(candidates=_spectra_set(4), target_spectrum=np.ones(T.size), periods=T,

@@ -377,6 +377,11 @@ def select_records(candidates, target_spectrum, periods=None, n: int = 11,
     max_scale = as_float("max_scale", max_scale)
     if not (max_scale >= 1.0 and math.isfinite(max_scale)):
         raise ParameterError(f"max_scale must be a finite number >= 1; got {max_scale!r}")
+    td = getattr(target_spectrum, "damping", None)
+    if td is not None and not math.isclose(float(td), float(damping), rel_tol=1e-9):
+        raise ParameterError(f"target_spectrum is for {100 * td:g} % damping but damping = "
+                             f"{damping!r}: compare spectra of the same damping "
+                             "(DesignSpectrum.with_damping)")
     target = _target(target_spectrum, T, target_unit)
     S = candidate_spectra(candidates, T, damping)
     m = S.shape[0]
