@@ -183,6 +183,27 @@ def test_general_curve_agrees_with_direct_quadrature():
     assert risk(fit, c).annual_frequency == pytest.approx(direct, rel=1e-5)
 
 
+def test_a_wide_curve_agrees_with_the_existing_annual_frequency():
+    """Where the curve spans the fragility, the tails carry nothing and risk() equals
+    rocking.analysis.fragility.annual_frequency (an independent segment integral)."""
+    from rocking.analysis import annual_frequency
+
+    x = np.logspace(-3, 2, 40)
+    lam = 1e-2 * np.exp(-1.5 * np.log(x / 1e-3) - 0.1 * np.log(x / 1e-3) ** 2)
+    c = HazardCurve(x, lam, im_name="pga", unit="g")
+    fit = lognormal_fit(0.3, 0.35)
+    r = risk(fit, c)
+    assert r.tail_share < 1e-7
+    assert r.annual_frequency == pytest.approx(
+        annual_frequency(fit, x, lam, hazard_unit="g", tail=False), rel=1e-6)
+
+
+@pytest.mark.parametrize("head", ["Tr", "RP", "T (years)", "return period"])
+def test_csv_return_period_headers(tmp_path, head):
+    (tmp_path / "p.csv").write_text(f"PGA [g],{head}\n0.1,100\n0.3,1000\n")
+    assert HazardCurve.from_csv(tmp_path / "p.csv").rate[0] == pytest.approx(0.01)
+
+
 def test_probability_in_is_poisson():
     assert probability_in(50, 1 / 475) == pytest.approx(1 - math.exp(-50 / 475))
     assert probability_in(0, 1.0) == 0.0

@@ -202,7 +202,7 @@ class HazardCurve:
     def from_csv(cls, path, *, im_name: str | None = None, unit: str | None = None,
                  label: str = ""):
         """A CSV with two columns: the IM and the annual rate of exceedance, or the return
-        period (a second header containing ``period`` or ``_T``/``T``; else a rate). The
+        period (a second header naming ``period``, ``T``, ``Tr``, ``RP`` or years; else a rate). The
         IM unit is taken from the first header (``pga_g``, ``PGA (g)``, ``PGA [m/s^2]``)
         unless given as ``unit``; lines starting with ``#`` are skipped."""
         p = Path(path)
@@ -229,7 +229,9 @@ class HazardCurve:
         except (ValueError, IndexError):
             raise ParameterError(f"{p.name}: every row must hold two numbers") from None
         low = h_y.lower()
-        is_period = "period" in low or re.search(r"(^|[_\s(])t($|[_\s(])", low) is not None
+        is_period = ("period" in low or "year" in low
+                     or re.search(r"(^|[_\s(\[])(t|tr|rp|yr|years?)($|[_\s)\]])", low)
+                     is not None)
         y = 1.0 / data[:, 1] if is_period else data[:, 1]
         if is_period and np.any(data[:, 1] <= 0):
             raise ParameterError(f"{p.name}: return periods must be > 0")
