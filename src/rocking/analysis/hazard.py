@@ -347,7 +347,8 @@ def _fit_factor(fit, curve: HazardCurve) -> float:
     name = getattr(fit, "im_name", "im")
     if _im_key(name) != _im_key(curve.im_name):
         raise ParameterError(f"the fit's IM is {name!r} and the hazard curve's is "
-                             f"{curve.im_name!r}: they must be the same IM")
+                             f"{curve.im_name!r}: they must be the same IM (fit with "
+                             f"im_name={curve.im_name.lower()!r} if it is)")
     a, b = _unit_factor(curve.unit), _unit_factor(own)
     if b is None or a[0] != b[0]:
         raise ParameterError(f"the fit's IM unit {own!r} is not a {a[0]} unit like the "
