@@ -8,6 +8,8 @@ import pytest
 
 import rocking
 from rocking.analysis import SelectionResult, default_periods, select_records
+from rocking.analysis.hazard import HazardCurve
+from rocking.analysis.selection import uniform_hazard_spectrum
 from rocking.errors import ParameterError, PlausibilityWarning
 from rocking.motions.ec8 import DesignSpectrum
 from rocking.motions.records import Record
@@ -159,6 +161,31 @@ def test_target_forms_agree():
         assert r.indices.tolist() == a.indices.tolist()
         np.testing.assert_allclose(r.target, a.target, rtol=1e-12)
     np.testing.assert_allclose(d.target, a.target, rtol=0.02)
+
+
+def test_uniform_hazard_spectrum_from_power_law_curves():
+    """Power-law SA curves rate = k0 (a/a0(T))^-k: the UHS at return period R is
+    a0(T) (k0 R)^(1/k), whatever the curves' unit; as a target it is the table's values."""
+    Ts = np.array([0.05, 0.1, 0.3, 1.0, 3.0])
+    a0 = 0.2 * (1 + 1 / (1 + Ts))  # g
+    k0, k = 1e-3, 2.5
+    im = np.geomspace(0.01, 5.0, 40)
+    curves = [HazardCurve(im, k0 * (im / a) ** -k, im_name=f"SA({t:g})", unit="g")
+              for t, a in zip(Ts, a0, strict=True)]
+    curves.append(HazardCurve(im, k0 * im ** -k, im_name="PGA", unit="g"))
+    P, V = uniform_hazard_spectrum(curves, 475.0)
+    np.testing.assert_allclose(P, Ts)
+    np.testing.assert_allclose(V, a0 * G * (k0 * 475.0) ** (1 / k), rtol=1e-9)
+    d = uniform_hazard_spectrum({t: c for t, c in zip(Ts, curves, strict=False)}, 475.0)
+    np.testing.assert_allclose(d[1], V, rtol=1e-12)
+    S = _spectra_set(8)
+    res = select_records(S, (P, V), T, n=3)
+    np.testing.assert_allclose(res.target, np.exp(np.interp(np.log(T), np.log(P),
+                                                            np.log(V))), rtol=1e-12)
+    with pytest.raises(ParameterError, match="curves"):
+        uniform_hazard_spectrum(curves[:1])
+    with pytest.raises(ParameterError, match="return_period"):
+        uniform_hazard_spectrum(curves, -1)
 
 
 def test_default_periods_from_block():

@@ -19,7 +19,8 @@ every function returns a tidy :class:`pandas.DataFrame` or a result object with 
   horizontal components, and its worst direction (:class:`DirectionSweep`), and
   :func:`direction_fragility`, a fragility curve per direction (issue 20);
 * :func:`select_records`: amplitude-scaled records whose mean spectrum matches a target
-  (EN 1998-1 3.2.3.1.2; :class:`SelectionResult`, :func:`default_periods`; issue 21);
+  (EN 1998-1 3.2.3.1.2; :class:`SelectionResult`, :func:`default_periods`,
+  :func:`uniform_hazard_spectrum` of SA hazard curves as a target; issue 21);
 * :class:`HazardCurve` (OpenQuake export, CSV, EN 1998-1 code value), :func:`risk` (annual
   frequency with power-law tails, probability in 50 years), :func:`probability_in`,
   :func:`plot_risk` (issue 21).
@@ -48,7 +49,12 @@ from .overturning import (
     plot_overturning_spectrum,
     pulse_motion,
 )
-from .selection import SelectionResult, default_periods, select_records
+from .selection import (
+    SelectionResult,
+    default_periods,
+    select_records,
+    uniform_hazard_spectrum,
+)
 
 __all__ = [
     "motion_space", "plot_motion_space", "monte_carlo", "MonteCarloResult", "wilson_interval",
@@ -59,5 +65,5 @@ __all__ = [
     "plot_overturning_spectrum", "plot_outcome_map", "pulse_motion", "PULSES",
     "direction_sweep", "DirectionSweep", "plot_sweeps", "direction_fragility",
     "DirectionFragility", "HazardCurve", "Risk", "risk", "probability_in", "plot_risk",
-    "select_records", "SelectionResult", "default_periods",
+    "select_records", "SelectionResult", "default_periods", "uniform_hazard_spectrum",
 ]

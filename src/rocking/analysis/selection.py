@@ -47,6 +47,7 @@ default range is ``[2 pi / (omega_ratio_max p), 2 pi / (omega_ratio_min p)]`` wi
 from __future__ import annotations
 
 import math
+import re
 import warnings
 from dataclasses import dataclass, field
 
@@ -58,9 +59,10 @@ from ..errors import ParameterError, PlausibilityWarning, UnitError
 from ..motions.base import is_sampled
 from ..motions.spectra import response_spectrum
 from ..units import acceleration_factor
+from .hazard import HazardCurve
 
 __all__ = ["select_records", "SelectionResult", "default_periods", "candidate_spectra",
-           "log_misfit", "CODE_RATIO"]
+           "log_misfit", "uniform_hazard_spectrum", "CODE_RATIO"]
 
 CODE_RATIO = 0.9
 """EN 1998-1 §3.2.3.1.2: the mean spectrum not below 90 % of the target in the range."""
@@ -83,6 +85,50 @@ def default_periods(block, n: int = 100, omega_ratio_min: float = 1.0,
     if not hi > lo:
         raise ParameterError(f"omega_ratio_max must be > omega_ratio_min = {lo:g}; got {hi!r}")
     return np.geomspace(2.0 * math.pi / (hi * p), 2.0 * math.pi / (lo * p), n)
+
+
+_SA = re.compile(r"^\s*(?:SA|PSA|Sa)\s*\(\s*([0-9.eE+-]+)\s*\)\s*$")
+
+
+def uniform_hazard_spectrum(curves, return_period: float = 475.0):
+    """The uniform hazard spectrum ``(periods, values)`` (s, m/s^2) of SA hazard curves.
+
+    ``curves`` is a list of :class:`~rocking.analysis.hazard.HazardCurve` of spectral
+    acceleration, each named ``"SA(T)"`` (OpenQuake's IMT names; T in s), or a dict
+    ``{T: curve}``; a ``"PGA"`` curve is left out (T = 0 has no log). At each period the
+    value exceeded at the rate ``1 / return_period`` (years) is read off the curve
+    (:meth:`HazardCurve.im_at_return_period`). The result is a table for
+    :func:`select_records`'s ``target_spectrum`` (log-log interpolated, no extrapolation:
+    the curves' periods must cover the periods of the match)."""
+    tr = positive("return_period", return_period, "years")
+    items = list(curves.items()) if isinstance(curves, dict) else [(None, c) for c in
+                                                                   curves]
+    pts = {}
+    for T, c in items:
+        if not isinstance(c, HazardCurve):
+            raise ParameterError(f"curves must be HazardCurves; got {type(c).__name__}")
+        if T is None:
+            if c.im_name.strip().upper() == "PGA":
+                continue
+            m = _SA.match(c.im_name)
+            if not m:
+                raise ParameterError(f"curves: cannot read a period from im_name "
+                                     f"{c.im_name!r} (expected 'SA(0.2)'); pass a dict "
+                                     "{period: curve}")
+            T = float(m[1])
+        T = positive("curves (period)", T, "s")
+        try:
+            cs = c.to_unit("m/s^2")
+        except ParameterError:
+            raise ParameterError(f"curves: the curve at T = {T:g} s is not in an "
+                                 f"acceleration unit ({c.unit!r})") from None
+        if T in pts:
+            raise ParameterError(f"curves: two curves for the period {T:g} s")
+        pts[T] = cs.im_at_return_period(tr)
+    if len(pts) < 2:
+        raise ParameterError("curves must hold SA curves at >= 2 periods > 0")
+    P = np.array(sorted(pts))
+    return P, np.array([pts[t] for t in P])
 
 
 def _periods(periods) -> np.ndarray:
@@ -345,7 +391,8 @@ def select_records(candidates, target_spectrum, periods=None, n: int = 11,
         or their precomputed spectra at ``periods``.
     target_spectrum : array, callable or (periods, values)
         The target over ``periods``: one value per period, a callable ``T -> Sa`` (e.g.
-        :class:`rocking.motions.ec8.DesignSpectrum`), or a table interpolated in log-log.
+        :class:`rocking.motions.ec8.DesignSpectrum`), or a table interpolated in log-log
+        (e.g. :func:`uniform_hazard_spectrum` of SA hazard curves).
     periods : array of float, optional
         Periods (s) > 0 of the match; default :func:`default_periods` of ``block``.
     n : int
