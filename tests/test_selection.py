@@ -199,6 +199,7 @@ def test_default_periods_from_block():
     res = select_records(S, 2.0 * np.ones(100), n=1, block=blk, max_scale=1.0)
     np.testing.assert_allclose(res.periods, default_periods(blk))
     assert res.indices.tolist() == [1] and res.scales[0] == pytest.approx(1.0)
+    assert any("at least 3" in note for note in res.notes)
 
 
 @pytest.mark.parametrize("kw, name", [

@@ -36,8 +36,11 @@ period. The overturning spectra of :mod:`rocking.analysis.overturning` (Dimitrak
 and DeJong 2012) are functions of ``omega_p / p`` only: a pulse of period ``T_p = 2 pi /
 omega_p`` overturns the block at an acceleration close to the static ``g tan alpha`` when
 ``omega_p / p`` is below about 1 (long pulses: the block sees a slowly varying tilt), and
-at an acceleration that grows about in proportion to ``omega_p / p`` above it; beyond
-``omega_p / p`` of about 10 the required acceleration exceeds what earthquakes provide.
+at an acceleration that grows fast above it. For specimen 2 under one-sine pulses
+(Housner's model; ``overturning_spectrum(specimen(2), "one_sine", ...)``) the least
+overturning ``a_p / (g tan alpha)`` is 1.04, 1.10, 1.22, 1.7, 8.0 and 14 at ``omega_p / p``
+= 0.5, 1, 2, 4, 8 and 10, and above 20 at 15: beyond ``omega_p / p`` of about 10 the
+required acceleration exceeds what earthquakes provide.
 The spectral ordinates that govern overturning are therefore those at periods from ``2 pi
 / (10 p)`` to ``2 pi / p`` (and a little beyond, where the quasi-static bound holds): the
 default range is ``[2 pi / (omega_ratio_max p), 2 pi / (omega_ratio_min p)]`` with
@@ -224,7 +227,8 @@ class SelectionResult:
     """The chosen records: ``indices`` into the candidates, their ``scales``, the ``mean``
     scaled spectrum and ``target`` (m/s^2) at ``periods`` (s), the ``misfit`` (RMS log
     ratio), ``min_ratio`` (min of mean / target) and ``compliant`` (min_ratio >= 0.9 with
-    every scale within ``max_scale``)."""
+    every scale within ``max_scale``); ``notes`` says what was adjusted (the common factor)
+    and what the code would also ask (at least 3 records)."""
 
     indices: np.ndarray
     scales: np.ndarray
@@ -451,6 +455,9 @@ def select_records(candidates, target_spectrum, periods=None, n: int = 11,
     scales = np.exp(x)
     mean = scales @ Ssel / n
     notes: list[str] = []
+    if n < 3:
+        notes.append(f"n = {n} < 3: EN 1998-1 3.2.3.1.2 asks for at least 3 records "
+                     "(compliant refers to the 90 % rule only)")
     ratio = float(np.min(mean / target))
     if ratio < CODE_RATIO:
         c = CODE_RATIO / ratio * (1 + 1e-12)
