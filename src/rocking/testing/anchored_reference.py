@@ -178,12 +178,7 @@ def _first_uplift(exc: Excitation, t_from: float, t_end: float, thr_p: float,
         fn = exc.fns[k]
         lo = max(exc.starts[k], t_from)
         hi = min(exc.end(k), t_end)
-        if exc.linear[k] or not math.isfinite(exc.scan_step):
-            grid = [lo, hi] if hi > lo else [lo]
-        else:
-            step = exc.scan_step
-            inner = np.arange(math.floor(lo / step) + 1, math.ceil(hi / step)) * step
-            grid = [lo, *[x for x in inner.tolist() if lo < x < hi], hi]
+        grid = exc.scan_grid(k, lo, hi)
 
         def f(t, fn=fn):
             return margin(fn(t))

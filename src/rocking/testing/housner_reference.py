@@ -169,6 +169,15 @@ class Excitation:
         """Index of the piece containing ``t`` (the one that starts at ``t`` at a boundary)."""
         return max(0, bisect.bisect_right(self.starts, t) - 1)
 
+    def scan_grid(self, k: int, lo: float, hi: float) -> list:
+        """The times at which piece ``k`` is scanned over ``[lo, hi]``: its ends if it is
+        linear (or has no scan step), else every multiple of the scan step between them."""
+        if self.linear[k] or not math.isfinite(self.scan_step):
+            return [lo, hi] if hi > lo else [lo]
+        step = self.scan_step
+        inner = np.arange(math.floor(lo / step) + 1, math.ceil(hi / step)) * step
+        return [lo, *[x for x in inner.tolist() if lo < x < hi], hi]
+
     def end(self, k: int) -> float:
         return self.starts[k + 1] if k + 1 < len(self.starts) else math.inf
 
@@ -251,12 +260,7 @@ def _first_exceedance(exc: Excitation, t_from: float, t_end: float, thr: float,
         fn = exc.fns[k]
         lo = max(exc.starts[k], t_from)
         hi = min(exc.end(k), t_end)
-        if exc.linear[k] or not math.isfinite(exc.scan_step):
-            grid = [lo, hi] if hi > lo else [lo]
-        else:
-            step = exc.scan_step
-            inner = np.arange(math.floor(lo / step) + 1, math.ceil(hi / step)) * step
-            grid = [lo, *[x for x in inner.tolist() if lo < x < hi], hi]
+        grid = exc.scan_grid(k, lo, hi)
         f_prev = abs(fn(grid[0])) - thr
         for g0, g1 in zip(grid[:-1], grid[1:], strict=True):
             f1 = abs(fn(g1)) - thr
