@@ -110,7 +110,7 @@ class Response:
         return float(self.t[-1]) if self.t.size else 0.0
 
     def half_cycle_peaks(self) -> tuple[np.ndarray, np.ndarray]:
-        """Times (s) and values (rad, signed) of the largest |theta| in each half-cycle.
+        """Times (s) and values (rad, signed) of the largest ``|theta|`` in each half-cycle.
 
         Half-cycles are delimited by the impacts; each peak is refined by a parabola
         through the three output samples around it (accuracy ~ (omega dt_out)^2).

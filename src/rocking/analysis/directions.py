@@ -22,7 +22,7 @@ says (:func:`rocking.shapes.directional_parameters`' ``uplift_3d_*`` columns).
 :mod:`rocking.shapes`); ``orientation`` is the compass bearing of that axis (None: along
 the pair's first component; see :mod:`rocking.motions.pair`). The direction ``phi + pi``
 is the mirror image of ``phi``: the same planar block with its sides swapped under the
-negated acceleration, so theta is negated and max |theta|, overturning and the times are
+negated acceleration, so theta is negated and max ``|theta|``, overturning and the times are
 the same. The default directions therefore cover [0, 180) deg every 15 deg for a
 :class:`~rocking.shapes.Shape` or a symmetric block, [0, 360) deg otherwise.
 
@@ -33,7 +33,7 @@ rotation over the overturning angle of the side on which it happened: ``max |the
 alpha`` for a symmetric block; for an asymmetric one ``max(theta_+ / alpha_plus, theta_- /
 alpha_minus)`` with the peaks on each side (``max_theta_plus``, ``max_theta_minus``) read
 from the histories sampled every ``dt_out`` (the larger of the two is the run's exact
-max |theta|). ``uplift_demand`` is the static measure ``max(max(a) / (g tan alpha_plus),
+max ``|theta|``). ``uplift_demand`` is the static measure ``max(max(a) / (g tan alpha_plus),
 max(-a) / (g tan alpha_minus))`` of the projected horizontal acceleration ``a`` (> 1: the
 block lifts off from rest; a positive ``a`` lifts it on side +; without the vertical
 component).
@@ -89,7 +89,7 @@ class DirectionSweep:
         return float(self.worst["phi"])
 
     def plot(self, ax=None, *, label: str | None = None, mirror: bool = True):
-        """max |theta| / alpha against ``phi`` on polar axes (overturned directions at
+        """max ``|theta|`` / alpha against ``phi`` on polar axes (overturned directions at
         the rim, marked x); ``mirror`` also draws ``phi + 180`` deg (the same response).
         Returns the figure."""
         if ax is None:
@@ -249,7 +249,7 @@ def worst_index(table: pd.DataFrame) -> int:
 
 
 def plot_sweeps(sweeps, labels=None, *, reference=None, ax=None):
-    """Several sweeps' max |theta| / alpha against ``phi`` (polar); ``reference``: a
+    """Several sweeps' max ``|theta|`` / alpha against ``phi`` (polar); ``reference``: a
     direction (rad) to mark (e.g. the static weakest direction). Returns the figure."""
     if ax is None:
         from matplotlib.figure import Figure

@@ -84,7 +84,7 @@ def motion_space(block, freqs, amplitudes, kind: str = "sine", duration: float =
 
 
 def plot_motion_space(df: pd.DataFrame, ax=None):
-    """Map of a :func:`motion_space` table: max |theta| / alpha per cell, overturned cells
+    """Map of a :func:`motion_space` table: max ``|theta|`` / alpha per cell, overturned cells
     marked, no-rocking cells blank. Returns the Axes."""
 
     if ax is None:

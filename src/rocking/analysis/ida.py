@@ -50,7 +50,7 @@ def ida(block, records, im: str = "pga", levels=None, model="housner",
         its record until the block has settled, at most ``max_free_time`` (an option)
         longer.
     thresholds : sequence of float
-        Damage-state thresholds on max |theta| / alpha (:func:`~.damage.damage_state`).
+        Damage-state thresholds on max ``|theta|`` / alpha (:func:`~.damage.damage_state`).
 
     Returns
     -------
@@ -120,7 +120,7 @@ def ida_capacity(table: pd.DataFrame, state: int | None = None) -> pd.DataFrame:
 
 
 def plot_ida(table: pd.DataFrame, ax=None):
-    """IDA curves of an :func:`ida` table: max |theta| / alpha against the IM level, one
+    """IDA curves of an :func:`ida` table: max ``|theta|`` / alpha against the IM level, one
     line per record, overturning marked at the top. Returns the Axes."""
 
     if ax is None:

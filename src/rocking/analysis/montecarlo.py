@@ -172,7 +172,7 @@ class MonteCarloResult:
         return wilson_interval(self.n_overturned, self.n, self.level)
 
     def quantiles(self, q=(0.05, 0.5, 0.95)) -> pd.Series:
-        """Quantiles of max |theta| / alpha over the samples that did not overturn."""
+        """Quantiles of max ``|theta|`` / alpha over the samples that did not overturn."""
         s = self.samples.loc[~self.samples["overturned"], "max_abs_theta_over_alpha"]
         return s.quantile(list(q))
 
@@ -195,7 +195,7 @@ class MonteCarloResult:
         return d
 
     def plot(self, ax=None):
-        """Histogram of max |theta| / alpha of the surviving samples, with P(overturn)."""
+        """Histogram of max ``|theta|`` / alpha of the surviving samples, with P(overturn)."""
 
         if ax is None:
             _, ax = figure()
