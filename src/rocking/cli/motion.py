@@ -10,6 +10,24 @@ command line.
     rocking motion show H.AT2 --vertical V.AT2 [--units g] [--plot motion.png]
     rocking motion floor Rinaldi228 --building shear --storeys 5 --building-period 0.5 \\
         --building-damping 5% [--floors all|0,1,3 | --height-ratios 0.5,1] --out floors/
+    rocking motion select records/ --target ec8 --ag 0.25g --ground C --specimen 2 \\
+        --n 11 [--max-scale 4] --out selected/
+    rocking motion select records/ --target uhs --hazard SA0.2.csv --hazard SA1.0.csv \\
+        --return-period 475 --periods 0.2:1:50 --out selected/
+    rocking motion select records/ --target site_spectrum.csv --specimen 2 --out selected/
+
+``select`` reads every file of FOLDER that the record reader reads (files it refuses are
+listed as skipped, with the reason), computes the candidates' spectra once and calls
+:func:`rocking.analysis.select_records`; the target is the EC8 spectrum (``--ag``), a
+uniform hazard spectrum of SA(T) hazard curves (:func:`rocking.analysis.selection.
+uniform_hazard_spectrum`, curves read as by ``rocking hazard show``) or a table
+(:func:`read_target_table`); the periods are ``--periods`` (:func:`period_range`) or the
+block's default range (:func:`rocking.analysis.default_periods`). It writes the scaled
+records (``write_csv``: m/s^2), ``selection.csv`` (one row per record, ranked by its own
+misfit), ``selection_spectra.csv``, ``selection.json`` and ``selection.png``. A set that
+cannot meet the 90 % rule within ``--max-scale`` is written with ``compliant: false`` and
+one ``warning:`` line, exit 0 (the best the candidates allow, flagged); bad input is one
+``error:`` line, exit 2.
 
 ``floor`` filters a record through a building of :mod:`rocking.buildings.catalog` (the
 flags of ``rocking simulate --building``, :func:`rocking.cli.common.building_options`)
@@ -38,6 +56,8 @@ from __future__ import annotations
 
 import json
 import math
+import re
+import warnings
 from pathlib import Path
 
 import click
@@ -45,14 +65,18 @@ import numpy as np
 
 from .._atomic import atomic_path, atomic_write
 from .._validate import as_float
-from ..errors import ParameterError
+from ..errors import ParameterError, RockingError
 from ..units import G, parse_quantity
 from .common import (
     CONTEXT,
+    block_options,
     building_options,
     in_flag_words,
     integer,
+    json_default,
+    make_block,
     make_building,
+    mesh_flags,
     one_line,
     positive_quantity,
     read_record_arg,
@@ -628,4 +652,527 @@ def floor_cmd(record, units, dt, building, storeys, building_period, building_da
                "floors.csv, floor_spectra.csv" + "".join(f", {p}" for p in pngs))
 
 
-__all__ = ["motion", "synth_cmd", "spectrum_cmd", "show_cmd", "floor_cmd", "floor_list"]
+# ----------------------------------------------------------------------------- select
+SELECT_SHOWN_SKIPS = 10
+"""``rocking motion select`` prints at most this many skipped files (all are in
+selection.json)."""
+
+
+def period_range(text) -> tuple[float, float, int]:
+    """``TMIN:TMAX[:N]`` (s, or with a time unit: ``100ms:2s:50``) as ``(tmin, tmax, n)``;
+    ``n`` defaults to 100."""
+    shown = "TMIN:TMAX[:N] (periods in s, N >= 2 log-spaced; e.g. 0.1:2:50)"
+    parts = [x.strip() for x in str(text).split(":")]
+    if len(parts) not in (2, 3) or not all(parts):
+        raise ParameterError(f"periods must be {shown}, got {text!r}")
+    try:
+        lo = parse_quantity(parts[0], "time", name="periods", default_unit="s")
+        hi = parse_quantity(parts[1], "time", name="periods", default_unit="s")
+    except ParameterError:
+        raise ParameterError(f"periods must be {shown}, got {text!r}") from None
+    if not (lo > 0 and math.isfinite(hi) and hi > lo):
+        raise ParameterError(f"periods must have 0 < TMIN < TMAX (s), got {text!r}")
+    n = integer(parts[2], "periods (N)", 2, 10000) if len(parts) == 3 else 100
+    return lo, hi, n
+
+
+def _return_period(text) -> float:
+    s = str(text).strip()
+    for word in ("years", "year", "yrs", "yr", "y"):
+        if s.lower().endswith(word):
+            s = s[: -len(word)].strip()
+            break
+    x = as_float("return-period", s)
+    if not (math.isfinite(x) and x > 0):
+        raise ParameterError(f"return-period must be > 0 years, got {text!r}")
+    return x
+
+
+def _site_arg(text):
+    if text is None:
+        return 0
+    parts = [t.strip() for t in str(text).split(",")]
+    try:
+        if len(parts) == 1:
+            return int(parts[0])
+        if len(parts) == 2:
+            return (float(parts[0]), float(parts[1]))
+    except ValueError:
+        pass
+    raise ParameterError(f"site must be a site index (0, 1, ...) or LON,LAT, got {text!r}")
+
+
+def _hazard_curve(path, site, unit):
+    """A hazard curve file: an OpenQuake export (first line a ``#`` comment naming
+    ``investigation_time``) or a CSV of IM and annual rate or return period."""
+    from ..analysis.hazard import HazardCurve
+
+    p = Path(path)
+    if not p.is_file():
+        raise ParameterError(f"hazard: no such file {str(path)!r}")
+    try:
+        with p.open() as fh:
+            first = fh.readline()
+    except (OSError, UnicodeDecodeError) as e:
+        raise ParameterError(f"hazard: cannot read {p.name} as text ({e})") from None
+    try:
+        if first.lstrip().startswith("#") and "investigation_time" in first:
+            if unit is not None:
+                raise ParameterError(f"hazard-unit does not apply to the OpenQuake export "
+                                     f"{p.name} (its SA levels are in g)")
+            return HazardCurve.from_openquake(p, site=_site_arg(site))
+        return HazardCurve.from_csv(p, unit=unit)
+    except ParameterError as e:
+        msg = one_line(e).replace("give unit='g'", "give --hazard-unit g")
+        msg = re.sub(r"^(unit|path|site)\b", lambda m: {"unit": "hazard-unit",
+                                                        "path": "hazard"}.get(m[1], m[1]),
+                     msg)
+        raise ParameterError(msg if p.name in msg else f"hazard {p.name}: {msg}") from None
+
+
+_TABLE_T = re.compile(r"^\s*(?:t|period|periods|tn)\s*(?:[_\s]\s*|[(\[]\s*)?([a-z]*)\s*[)\]]?\s*$",
+                      re.I)
+_TABLE_SA = re.compile(r"^\s*(?:sa|psa|se|s_a|sa_t|spectral[_\s]acceleration|acc\w*|target)"
+                       r"(?:\s*\(\s*t\s*\))?\s*(?:[_\s]\s*|[(\[]\s*)?(.*?)\s*[)\]]?\s*$", re.I)
+
+
+def read_target_table(path, unit=None) -> tuple[np.ndarray, np.ndarray, str, list[str]]:
+    """A user's target spectrum: a CSV (or whitespace) table of period and spectral
+    acceleration with a header row naming both (``T (s),Sa (g)``, ``period_s,sa_ms2``;
+    ``#`` lines are comments). The Sa unit comes from the header or ``unit`` (both: they
+    must agree); periods in s (or ms if the header says so). A row at T = 0 (the PGA) is
+    left out: the match is log-log. Returns ``(periods s, values m/s^2, unit, notes)``."""
+    from ..units import acceleration_factor, acceleration_unit
+
+    p = Path(path)
+    name = p.name
+    try:
+        text = p.read_text()
+    except (OSError, UnicodeDecodeError) as e:
+        raise ParameterError(f"target: cannot read {name} as text ({e})") from None
+    lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+    form = (f"target {name} must be a table of period (s) and Sa with a header row, e.g. "
+            "'T (s),Sa (g)', and at least 2 rows")
+    if len(lines) < 3:
+        raise ParameterError(form)
+
+    def cells(ln):
+        return [c.strip() for c in (ln.split(",") if "," in ln else ln.split())]
+
+    head = cells(lines[0])
+    if len(head) != 2:
+        raise ParameterError(f"{form}; its header has {len(head)} columns: {lines[0]!r}")
+    mt, ms = _TABLE_T.match(head[0]), _TABLE_SA.match(head[1])
+    if not mt or not ms:
+        raise ParameterError(f"{form}; cannot read the header {lines[0]!r} as period and Sa")
+    t_unit = mt[1].lower() or "s"
+    if t_unit not in ("s", "ms", "sec"):
+        raise ParameterError(f"target {name}: the period column's unit {mt[1]!r} is not s "
+                             "or ms")
+    t_factor = 1e-3 if t_unit == "ms" else 1.0
+    stated = ms[1].strip()
+    head_unit = None
+    if stated:
+        spelled = {"ms2": "m/s^2", "mps2": "m/s^2", "cms2": "cm/s^2"}.get(stated.lower(),
+                                                                          stated)
+        head_unit = acceleration_unit(spelled)
+        if head_unit is None:
+            raise ParameterError(f"target {name}: the Sa column's unit {stated!r} is not an "
+                                 "acceleration unit (g, m/s^2, cm/s^2, gal)")
+    given = None
+    if unit is not None:
+        given = acceleration_unit(unit)
+        if given is None:
+            raise ParameterError(f"target-unit must be an acceleration unit (g, m/s^2, "
+                                 f"cm/s^2, gal), got {unit!r}")
+    if head_unit and given and head_unit != given:
+        raise ParameterError(f"target-unit {unit} contradicts {name}'s header "
+                             f"{head[1]!r} ({head_unit})")
+    u = head_unit or given
+    if u is None:
+        raise ParameterError(f"target-unit: {name}'s Sa column {head[1]!r} states no unit; "
+                             "give --target-unit g (or m/s^2) or write the header as "
+                             "'Sa (g)'")
+    rows = []
+    for k, ln in enumerate(lines[1:], 2):
+        c = cells(ln)
+        try:
+            if len(c) != 2:
+                raise ValueError
+            rows.append((float(c[0]), float(c[1])))
+        except ValueError:
+            raise ParameterError(f"{form}; data row {k} is not two numbers: {ln!r}") from None
+    data = np.array(rows)
+    T, sa = data[:, 0] * t_factor, data[:, 1]
+    notes = []
+    if not (np.all(np.isfinite(data)) and np.all(T >= 0) and np.all(sa > 0)):
+        raise ParameterError(f"target {name}: periods must be >= 0 and Sa > 0 (finite)")
+    if np.any(T == 0):
+        notes.append(f"target {name}: the row at T = 0 (PGA) is not used (the match is "
+                     "log-log)")
+        T, sa = T[T > 0], sa[T > 0]
+    if T.size < 2 or np.any(np.diff(T) <= 0):
+        raise ParameterError(f"target {name}: periods must increase, with at least 2 rows "
+                             "at T > 0")
+    return T, sa * acceleration_factor(u), u, notes
+
+
+def _read_candidates(folder: Path, units, dt):
+    """Every regular file of ``folder`` that the record reader reads: ``(records,
+    sources, skipped)`` with ``skipped`` a list of ``(file name, one-line reason)``."""
+    records, sources, skipped = [], [], []
+    files = sorted(p for p in folder.iterdir() if p.is_file())
+    for p in files:
+        try:
+            rec, _ = read_record_arg(p, p.name, units, dt)
+        except RockingError as e:
+            msg = one_line(e)
+            for head in (f"{p}: ", f"{p.name}: ", f"file: {p}: ", f"{p.name}: {p}: "):
+                if msg.startswith(head):  # the file is named in the list already
+                    msg = msg[len(head):]
+            skipped.append((p.name, msg))
+            continue
+        except Exception as e:  # a reader's own failure on a file it does not know
+            skipped.append((p.name, f"{type(e).__name__}: {one_line(e)}"))
+            continue
+        records.append(rec)
+        sources.append(p)
+    return records, sources, files, skipped
+
+
+@motion.command("select")
+@click.argument("folder", metavar="FOLDER")
+@click.option("--target", "target", required=True, metavar="ec8|uhs|FILE",
+              help="The target spectrum: ec8 (with --ag, --ground, --type; without --ag the "
+                   "paper's target), uhs (uniform hazard spectrum of --hazard curves at "
+                   "--return-period) or a CSV table FILE of period (s) and Sa.")
+@click.option("--n", "count", default="11", show_default=True, metavar="N",
+              help="Number of records to select (EN 1998-1 asks for >= 3; 7 for the mean "
+                   "response).")
+@click.option("--max-scale", "max_scale", default="4", show_default=True, metavar="F",
+              help="Scale factors within [1/F, F] (F >= 1).")
+@click.option("--periods", metavar="TMIN:TMAX[:N]",
+              help="Periods of the match (s), N log-spaced (default 100); or give a block "
+                   "(--specimen N, --width/--height, ...) for its default range.")
+@block_options(classical=True)
+@click.option("--damping", default="5%", show_default=True, metavar="Z",
+              help="Damping ratio of the spectra: 5% or 0.05 (a target table must refer to "
+                   "it; uhs: 5 % only).")
+@click.option("--units", metavar="U",
+              help="Units of the record files that state none: g, m/s^2, cm/s^2 (gal); "
+                   "default g. A unit a file states must agree (else it is skipped).")
+@click.option("--dt", metavar="DT", help="Time step of one-column record files (s).")
+@click.option("--ag", metavar="AG", help="ec8: design ground acceleration, e.g. 0.25g.")
+@click.option("--ground", type=click.Choice(list("ABCDE"), case_sensitive=False),
+              help="ec8: ground type (with --ag; default A).")
+@click.option("--type", "stype", type=click.Choice(["1", "2"]),
+              help="ec8: spectrum type (with --ag; default 1).")
+@click.option("--hazard", "hazard_files", multiple=True, metavar="FILE",
+              help="uhs: an SA(T) hazard curve, repeatable (OpenQuake hazard_curve export, "
+                   "or CSV of IM and annual rate or return period with a header such as "
+                   "'SA(0.5) (g),rate').")
+@click.option("--return-period", "return_period", default=None, metavar="YEARS",
+              help="uhs: return period of the spectrum (default 475 years).")
+@click.option("--site", metavar="IDX|LON,LAT",
+              help="uhs: the site of OpenQuake exports (index, or nearest to LON,LAT; "
+                   "default 0).")
+@click.option("--hazard-unit", "hazard_unit", metavar="U",
+              help="uhs: unit of CSV curves whose header states none (g, m/s^2).")
+@click.option("--target-unit", "target_unit", metavar="U",
+              help="Target table: unit of Sa if its header states none (g, m/s^2, cm/s^2).")
+@click.option("--restarts", default="8", show_default=True, metavar="K",
+              help="The search is repeated from the K best first records.")
+@click.option("--out", required=True, type=click.Path(file_okay=False),
+              help="Folder for the scaled records, selection.csv, selection_spectra.csv, "
+                   "selection.json and selection.png.")
+@click.option("--no-plot", is_flag=True, help="Do not write selection.png.")
+@click.option("--json", "as_json", is_flag=True, help="Print selection.json instead of "
+                                                      "the summary.")
+def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, width,
+               height, alpha, p, mu, damping, units, dt, ag, ground, stype, hazard_files,
+               return_period, site, hazard_unit, target_unit, restarts, out, no_plot,
+               as_json):
+    """Select N amplitude-scaled records from the files in FOLDER whose mean spectrum
+    matches a target (EN 1998-1 3.2.3.1.2: the mean not below 90 % of the target at any
+    period of the range; rocking.analysis.select_records).
+
+    \b
+    FOLDER: every file that the record reader reads is a candidate (PEER .AT2, CSV or
+    columns, and the downloaded formats the reader detects); files it refuses are listed
+    as skipped, with the reason. The spectra are computed once per candidate.
+    \b
+    Targets:
+      ec8        EN 1998-1 elastic spectrum: --ag 0.25g [--ground C] [--type 1]
+                 (without --ag: the paper's target, rocking motion synth)
+      uhs        uniform hazard spectrum: --hazard FILE (repeatable; one SA(T) curve per
+                 period, >= 2 periods) [--return-period 475] [--site IDX|LON,LAT]
+      FILE.csv   a table of period (s) and Sa, header e.g. 'T (s),Sa (g)' (or
+                 --target-unit g); log-log interpolated, never extrapolated
+    \b
+    Periods: --periods TMIN:TMAX[:N], or a block (--specimen 2, --width 0.2 --height 1,
+    ...): its default range runs from 2 pi/(10 p) to 2 pi/p (p the block's frequency
+    parameter, 1/s). A rocking block is not an oscillator: pulses of period 2 pi/omega_p
+    overturn it at little more than the static g tan(alpha) when omega_p/p < 1, and at
+    accelerations that grow fast above it, beyond earthquake levels for omega_p/p > 10
+    (overturning spectra; rocking.analysis.selection.default_periods).
+    \b
+    Writes to OUT: the N records scaled (CSV t s, acc m/s^2: read them back with
+    --units m/s^2, e.g. rocking simulate --record OUT/01_x.csv --units m/s^2),
+    selection.csv (rank by each record's own misfit, file, source, scale, PGA after
+    scaling, misfit, min and max ratio to the target), selection_spectra.csv, selection.json
+    (target, period range and why, n, max_scale, misfit, min_ratio, compliant, notes,
+    skipped files) and selection.png. A set that cannot meet the 90 % rule within
+    --max-scale is still written, with compliant=false and a one-line warning (exit 0):
+    it is the best the candidates allow, and the warning and the JSON say it is not
+    compliant.
+    """
+    from ..analysis.selection import (
+        CODE_RATIO,
+        candidate_spectra,
+        default_periods,
+        log_misfit,
+        select_records,
+        uniform_hazard_spectrum,
+    )
+    from ..errors import PlausibilityWarning
+    from ..motions.io import write_csv
+    from ..units import acceleration_unit
+
+    # ---- options (all checked before the files are read)
+    n = integer(count, "n", 1)
+    try:
+        ms = as_float("max-scale", max_scale)
+    except ParameterError:
+        ms = math.nan
+    if not (math.isfinite(ms) and ms >= 1.0):
+        raise ParameterError(f"max-scale must be a number >= 1 (scale factors within "
+                             f"[1/F, F]), got {max_scale!r}")
+    k_restarts = integer(restarts, "restarts", 1, 1000)
+    zeta = _damping(damping)
+    if units is not None and acceleration_unit(units) is None:
+        raise ParameterError(f"units must be g, m/s^2, cm/s^2, gal or mm/s^2, got {units!r}")
+    step = _time(dt, "dt")
+    kind = str(target).strip()
+    kind = kind.lower() if kind.lower() in ("ec8", "uhs") else kind
+    if kind != "ec8" and (ag or ground or stype):
+        raise ParameterError("ag, ground and type apply to --target ec8 only")
+    if kind != "uhs" and (hazard_files or return_period or site or hazard_unit):
+        raise ParameterError("hazard, return-period, site and hazard-unit apply to "
+                             "--target uhs only")
+    if kind in ("ec8", "uhs") and target_unit is not None:
+        raise ParameterError("target-unit applies to a target table (--target FILE.csv) "
+                             "only")
+    if kind == "uhs" and not math.isclose(zeta, 0.05):
+        raise ParameterError(f"damping must be 5% with --target uhs (hazard models give "
+                             f"5 %-damped SA), got {damping!r}")
+    if kind not in ("ec8", "uhs") and not Path(kind).is_file():
+        raise ParameterError(f"target must be ec8, uhs or a table file; no such file "
+                             f"{kind!r}")
+    block_given = any(v is not None for v in (specimen, width, height, alpha)) \
+        or bool(mesh_flags())
+    if periods is not None and block_given:
+        raise ParameterError("periods: give --periods or a block (its default range), not "
+                             "both")
+    if periods is not None:
+        lo, hi, npts = period_range(periods)
+        T = np.geomspace(lo, hi, npts)
+        prange = {"source": "--periods", "text": str(periods),
+                  "why": "given (--periods)"}
+    elif block_given:
+        block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
+                                  allow_classical=True)
+        T = default_periods(block)
+        prange = {"source": "block", "block": {**binfo, "name": block.name, "p": block.p,
+                                               "alpha": block.alpha},
+                  "why": (f"default of the block {block.name} (p = {block.p:.4g} 1/s): "
+                          f"2 pi/(10 p) to 2 pi/p, the pulse periods that govern "
+                          f"overturning (omega_p/p from 1 to 10; "
+                          f"rocking.analysis.selection.default_periods)")}
+    else:
+        raise ParameterError("periods: give --periods TMIN:TMAX[:N] (s) or a block for its "
+                             "default range (--specimen N, --width W --height H, --alpha "
+                             "A --p P --mu MU, --mesh FILE)")
+    prange.update({"tmin_s": float(T[0]), "tmax_s": float(T[-1]), "n_periods": int(T.size)})
+
+    # ---- the target
+    notes: list[str] = []
+    tinfo: dict = {"kind": "ec8" if kind == "ec8" else "uhs" if kind == "uhs" else "table"}
+    if kind == "ec8":
+        spec, is_paper = _target(ag, ground, stype, zeta)
+        tfun = spec
+        tinfo.update({"description": spec.describe(), "label": spec.name,
+                      "paper_target": is_paper,
+                      "ag": ag, "ground": (ground or "A").upper() if ag else None,
+                      "type": int(stype or 1) if ag else None})
+    else:
+        if kind == "uhs":
+            if not hazard_files:
+                raise ParameterError("hazard: --target uhs needs SA(T) hazard curves: "
+                                     "--hazard FILE, repeatable (>= 2 periods)")
+            tr = _return_period(475.0 if return_period is None else return_period)
+            curves = [_hazard_curve(f, site, hazard_unit) for f in hazard_files]
+            try:
+                tp, tv = uniform_hazard_spectrum(curves, tr)
+            except ParameterError as e:
+                raise ParameterError(f"hazard: {one_line(e)}") from None
+            used = [c for c in curves if c.im_name.strip().upper() != "PGA"]
+            for f, c in zip(hazard_files, curves, strict=True):
+                if c.im_name.strip().upper() == "PGA":
+                    notes.append(f"hazard {Path(f).name}: a PGA curve is not used (T = 0 "
+                                 "has no log)")
+                elif not (c.rate[-1] <= 1.0 / tr <= c.rate[0]):
+                    notes.append(f"hazard {Path(f).name}: 1/{tr:g} per year is beyond the "
+                                 f"curve's rates: {c.im_name} extrapolated as a power law")
+                if c.approximate:
+                    notes.append(f"hazard {Path(f).name}: an approximation ({c.label})")
+            desc = (f"uniform hazard spectrum at {tr:g} years (annual rate {1 / tr:.4g}) "
+                    f"from {len(used)} SA curves, T = {tp[0]:g} to {tp[-1]:g} s, 5 % damping")
+            tinfo.update({"description": desc, "label": f"uniform hazard spectrum, {tr:g} "
+                                                         "years", "return_period": tr,
+                          "hazard": [{"file": str(f), "label": c.label,
+                                      "im_name": c.im_name, "unit": c.unit,
+                                      "approximate": c.approximate}
+                                     for f, c in zip(hazard_files, curves, strict=True)],
+                          "uhs_period_s": tp.tolist(), "uhs_sa_ms2": tv.tolist()})
+        else:
+            tp, tv, tu, tnotes = read_target_table(kind, target_unit)
+            notes += tnotes
+            tinfo.update({"description": f"table {Path(kind).name}: {tp.size} periods from "
+                                         f"{tp[0]:g} to {tp[-1]:g} s, Sa in {tu}, "
+                                         f"{100 * zeta:g} % damping",
+                          "label": f"table {Path(kind).name}", "file": str(kind),
+                          "unit": tu})
+        if T[0] < tp[0] * (1 - 1e-9) or T[-1] > tp[-1] * (1 + 1e-9):
+            what = "--periods" if periods is not None else "the block's default range"
+            raise ParameterError(f"periods: {what} ({T[0]:.4g} to {T[-1]:.4g} s) reaches "
+                                 f"beyond the target's periods ({tp[0]:.4g} to "
+                                 f"{tp[-1]:.4g} s), which are not extrapolated: narrow "
+                                 "--periods or extend the target")
+        tfun = (tp, tv)
+
+    # ---- the candidates
+    src = Path(folder)
+    if not src.exists():
+        raise ParameterError(f"FOLDER: no such folder {folder!r}")
+    if not src.is_dir():
+        raise ParameterError(f"FOLDER: {folder!r} is not a folder (give the folder that "
+                             "holds the record files)")
+    dest = Path(out)
+    if dest.exists() and dest.resolve() == src.resolve():
+        raise ParameterError("out must not be FOLDER itself (the scaled records would "
+                             "become candidates of the next run)")
+    records, sources, files, skipped = _read_candidates(src, units, step)
+    if not records:
+        first = f"; e.g. {skipped[0][0]}: {skipped[0][1]}" if skipped else ""
+        raise ParameterError(f"FOLDER: no record file in {folder} ({len(files)} files, none "
+                             f"read{first})")
+    if n > len(records):
+        raise ParameterError(f"n must be <= the number of readable records in FOLDER "
+                             f"({len(records)} of {len(files)} files), got {count!r}")
+    S = candidate_spectra(records, T, zeta)  # once per candidate
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", PlausibilityWarning)
+        res = select_records(S, tfun, T, n=n, max_scale=ms, damping=zeta,
+                             restarts=k_restarts)
+    for w in caught:  # the non-compliance warning is ours below; others pass on
+        if not (issubclass(w.category, PlausibilityWarning)
+                and "NOT compliant" in str(w.message)):
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    notes += res.notes
+
+    # ---- rows, ranked by each record's own misfit
+    per = [log_misfit(s, res.target) for s in res.spectra]
+    order = np.argsort(per, kind="stable")
+    width_ = max(2, len(str(n)))
+    rows, chosen = [], []
+    for rank, j in enumerate(order, 1):
+        i, s = int(res.indices[j]), float(res.scales[j])
+        rec = records[i].scaled(s)
+        stem = sources[i].stem
+        name = f"{rank:0{width_}d}_{stem}.csv"
+        ratio = res.spectra[j] / res.target
+        rows.append({"rank": rank, "file": name, "source": sources[i].name, "scale": s,
+                     "pga_ms2": rec.pga, "pga_g": rec.pga / G, "misfit": per[j],
+                     "min_ratio": float(ratio.min()), "max_ratio": float(ratio.max()),
+                     "dt_s": rec.dt, "npts": len(rec), "duration_s": rec.duration})
+        chosen.append((rec, name, res.spectra[j]))
+
+    summary = {
+        "folder": str(src), "files": len(files), "candidates": len(records),
+        "skipped": [{"file": f, "reason": r} for f, r in skipped],
+        "target": tinfo, "period_range": prange, "damping": zeta, "n": n,
+        "max_scale": ms, "restarts": k_restarts, "misfit": res.misfit,
+        "min_ratio": res.min_ratio, "code_ratio": CODE_RATIO, "compliant": res.compliant,
+        "notes": notes, "records": rows, "records_units": "m/s^2",
+        "out": str(dest)}
+
+    # ---- files
+    try:
+        dest.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise click.ClickException(f"cannot create {dest}: {e.strerror or e}") from None
+    import pandas as pd
+
+    for rec, name, _ in chosen:
+        write_csv(rec, dest / name)
+    with atomic_path(dest / "selection.csv") as tmp:
+        pd.DataFrame(rows).to_csv(tmp, index=False, float_format="%.10g")
+    cols = {"period_s": res.periods, "target_ms2": res.target,
+            "target_90_ms2": CODE_RATIO * res.target, "mean_ms2": res.mean}
+    for _, name, s in chosen:
+        cols[f"{name[:-4]}_ms2"] = s
+    with atomic_path(dest / "selection_spectra.csv") as tmp:
+        pd.DataFrame(cols).to_csv(tmp, index=False, float_format="%.10g")
+    atomic_write(dest / "selection.json",
+                 json.dumps(summary, indent=2, default=json_default) + "\n")
+    if not no_plot:
+        from matplotlib.figure import Figure
+
+        fig = Figure(figsize=(8.0, 5.0), layout="constrained")
+        ax = res.plot(ax=fig.add_subplot())
+        for x in (res.periods[0], res.periods[-1]):
+            ax.axvline(x, color="0.4", lw=0.8, ls=":")
+        ax.set_xlabel(f"period T (s): {res.periods[0]:.3g} to {res.periods[-1]:.3g} s, "
+                      + ("--periods" if periods is not None else "the block's range "
+                         "2 pi/(10 p) to 2 pi/p"))
+        ax.set_ylabel(f"Sa (m/s^2), {100 * zeta:g} % damping")
+        ax.set_title(f"{ax.get_title()}\ntarget: {tinfo['label']}", fontsize=10)
+        _save(fig, dest / "selection.png")
+
+    # ---- terminal
+    if not res.compliant:
+        click.echo(f"warning: the mean of the {n} selected records is "
+                   f"{100 * res.min_ratio:.1f} % of the target at worst (< 90 %, EN 1998-1 "
+                   f"3.2.3.1.2) with scale factors <= --max-scale {ms:g}: NOT compliant "
+                   "(compliant=false in selection.json)", err=True)
+    if as_json:
+        click.echo(json.dumps(summary, indent=2, default=json_default))
+        return
+    click.echo(f"candidates  {len(records)} records read in {src} ({len(files)} files"
+               + (f", {len(skipped)} skipped)" if skipped else ")"))
+    for f, r in skipped[:SELECT_SHOWN_SKIPS]:
+        click.echo(f"skipped     {f}: {r}")
+    if len(skipped) > SELECT_SHOWN_SKIPS:
+        click.echo(f"            ... {len(skipped) - SELECT_SHOWN_SKIPS} more "
+                   "(selection.json)")
+    click.echo(f"target      {tinfo['description']}")
+    click.echo(f"periods     {T.size} from {T[0]:.4g} to {T[-1]:.4g} s: {prange['why']}")
+    sc = res.scales
+    click.echo(f"selection   {n} records, scale factors {sc.min():.3g} to {sc.max():.3g} "
+               f"(max-scale {ms:g}), misfit {res.misfit:.3g} (RMS log ratio), mean >= "
+               f"{100 * res.min_ratio:.1f} % of the target: "
+               + ("compliant (>= 90 %)" if res.compliant else "NOT compliant (< 90 %)"))
+    click.echo(f"{'rank':>6}  {'scale':>7} {'PGA (g)':>8} {'misfit':>7} {'min ratio':>9}"
+               "  source")
+    for r in rows:
+        click.echo(f"{r['rank']:>6}  {r['scale']:7.3g} {r['pga_g']:8.3g} {r['misfit']:7.3g} "
+                   f"{r['min_ratio']:9.3g}  {r['source']}")
+    for note in notes:
+        click.echo(f"note        {note}")
+    click.echo(f"wrote       {dest}/: {n} records (CSV: t s, acc m/s^2; read back with "
+               "--units m/s^2), selection.csv, selection_spectra.csv, selection.json"
+               + ("" if no_plot else ", selection.png"))
+
+
+__all__ = ["motion", "synth_cmd", "spectrum_cmd", "show_cmd", "floor_cmd", "floor_list",
+           "select_cmd", "period_range", "read_target_table"]
