@@ -10,8 +10,9 @@ tests are scaled to a ladder of ground PGAs (IDA style, one :func:`rocking.simul
 batch per mitigation, block and floor), and
 :func:`rocking.analysis.mitigation.compare_mitigations` fits the overturning fragility
 curves against the ground PGA, integrates them over the ILLUSTRATIVE hazard curve of the
-fragility section (:func:`.fragility.hazard_rate`) and sets the isolator's displacement
-demand against a 0.15 m clearance.
+fragility section (:func:`.fragility.hazard_curve`: the shipped OpenQuake-format example
+file, not the hazard of any site) and sets the isolator's displacement demand against a
+0.15 m clearance.
 
 Where isolation does not help: Vassiliou and Makris (2012, Earthquake Engng Struct. Dyn.
 41(2), 177-196) found that an isolated base can make a small block *more* vulnerable to
@@ -41,7 +42,7 @@ from ...units import G
 from .. import html as H
 from ..core import section
 from .buildings import STATUE_HEIGHT, STATUE_WIDTH, make_buildings, statue
-from .fragility import HAZARD_A0, HAZARD_K, HAZARD_K0, hazard_rate
+from .fragility import HAZARD_A0, HAZARD_FILE, HAZARD_K, HAZARD_K0, HAZARD_SITE, hazard_curve
 
 SPECIMENS = (2, 3, 4)
 STATUE = "statue"
@@ -64,7 +65,6 @@ MITIGATIONS = {
 LABELS = {"none": "free (no mitigation)",
           **{f"isolated_{t:g}s": f"isolated, T_b = {t:g} s" for t in ISOLATION_PERIODS},
           "anchored": f"anchored, q = {ANCHOR_STRENGTH:g}"}
-HAZARD_IM = np.geomspace(0.02, 3.0, 13)  # g: where the illustrative hazard is sampled
 N_BOOT = (50, 200)
 N_RECORDS = (3, 8)  # quick, default
 N_LEVELS = (6, 8)
@@ -234,10 +234,12 @@ def clearance_pga(disp: pd.DataFrame) -> pd.DataFrame:
 
 def compare(runs: pd.DataFrame, failure: str, quick: bool):
     """:func:`~rocking.analysis.compare_mitigations` of the runs by block and floor, IM =
-    ground PGA in g, on the ILLUSTRATIVE hazard curve, against :data:`CLEARANCE`."""
+    ground PGA in g, on the ILLUSTRATIVE hazard curve of the fragility section (its points,
+    :func:`.fragility.hazard_curve`), against :data:`CLEARANCE`."""
+    hz = hazard_curve()
     return compare_mitigations(runs, im="pga", im_unit="g", failure=failure,
                                by=["block", "floor"], clearance=CLEARANCE,
-                               hazard=(HAZARD_IM, hazard_rate(HAZARD_IM), "g"),
+                               hazard=(hz.im, hz.rate, hz.unit),
                                n_boot=N_BOOT[not quick], seed=0)
 
 
@@ -603,9 +605,11 @@ def _text(res) -> list[str]:
             s += f" ({len(nb)} configurations without a fit: bounds in the table)"
         af_parts.append(s)
     afreq = (
-        f"Annual frequency (ILLUSTRATIVE): on the made-up hazard curve of the fragility "
-        f"section, λ(PGA) = {HAZARD_K0:g} (PGA / {HAZARD_A0:g} g)^−{HAZARD_K:g} per year "
-        "(not the hazard of any site), the free blocks overturn with a mean annual "
+        f"Annual frequency (ILLUSTRATIVE): on the example hazard curve of the fragility "
+        f"section (site {HAZARD_SITE} of the shipped OpenQuake-format file "
+        f"{HAZARD_FILE.name}, a made-up power law λ(PGA) = {HAZARD_K0:g} (PGA / "
+        f"{HAZARD_A0:g} g)^−{HAZARD_K:g} per year, not the hazard of any site), the free "
+        "blocks overturn with a mean annual "
         f"frequency from {_af_cell(lo_f)}/yr ({lo_f.block} on the {lo_f.floor}) "
         f"to {_af_cell(hi_f)}/yr ({hi_f.block} on the {hi_f.floor}); relative to "
         "them, " + "; ".join(af_parts) + ". Only the method is meant: a real assessment "
