@@ -15,6 +15,12 @@ writes, in one folder:
 * ``pelicun.csv``: the damage-state curves as a pelicun fragility table (PGA and PGV);
 * ``p_overturn_<model>.png``: the stripes with Wilson error bars and the fitted curves
   with their bootstrap bands, one colour per block;
+* ``risk.csv`` (with a hazard: the store's ``[hazard]``, or one given to :func:`report`):
+  per group and fit (overturning, each damage state) the annual frequency, its share from
+  the hazard curve's extrapolated tails and the probability over the service life
+  (:func:`rocking.analysis.risk`); a group without an overturning fit gets the rates of its
+  IM bounds (a step fragility there) and a note, never a fitted number; an approximate
+  (code-value) hazard is named so in its ``hazard`` and ``approximate`` columns;
 * ``report.md``: a short markdown summary linking the above.
 
 A table with a ``floor`` column (a campaign with ``[building]``) is grouped by (model,
@@ -60,10 +66,13 @@ import pandas as pd
 from .._atomic import atomic_path, atomic_write
 from ..analysis import DEFAULT_THRESHOLDS, fragility, fragility_curves, wilson_interval
 from ..analysis.damage import state_labels
+from ..analysis.fragility import fit_or_bounds
+from ..analysis.hazard import HazardCurve, probability_in, risk
 from ..errors import ParameterError, SimulationError
 from ..models.registry import MODELS
 from ..plot import PALETTE, figure, im_label, save_figure, style_axes, unit_label
 from ..units import G
+from . import hazard as site_hazard
 from .plan import row_output_columns
 
 #: Columns the table must have.
@@ -78,6 +87,15 @@ PELICUN_DEMAND = {"pga": ("Peak Ground Acceleration", "g"),
                   "pgv": ("Peak Ground Velocity", "mps")}
 _PELICUN_UNIT = {"m/s^2": "mps2", "m/s2": "mps2", "g": "g", "m/s": "mps", "m": "m",
                  "-": "unitless", "": "unitless"}
+
+TAIL_NOTE = 0.1
+"""A risk whose share from the hazard curve's extrapolated tails exceeds this gets a note
+(the number rests on the power-law extension beyond the curve's ends)."""
+RISK_COLUMNS = ("fit", "state", "label", "median", "beta", "im_unit", "annual_frequency",
+                "tail_share", "probability", "t_years", "annual_frequency_lower_bound",
+                "annual_frequency_upper_bound", "probability_lower_bound",
+                "probability_upper_bound", "hazard", "approximate", "note")
+"""The columns of ``risk.csv`` after the group's (model, mitigation, block, floor)."""
 
 N_BOOT = 200
 """Bootstrap draws of the bands (asymptotic normal: cheap)."""
@@ -290,6 +308,132 @@ def _pelicun(curves, im: dict, ident: str):
         return None, str(e)
 
 
+# --------------------------------------------------------------------------- risk
+
+def _site(manifest, hazard, t_years, im: dict) -> dict | None:
+    """The hazard of the report: ``hazard`` (a HazardCurve or a manifest record, given at
+    report time) or the manifest's ``hazard``; ``{"curve", "t_years", "source", "given",
+    "replaces"}``, or None without one. A curve of another IM than the table's is refused
+    (naming both)."""
+    stored = manifest.get("hazard")
+    rec = hazard if hazard is not None else stored
+    if rec is None:
+        if t_years is not None:
+            raise ParameterError("t_years needs a hazard curve: the store has no [hazard] "
+                                 "(give one)")
+        return None
+    curve = site_hazard.curve_of(rec)
+    why = site_hazard.mismatch(curve, im)
+    if why is not None:
+        raise ParameterError(f"hazard: {why}")
+    if t_years is None:
+        t_years = rec.get("t_years") if isinstance(rec, dict) else None
+    t = site_hazard.check_t_years(site_hazard.DEFAULT_T_YEARS if t_years is None
+                                  else t_years)
+    src = (rec.get("source") or {}) if isinstance(rec, dict) else {}
+    replaces = (str(stored.get("label", "?")) if hazard is not None
+                and isinstance(stored, dict) else None)
+    return {"curve": curve, "t_years": t, "source": src, "given": hazard is not None,
+            "replaces": replaces}
+
+
+def _unit_text(unit: str) -> str:
+    return f" {unit}" if unit else ""
+
+
+def _risk_row(f, curve: HazardCurve, t: float) -> dict:
+    """The risk of one fit: annual frequency, tail share, probability in ``t`` years."""
+    r = risk(f, curve, t_years=t)
+    note = ""
+    if r.tail_share > TAIL_NOTE:
+        note = (f"{100 * r.tail_share:.0f}% of it from the power-law tails beyond the hazard "
+                f"curve ({_g(curve.im[0])}..{_g(curve.im[-1])} {curve.unit}): it rests on "
+                "that extrapolation")
+    return {"median": f.median, "beta": f.beta, "annual_frequency": r.annual_frequency,
+            "tail_share": r.tail_share, "probability": r.probability_in(t), "note": note}
+
+
+def _bounds(ok: pd.DataFrame, im: dict, curve: HazardCurve, t: float) -> dict:
+    """A group without an overturning fit: the rate of the IM bounds that the outcomes
+    give (:func:`rocking.analysis.fragility.fit_or_bounds`), as the annual frequency of a
+    step fragility there, and a note; never a fitted number."""
+    nan = math.nan
+    out = {"annual_frequency_lower_bound": nan, "annual_frequency_upper_bound": nan,
+           "probability_lower_bound": nan, "probability_upper_bound": nan}
+    x = ok[im["column"]].to_numpy(float)
+    good = np.isfinite(x) & (x > 0)
+    x, ov = x[good], ok["overturned"].to_numpy(bool)[good]
+    unit = _unit_text(im["unit"])
+    if x.size == 0:
+        return {**out, "note": "no fit, no run with a valid IM: no number"}
+    try:
+        _, lo, hi, why = fit_or_bounds(x, ov, n_boot=0)
+    except _FIT_ERRORS as e:
+        return {**out, "note": f"no fit ({_line(e)}): no number"}
+    def rate(v):
+        c = float(site_hazard.to_im_unit(v, curve, im["unit"]))
+        beyond = not curve.im[0] <= c <= curve.im[-1]
+        return curve.rate_at(c), " (beyond the hazard curve: its power-law tail)" * beyond
+
+    if why == "separated" and lo >= hi:  # mixed outcomes at one IM, none below, all above
+        lam, beyond = rate(hi)
+        return {**out, "note": f"no overturning fit (overturning from {_g(hi)}{unit} on, "
+                               f"none below; survivors there too): no fitted number; the "
+                               f"rate of that IM is {_g(lam)} per year{beyond} (the annual "
+                               "frequency if the fragility were a step there, not a bound)"}
+    if why not in ("none failed", "all failed", "separated"):
+        return {**out, "note": "no overturning fit (the outcomes give no bound of the "
+                               "median): no number"}
+    parts = []
+
+    if math.isfinite(lo):  # no overturning up to lo: a step there has rate lambda(lo)
+        lam, beyond = rate(lo)
+        out["annual_frequency_upper_bound"] = lam
+        out["probability_upper_bound"] = probability_in(t, lam)
+        parts.append(f"no run overturned up to {_g(lo)}{unit}: below {_g(lam)} per year, "
+                     f"the rate of that IM{beyond}")
+    if math.isfinite(hi):  # every run overturned from hi: a step there has rate lambda(hi)
+        lam, beyond = rate(hi)
+        out["annual_frequency_lower_bound"] = lam
+        out["probability_lower_bound"] = probability_in(t, lam)
+        parts.append(f"every run overturned from {_g(hi)}{unit}: above {_g(lam)} per year, "
+                     f"the rate of that IM{beyond}")
+    what = {"none failed": "no run overturned", "all failed": "every run overturned",
+            "separated": "outcomes separated by the IM",
+            "decreasing": "overturning only below the survivals"}.get(why, why)
+    note = f"no overturning fit ({what}): no fitted number"
+    if parts:
+        note += "; " + "; ".join(parts) + " (if the fragility were a step there)"
+    return {**out, "note": note}
+
+
+def _line(e) -> str:
+    return (str(e).splitlines() or [type(e).__name__])[0]
+
+
+def _risk_rows(key: dict, ok: pd.DataFrame, im: dict, fit, curves, labels: list[str],
+               site: dict) -> list[dict]:
+    """The rows of ``risk.csv`` of one group: overturning (a fit, or bounds and a note)
+    and every damage state with a curve."""
+    curve, t = site["curve"], site["t_years"]
+    nan = math.nan
+    base = {**key, "im_unit": im["unit"], "t_years": t, "hazard": curve.label,
+            "approximate": curve.approximate,
+            "annual_frequency_lower_bound": nan, "annual_frequency_upper_bound": nan,
+            "probability_lower_bound": nan, "probability_upper_bound": nan}
+    row = {**base, "fit": "overturning", "state": len(labels), "label": labels[-1]}
+    if fit is not None:
+        rows = [{**row, **_risk_row(fit, curve, t)}]
+    else:
+        rows = [{**row, "median": nan, "beta": nan, "annual_frequency": nan,
+                 "tail_share": nan, "probability": nan, **_bounds(ok, im, curve, t)}]
+    if curves is not None:
+        for s, f in enumerate(curves.fits, start=1):
+            rows.append({**base, "fit": "damage_states", "state": s, "label": labels[s - 1],
+                         **_risk_row(f, curve, t)})
+    return rows
+
+
 # --------------------------------------------------------------------------- plots
 
 def _plot_name(name: str, blocks) -> str:
@@ -385,8 +529,76 @@ def _run_counts(t: pd.DataFrame) -> tuple[list[str], list[str], dict]:
     return lines, alerts, counts
 
 
+APPROXIMATE = ("APPROXIMATION: the hazard curve is a code value (EN 1998-1 power law), not "
+               "a hazard model's output; the risk figures are approximate")
+"""What an approximate hazard is, said wherever its risk appears."""
+
+
+def _source_text(src: dict) -> str:
+    if not src:
+        return ""
+    if "code_value" in src:
+        two = (f", {_g(src['pga_2475_g'])} g at 2475 years" if "pga_2475_g" in src else "")
+        return (f"{src['code_value']}: PGA {_g(src['pga_475_g'])} g at 475 years{two}, "
+                f"k = {_g(src.get('k'))}")
+    out = f"{src.get('format', 'file')} file {src.get('file', '?')}"
+    if "sha256" in src:
+        out += f" (sha256 {str(src['sha256'])[:12]})"
+    if "site_index" in src:
+        out += (f", site {src['site_index']} at ({_g(src.get('lon'), 6)}, "
+                f"{_g(src.get('lat'), 6)})")
+    if "investigation_time" in src:
+        out += f", investigation time {src['investigation_time']} years"
+    return out
+
+
+def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
+    """The risk section of ``report.md``."""
+    c, t = site["curve"], site["t_years"]
+    head = "## Risk at the site" + (" (approximate hazard)" if c.approximate else "")
+    out = [head, ""]
+    if c.approximate:
+        out += [f"**{APPROXIMATE}.**", ""]
+    out += [f"- hazard: {c.label}; {c.im_name} in {c.unit}, {c.im.size} points "
+            f"{_g(c.im[0])}..{_g(c.im[-1])} {c.unit}, annual rates {_g(c.rate[0])}.."
+            f"{_g(c.rate[-1])}",
+            *([f"- source: {_source_text(site['source'])}"] if site["source"] else []),
+            *(["- given at report time" + (f", in place of the store's [hazard] "
+                                           f"{site['replaces']!r}" if site["replaces"]
+                                           else "")] if site["given"] else []),
+            f"- service life: {_g(t, 6)} years", "",
+            "Annual frequency lambda = integral of P(state | IM) |d lambda_IM / d IM| over "
+            "the whole IM range (Cornell et al. 2002; rocking.analysis.risk), the hazard "
+            "curve extended beyond its ends as power laws with its end slopes; tails: the "
+            f"share of lambda from those extensions. P({_g(t, 6)} yr) = 1 - exp(-lambda t). "
+            "A group without a fit has no number: the note gives the rate of the IM up to "
+            "which nothing overturned (or from which everything did).", ""]
+    ov = rk[rk["fit"] == "overturning"]
+    by = "mitigation" if "mitigation" in rk.columns else "model"
+    ty = f"P({_g(t, 6)} yr)"
+    for _, f in ov.groupby(by, sort=False):
+        out += [f"### {_run_name(f.iloc[0].to_dict())}: overturning", ""]
+        rows = [[_group_name(r["block_name"], r.to_dict()), _g(r["annual_frequency"]),
+                 _g(r["probability"]), _g(100 * r["tail_share"], 2) + " %"
+                 if math.isfinite(r["tail_share"]) else "–", r["note"] or ""]
+                for _, r in f.iterrows()]
+        out += _md_table(["block", "annual frequency (/yr)", ty, "tails", "note"], rows)
+    ds = rk[rk["fit"] == "damage_states"]
+    if len(ds):
+        out += ["### Damage states", "",
+                "From the damage-state curves (common beta); the last state is "
+                "overturning.", ""]
+        rows = [[_run_name(r.to_dict()), _group_name(r["block_name"], r.to_dict()),
+                 f"DS{int(r['state'])} {r['label']}", _g(r["annual_frequency"]),
+                 _g(r["probability"]), _g(100 * r["tail_share"], 2) + " %"]
+                for _, r in ds.iterrows()]
+        out += _md_table(["run", "block", "state", "annual frequency (/yr)", ty, "tails"],
+                         rows)
+    return out
+
+
 def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
-              counts=()) -> str:
+              counts=(), risk=None, site=None) -> str:
     unit = f" ({im['unit']})" if im["unit"] else ""
     src = ("the im column (motions scaled to intensity levels)" if im["column"] == "im"
            else "the PGA of each run as run (no intensity scaling)")
@@ -407,6 +619,8 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
                 for r in f.itertuples()]
         out += _md_table(["block", f"median{unit}", "beta", "runs", "overturned", "note"],
                          rows)
+    if risk is not None:
+        out += _risk_md(risk, site)
     out += _by_mitigation(po, unit)
     out += _by_floor(po, unit)
     out += ["## P(overturn) per level", "",
@@ -481,7 +695,7 @@ def _by_floor(po: pd.DataFrame, unit: str) -> list[str]:
 # --------------------------------------------------------------------------- public
 
 def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
-           seed: int = 0) -> dict:
+           seed: int = 0, hazard=None, t_years=None) -> dict:
     """Write the campaign report of ``table`` (the store's rows) and ``manifest`` to the
     folder ``out`` (created). See the module docstring for the files.
 
@@ -492,9 +706,18 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     tilts redrawn, runs still rocking at their end) in ``report.md``, ``run_alerts`` are
     those with a non-zero count (the terminal summary); the counts only for a table with
     the column (``theta0_truncated``, ``settled``).
-    Raises :class:`~rocking.ParameterError` for an empty table or a missing column.
+    With a hazard (the manifest's ``hazard``, from the spec's ``[hazard]``, or ``hazard``:
+    a :class:`~rocking.analysis.HazardCurve` or such a record, which replaces it), also
+    ``risk.csv`` and ``"risk"`` (a DataFrame, :data:`RISK_COLUMNS` after the group's) and
+    ``"hazard"`` (``{"label", "approximate", "t_years", "im_name", "unit", "source",
+    "given", "replaces"}``): per group the annual frequency of overturning and of each
+    damage state (:func:`rocking.analysis.risk`), its share from the curve's extrapolated
+    tails and the probability in ``t_years`` (default: the record's, else 50).
+    Raises :class:`~rocking.ParameterError` for an empty table or a missing column, or a
+    hazard of another IM than the table's.
     """
     t, im, thresholds = _check(table, manifest)
+    site = _site(manifest, hazard, t_years, im)
     labels = state_labels(thresholds)
     n_states = len(labels)
     out = Path(out)
@@ -506,7 +729,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     if n_excl:
         notes.append(f"{n_excl} of {len(t)} runs failed numerically (status != 0) and are "
                      "excluded")
-    po_parts, fr_rows, pel_rows, by_model = [], [], [], {}
+    po_parts, fr_rows, pel_rows, by_model, risk_rows = [], [], [], {}, []
     floor = [c for c in ("floor", "height_ratio") if c in t.columns]
     mit = ["mitigation"] if "mitigation" in t.columns else []
     for _, g in t.groupby(["model", *mit, "block", *floor[:1]], sort=False):
@@ -521,6 +744,8 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         ok = g[g["status"] == 0]
         rows, fit, curves, gnotes = _fit_group(ok, im, labels, n_boot, seed)
         fr_rows += [{**key, **r} for r in rows]
+        if site is not None:
+            risk_rows += _risk_rows(key, ok, im, fit, curves, labels, site)
         notes += [f"{model}, {name}: {n}" for n in gnotes]
         notes += [f"{model}, {name}: {r['note']}" for r in rows
                   if r["note"].startswith("no ")]
@@ -539,6 +764,18 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         with atomic_path(out / fname) as tmp:
             df.to_csv(tmp, index=False, float_format="%.6g")
         files.append(out / fname)
+    rk = None
+    if site is not None:
+        rk = pd.DataFrame(risk_rows)
+        keys = [c for c in rk.columns if c not in RISK_COLUMNS]
+        rk = rk[[*keys, *RISK_COLUMNS]]
+        with atomic_path(out / "risk.csv") as tmp:
+            rk.to_csv(tmp, index=False, float_format="%.10g")
+        files.append(out / "risk.csv")
+        if site["given"]:
+            notes.append("hazard given at report time: " + site["curve"].label + (
+                f" (replaces the store's [hazard] {site['replaces']!r})" if site["replaces"]
+                else ""))
     if pel_rows:
         with atomic_path(out / "pelicun.csv") as tmp:
             pd.concat(pel_rows).to_csv(tmp, float_format="%.6g")
@@ -551,12 +788,21 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         images.append((model, p))
         files.append(p)
     md = _markdown(manifest, im, len(t), n_excl, fr, po, images, notes, n_states,
-                   counts=run_lines)
+                   counts=run_lines, risk=rk, site=site)
     atomic_write(out / "report.md", md)
     files.append(out / "report.md")
     return {"files": files, "fragility": fr, "p_overturn": po, "notes": notes, "im": im,
             "n_runs": len(t), "n_excluded": n_excl, "run_notes": run_lines,
-            "run_alerts": run_alerts, **run_counts}
+            "run_alerts": run_alerts, **run_counts,
+            **({} if site is None else {"risk": rk, "hazard": _hazard_info(site)})}
+
+
+def _hazard_info(site: dict) -> dict:
+    c = site["curve"]
+    return {"label": c.label, "approximate": c.approximate, "t_years": site["t_years"],
+            "im_name": c.im_name, "unit": c.unit, "im_range": (float(c.im[0]),
+                                                               float(c.im[-1])),
+            "source": site["source"], "given": site["given"], "replaces": site["replaces"]}
 
 
 def summary_lines(result: dict) -> list[str]:
@@ -575,7 +821,33 @@ def summary_lines(result: dict) -> list[str]:
                          f"(± {_g(r.beta_se, 2)}), {r.n} runs")
         else:
             lines.append(f"{head} {r.note}")
+    return lines + risk_lines(result)
+
+
+def risk_lines(result: dict) -> list[str]:
+    """The terminal's lines of the risk (none without a hazard): the hazard, then per
+    group the annual frequency of overturning and its probability over the service life,
+    or why there is no number; an approximate hazard says so on every line."""
+    rk, hz = result.get("risk"), result.get("hazard")
+    if rk is None or hz is None:
+        return []
+    t = hz["t_years"]
+    tag = " [approximate hazard]" if hz["approximate"] else ""
+    lines = [f"hazard: {hz['label']} ({hz['im_name']} in {hz['unit']}); service life "
+             f"{_g(t, 6)} years" + (f"; {APPROXIMATE}" if hz["approximate"] else "")]
+    for _, r in rk[rk["fit"] == "overturning"].iterrows():
+        d = r.to_dict()
+        head = f"{_run_name(d)} / {_group_name(d['block_name'], d)}:"
+        if math.isfinite(r["annual_frequency"]):
+            tails = (f" ({_g(100 * r['tail_share'], 2)}% from the extrapolated tails)"
+                     if r["tail_share"] >= 0.005 else "")
+            lines.append(f"{head} annual frequency of overturning "
+                         f"{_g(r['annual_frequency'])} per year, {_g(t, 6)}-year probability "
+                         f"{_g(r['probability'])}{tails}{tag}")
+        else:
+            lines.append(f"{head} {r['note']}{tag}")
     return lines
 
 
-__all__ = ["report", "summary_lines", "REQUIRED_COLUMNS", "PELICUN_DEMAND"]
+__all__ = ["report", "summary_lines", "risk_lines", "REQUIRED_COLUMNS", "PELICUN_DEMAND",
+           "RISK_COLUMNS"]

@@ -53,6 +53,12 @@
     model = "anchored"
     anchor_strength = 0.3
 
+    [hazard]                      # optional: the site's hazard, for the report's risk
+    file = "hazard_curve-mean-PGA_0.csv"   # an OpenQuake export or a CSV (IM, rate)
+    site = 0                      # OpenQuake: a row index or [lon, lat]
+    t_years = 50                  # service life: P = 1 - exp(-lambda t)
+    # or: pga_475 = "0.25g" and k = 3 (EN 1998-1 code value: an approximation)
+
 Every key is listed by :func:`keys_table` (the README's table, generated from the motion
 catalog and the block factory). ``[motions]``: ``kind`` names a catalog entry
 (:data:`rocking.motions.catalog.KINDS`) and the other keys are its parameters; one
@@ -104,6 +110,16 @@ actually run), and the row outputs of every model run (``Model.row_outputs``) af
 result columns. The uncertain draws of a row do not depend on its mitigation (common
 random numbers, :mod:`rocking.campaign.plan`): the mitigations are compared on the same
 realizations.
+
+``[hazard]`` (optional; issue 21) gives the site's hazard curve (:mod:`rocking.campaign.hazard`):
+``file`` (an OpenQuake engine export, told by its first line, or a CSV of IM and annual
+rate or return period; ``format``, ``site``, ``im``, ``unit``) or ``pga_475`` with ``k`` or
+``pga_2475`` (the EN 1998-1 power law: an approximation, labelled so), and ``t_years`` (the
+service life). :func:`parse_spec` reads the file and refuses a curve whose IM is not the
+campaign's (``motions.im``, or the PGA of each run without it), naming both. The curve's
+points go into the manifest, so that the report does not change when the file does. The
+hazard changes no run: it is not in :attr:`CampaignSpec.hash`, and a store is resumed with
+another ``[hazard]`` (its manifest takes the new one).
 """
 
 from __future__ import annotations
@@ -134,9 +150,10 @@ from ..models.registry import MODELS
 from ..motions import catalog
 from ..options import check_option
 from ..units import parse_quantity
+from . import hazard as site_hazard
 
 SECTIONS = {"campaign", "blocks", "motions", "uncertain", "run", "options", "building",
-            "mitigation"}
+            "mitigation", "hazard"}
 CAMPAIGN_KEYS = {
     "name": "the campaign's name (required)",
     "seed": "every random draw derives from (seed, sim_id); integer >= 0 (required)",
@@ -676,6 +693,91 @@ def _building(raw: dict) -> dict | None:
                                               if v is not None}}}
 
 
+# ------------------------------------------------------------------------------- hazard
+def _hazard_fail(e: ParameterError, given: dict) -> NoReturn:
+    """A hazard loader's error as a SpecError naming ``hazard.<key>`` (its message starts
+    with the argument's name)."""
+    msg = (str(e).splitlines() or [""])[0]
+    name, _, rest = msg.partition(" ")
+    name = name.rstrip(":")
+    if name == "pga_475" or name == "pga_2475" or name == "k":
+        _fail(f"hazard.{name}", rest)
+    if name in site_hazard.HAZARD_KEYS and name in given:
+        _fail(f"hazard.{name}", rest)
+    _fail("hazard.file" if "file" in given else "hazard", msg)
+
+
+def _hazard(raw: dict, base_dir: Path, motions: dict) -> dict | None:
+    """The checked ``[hazard]`` as the manifest's record (:func:`rocking.campaign.hazard.
+    record`: the curve's points, IM, unit, label, source, ``t_years``); None without it.
+    The file is read here, and a curve of another IM than the campaign's is refused."""
+    if "hazard" not in raw:
+        return None
+    t = _table("hazard", raw["hazard"])
+    _known("hazard", t, site_hazard.HAZARD_KEYS)
+    has_file, has_code = "file" in t, "pga_475" in t
+    if has_file == has_code:
+        _fail("hazard.file", "give file (a hazard-curve file) or pga_475 (a code value), "
+                             + ("not both" if has_file else "one of them"))
+    t_years = (_number("hazard.t_years", t["t_years"], 0, site_hazard.MAX_T_YEARS,
+                       lo_open=True) if "t_years" in t else site_hazard.DEFAULT_T_YEARS)
+    label = _string("hazard.label", t["label"]) if "label" in t else ""
+    given = dict(t)
+    try:
+        if has_file:
+            for k in ("k", "pga_2475"):
+                if k in t:
+                    _fail(f"hazard.{k}", "applies with pga_475 only (a file is the curve)")
+            path = Path(base_dir) / _string("hazard.file", t["file"])
+            fmt = _string("hazard.format", t.get("format", "auto"), site_hazard.FORMATS)
+            site = t.get("site")
+            if site is not None:
+                if isinstance(site, list):
+                    if len(site) != 2:
+                        _fail("hazard.site", f"must be a row index or [lon, lat], got "
+                                             f"{_toml(site)}")
+                    site = [_number(f"hazard.site[{i}]", v, -360, 360)
+                            for i, v in enumerate(site)]
+                else:
+                    site = _number("hazard.site", site, 0, MAX_SIMS, integer=True)
+            im = _string("hazard.im", t["im"]) if "im" in t else None
+            unit = _string("hazard.unit", t["unit"]) if "unit" in t else None
+            curve, source = site_hazard.read_hazard(path, format=fmt, site=site, im=im,
+                                                    unit=unit, label=label)
+        else:
+            for k in ("format", "site", "im", "unit"):
+                if k in t:
+                    _fail(f"hazard.{k}", "applies with file only (pga_475 is a code value)")
+            a = _quantity("hazard.pga_475", t["pga_475"])
+            a2 = _quantity("hazard.pga_2475", t["pga_2475"]) if "pga_2475" in t else None
+            k = _number("hazard.k", t["k"], 0, 20, lo_open=True) if "k" in t else None
+            curve, source = site_hazard.code_value(a, k=k, pga_2475=a2, label=label)
+    except ParameterError as e:
+        if isinstance(e, SpecError):
+            raise
+        _hazard_fail(e, given)
+    im = site_hazard.campaign_im(motions.get("im"))
+    why = site_hazard.mismatch(curve, im)
+    if why is not None:
+        _fail("hazard.file" if has_file else "hazard.pga_475",
+              f"{why} ({'motions.im' if motions.get('im') else 'no motions.im'})")
+    return site_hazard.record(curve, source, t_years)
+
+
+def _quantity(key: str, v) -> float:
+    """An acceleration with its unit (``"0.25g"``, ``"2.45m/s^2"``), in m/s^2, > 0."""
+    if not isinstance(v, str):
+        _fail(key, f"must be an acceleration with its unit such as \"0.25g\", got "
+                   f"{type(v).__name__} {v!r}")
+    try:
+        a = parse_quantity(v, "acceleration", name=key)
+    except ParameterError as e:
+        _fail(key, str(e).removeprefix(key).lstrip(": "))
+    if not a > 0:
+        _fail(key, f"must be > 0, got {v!r}")
+    return a
+
+
 # ------------------------------------------------------------------------------ the spec
 @dataclass(frozen=True)
 class CampaignSpec:
@@ -710,6 +812,10 @@ class CampaignSpec:
     (the mitigation axis has size 1 and the table no ``mitigation`` column)."""
     block_digests: tuple = ()
     """Content digests of the files that ``[[blocks]]`` name (a mesh), in :attr:`hash`."""
+    hazard: dict | None = None
+    """The checked ``[hazard]``: the manifest's record of the site's hazard curve
+    (:func:`rocking.campaign.hazard.record`), or None. Not in :attr:`hash`: it changes no
+    run, only the report."""
 
     @property
     def runs(self) -> tuple[tuple[str, dict], ...]:
@@ -728,9 +834,10 @@ class CampaignSpec:
     @property
     def hash(self) -> str:
         """SHA-256 of what the results depend on: the parsed TOML (not its formatting or
-        comments; without ``[run] window``, which only schedules) and, for record and mesh
-        files, their contents (a digest each), not where they are."""
-        raw = {k: v for k, v in self.raw.items() if k != "run"}
+        comments; without ``[run] window``, which only schedules, and without ``[hazard]``,
+        which only the report uses) and, for record and mesh files, their contents (a
+        digest each), not where they are."""
+        raw = {k: v for k, v in self.raw.items() if k not in ("run", "hazard")}
         raw["run"] = {k: v for k, v in self.raw.get("run", {}).items() if k != "window"}
         content = {"raw": raw, "digests": self.motions.get("digests")}
         if self.block_digests:  # a mesh file's content (absent: the hash of older specs)
@@ -1054,13 +1161,15 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
     options = _options(raw, tuple(dict.fromkeys(c["models"] + run_models)))
     mitigations = _mitigations(entries, options)
     _usable(c["models"], blocks, options, entries, mitigations)
+    hazard = _hazard(raw, Path(base_dir).resolve(), motions)
     return CampaignSpec(name=c["name"], seed=c["seed"], models=c["models"],
                         duration=c["duration"], samples=c["samples"],
                         thresholds=c["thresholds"], blocks=blocks, motions=motions,
                         uncertain=uncertain, chunk_size=chunk, window=window, options=options,
                         text=text, raw=raw, base_dir=str(Path(base_dir).resolve()),
                         max_free_time=c["max_free_time"], building=building,
-                        mitigations=mitigations, block_digests=block_digests)
+                        mitigations=mitigations, block_digests=block_digests,
+                        hazard=hazard)
 
 
 def read_spec(path) -> CampaignSpec:
@@ -1173,6 +1282,13 @@ def keys_table() -> str:
     rows += [[f"`{d['kind']}`", f"`{d['name']}`", d["unit"], d["range"], _default(d),
               d["help"]] for d in buildings.table()]
     out += _rows(["kind", "key", "unit", "range", "default", "meaning"], rows)
+    out += ["", "**`[hazard]`** (optional): the site's hazard curve, for the annual frequency "
+            "of overturning and its probability over `t_years` in `rocking campaign report`; "
+            "`file` or `pga_475`. Its IM must be the campaign's (`motions.im`, or the PGA of "
+            "each run); its points are kept in the manifest; it is not in the spec hash (a "
+            "store resumes with another `[hazard]`):", ""]
+    out += _rows(["key", "meaning"], [[f"`{k}`", h] for k, h in
+                                      site_hazard.HAZARD_KEYS.items()])
     return "\n".join(out) + "\n"
 
 

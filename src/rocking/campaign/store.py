@@ -5,7 +5,8 @@ proves their integrity.
 
     STORE/
       spec.toml          the spec as given
-      manifest.json      spec hash, package version, seeds, chunk layout, axes (format 2)
+      manifest.json      spec hash, package version, seeds, chunk layout, axes (format 2),
+                         the site's hazard curve ([hazard]: its points, not re-read)
       chunks/chunk-000000.parquet   the rows of chunk 0
       chunks/chunk-000000.json      its record: rows, sim_id range, bytes, sha256
       quarantine/<time>-<pid>/...   files that failed verification, moved aside by ``run``
@@ -161,7 +162,12 @@ def manifest_for(spec: CampaignSpec) -> dict:
             "stochastic_records": f"SeedSequence({spec.seed}, spawn_key=(2, motion))",
         },
         "spec_dir": str(spec.base_dir),
+        **({"hazard": spec.hazard} if spec.hazard is not None else {}),
     }
+
+
+def _hazard_label(h) -> str:
+    return "none" if not isinstance(h, dict) else repr(str(h.get("label", "?")))
 
 
 def _other_mitigations(m: dict, spec: CampaignSpec) -> str:
@@ -336,12 +342,31 @@ class Store:
             if m.get("version") != __version__:
                 raise StoreError(f"{self.path} was written by rocking {m.get('version')}, this "
                                  f"is {__version__}: results could differ; use another --out")
+            self._update_hazard(spec, log or (lambda msg: None))
         else:
             atomic_write(self.path / SPEC, spec.text)
             atomic_write(self.manifest_path, json.dumps(manifest_for(spec), indent=1,
                                                         default=str))
         (self.path / CHUNKS).mkdir(exist_ok=True)  # after the manifest: chunks/ implies it
         return self
+
+    def _update_hazard(self, spec: CampaignSpec, log: Callable) -> None:
+        """A store resumed with another ``[hazard]`` (or none): the hazard changes no run
+        (it is not in the spec hash), so the manifest's ``hazard`` and ``spec.toml`` take
+        the spec's, said in one line; the chunks stay."""
+        m = self.manifest
+        ours = json.loads(json.dumps(spec.hazard, default=str))
+        if m.get("hazard") == ours:
+            return
+        new = {k: v for k, v in m.items() if k != "hazard"}
+        if ours is not None:
+            new["hazard"] = ours
+        atomic_write(self.path / SPEC, spec.text)
+        atomic_write(self.manifest_path, json.dumps(new, indent=1, default=str))
+        self._manifest = None
+        log(f"[hazard] changed: {_hazard_label(m.get('hazard'))} in the store, now "
+            f"{_hazard_label(ours)}; the runs do not depend on it (kept), the report will "
+            "use the new one")
 
     def _rebuild_manifest(self, spec: CampaignSpec, why: str, log: Callable) -> None:
         """Rewrite a damaged manifest from ``spec`` if the store shows it holds ``spec``."""

@@ -8,7 +8,8 @@ Parquet store.
     rocking campaign status STORE [--json]
     rocking campaign verify STORE [--json]
     rocking campaign upgrade STORE
-    rocking campaign report STORE [--out DIR]
+    rocking campaign report STORE [--out DIR] [--hazard FILE [--site I|LON,LAT]]
+                            [--t-years 50]
 
 ``run`` on an existing store resumes it (finished chunks are not recomputed, damaged ones
 are moved into ``STORE/quarantine/`` and recomputed) and refuses a different spec. Ctrl-C
@@ -19,6 +20,11 @@ stops cleanly: every finished chunk is kept (exit code 130).
 store). The report is written into a temporary folder and its files renamed into
 ``--out`` one by one (``report.md`` last), each synced: a killed report never leaves a
 half-written file.
+
+``report`` gives the risk at the site when the store has a hazard (the spec's ``[hazard]``,
+kept in the manifest) or one is given with ``--hazard`` (which replaces it for this report):
+per block and mitigation the annual frequency of overturning and its probability over the
+service life (``--t-years``), in ``risk.csv``, ``report.md`` and the lines printed.
 """
 
 from __future__ import annotations
@@ -213,12 +219,46 @@ def upgrade_cmd(store):
 @click.argument("store", type=click.Path(file_okay=False))
 @click.option("--out", "out", default=None, metavar="DIR",
               help="Report directory (default STORE/report).")
-def report_cmd(store, out):
-    """Fragility curves, P(overturn) tables and plots from STORE (rocking.analysis)."""
+@click.option("--hazard", "hazard", default=None, metavar="FILE",
+              help="A hazard curve for the risk (an OpenQuake export or a CSV of IM and "
+                   "annual rate or return period), in place of the store's [hazard].")
+@click.option("--site", default=None, metavar="INDEX|LON,LAT",
+              help="With --hazard, an OpenQuake export: the site (row index, default 0, or "
+                   "the nearest to LON,LAT).")
+@click.option("--t-years", "t_years", default=None, type=float, metavar="YEARS",
+              help="Service life of the probability 1 - exp(-lambda t) (default: the "
+                   "[hazard]'s t_years, else 50).")
+def report_cmd(store, out, hazard, site, t_years):
+    """Fragility curves, P(overturn) tables and plots from STORE (rocking.analysis); with a
+    hazard (the spec's [hazard], or --hazard) the annual frequency of overturning and its
+    probability over the service life per block and mitigation (risk.csv)."""
     from ..campaign import Store, load
+    from ..campaign.hazard import (
+        DEFAULT_T_YEARS,
+        check_t_years,
+        parse_site,
+        read_hazard,
+        record,
+    )
     from ..campaign.report import report, summary_lines
+    given = None
+    if t_years is not None:
+        t_years = check_t_years(t_years, "--t-years")
+    if site is not None and hazard is None:
+        raise ParameterError("--site applies with --hazard (the store's [hazard] holds one "
+                             "site's curve)")
+    if hazard is not None:
+        try:
+            curve, src = read_hazard(hazard, site=None if site is None else parse_site(site))
+        except ParameterError as e:
+            raise ParameterError(f"--{e}" if str(e).startswith("site") else
+                                 f"--hazard {str(e).removeprefix('file: ')}") from None
     s = Store(store)
     manifest = s.manifest
+    if hazard is not None:  # the service life: --t-years, else the store's [hazard]'s
+        stored = manifest.get("hazard") or {}
+        given = record(curve, src, t_years if t_years is not None
+                       else stored.get("t_years", DEFAULT_T_YEARS))
     table = load(store, lazy=False)
     if table.empty:
         raise ParameterError(f"{store} has no finished simulation yet: run it first")
@@ -229,7 +269,7 @@ def report_cmd(store, out):
     out.parent.mkdir(parents=True, exist_ok=True)
     tmp = temporary_name(out)
     try:
-        res = report(table, manifest, tmp)
+        res = report(table, manifest, tmp, hazard=given, t_years=t_years)
         _publish(tmp, out)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
