@@ -1,0 +1,48 @@
+"""The verification manual (issue 22): cases from the literature and the closed forms of
+the package's other parts, each with its source, how its reference number was obtained, our
+computed value, its tolerance and whether it passes; ``rocking verify`` prints the table and
+the documentation's verification page is :func:`verification_markdown`.
+
+>>> from rocking.verification import run_cases
+>>> table = run_cases(["housner-free-period"])
+>>> table.passed
+True
+"""
+
+from __future__ import annotations
+
+from ..errors import ParameterError
+from .catalog import CASES, IMPACT_CASES, case_names
+from .core import TOLERANCE_KINDS, Case, Row, VerificationTable
+
+
+def get_cases(names=None, quick: bool = False) -> list[Case]:
+    """The cases named (all when ``names`` is None or empty), in catalog order; ``quick``
+    leaves out the slow ones (only when no names are given). An unknown name raises
+    :class:`~rocking.errors.ParameterError` listing the known ones."""
+    if not names:
+        return [c for c in CASES if not (quick and c.slow)]
+    known = case_names()
+    unknown = [n for n in names if n not in known]
+    if unknown:
+        raise ParameterError(f"unknown verification case {', '.join(map(repr, unknown))}; "
+                             f"the cases are: {', '.join(known)}")
+    wanted = set(names)
+    return [c for c in CASES if c.name in wanted]
+
+
+def run_cases(names=None, quick: bool = False) -> VerificationTable:
+    """Run the cases named (all by default; ``quick``: without the slow ones) and return
+    their :class:`VerificationTable` (``.passed``, ``.to_dataframe()``,
+    ``.to_markdown()``, ``.to_text()``)."""
+    return VerificationTable([c.run() for c in get_cases(names, quick)])
+
+
+def verification_markdown(names=None, quick: bool = False, details: bool = True) -> str:
+    """The verification manual as Markdown (runs the cases): the table, then each case's
+    source and how its reference was obtained (for the documentation's page)."""
+    return run_cases(names, quick).to_markdown(details=details)
+
+
+__all__ = ["CASES", "IMPACT_CASES", "TOLERANCE_KINDS", "Case", "Row", "VerificationTable",
+           "case_names", "get_cases", "run_cases", "verification_markdown"]

@@ -1,0 +1,639 @@
+r"""The verification cases (:data:`CASES`): numbers from the literature and the closed forms
+of the other issues, each with its source, how its reference was obtained, and the package
+call that computes the same number.
+
+**Closed forms of the linearised classical model** (Housner 1963), derived here. For
+``theta > 0`` and ``|theta| << 1`` Eq (1) reads ``theta'' = p^2 (theta - alpha) + p^2
+a(t)/g`` (a positive ground acceleration drives ``theta`` positive). With
+``phi = theta - alpha`` and ``y = phi + phi'/p``, ``y' = p y + p a(t)/g``: a first-order
+linear equation. From uplift at ``t_u`` (``phi = -alpha``, ``phi' = 0``)
+
+.. math::  y(t) = e^{p (t - t_u)} \left[-\alpha + \int_{t_u}^{t} p \frac{a(s)}{g}
+           e^{-p (s - t_u)} ds \right]
+
+and after the pulse (``a = 0``) ``phi`` grows without bound iff ``y >= 0`` at the end of
+the pulse. So the least amplitude that overturns the block *without an impact* (mode 2 of
+Zhang and Makris 2001) solves ``y(t_end) = 0``; with ``A = a_p / (g alpha)`` and
+``w = omega_p / p``:
+
+* rectangular pulse of length ``t_1`` (``t_u = 0``): ``A = 1 / (1 - exp(-p t_1))``;
+* half-sine pulse ``a_p sin(omega_p t)``, ``0 <= t <= pi / omega_p`` (``sin(omega_p t_u) =
+  1/A``): ``sqrt(A^2 - 1) + A exp(-(pi - asin(1/A)) / w) = w``;
+* one-sine pulse over ``2 pi / omega_p``: ``sqrt(A^2 - 1) - A exp(-(2 pi - asin(1/A)) / w)
+  = w``;
+* one-cosine pulse (``t_u = 0``): ``A = (1 + w^2) / (1 - exp(-2 pi / w))``.
+
+Each holds while ``theta`` stays positive during the pulse, which the simulation checks
+(a run that impacts is not counted as mode 2). The half-sine cannot overturn the block
+after an impact (the block is pushed one way only and loses energy at each impact), so its
+mode-2 amplitude is the least overturning amplitude; the one-sine and one-cosine pulses can
+(mode 1), and their cases compare the mode-2 boundary only.
+
+The papers' own printed numbers (their tables and figures) could not be read in the
+sources available to this project (only the first page of Housner 1963 and citations of the
+others); no case quotes a number from them. Where a case names an equation of a paper it is
+the equation the case derives, not a number copied from it.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+import warnings
+from functools import cache
+
+import numpy as np
+
+from ..errors import PlausibilityWarning
+from .core import Case
+
+G = 9.80665  # rocking.units.G, written here so the reference values do not import us
+
+HOUSNER_1963 = ("Housner, G. W. (1963). The behavior of inverted pendulum structures "
+                "during earthquakes. Bulletin of the Seismological Society of America "
+                "53(2), 403-417.")
+MAKRIS_ROUSSOS_2000 = ("Makris, N. and Roussos, Y. S. (2000). Rocking response of rigid "
+                       "blocks under near-source ground motions. Geotechnique 50(3), "
+                       "243-262.")
+ZHANG_MAKRIS_2001 = ("Zhang, J. and Makris, N. (2001). Rocking response of free-standing "
+                     "blocks under cycloidal pulses. Journal of Engineering Mechanics "
+                     "127(5), 473-483.")
+MAKRIS_KONSTANTINIDIS_2003 = ("Makris, N. and Konstantinidis, D. (2003). The rocking "
+                              "spectrum and the limitations of practical design "
+                              "methodologies. Earthquake Engineering and Structural "
+                              "Dynamics 32(2), 265-289.")
+DIMITRAKOPOULOS_DEJONG_2012 = ("Dimitrakopoulos, E. G. and DeJong, M. J. (2012). "
+                               "Revisiting the rocking block: closed-form solutions and "
+                               "similarity laws. Proceedings of the Royal Society A 468, "
+                               "2294-2318.")
+PENA_2007 = ("Pena, F., Prieto, F., Lourenco, P. B., Campos Costa, A. and Lemos, J. V. "
+             "(2007). On the dynamics of rocking motion of single rigid-block structures. "
+             "Earthquake Engineering and Structural Dynamics 36(15), 2383-2399.")
+CHOPRA = ("Chopra, A. K. (2012). Dynamics of Structures, 4th ed. Prentice Hall "
+          "(Sections 3.6, 5.2, 16.2 and 18.2).")
+MIRANDA_TAGHAVI_2005 = ("Miranda, E. and Taghavi, S. (2005). Approximate floor "
+                        "acceleration demands in multistory buildings. I: Formulation. "
+                        "Journal of Structural Engineering 131(2), 203-211.")
+VASSILIOU_MAKRIS_2012 = ("Vassiliou, M. F. and Makris, N. (2012). Analysis of the rocking "
+                         "response of rigid blocks standing free on a seismically isolated "
+                         "base. Earthquake Engineering and Structural Dynamics 41(2), "
+                         "177-196.")
+
+UNREAD = ("The paper's printed values could not be read in the sources available to this "
+          "project; no number of it is quoted.")
+
+# ------------------------------------------------------------------------ shared pieces
+PULSE_BLOCK = dict(alpha=0.2, p=2.0, mu=0.9)
+"""The block of the pulse cases (alpha in rad, p in 1/s)."""
+
+BISECTION_TOL = 1e-7
+"""Relative width of the bisection bracket of the threshold cases."""
+
+
+def _block(**kw):
+    from ..blocks.block import Block
+
+    return Block.from_params(**{**PULSE_BLOCK, **kw})
+
+
+def _simulate(block, motion, **kw):
+    from ..models.run import simulate
+
+    return simulate(block, motion, **kw)
+
+
+def _bisect(overturns, lo: float, hi: float, tol: float = BISECTION_TOL) -> float:
+    """The amplitude ratio where ``overturns`` switches from False (at ``lo``) to True (at
+    ``hi``), to a relative width ``tol``; NaN if the bracket does not hold."""
+    if overturns(lo) or not overturns(hi):
+        return math.nan
+    while hi - lo > tol * hi:
+        mid = 0.5 * (lo + hi)
+        if overturns(mid):
+            hi = mid
+        else:
+            lo = mid
+    return 0.5 * (lo + hi)
+
+
+def _pulse_threshold(kind: str, omega_ratio: float, *, length=None, mode2: bool = True,
+                     bracket=(1.0001, 200.0)) -> float:
+    """The least ``a_p / (g alpha)`` of the linearised classical model that overturns the
+    pulse block (without an impact if ``mode2``), by bisection on :func:`rocking.simulate`."""
+    from ..motions.pulses import HalfSine, OneCosine, OneSine, Rectangular
+
+    blk = _block()
+    p, alpha = blk.p, blk.alpha
+    if kind == "rectangular":
+        cls, lp = Rectangular, length
+    else:
+        w = omega_ratio * p
+        cls, lp = {"half_sine": (HalfSine, math.pi / w), "one_sine": (OneSine, 2 * math.pi / w),
+                   "one_cosine": (OneCosine, 2 * math.pi / w)}[kind]
+
+    def overturns(ratio: float) -> bool:
+        m = cls(ratio * G * alpha, lp, duration=lp + 30.0 / p)
+        r = _simulate(blk, m, linear=True, rtol=1e-10)
+        return bool(r.overturned and (r.n_impacts == 0 or not mode2))
+
+    return _bisect(overturns, *bracket)
+
+
+def _solve(f, lo: float, hi: float) -> float:
+    from scipy.optimize import brentq
+
+    return brentq(f, lo, hi, xtol=1e-14, rtol=1e-14)
+
+
+def half_sine_mode2(w: float) -> float:
+    """``A`` solving ``sqrt(A^2 - 1) + A exp(-(pi - asin(1/A))/w) = w`` (module docstring)."""
+    return _solve(lambda A: math.sqrt(A * A - 1) + A * math.exp(-(math.pi - math.asin(1 / A))
+                                                                 / w) - w, 1.0, 10.0 * w + 10)
+
+
+def one_sine_mode2(w: float) -> float:
+    """``A`` solving ``sqrt(A^2 - 1) - A exp(-(2 pi - asin(1/A))/w) = w`` (module
+    docstring)."""
+    return _solve(lambda A: math.sqrt(A * A - 1)
+                  - A * math.exp(-(2 * math.pi - math.asin(1 / A)) / w) - w,
+                  1.0, 10.0 * w * w + 10)
+
+
+def one_cosine_mode2(w: float) -> float:
+    """``A = (1 + w^2) / (1 - exp(-2 pi / w))`` (module docstring)."""
+    return (1.0 + w * w) / (1.0 - math.exp(-2.0 * math.pi / w))
+
+
+# ------------------------------------------------------------------ classical: Housner
+FREE = dict(alpha=0.2, p=3.0, frac=0.5)
+
+
+def _free_period() -> float:
+    blk = _block(alpha=FREE["alpha"], p=FREE["p"], mu=1.0)
+    T = 4.0 / blk.p * math.acosh(1.0 / (1.0 - FREE["frac"]))
+    r = _simulate(blk, None, duration=2.2 * T, theta0=FREE["frac"] * blk.alpha, linear=True,
+                  rtol=1e-12)
+    return 2.0 * float(np.mean(np.diff(r.impact_times)))
+
+
+RECT_BLOCK = dict(width=0.4, height=1.6, mass=100.0)
+"""A rectangular block whose restitution is Housner's (alpha = atan(1/4))."""
+
+
+def _rect_block():
+    from ..blocks.block import Block
+
+    return Block.rectangular(**RECT_BLOCK)
+
+
+def _velocity_ratio(block, model: str = "housner", th0_frac: float = 0.6) -> float:
+    """The angular-velocity ratio through the first impact, from the free-rocking
+    amplitudes before (``theta0``) and after it (energy conservation between impacts)."""
+    th0 = th0_frac * block.alpha
+    T = 4.0 / block.p * math.acosh(1.0 / (1.0 - th0_frac))
+    r = _simulate(block, None, model=model, duration=1.2 * T, theta0=th0, dt_out=1e-4)
+    r1 = float(np.abs(r.half_cycle_peaks()[1])[1])
+    a = block.alpha
+    return math.sqrt((math.cos(a - r1) - math.cos(a)) / (math.cos(a - th0) - math.cos(a)))
+
+
+def _rect_pulse_response() -> float:
+    """theta_max / alpha after a rectangular pulse at 90 % of its overturning amplitude."""
+    from ..motions.pulses import Rectangular
+
+    blk = _block()
+    x = 1.0
+    A = 0.9 / (1.0 - math.exp(-x))
+    t1 = x / blk.p
+    r = _simulate(blk, Rectangular(A * G * blk.alpha, t1, duration=t1 + 20.0 / blk.p),
+                  linear=True, rtol=1e-11, dt_out=1e-4)
+    return float(np.abs(r.half_cycle_peaks()[1])[0]) / blk.alpha
+
+
+def _rect_pulse_response_ref() -> float:
+    """``r/alpha = 1 - sqrt((1 - th1/alpha)^2 - (om1/(p alpha))^2)`` with ``th1/alpha =
+    (A - 1)(cosh x - 1)``, ``om1/(p alpha) = (A - 1) sinh x`` at the pulse's end (the
+    linearised free motion conserves ``(theta - alpha)^2 - (theta'/p)^2``)."""
+    x = 1.0
+    k = 0.9 / (1.0 - math.exp(-x)) - 1.0
+    th1, om1 = k * (math.cosh(x) - 1.0), k * math.sinh(x)
+    return 1.0 - math.sqrt((1.0 - th1) ** 2 - om1 ** 2)
+
+
+# ------------------------------------------------------------------------- similarity
+SIMILAR = dict(alpha=0.2, mu=0.9, p=(1.5, 6.0), omega_ratio=3.0, accel_ratio=1.5)
+
+
+def _similarity_difference() -> float:
+    """max |theta_1/alpha - theta_2/alpha| at equal ``p t`` for two blocks of the same alpha
+    and mu whose p differ fourfold (sizes 16-fold), under one-cosine pulses of equal
+    ``omega_p/p`` and ``a_p/(g tan alpha)`` (nonlinear model, impacts included)."""
+    from ..motions.pulses import OneCosine
+
+    out = []
+    h = 0.01  # output step in p t
+    for p in SIMILAR["p"]:
+        blk = _block(alpha=SIMILAR["alpha"], p=p, mu=SIMILAR["mu"])
+        Tp = 2 * math.pi / (SIMILAR["omega_ratio"] * p)
+        m = OneCosine(SIMILAR["accel_ratio"] * G * math.tan(blk.alpha), Tp,
+                      duration=40.0 / p)
+        r = _simulate(blk, m, dt_out=h / p, rtol=1e-12)
+        if r.n_impacts < 2 or r.overturned:
+            raise RuntimeError("the similarity case must rock with impacts, not overturn")
+        out.append(r.theta / blk.alpha)
+    n = min(a.size for a in out)
+    return float(np.max(np.abs(out[0][:n] - out[1][:n])))
+
+
+def _dd_threshold(p: float) -> float:
+    from ..analysis.overturning import overturning_spectrum
+
+    blk = _block(alpha=SIMILAR["alpha"], p=p, mu=SIMILAR["mu"])
+    df = overturning_spectrum(blk, "one_sine", [SIMILAR["omega_ratio"]], tol=1e-4)
+    return float(df["min_overturn_ratio"].iloc[0])
+
+
+# ------------------------------------------------------------------------ cross-model
+def _free_amplitudes(model: str, block, n: int = 4, **kw) -> np.ndarray:
+    th0 = 0.5 * block.alpha
+    r = _simulate(block, None, model=model, duration=kw.pop("duration", 6.0), theta0=th0,
+                  dt_out=kw.pop("dt_out", 2e-4), **kw)
+    return np.abs(r.half_cycle_peaks()[1])[:n]
+
+
+def _ccrr_block():
+    return _block(alpha=0.2, p=2.0, mu=0.9)
+
+
+def _specimen2():
+    from ..blocks.specimens import specimen
+
+    return specimen(2, "experimental")
+
+
+# -------------------------------------------------------------------------- buildings
+def _transmissibility() -> float:
+    from ..buildings import Building, FloorMotion
+    from ..motions.harmonic import Sine
+
+    T, zeta, r = 0.5, 0.05, 1.5
+    f = r / T
+    ground = Sine.from_acceleration(f, 1.0, duration=40.0)
+    fm = FloorMotion(ground, Building.sdof(T, zeta), floor=1)
+    t = np.arange(fm.samples.size) * fm.step
+    sel = (t > 40.0 - 10.0 / f - 1e-9) & (t <= 40.0 - 1e-9)
+    wt = 2 * np.pi * f * t[sel]
+    coef, *_ = np.linalg.lstsq(np.column_stack([np.sin(wt), np.cos(wt)]), fm.samples[sel],
+                               rcond=None)
+    return math.hypot(*coef)
+
+
+def _transmissibility_ref() -> float:
+    zeta, r = 0.05, 1.5
+    return math.sqrt((1 + (2 * zeta * r) ** 2) / ((1 - r * r) ** 2 + (2 * zeta * r) ** 2))
+
+
+def _cantilever_roots(n: int) -> list[float]:
+    return [_solve(lambda x: math.cos(x) * math.cosh(x) + 1.0, (j - 1) * math.pi + 1e-6,
+                   j * math.pi) for j in range(1, n + 1)]
+
+
+def _cantilever_ratio() -> float:
+    from ..buildings import Building
+
+    b = Building.continuous(1.0, 0.0, n_modes=3)
+    return float(b.periods[0] / b.periods[1])
+
+
+def _shear_ratio() -> float:
+    from ..buildings import Building
+
+    b = Building.shear(5, 0.73)
+    return float(b.omegas[1] / b.omegas[0])
+
+
+# -------------------------------------------------------------------------- isolation
+ISO = dict(isolation="linear", isolation_period=2.0, isolation_damping=0.1, scale=0.1)
+
+
+@cache
+def _isolated_run():
+    from ..blocks.specimens import specimen
+    from ..motions.records import load_builtin
+
+    rec = load_builtin("Rinaldi228").scaled(ISO["scale"])
+    blk = specimen(2, "experimental")
+    with warnings.catch_warnings():  # the restitution it warns about: no impact here
+        warnings.simplefilter("ignore", PlausibilityWarning)
+        r = _simulate(blk, rec, model="isolated", isolation=ISO["isolation"],
+                      isolation_period=ISO["isolation_period"],
+                      isolation_damping=ISO["isolation_damping"])
+    if not math.isnan(r.uplift_time):
+        raise RuntimeError("the block uplifted: not the no-uplift case")
+    return rec, r
+
+
+def _isolated_spectrum(kind: str) -> float:
+    from ..motions.spectra import response_spectrum
+
+    rec, _ = _isolated_run()
+    return float(response_spectrum(rec, [ISO["isolation_period"]], ISO["isolation_damping"],
+                                   kind=kind)[0])
+
+
+# ------------------------------------------------------------------------------ shapes
+BOX = dict(a=0.5, b=0.25, c=1.25, density=2000.0)
+"""A box (m, kg/m^3): shaken along x (phi = 0) it rocks across its a-face, half-width a/2."""
+
+
+@cache
+def _box_parameters() -> dict:
+    import trimesh
+
+    from ..shapes import load_shape
+
+    a, b, c = BOX["a"], BOX["b"], BOX["c"]
+    mesh = trimesh.creation.box(extents=(a, b, c))
+    mesh.apply_translation((0.0, 0.0, c / 2))
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "box.ply")
+        mesh.export(path)
+        shape = load_shape(path, density=BOX["density"])
+    return shape.parameters(0.0)
+
+
+def _box_closed_form() -> tuple[float, float, float]:
+    half, hh = BOX["a"] / 2, BOX["c"] / 2
+    alpha = math.atan(half / hh)
+    return alpha, math.sqrt(3 * G / (4 * math.hypot(half, hh))), 1 - 1.5 * math.sin(alpha) ** 2
+
+
+# ------------------------------------------------------------------------------ cases
+def _rectangular_case(pt1: float) -> Case:
+    return Case(
+        name=f"housner-rectangular-pulse-pt{pt1:g}",
+        source=HOUSNER_1963,
+        what=f"least a/(g alpha) of a rectangular pulse of length t1 = {pt1:g}/p that "
+             "overturns the linearised block",
+        how="Housner's rectangular-pulse problem solved in closed form for the linearised "
+            "Eq (1): a/(g alpha) = 1/(1 - exp(-p t1)) (module docstring of "
+            "rocking.verification.catalog; the free motion after the pulse conserves "
+            "(theta - alpha)^2 - (theta'/p)^2, and the block overturns iff theta - alpha + "
+            "theta'/p >= 0 at t1). " + UNREAD,
+        reference=lambda: 1.0 / (1.0 - math.exp(-pt1)),
+        compute=lambda: _pulse_threshold("rectangular", 0.0, length=pt1 / PULSE_BLOCK["p"]),
+        tolerance=1e-5, group="classical")
+
+
+CASES: tuple[Case, ...] = (
+    Case(
+        name="housner-free-period",
+        source=HOUSNER_1963,
+        what="period of free rocking of the linearised block released from theta0 = alpha/2 "
+             "(mu = 1)",
+        how="T = (4/p) arccosh(1/(1 - theta0/alpha)), the period of the linearised free "
+            "motion (Housner 1963; also Pena et al. 2007, Eq 11 with mu = 1): theta = alpha "
+            "- (alpha - theta0) cosh(p t) reaches 0 at a quarter period.",
+        reference=lambda: 4.0 / FREE["p"] * math.acosh(1.0 / (1.0 - FREE["frac"])),
+        compute=_free_period, unit="s", tolerance=1e-7, group="classical"),
+    Case(
+        name="housner-restitution",
+        source=HOUSNER_1963,
+        what="ratio of angular velocities after and before an impact of a rectangular "
+             "block (width 0.4 m, height 1.6 m), from its free-rocking amplitudes",
+        how="mu = 1 - (3/2) sin^2(alpha), Housner's coefficient of restitution of a "
+            "rectangular block from the conservation of angular momentum about the new "
+            "corner (Housner 1963; Eq 4 of Pena et al. 2007). Computed: the amplitudes "
+            "theta0 and r1 before and after the first impact of the nonlinear model give "
+            "the velocity ratio sqrt((cos(alpha - r1) - cos alpha)/(cos(alpha - theta0) - "
+            "cos alpha)) (energy conserved between impacts).",
+        reference=lambda: 1.0 - 1.5 * math.sin(math.atan(RECT_BLOCK["width"]
+                                                         / RECT_BLOCK["height"])) ** 2,
+        compute=lambda: _velocity_ratio(_rect_block()), tolerance=1e-5, group="classical"),
+    _rectangular_case(1.0),
+    _rectangular_case(0.25),
+    Case(
+        name="housner-rectangular-pulse-response",
+        source=HOUSNER_1963,
+        what="largest theta/alpha of the linearised block after a rectangular pulse of "
+             "length 1/p at 90 % of its overturning amplitude",
+        how="During the pulse theta/alpha = (A - 1)(cosh(p t) - 1); afterwards the free "
+            "linearised motion conserves (theta - alpha)^2 - (theta'/p)^2, so the largest "
+            "angle is r/alpha = 1 - sqrt((1 - theta1/alpha)^2 - (theta1'/(p alpha))^2) "
+            "(derived here, as in Housner 1963's treatment of the rectangular pulse). "
+            + UNREAD,
+        reference=_rect_pulse_response_ref, compute=_rect_pulse_response,
+        tolerance=1e-6, group="classical"),
+    Case(
+        name="makris-roussos-half-sine",
+        source=MAKRIS_ROUSSOS_2000,
+        what="least a_p/(g alpha) of a half-sine pulse (omega_p/p = 4) that overturns the "
+             "linearised block",
+        how="Root of sqrt(A^2 - 1) + A exp(-(pi - asin(1/A)) p/omega_p) = omega_p/p, the "
+            "overturning condition of the linearised block under the half-sine pulse "
+            "(derived here in the framework of Makris and Roussos 2000, who give the "
+            "minimum overturning acceleration of the linearised block under pulses in "
+            "closed form; module docstring). " + UNREAD,
+        reference=lambda: half_sine_mode2(4.0),
+        compute=lambda: _pulse_threshold("half_sine", 4.0, mode2=False),
+        tolerance=1e-5, group="pulses"),
+    Case(
+        name="makris-roussos-half-sine-long",
+        source=MAKRIS_ROUSSOS_2000,
+        what="the same threshold for a long half-sine pulse (omega_p/p = 1)",
+        how="Root of the same equation at omega_p/p = 1 (module docstring). " + UNREAD,
+        reference=lambda: half_sine_mode2(1.0),
+        compute=lambda: _pulse_threshold("half_sine", 1.0, mode2=False),
+        tolerance=1e-5, group="pulses"),
+    Case(
+        name="zhang-makris-one-sine",
+        source=ZHANG_MAKRIS_2001,
+        what="least a_p/(g alpha) of a one-sine pulse (omega_p/p = 4) that overturns the "
+             "linearised block without an impact (mode 2)",
+        how="Root of sqrt(A^2 - 1) - A exp(-(2 pi - asin(1/A)) p/omega_p) = omega_p/p, "
+            "the closed form of the minimum acceleration of a one-sine pulse that "
+            "overturns the linearised block without impact (the case referred to as "
+            "Zhang and Makris 2001's Eq 47; derived here, module docstring; the equation "
+            "number is not checked against the paper). " + UNREAD,
+        reference=lambda: one_sine_mode2(4.0),
+        compute=lambda: _pulse_threshold("one_sine", 4.0, bracket=(2.0, 20.0)),
+        tolerance=1e-5, group="pulses"),
+    Case(
+        name="zhang-makris-one-sine-short",
+        source=ZHANG_MAKRIS_2001,
+        what="the same mode-2 threshold for a short one-sine pulse (omega_p/p = 8)",
+        how="Root of the same equation at omega_p/p = 8: for short pulses A grows like "
+            "(omega_p/p)^2/(2 pi), a one-sine pulse acting through its net displacement "
+            "(module docstring). " + UNREAD,
+        reference=lambda: one_sine_mode2(8.0),
+        compute=lambda: _pulse_threshold("one_sine", 8.0, bracket=(5.0, 60.0)),
+        tolerance=1e-5, group="pulses"),
+    Case(
+        name="zhang-makris-one-sine-mode1-below-mode2",
+        source=ZHANG_MAKRIS_2001,
+        what="an a_p/(g alpha) of a one-sine pulse (omega_p/p = 4) where the overturning "
+             "of the linearised block begins (found by bisection from 1 up), over the "
+             "mode-2 value: below 1 means overturning after an impact (mode 1)",
+        how="Zhang and Makris (2001) find that under a one-sine pulse the block can "
+            "overturn after one impact (mode 1) at amplitudes below the no-impact (mode "
+            "2) minimum. A bound, not a value: the ratio lies in [0, 1). " + UNREAD,
+        reference=lambda: 1.0,
+        compute=lambda: (_pulse_threshold("one_sine", 4.0, mode2=False, bracket=(1.0001, 2.0))
+                         / one_sine_mode2(4.0)),
+        tolerance=1.0, tolerance_kind="below", group="pulses"),
+    Case(
+        name="makris-konstantinidis-one-cosine",
+        source=MAKRIS_KONSTANTINIDIS_2003,
+        what="least a_p/(g alpha) of a one-cosine pulse (omega_p/p = 2) that overturns the "
+             "linearised block without an impact",
+        how="A = (1 + (omega_p/p)^2)/(1 - exp(-2 pi p/omega_p)): the block uplifts at t = 0 "
+            "and overturns without impact iff theta - alpha + theta'/p >= 0 at the end of "
+            "the pulse (derived here, module docstring). " + UNREAD,
+        reference=lambda: one_cosine_mode2(2.0),
+        compute=lambda: _pulse_threshold("one_cosine", 2.0, bracket=(2.0, 20.0)),
+        tolerance=1e-5, group="pulses"),
+    Case(
+        name="makris-konstantinidis-similarity",
+        source=MAKRIS_KONSTANTINIDIS_2003,
+        what="largest difference of theta/alpha at equal p t between two blocks of the same "
+             "alpha and mu, p = 1.5 and 6 1/s, under one-cosine pulses of equal omega_p/p "
+             "(3) and a_p/(g tan alpha) (1.5)",
+        how="Self-similarity of the rocking response (Makris and Konstantinidis 2003; "
+            "dimensional analysis): theta/alpha as a function of p t depends only on "
+            "omega_p/p, a_p/(g tan alpha), alpha and mu, so the difference is zero "
+            "(exactly; the tolerance is the integration's).",
+        reference=lambda: 0.0, compute=_similarity_difference, tolerance=1e-8,
+        tolerance_kind="abs", group="similarity"),
+    Case(
+        name="dimitrakopoulos-dejong-similarity",
+        source=DIMITRAKOPOULOS_DEJONG_2012,
+        what="ratio of the least overturning a_p/(g tan alpha) of a one-sine pulse "
+             "(omega_p/p = 3) for two blocks of the same alpha and mu, p = 1.5 and 6 1/s",
+        how="The similarity law of Dimitrakopoulos and DeJong (2012): the overturning "
+            "spectrum drawn on omega_p/p and a_p/(g tan alpha) is the same for blocks of "
+            "any size with the same alpha and mu, so the ratio is 1. Computed with "
+            "rocking.analysis.overturning.overturning_spectrum (nonlinear model, tol "
+            "1e-4).",
+        reference=lambda: 1.0,
+        compute=lambda: _dd_threshold(SIMILAR["p"][0]) / _dd_threshold(SIMILAR["p"][1]),
+        tolerance=1e-9, group="similarity"),
+    Case(
+        name="ccrr-vs-classical",
+        source=PENA_2007,
+        what="amplitude after the third impact of free rocking from alpha/2 (alpha = 0.2, "
+             "p = 2, mu = 0.9): the CCRR model (Eqs 5-10) against the classical model",
+        how="Cross-model check: the CCRR model tends to the classical model as its contact "
+            "length l vanishes (Pena et al. 2007, Section 2.2); the reference is the "
+            "classical model's amplitude; the tolerance, 0.5 %, is the agreement at the "
+            "default l (tests/test_ccrr.py).",
+        reference=lambda: float(_free_amplitudes("housner", _ccrr_block())[3]),
+        compute=lambda: float(_free_amplitudes("ccrr", _ccrr_block())[3]),
+        unit="rad", tolerance=5e-3, group="cross-model"),
+    Case(
+        name="dem-vs-classical",
+        source=PENA_2007,
+        what="amplitude after the second impact of free rocking of specimen 2 "
+             "(experimental parameters) from alpha/2: the DEM against the classical model",
+        how="Cross-model check: the discrete-element model with its damping calibrated to "
+            "the block's restitution rocks like the classical model (Pena et al. 2007, "
+            "Section 2.3); the reference is the classical model's amplitude; the "
+            "tolerance, 3 %, is the agreement documented in tests/test_dem.py.",
+        reference=lambda: float(_free_amplitudes("housner", _specimen2(), duration=2.0,
+                                                 dt_out=5e-4)[2]),
+        compute=lambda: float(_free_amplitudes("dem", _specimen2(), duration=2.0,
+                                               dt_out=5e-4)[2]),
+        unit="rad", tolerance=3e-2, group="cross-model", slow=True),
+    Case(
+        name="sdof-floor-transmissibility",
+        source=CHOPRA,
+        what="steady-state floor acceleration over ground acceleration of an SDOF building "
+             "(T = 0.5 s, zeta = 5 %) under a sine at 1.5 times its frequency",
+        how="|1 + r^2/(1 - r^2 + 2 i zeta r)| = sqrt((1 + (2 zeta r)^2)/((1 - r^2)^2 + "
+            "(2 zeta r)^2)) (transmissibility, Chopra Section 3.6); computed: the "
+            "amplitude of the last 10 cycles of rocking.buildings.FloorMotion by least "
+            "squares (the sampled sine's sinc^2(f dt) bias is below the tolerance).",
+        reference=_transmissibility_ref, compute=_transmissibility, tolerance=1e-3,
+        group="buildings"),
+    Case(
+        name="cantilever-period-ratio",
+        source=MIRANDA_TAGHAVI_2005,
+        what="T1/T2 of the continuous building with alpha = 0 (a flexural cantilever)",
+        how="(x2/x1)^2 with x1, x2 the first roots of cos x cosh x + 1 = 0 (the "
+            "Euler-Bernoulli cantilever, Chopra Section 16.2), solved here by brentq: "
+            "6.2669 (Miranda and Taghavi 2005 give 6.27 for alpha = 0, as quoted in "
+            "tests/test_buildings.py).",
+        reference=lambda: (_cantilever_roots(2)[1] / _cantilever_roots(2)[0]) ** 2,
+        compute=_cantilever_ratio, tolerance=1e-9, group="buildings"),
+    Case(
+        name="shear-building-frequencies",
+        source=CHOPRA,
+        what="omega2/omega1 of a uniform 5-storey shear building",
+        how="omega_j = 2 sqrt(k/m) sin((2j - 1) pi/(2(2N + 1))) for equal storeys "
+            "(Chopra Section 18.2), so omega2/omega1 = sin(3 pi/22)/sin(pi/22).",
+        reference=lambda: math.sin(3 * math.pi / 22) / math.sin(math.pi / 22),
+        compute=_shear_ratio, tolerance=1e-10, group="buildings"),
+    Case(
+        name="isolated-no-uplift-sd",
+        source=VASSILIOU_MAKRIS_2012,
+        what="largest isolator displacement of specimen 2 on a linear isolation "
+             "(T_b = 2 s, zeta_b = 10 %) under Rinaldi 228 x 0.1, where it never uplifts",
+        how="A block that never uplifts rides the isolated base as one linear oscillator "
+            "(Vassiliou and Makris 2012), so the base's largest displacement is the "
+            "elastic spectral displacement Sd(T_b, zeta_b) of the ground motion, computed "
+            "by rocking.motions.response_spectrum (Nigam and Jennings' exact recurrence, "
+            "Chopra Section 5.2). The tolerance covers the peak taken at output samples.",
+        reference=lambda: _isolated_spectrum("sd"),
+        compute=lambda: float(_isolated_run()[1].info["max_base_displacement"]),
+        unit="m", tolerance=2e-3, group="isolation"),
+    Case(
+        name="isolated-no-uplift-sa",
+        source=VASSILIOU_MAKRIS_2012,
+        what="largest absolute acceleration of the isolated base in the same run",
+        how="The same linear oscillator: the base's largest absolute acceleration is the "
+            "elastic spectral acceleration Sa(T_b, zeta_b) (absolute, not pseudo) of the "
+            "ground motion, by rocking.motions.response_spectrum.",
+        reference=lambda: _isolated_spectrum("sa"),
+        compute=lambda: float(_isolated_run()[1].info["max_plate_acceleration"]),
+        unit="m/s^2", tolerance=2e-3, group="isolation"),
+    Case(
+        name="shape-box-alpha",
+        source=PENA_2007,
+        what="alpha of a 0.5 x 0.25 x 1.25 m box mesh shaken along its long side, from "
+             "rocking.shapes",
+        how="alpha = atan(b/h) (Eq 2 of Pena et al. 2007) with b = 0.25 m, h = 0.625 m the "
+            "half-width and the height of the centre of mass of the rectangle it rocks in.",
+        reference=lambda: _box_closed_form()[0],
+        compute=lambda: float(_box_parameters()["alpha_plus"]), unit="rad",
+        tolerance=1e-9, group="shapes"),
+    Case(
+        name="shape-box-p",
+        source=PENA_2007,
+        what="frequency parameter p of the same box mesh, from rocking.shapes",
+        how="p = sqrt(3 g/(4 R)), R = sqrt(b^2 + h^2) (Eq 3 of Pena et al. 2007; the "
+            "prism's inertia about its edge is (4/3) m R^2).",
+        reference=lambda: _box_closed_form()[1],
+        compute=lambda: float(_box_parameters()["p_plus"]), unit="1/s",
+        tolerance=1e-9, group="shapes"),
+    Case(
+        name="shape-box-restitution",
+        source=HOUSNER_1963,
+        what="coefficient of restitution of the same box mesh, from rocking.shapes",
+        how="mu = 1 - (3/2) sin^2(alpha) (Housner 1963; Eq 4 of Pena et al. 2007), the "
+            "restitution of a rectangular block from angular momentum about the new corner.",
+        reference=lambda: _box_closed_form()[2],
+        compute=lambda: float(_box_parameters()["mu_plus"]),
+        tolerance=1e-9, group="shapes"),
+)
+"""Every verification case, in the order of the table."""
+
+IMPACT_CASES = ("housner-restitution", "ccrr-vs-classical", "dem-vs-classical")
+"""The cases whose outcome depends on the classical model's impacts (its restitution)."""
+
+
+def case_names() -> list[str]:
+    return [c.name for c in CASES]
+
+
+__all__ = ["CASES", "IMPACT_CASES", "case_names", "half_sine_mode2", "one_cosine_mode2",
+           "one_sine_mode2"]

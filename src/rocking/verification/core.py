@@ -1,0 +1,248 @@
+"""The verification manual's machinery: a :class:`Case` (a number from the literature or a
+closed form, and how we compute the same number), its evaluation into a :class:`Row`, and
+the :class:`VerificationTable` that ``rocking verify`` prints.
+
+A case never has its reference tuned to our output: the reference is a closed form (with
+the equation it comes from) or a value quoted from a paper (with its page), and a case
+whose computed value disagrees is shown as disagreeing (``known_difference`` says why, when
+the reason is documented); it is not adjusted until it passes.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+TOLERANCE_KINDS = ("rel", "abs", "below")
+"""``rel``: pass iff ``|computed - reference| <= tolerance * |reference|``; ``abs``: iff
+``|computed - reference| <= tolerance``; ``below``: a bound, not a value: pass iff
+``reference - tolerance <= computed < reference``."""
+
+
+@dataclass(frozen=True)
+class Case:
+    """One verification case.
+
+    Attributes
+    ----------
+    name : str
+        Short identifier (``rocking verify NAME``).
+    source : str
+        Full citation of the paper (or textbook) the reference comes from.
+    what : str
+        One line: the quantity compared.
+    how : str
+        How the reference number was obtained: the closed form and its equation (derived
+        here when the paper's own text could not be read), or the value quoted from a table
+        or figure of the paper with its page.
+    reference : Callable[[], float]
+        The reference value (a closed form evaluated here, or a quoted constant).
+    compute : Callable[[], float]
+        Our value: runs the package (models, motions, analysis, buildings, shapes).
+    unit : str
+        Unit of both values ("-" for a ratio).
+    tolerance : float
+        Allowed difference, of kind ``tolerance_kind`` (:data:`TOLERANCE_KINDS`).
+    tolerance_kind : str
+        ``"rel"``, ``"abs"`` or ``"below"`` (a bound).
+    group : str
+        The part of the package it checks (``classical``, ``pulses``, ``similarity``,
+        ``cross-model``, ``buildings``, ``isolation``, ``shapes``).
+    known_difference : str
+        Why the case disagrees with the literature, when it does for a documented reason
+        (empty when it should agree).
+    slow : bool
+        Left out by ``quick=True``.
+    """
+
+    name: str
+    source: str
+    what: str
+    how: str
+    reference: Callable[[], float]
+    compute: Callable[[], float]
+    unit: str = "-"
+    tolerance: float = 1e-6
+    tolerance_kind: str = "rel"
+    group: str = ""
+    known_difference: str = ""
+    slow: bool = False
+
+    def __post_init__(self):
+        if self.tolerance_kind not in TOLERANCE_KINDS:
+            raise ValueError(f"tolerance_kind must be one of {TOLERANCE_KINDS}")
+
+    @property
+    def tolerance_text(self) -> str:
+        """The tolerance as shown in the table: ``rel 1e-06`` or ``abs 1e-09 rad``."""
+        if self.tolerance_kind == "below":
+            return f"in [ref-{self.tolerance:g}, ref)"
+        unit = "" if self.tolerance_kind == "rel" or self.unit == "-" else f" {self.unit}"
+        return f"{self.tolerance_kind} {self.tolerance:.0e}{unit}"
+
+    def passes(self, reference: float, computed: float) -> bool:
+        """Whether ``computed`` agrees with ``reference`` within the tolerance (NaN fails)."""
+        if not (math.isfinite(reference) and math.isfinite(computed)):
+            return False
+        if self.tolerance_kind == "below":
+            return reference - self.tolerance <= computed < reference
+        bound = self.tolerance * (abs(reference) if self.tolerance_kind == "rel" else 1.0)
+        return abs(computed - reference) <= bound
+
+    def run(self) -> Row:
+        """Evaluate the case: an error while computing is a failing row with its message,
+        never an exception."""
+        t0 = time.perf_counter()
+        note = ""
+        try:
+            ref = float(self.reference())
+        except Exception as e:  # a broken reference is a failing row too
+            ref, note = math.nan, f"reference failed: {type(e).__name__}: {e}"
+        try:
+            val = float(self.compute())
+        except Exception as e:
+            val, note = math.nan, f"computation failed: {type(e).__name__}: {e}"
+        ok = self.passes(ref, val)
+        if not ok and not note:
+            note = self.known_difference or "disagrees beyond the tolerance"
+        elif ok and self.known_difference:
+            note = self.known_difference
+        return Row(case=self, reference=ref, computed=val, passed=ok, note=note,
+                   seconds=time.perf_counter() - t0)
+
+
+@dataclass(frozen=True)
+class Row:
+    """One evaluated case."""
+
+    case: Case
+    reference: float
+    computed: float
+    passed: bool
+    note: str = ""
+    seconds: float = 0.0
+
+    @property
+    def difference(self) -> float:
+        """``computed - reference`` (relative to ``|reference|`` for a relative
+        tolerance)."""
+        d = self.computed - self.reference
+        if self.case.tolerance_kind == "rel" and self.reference != 0.0:
+            return d / abs(self.reference)
+        return d
+
+    def to_dict(self) -> dict:
+        """JSON-ready (NaN as None)."""
+        def num(x):
+            return None if not math.isfinite(x) else x
+
+        c = self.case
+        return {"case": c.name, "group": c.group, "source": c.source, "what": c.what,
+                "how": c.how, "reference": num(self.reference), "computed": num(self.computed),
+                "unit": c.unit, "tolerance": c.tolerance, "tolerance_kind": c.tolerance_kind,
+                "difference": num(self.difference), "passed": self.passed, "note": self.note,
+                "known_difference": c.known_difference, "seconds": self.seconds}
+
+
+def short_source(source: str) -> str:
+    """``Surname (year)``, ``Surname and Surname (year)`` or ``Surname et al. (year)`` of a
+    citation written ``Surname, I., ... (year). Title...``; the text up to the first
+    closing parenthesis if it is not written so."""
+    i = source.find(")")
+    head = source[: i + 1] if i > 0 else source
+    j = head.find(" (")
+    names = re.findall(r"([A-Z][A-Za-z'-]+(?: [A-Z][A-Za-z'-]+)*), (?:[A-Z]\.[ -]?)+", head[:j])
+    if j < 0 or not names:
+        return head
+    year = head[j:]
+    if len(names) == 1:
+        return names[0] + year
+    if len(names) == 2:
+        return f"{names[0]} and {names[1]}{year}"
+    return f"{names[0]} et al.{year}"
+
+
+def _fmt(x: float) -> str:
+    return "nan" if not math.isfinite(x) else f"{x:.10g}"
+
+
+def _md(text: str) -> str:
+    return text.replace("|", "\\|").replace("\n", " ")
+
+
+@dataclass
+class VerificationTable:
+    """The evaluated cases, in catalog order."""
+
+    rows: list[Row] = field(default_factory=list)
+
+    @property
+    def passed(self) -> bool:
+        """True iff every case passed (an empty table passes nothing: False)."""
+        return bool(self.rows) and all(r.passed for r in self.rows)
+
+    @property
+    def failed(self) -> list[Row]:
+        return [r for r in self.rows if not r.passed]
+
+    def to_dicts(self) -> list[dict]:
+        return [r.to_dict() for r in self.rows]
+
+    def to_dataframe(self):
+        """A :class:`pandas.DataFrame`, one row per case (the keys of :meth:`Row.to_dict`)."""
+        import pandas as pd
+
+        return pd.DataFrame(self.to_dicts())
+
+    def to_text(self) -> str:
+        """The plain-text table of ``rocking verify``: case, source, reference, computed,
+        unit, tolerance, pass; the notes of failing and known-difference cases below it."""
+        head = ("case", "source", "reference", "computed", "unit", "tolerance", "pass")
+        body = [(r.case.name, short_source(r.case.source), _fmt(r.reference),
+                 _fmt(r.computed), r.case.unit, r.case.tolerance_text,
+                 "PASS" if r.passed else "FAIL") for r in self.rows]
+        widths = [max(len(h), *(len(b[i]) for b in body)) if body else len(h)
+                  for i, h in enumerate(head)]
+        lines = ["  ".join(h.ljust(w) for h, w in zip(head, widths, strict=True)).rstrip(),
+                 "  ".join("-" * w for w in widths)]
+        lines += ["  ".join(c.ljust(w) for c, w in zip(b, widths, strict=True)).rstrip()
+                  for b in body]
+        n_fail = len(self.failed)
+        lines.append("")
+        lines.append(f"{len(self.rows) - n_fail} of {len(self.rows)} cases pass"
+                     + (f"; {n_fail} FAIL" if n_fail else "") + ".")
+        notes = [r for r in self.rows if r.note]
+        for r in notes:
+            lines.append(f"  {r.case.name}: {r.note}")
+        return "\n".join(lines)
+
+    def to_markdown(self, details: bool = True) -> str:
+        """A Markdown table (case, source, what, reference, computed, unit, tolerance,
+        pass), followed, with ``details``, by one paragraph per case: its full source and
+        how the reference was obtained. Used for the documentation's verification page."""
+        lines = ["| case | source | what | reference | computed | unit | tolerance | pass |",
+                 "|---|---|---|---|---|---|---|---|"]
+        for r in self.rows:
+            c = r.case
+            lines.append(f"| `{c.name}` | {_md(short_source(c.source))} | {_md(c.what)} | "
+                         f"{_fmt(r.reference)} | {_fmt(r.computed)} | {c.unit} | "
+                         f"{c.tolerance_text} | {'PASS' if r.passed else '**FAIL**'} |")
+        if details:
+            lines.append("")
+            for r in self.rows:
+                c = r.case
+                lines.append(f"**`{c.name}`** ({c.group}). {_md(c.what)}  ")
+                lines.append(f"*Source*: {_md(c.source)}  ")
+                lines.append(f"*Reference*: {_md(c.how)}"
+                             + (f"  \n*Known difference*: {_md(c.known_difference)}"
+                                if c.known_difference else "")
+                             + (f"  \n*Note*: {_md(r.note)}" if r.note and not r.passed
+                                else ""))
+                lines.append("")
+        return "\n".join(lines).rstrip() + "\n"
+
+
+__all__ = ["TOLERANCE_KINDS", "Case", "Row", "VerificationTable", "short_source"]
