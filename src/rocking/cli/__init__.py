@@ -17,14 +17,15 @@
     rocking campaign run SPEC.toml --out STORE [--executor dask --dask-local 2]
     rocking campaign status|report STORE
     rocking shape MESH.stl --density 2600 [--up z] [--out DIR] [--json]
+    rocking verify [CASE...] [--quick] [--json] [--markdown FILE] [--list]
 
 Modules: :mod:`~rocking.cli.params`, :mod:`~rocking.cli.simulate`,
 :mod:`~rocking.cli.models`, :mod:`~rocking.cli.catalog` (``motions``, ``blocks``,
 ``buildings``),
 :mod:`~rocking.cli.motion`, :mod:`~rocking.cli.dem`,
 :mod:`~rocking.cli.identify`, :mod:`~rocking.cli.reproduce`,
-:mod:`~rocking.cli.campaign`, :mod:`~rocking.cli.shape`; each imports only
-:mod:`~rocking.cli.common` (and the library), and this module registers them.
+:mod:`~rocking.cli.campaign`, :mod:`~rocking.cli.shape`, :mod:`~rocking.cli.verify`; each
+imports only :mod:`~rocking.cli.common` (and the library), and this module registers them.
 
 Errors: :func:`main` prints bad input -- a :class:`~rocking.errors.RockingError` from the
 library or a usage error from click -- as one line ``error: <message>`` on stderr with exit
@@ -55,6 +56,7 @@ from .params import params_cmd
 from .reproduce import reproduce_cmd
 from .shape import shape_cmd
 from .simulate import simulate_cmd
+from .verify import verify_cmd
 
 
 @click.group(context_settings=CONTEXT)
@@ -68,7 +70,7 @@ def cli():
 
 for _command in (params_cmd, simulate_cmd, reproduce_cmd, identify, dem_params, motion,
                  models_cmd, motions_cmd, blocks_cmd, buildings_cmd, campaign, shape_cmd,
-                 hazard):
+                 hazard, verify_cmd):
     cli.add_command(_command)
 
 _NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())

@@ -1,0 +1,71 @@
+"""``rocking verify``: the verification manual (:mod:`rocking.verification`, issue 22).
+
+::
+
+    rocking verify                      # every case: the table, exit 0 iff all pass
+    rocking verify housner-free-period zhang-makris-one-sine
+    rocking verify --quick              # without the slow cases
+    rocking verify --json               # one object per case, and the summary
+    rocking verify --markdown FILE      # the table and each case's source and derivation
+    rocking verify --list               # the case names, their group and what they check
+
+Prints one row per case: case, source, reference value, computed value, unit, tolerance,
+PASS/FAIL, then the notes (why a case fails, or its documented difference). Exit code 0
+when every case passes, 1 when one fails (a failing verification is not bad input), 2 for
+an unknown case name (one line ``error: ...`` listing the known names).
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+
+from .common import CONTEXT, json_default
+
+
+@click.command("verify", context_settings=CONTEXT)
+@click.argument("cases", nargs=-1)
+@click.option("--quick", is_flag=True, help="Leave out the slow cases (the DEM).")
+@click.option("--json", "as_json", is_flag=True,
+              help="Print JSON: {'passed': ..., 'n_cases': ..., 'n_failed': ..., 'cases': "
+                   "[one object per case]}.")
+@click.option("--markdown", "markdown", type=click.Path(dir_okay=False, path_type=Path),
+              default=None, help="Also write the table and each case's source and "
+                                 "derivation as Markdown to this file.")
+@click.option("--list", "list_only", is_flag=True,
+              help="List the cases (name, group, what) without running them.")
+def verify_cmd(cases, quick, as_json, markdown, list_only):
+    """Run the verification cases and print the table: case, source, reference value,
+    computed value, tolerance, pass. Exit code 1 if any case fails.
+
+    CASES: names of cases to run (all by default; see --list).
+    """
+    from ..verification import get_cases, run_cases
+
+    selected = get_cases(list(cases), quick)  # an unknown name: ParameterError, exit 2
+    if list_only:
+        if as_json:
+            click.echo(json.dumps([{"case": c.name, "group": c.group, "source": c.source,
+                                    "what": c.what, "slow": c.slow} for c in selected],
+                                  indent=2))
+        else:
+            width = max(len(c.name) for c in selected)
+            for c in selected:
+                click.echo(f"{c.name.ljust(width)}  {c.group:<12} {c.what}")
+        return 0
+    table = run_cases([c.name for c in selected])
+    if markdown is not None:
+        markdown.parent.mkdir(parents=True, exist_ok=True)
+        markdown.write_text(table.to_markdown())
+    if as_json:
+        click.echo(json.dumps({"passed": table.passed, "n_cases": len(table.rows),
+                               "n_failed": len(table.failed), "cases": table.to_dicts()},
+                              indent=2, default=json_default))
+    else:
+        click.echo(table.to_text())
+    return 0 if table.passed else 1
+
+
+__all__ = ["verify_cmd"]
