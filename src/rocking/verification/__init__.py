@@ -12,7 +12,7 @@ True
 from __future__ import annotations
 
 from ..errors import ParameterError
-from .catalog import CASES, IMPACT_CASES, case_names
+from .catalog import CASES, IMPACT_CASES, case_names, clear_caches
 from .core import TOLERANCE_KINDS, Case, Row, VerificationTable
 
 
@@ -35,7 +35,9 @@ def run_cases(names=None, quick: bool = False) -> VerificationTable:
     """Run the cases named (all by default; ``quick``: without the slow ones) and return
     their :class:`VerificationTable` (``.passed``, ``.to_dataframe()``,
     ``.to_markdown()``, ``.to_text()``)."""
-    return VerificationTable([c.run() for c in get_cases(names, quick)])
+    cases = get_cases(names, quick)
+    clear_caches()
+    return VerificationTable([c.run() for c in cases])
 
 
 def verification_markdown(names=None, quick: bool = False, details: bool = True) -> str:

@@ -105,9 +105,11 @@ def _simulate(block, motion, **kw):
 
 def _bisect(overturns, lo: float, hi: float, tol: float = BISECTION_TOL) -> float:
     """The amplitude ratio where ``overturns`` switches from False (at ``lo``) to True (at
-    ``hi``), to a relative width ``tol``; NaN if the bracket does not hold."""
+    ``hi``), to a relative width ``tol``; RuntimeError if the bracket does not hold."""
     if overturns(lo) or not overturns(hi):
-        return math.nan
+        raise RuntimeError(f"no threshold in [{lo:g}, {hi:g}]: the block "
+                           f"{'overturns' if overturns(lo) else 'survives'} at {lo:g} and "
+                           f"{'overturns' if overturns(hi) else 'survives'} at {hi:g}")
     while hi - lo > tol * hi:
         mid = 0.5 * (lo + hi)
         if overturns(mid):
@@ -631,9 +633,16 @@ IMPACT_CASES = ("housner-restitution", "ccrr-vs-classical", "dem-vs-classical")
 """The cases whose outcome depends on the classical model's impacts (its restitution)."""
 
 
+def clear_caches() -> None:
+    """Forget the runs shared by several cases (each :func:`rocking.verification.run_cases`
+    starts afresh)."""
+    _isolated_run.cache_clear()
+    _box_parameters.cache_clear()
+
+
 def case_names() -> list[str]:
     return [c.name for c in CASES]
 
 
-__all__ = ["CASES", "IMPACT_CASES", "case_names", "half_sine_mode2", "one_cosine_mode2",
-           "one_sine_mode2"]
+__all__ = ["CASES", "IMPACT_CASES", "case_names", "clear_caches", "half_sine_mode2",
+           "one_cosine_mode2", "one_sine_mode2"]
