@@ -1,8 +1,11 @@
 """Reading and writing accelerograms.
 
 :func:`read_record` (behind :meth:`Record.from_file <rocking.motions.records.Record.from_file>`)
-reads
+reads, recognising each format by its content (a file's extension is not needed):
 
+* the files of the strong-motion databases, read by :mod:`rocking.motions.formats`: ESM
+  ASCII (esm-db.eu), COSMOS Volume 2 corrected acceleration (CESMD and other COSMOS
+  networks) and K-NET / KiK-net ASCII (NIED; read with obspy, the scale factor applied);
 * PEER NGA ``.AT2`` files (recognised by the extension or by an ``NPTS`` header on line 4):
   four header lines, the third stating the units (``... IN UNITS OF G``; g if it states
   none), the fourth ``NPTS=  2048, DT=   .0066 SEC`` (possibly followed by filter
@@ -25,7 +28,8 @@ Records are read exactly, or refused:
   ``acc_g``, ``Acceleration (cm/s^2)``, ``t [s]``, ``acceleration in g``). A word where a
   unit goes that is not one of these is refused by name; a time column in ms or us is
   converted. An acceleration unit stated in the file must agree with ``units``: otherwise
-  the error names both (the file is never silently re-scaled, either way).
+  the error names both (the file is never silently re-scaled, either way). ``units=None``
+  takes the unit the file states (g if it states none).
 * **counts.** A declared count (AT2 ``NPTS``, ``# npts = N``) must equal the values read.
 * **cut files.** A last value that is only the beginning of the file's fixed number format
   (``-.1094953E-0`` after thousands of ``.dddddddE-dd``) is refused; so is a column file
@@ -62,6 +66,7 @@ from ..units import (
     acceleration_unit,
     time_unit,
 )
+from . import formats
 from .base import is_sampled
 
 __all__ = ["read_record", "write_csv", "builtin_records", "read_builtin"]
@@ -97,17 +102,21 @@ _DT_RTOL = 1e-6  # relative tolerance on time steps (uneven steps, dt disagreeme
 
 
 # ------------------------------------------------------------------------------------ public
-def read_record(path, units: str = "g", dt: float | None = None) -> tuple[np.ndarray, float, dict]:
+def read_record(path, units: str | None = "g",
+                dt: float | None = None) -> tuple[np.ndarray, float, dict]:
     """Read an accelerogram file.
 
     Parameters
     ----------
     path : str or path-like
-        A PEER NGA ``.AT2`` file, or a CSV / whitespace-column file (see the module doc).
-    units : str
+        An ESM, COSMOS V2 or K-NET/KiK-net file (:mod:`rocking.motions.formats`), a PEER
+        NGA ``.AT2`` file, or a CSV / whitespace-column file (see the module doc); the
+        format is recognised by the content.
+    units : str or None
         Units of the acceleration values in the file: ``g``, ``m/s^2``, ``cm/s^2`` or
         ``gal`` (also ``mm/s^2``). A unit stated in the file (``.AT2`` files: g unless
-        their third line says otherwise) must agree with it.
+        their third line says otherwise; ESM, COSMOS and K-NET files always state theirs,
+        cm/s^2 or gal) must agree with it. None: the unit the file states, g if none.
     dt : float, optional
         Time step (s). Required for a one-column file that does not state ``dt`` in a
         header comment; otherwise, if given, it must agree with the file.
@@ -119,12 +128,15 @@ def read_record(path, units: str = "g", dt: float | None = None) -> tuple[np.nda
     dt : float
         Time step (s).
     meta : dict
-        ``name`` (file stem), ``format`` (``"AT2"``, ``"csv"`` or ``"columns"``), ``path``,
+        ``name`` (file stem), ``format`` (``"ESM"``, ``"COSMOS-V2"``, ``"KNET"``,
+        ``"KiK-net"``, ``"AT2"``, ``"csv"`` or ``"columns"``), ``path``,
         ``npts``, ``dt``, ``units`` (canonical name), ``t_start`` (s, original start
         time), ``time_units`` (two-column files: the time column's unit) and, for
         ``.AT2`` files, ``description`` (event and station line), ``title``, ``header`` (the
         four header lines) and, when the description has the usual four comma-separated
-        fields, ``event``, ``date``, ``station`` and ``component``.
+        fields, ``event``, ``date``, ``station`` and ``component``. The database formats give
+        ``network``, ``station``, ``component``, ``event``, ``pga_declared`` (the peak the
+        header states, in ``units``) and more (:mod:`rocking.motions.formats`).
 
     Raises
     ------
@@ -134,11 +146,18 @@ def read_record(path, units: str = "g", dt: float | None = None) -> tuple[np.nda
         ``units`` is not an acceleration unit.
     """
     p = Path(path)
-    factor = acceleration_factor(units)
+    factor = None if units is None else acceleration_factor(units)
     if dt is not None:
         dt = positive("dt", dt, "s")
     text = _read_text(p)
     lines = text.splitlines()
+    kind = formats.detect(lines)
+    if kind == "ESM":
+        return formats.read_esm(p, lines, units, factor, dt)
+    if kind == "COSMOS":
+        return formats.read_cosmos(p, lines, units, factor, dt)
+    if kind == "KNET":
+        return formats.read_knet(p, lines, units, factor, dt, text)
     if _is_at2(p, lines):
         return _read_at2(p, lines, units, factor, dt)
     return _read_columns(p, lines, units, factor, dt, text.endswith(("\n", "\r")))
@@ -291,7 +310,7 @@ def _at2_factor(p: Path, lines: list[str], units: str, factor: float) -> tuple[f
     if key is None:
         raise RecordError(f"{p}, line 3: unknown acceleration unit {word!r}; known: "
                           f"{', '.join(ACCELERATION_UNITS)}")
-    if not _close(ACCELERATION[key], factor):
+    if factor is not None and not _close(ACCELERATION[key], factor):
         where = f"line 3 states units of {word}" if m_u else "a PEER .AT2 file is in g"
         raise RecordError(f"{p}: the file is in {key} ({where}) but units={units!r} was "
                           f"passed; pass units={key!r}")
@@ -620,10 +639,18 @@ def _read_columns(p: Path, lines: list[str], units: str, factor: float, dt: floa
     if a_unit is not None:
         stated.append((a_word, a_unit, f"line {names_ln} (column names)"))
     for u, key, where in stated:
-        if not _close(ACCELERATION[key], factor):
+        if factor is None:  # units=None: the unit the file states (they agree), else g
+            if not _close(ACCELERATION[key], ACCELERATION[stated[0][1]]):
+                raise RecordError(f"{p}, {where}: the file states units {u!r} and "
+                                  f"{stated[0][0]!r}")
+        elif not _close(ACCELERATION[key], factor):
             raise RecordError(f"{p}, {where}: the file states units {u!r} but units="
                               f"{units!r} was passed; pass units={key!r}")
-    unit_name = stated[0][1] if stated else (acceleration_unit(units) or str(units))
+    if factor is None:
+        factor = ACCELERATION[stated[0][1]] if stated else ACCELERATION["g"]
+        unit_name = stated[0][1] if stated else "g"
+    else:
+        unit_name = stated[0][1] if stated else (acceleration_unit(units) or str(units))
 
     npts = found.get("npts")
     if npts is not None and npts[0] != n:
