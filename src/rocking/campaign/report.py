@@ -839,8 +839,9 @@ def risk_lines(result: dict) -> list[str]:
         d = r.to_dict()
         head = f"{_run_name(d)} / {_group_name(d['block_name'], d)}:"
         if math.isfinite(r["annual_frequency"]):
-            tails = (f" ({_g(100 * r['tail_share'], 2)}% from the extrapolated tails)"
-                     if r["tail_share"] >= 0.005 else "")
+            tails = (f" ({_g(100 * r['tail_share'], 2)}% from the extrapolated tails"
+                     + (": it rests on that extrapolation" if r["tail_share"] > TAIL_NOTE
+                        else "") + ")" if r["tail_share"] >= 0.005 else "")
             lines.append(f"{head} annual frequency of overturning "
                          f"{_g(r['annual_frequency'])} per year, {_g(t, 6)}-year probability "
                          f"{_g(r['probability'])}{tails}{tag}")

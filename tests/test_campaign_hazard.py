@@ -1,0 +1,456 @@
+"""The site's hazard in campaigns (issue 21, ``[hazard]``): the report's annual frequency
+against Cornell's closed form at its own fits, the probability over the service life, the
+approximation label of a code value, the IM check at parse time, bounds (never a number)
+for a group without a fit, the curve kept in the manifest (a changed file changes no
+report), resuming with another ``[hazard]``, and the command line."""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+from cli_helpers import assert_one_line_error, run_main
+from scipy.stats import norm
+
+from rocking import campaign
+from rocking.analysis import DEFAULT_THRESHOLDS, damage_state
+from rocking.analysis.hazard import HazardCurve
+from rocking.campaign.hazard import code_value, read_hazard, record
+from rocking.campaign.report import report, summary_lines
+from rocking.campaign.spec import keys_table, parse_spec
+from rocking.campaign.store import manifest_for
+from rocking.errors import ParameterError, SpecError
+from rocking.units import G
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+K, K0 = 2.7, 2.0e-5  # power-law hazard lambda(a) = K0 a^-K, a in g
+
+
+# --------------------------------------------------------------------------- helpers
+
+def power_law_csv(path: Path, lo: float = 0.1, hi: float = 0.5, n: int = 6) -> Path:
+    """A hazard CSV (PGA in g, annual rate) on the power law: its tails are the same law."""
+    a = np.geomspace(lo, hi, n)
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["PGA (g)", "annual rate"])
+        w.writerows([[repr(float(x)), repr(float(K0 * x ** -K))] for x in a])
+    return path
+
+
+def cornell(median_g: float, beta: float, k: float = K, k0: float = K0) -> float:
+    """Cornell et al. (2002): lambda_f = k0 m^-k exp(k^2 beta^2 / 2) on a power law."""
+    return k0 * median_g ** -k * math.exp(0.5 * (k * beta) ** 2)
+
+
+def synthetic(groups, n_per: int = 25, seed: int = 3) -> pd.DataFrame:
+    """A store's table whose outcomes follow planted lognormal fragilities: ``groups`` is
+    ``[(mitigation, model, block, theta m/s^2 or None: never overturns, beta)]``."""
+    rng = np.random.default_rng(seed)
+    levels = np.geomspace(0.5, 12.0, 9)
+    parts, sid = [], 0
+    for mit, model, block, theta, beta in groups:
+        lv = np.repeat(np.arange(levels.size), n_per)
+        im = levels[lv]
+        p = np.zeros(im.size) if theta is None else norm.cdf(np.log(im / theta) / beta)
+        ov = rng.random(im.size) < p
+        alpha = 0.2
+        th = np.where(ov, np.nan, alpha * np.minimum(0.95, 0.5 * im / levels[-1]
+                                                    * np.exp(0.3 * rng.standard_normal(
+                                                        im.size))))
+        n = im.size
+        parts.append(pd.DataFrame({
+            "sim_id": sid + np.arange(n), "model": model, "mitigation": mit,
+            "block": block, "block_name": f"block {block}", "alpha": alpha, "p": 3.0,
+            "mu": 0.7, "motion": lv % 4, "motion_id": [f"m{i % 4}" for i in lv],
+            "level": lv, "load_factor": im / 2.0, "sample": 0, "theta0": 0.0,
+            "amplitude": 1.0, "noise": 0.0, "pga": im, "im": im, "max_abs_theta": th,
+            "max_abs_theta_over_alpha": th / alpha, "overturned": ov,
+            "overturn_time": np.where(ov, 5.0, np.nan), "uplift_time": 1.0, "n_impacts": 3,
+            "damage_state": damage_state(th, alpha, ov), "status": 0}))
+        sid += n
+    return pd.concat(parts, ignore_index=True)
+
+
+def manifest(hazard=None) -> dict:
+    m = {"name": "site test", "thresholds": list(DEFAULT_THRESHOLDS), "models": ["housner"],
+         "blocks": [], "im": {"name": "pga", "unit": "m/s^2"}, "version": "0",
+         "spec_hash": "abc"}
+    if hazard is not None:
+        m["hazard"] = hazard
+    return m
+
+
+GROUPS = [("none", "housner", 0, 3.0, 0.4), ("none", "housner", 1, 5.0, 0.3),
+          ("isolated-2.5s", "isolated", 0, 8.0, 0.5), ("isolated-2.5s", "isolated", 1, None, 0)]
+
+
+@pytest.fixture(scope="module")
+def table():
+    return synthetic(GROUPS)
+
+
+# ------------------------------------------------------------------ the risk of the report
+
+def test_annual_frequency_is_cornells_closed_form_at_the_reports_own_fit(table, tmp_path):
+    """Power-law hazard given on 0.1-0.5 g only: the report's integral over the whole IM
+    range (tails included) is k0 m^-k exp(k^2 beta^2/2) at its own fitted median and beta,
+    for the overturning fit and every damage-state curve; P(50 yr) = 1 - exp(-50 lambda)."""
+    curve, src = read_hazard(power_law_csv(tmp_path / "h.csv"))
+    res = report(table, manifest(record(curve, src, 50.0)), tmp_path / "r", n_boot=0)
+    rk = res["risk"]
+    fitted = rk[np.isfinite(rk["annual_frequency"])]
+    assert (fitted["fit"] == "overturning").sum() == 3  # the three groups that overturn
+    assert (fitted["fit"] == "damage_states").sum() >= 3
+    for r in fitted.itertuples():
+        assert r.im_unit == "m/s^2"
+        lam = cornell(r.median / G, r.beta)  # the fit in m/s^2, the curve in g
+        assert r.annual_frequency == pytest.approx(lam, rel=1e-6)
+        assert r.probability == pytest.approx(-math.expm1(-50.0 * lam), rel=1e-9)
+        assert 0.0 <= r.tail_share <= 1.0
+    # the median of the fragile block (3 m/s^2 = 0.31 g, beta 0.4) against a curve ending
+    # at 0.5 g: much of the integral is beyond the curve: counted, and said
+    ov = fitted[fitted["fit"] == "overturning"].set_index(["mitigation", "block"])
+    assert ov.loc[("none", 0), "tail_share"] > 0.1
+    assert "extrapolation" in ov.loc[("none", 0), "note"]
+    # the overturning row's median and beta are the fragility table's
+    fr = res["fragility"]
+    f0 = fr[(fr["fit"] == "overturning") & (fr["mitigation"] == "none") & (fr["block"] == 0)]
+    assert ov.loc[("none", 0), "median"] == f0["median"].iloc[0]
+    # risk.csv holds the same numbers (10 significant digits)
+    csv_rk = pd.read_csv(tmp_path / "r" / "risk.csv")
+    np.testing.assert_allclose(csv_rk["annual_frequency"], rk["annual_frequency"],
+                               rtol=1e-9)
+
+
+def test_every_mitigation_and_block_gets_a_row_and_a_line(table, tmp_path):
+    curve, src = read_hazard(power_law_csv(tmp_path / "h.csv", 0.01, 3.0, 12))
+    res = report(table, manifest(record(curve, src, 30.0)), tmp_path / "r", n_boot=0)
+    ov = res["risk"][res["risk"]["fit"] == "overturning"]
+    assert sorted(zip(ov["mitigation"], ov["block"], strict=True)) == \
+        sorted((m, b) for m, _, b, _, _ in GROUPS)
+    assert (ov["t_years"] == 30.0).all()
+    lines = summary_lines(res)
+    assert any("service life 30 years" in x for x in lines)
+    for mit, model, b, theta, _ in GROUPS:
+        line = next(x for x in lines if x.startswith(f"{mit} ({model}) / block {b}:")
+                    and ("annual frequency" in x or "no overturning fit" in x
+                         and "rate" in x))
+        if theta is not None:
+            lam = ov[(ov["mitigation"] == mit) & (ov["block"] == b)]["annual_frequency"]
+            assert f"annual frequency of overturning {lam.iloc[0]:.3g} per year" in line
+            assert "30-year probability" in line
+    md = (tmp_path / "r" / "report.md").read_text()
+    assert "## Risk at the site" in md and "### isolated-2.5s (isolated): overturning" in md
+
+
+def test_a_group_without_a_fit_gets_a_bound_never_a_number(table, tmp_path):
+    """The block that never overturns: no annual frequency, no probability; the rate of
+    the largest IM run (a step fragility there) as an upper bound, and a note."""
+    curve, src = read_hazard(power_law_csv(tmp_path / "h.csv", 0.01, 3.0, 12))
+    res = report(table, manifest(record(curve, src, 50.0)), tmp_path / "r", n_boot=0)
+    rk = res["risk"]
+    r = rk[(rk["mitigation"] == "isolated-2.5s") & (rk["block"] == 1)]
+    r = r[r["fit"] == "overturning"].iloc[0]
+    assert math.isnan(r["annual_frequency"]) and math.isnan(r["probability"])
+    assert math.isnan(r["median"]) and math.isnan(r["annual_frequency_lower_bound"])
+    top = table["im"].max() / G  # the largest IM run, in the curve's g
+    assert r["annual_frequency_upper_bound"] == pytest.approx(K0 * top ** -K, rel=1e-9)
+    assert "no overturning fit" in r["note"] and "step" in r["note"]
+    line = next(x for x in summary_lines(res) if x.startswith("isolated-2.5s (isolated) / "
+                                                             "block 1:") and "hazard" not in x
+                and "rate" in x)
+    assert "annual frequency of overturning" not in line  # no number, the note
+
+
+def test_code_value_hazard_is_labelled_approximate_everywhere(table, tmp_path):
+    curve, src = code_value(0.25 * G, k=3.0)
+    assert curve.rate_at(0.25) == pytest.approx(1 / 475, rel=1e-12)  # its anchor
+    res = report(table, manifest(record(curve, src, 50.0)), tmp_path / "r", n_boot=0)
+    md = (tmp_path / "r" / "report.md").read_text()
+    assert "APPROXIMATION" in md and "(approximate hazard)" in md
+    rk = pd.read_csv(tmp_path / "r" / "risk.csv")
+    assert rk["approximate"].all() and rk["hazard"].str.contains("approximation").all()
+    risk_lines = [x for x in summary_lines(res) if "annual frequency of overturning" in x
+                  or "no overturning fit" in x and "rate" in x]
+    assert risk_lines and all("[approximate hazard]" in x for x in risk_lines)
+    # a pure power law: Cornell's closed form with k0 = (1/475) a_475^k
+    fit = res["risk"].dropna(subset=["annual_frequency"]).iloc[0]
+    assert fit["annual_frequency"] == pytest.approx(
+        cornell(fit["median"] / G, fit["beta"], 3.0, 0.25 ** 3 / 475), rel=1e-6)
+
+
+def test_a_hazard_of_another_im_is_refused_by_the_report(table, tmp_path):
+    p = tmp_path / "pgv.csv"
+    p.write_text("PGV (m/s),annual rate\n0.1,0.01\n0.5,0.0004\n")
+    curve, src = read_hazard(p)
+    with pytest.raises(ParameterError, match=r"PGV \(m/s\).*pga \(m/s\^2\)"):
+        report(table, manifest(record(curve, src, 50.0)), tmp_path / "r", n_boot=0)
+
+
+# ------------------------------------------------------------------ the spec
+
+SPEC = """
+[campaign]
+name = "site-small"
+seed = 4
+model = "housner"
+duration = 4.0
+
+[[blocks]]
+alpha = 0.2
+p = 2.0
+mu = 0.9
+
+[motions]
+kind = "sine"
+frequency = [1.0, 1.5, 2.0, 3.0]
+amplitude = 1.0
+cycles = 2
+{intensity}
+
+[[mitigation]]
+name = "none"
+
+[[mitigation]]
+name = "anchored"
+model = "anchored"
+anchor_strength = 0.15
+
+[run]
+chunk_size = 24
+{hazard}"""
+PGA_LEVELS = 'im = "pga"\nlevels = {start = 0.6, stop = 9.0, num = 6, spacing = "log"}'
+
+
+def spec_text(hazard: str, intensity: str = PGA_LEVELS) -> str:
+    return SPEC.format(hazard=hazard, intensity=intensity)
+
+
+def oq_file(path: Path, sites=((13.4, 42.35, 1.0), (12.5, 41.9, 0.4))) -> Path:
+    """An OpenQuake export written from the documented layout (engine manual, "Outputs
+    from Classical PSHA"): poe in T = 50 years of a power law scaled per site."""
+    levels = np.array([0.02, 0.05, 0.1, 0.2, 0.4, 0.8, 1.6])
+    lines = ["#,,,,,\"generated_by='OpenQuake engine 3.18.0', start_date='2023-10-03T06:09:"
+             "08', checksum=2107362341, kind='mean', investigation_time=50.0, imt='PGA'\"",
+             "lon,lat,depth," + ",".join(f"poe-{x:.7f}" for x in levels)]
+    for lon, lat, s in sites:
+        poe = -np.expm1(-50.0 * s * K0 * levels ** -K)
+        lines.append(f"{lon:.5f},{lat:.5f},-0.10000," + ",".join(f"{q:.6E}" for q in poe))
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+@pytest.fixture
+def oq(tmp_path):
+    return oq_file(tmp_path / "hazard_curve-mean-PGA_7.csv")
+
+
+def test_the_hazard_is_read_at_parse_time_and_kept_whole(oq, tmp_path):
+    s = parse_spec(spec_text('[hazard]\nfile = "hazard_curve-mean-PGA_7.csv"\nsite = '
+                             '[12.6, 41.8]\nt_years = 100'), base_dir=tmp_path)
+    h = s.hazard
+    assert h["source"]["format"] == "openquake" and h["source"]["site_index"] == 1
+    assert h["t_years"] == 100.0 and h["im_name"] == "PGA" and h["unit"] == "g"
+    # rates from the file's poe by -ln(1 - poe) / T, computed here from the text
+    rows = list(csv.reader(oq.read_text().splitlines()[1:]))
+    levels = [float(c[4:]) for c in rows[0][3:]]
+    rate = [-math.log1p(-float(q)) / 50.0 for q in rows[2][3:]]
+    np.testing.assert_allclose(h["im"], levels, rtol=0)
+    np.testing.assert_allclose(h["rate"], rate, rtol=1e-12)
+    # the manifest keeps the points exactly (JSON keeps every digit)
+    m = json.loads(json.dumps(manifest_for(s)))
+    assert m["hazard"] == h
+    # the hazard is not in the spec hash: it changes no run
+    plain = parse_spec(spec_text(""), base_dir=tmp_path)
+    assert plain.hash == s.hash and plain.hazard is None
+    assert "hazard" not in manifest_for(plain)
+
+
+def test_a_code_value_in_the_spec(tmp_path):
+    s = parse_spec(spec_text('[hazard]\npga_475 = "2.45m/s^2"\npga_2475 = "0.45g"'),
+                   base_dir=tmp_path)
+    h = s.hazard
+    assert h["approximate"] and "approximation" in h["label"]
+    c = HazardCurve(h["im"], h["rate"], im_name=h["im_name"], unit=h["unit"])
+    assert c.rate_at(2.45 / G) == pytest.approx(1 / 475, rel=1e-9)
+    assert c.rate_at(0.45) == pytest.approx(1 / 2475, rel=1e-9)
+
+
+def test_an_im_mismatch_is_refused_at_parse_time(tmp_path):
+    """A PGA hazard for a campaign scaled to PGV: refused, naming both IMs."""
+    text = spec_text('[hazard]\npga_475 = "0.25g"', 'im = "pgv"\nlevels = [0.1, 0.2]')
+    with pytest.raises(SpecError) as e:
+        parse_spec(text, base_dir=tmp_path)
+    msg = str(e.value)
+    assert msg.startswith("spec: hazard.pga_475:")
+    assert "PGA (g)" in msg and "pgv (m/s)" in msg
+
+
+def test_an_im_mismatch_of_a_file_and_the_cli_exit_code(oq, tmp_path, capsys):
+    text = spec_text('[hazard]\nfile = "hazard_curve-mean-PGA_7.csv"',
+                     'im = "pgv"\nlevels = [0.1, 0.2]')
+    with pytest.raises(SpecError, match=r"^spec: hazard\.file: .*PGA \(g\).*pgv \(m/s\)"):
+        parse_spec(text, base_dir=tmp_path)
+    (tmp_path / "s.toml").write_text(text)
+    code, out, err = run_main(capsys, "campaign", "run", tmp_path / "s.toml", "--out",
+                              tmp_path / "store", "--dry-run")
+    assert_one_line_error(code, err, "hazard.file")
+    # and a PGV curve for a campaign of PGA (the PGA of each run, no im)
+    (tmp_path / "pgv.csv").write_text("PGV (m/s),annual rate\n0.1,0.01\n0.5,0.0004\n")
+    with pytest.raises(SpecError, match=r"hazard\.file: .*PGV \(m/s\).*pga \(m/s\^2\)"):
+        parse_spec(spec_text('[hazard]\nfile = "pgv.csv"', "load_factors = [1.0, 2.0]"),
+                   base_dir=tmp_path)
+
+
+@pytest.mark.parametrize("hazard, key", [
+    ('file = "h.csv"\npga_475 = "0.25g"', "hazard.file"),
+    ('t_years = 50', "hazard.file"),
+    ('file = "missing.csv"', "hazard.file"),
+    ('file = "h.csv"\nsite = 0', "hazard.site"),
+    ('file = "h.csv"\nk = 3', "hazard.k"),
+    ('file = "h.csv"\nformat = "xml"', "hazard.format"),
+    ('file = "h.csv"\nt_years = 0', "hazard.t_years"),
+    ('file = "h.csv"\ncolour = 1', "hazard.colour"),
+    ('pga_475 = 0.25', "hazard.pga_475"),
+    ('pga_475 = "0.25"', "hazard.pga_475"),
+    ('pga_475 = "0.25g"\nk = -1', "hazard.k"),
+    ('pga_475 = "0.25g"\nk = 3\npga_2475 = "0.4g"', "hazard.k"),
+    ('pga_475 = "0.25g"\npga_2475 = "0.2g"', "hazard.pga_2475"),
+    ('pga_475 = "0.25g"\nsite = 1', "hazard.site"),
+])
+def test_bad_hazard_keys_are_named(tmp_path, hazard, key):
+    power_law_csv(tmp_path / "h.csv")
+    with pytest.raises(SpecError) as e:
+        parse_spec(spec_text(f"[hazard]\n{hazard}"), base_dir=tmp_path)
+    assert str(e.value).startswith(f"spec: {key}:"), str(e.value)
+
+
+def test_an_openquake_site_out_of_range_is_named(oq, tmp_path):
+    with pytest.raises(SpecError, match=r"^spec: hazard\.site: .*0\.\.1"):
+        parse_spec(spec_text('[hazard]\nfile = "hazard_curve-mean-PGA_7.csv"\nsite = 5'),
+                   base_dir=tmp_path)
+
+
+def test_the_keys_table_lists_hazard():
+    t = keys_table()
+    assert "**`[hazard]`**" in t and "`pga_475`" in t and "`t_years`" in t
+
+
+def test_the_shipped_example_parses_and_its_curve_is_the_files(tmp_path):
+    s = campaign.read_spec(EXAMPLES / "site.toml")
+    h = s.hazard
+    assert h["source"]["file"] == "hazard_curve-mean-PGA_site.csv"
+    assert not h["approximate"] and s.mitigations
+    lines = (EXAMPLES / "hazard_curve-mean-PGA_site.csv").read_text().splitlines()
+    assert "investigation_time=50.0" in lines[0] and "imt='PGA'" in lines[0]
+    row = next(csv.reader(lines[2:3]))
+    poe = np.array([float(q) for q in row[3:]])
+    keep = (poe > 0) & (poe < 1)
+    np.testing.assert_allclose(h["rate"], -np.log1p(-poe[keep]) / 50.0, rtol=1e-12)
+
+
+# ------------------------------------------------------------------ store and command line
+
+@pytest.fixture(scope="module")
+def store(tmp_path_factory):
+    d = tmp_path_factory.mktemp("site")
+    oq_file(d / "hazard_curve-mean-PGA_7.csv")
+    (d / "s.toml").write_text(spec_text('[hazard]\nfile = "hazard_curve-mean-PGA_7.csv"'))
+    campaign.run(d / "s.toml", d / "store", progress=False, log=lambda m: None)
+    return d
+
+
+def test_cli_report_prints_the_risk_and_ignores_a_changed_file(store, capsys, tmp_path):
+    d = store
+    code, out, err = run_main(capsys, "campaign", "report", d / "store", "--out",
+                              tmp_path / "r1")
+    assert code == 0, err
+    assert "hazard: OpenQuake PGA at (13.40000, 42.35000)" in out
+    assert "service life 50 years" in out
+    rk = pd.read_csv(tmp_path / "r1" / "risk.csv")
+    ov = rk[rk["fit"] == "overturning"]
+    assert set(ov["mitigation"]) == {"none", "anchored"}
+    for r in ov.itertuples():
+        head = f"{r.mitigation} ({r.model}) / {r.block_name}:"
+        line = next(x for x in out.splitlines() if x.startswith(head)
+                    and ("annual frequency of overturning" in x or "no overturning fit (" in x))
+        if math.isfinite(r.annual_frequency):
+            assert (f"annual frequency of overturning {r.annual_frequency:.3g} per year, "
+                    f"50-year probability {r.probability:.3g}") in line
+    assert np.isfinite(ov["annual_frequency"]).any()
+    # the file changes (another hazard): the store's report does not
+    oq_file(d / "hazard_curve-mean-PGA_7.csv", sites=((13.4, 42.35, 9.0),))
+    code, out2, err = run_main(capsys, "campaign", "report", d / "store", "--out",
+                               tmp_path / "r2")
+    assert code == 0, err
+    pd.testing.assert_frame_equal(pd.read_csv(tmp_path / "r2" / "risk.csv"), rk)
+    oq_file(d / "hazard_curve-mean-PGA_7.csv")  # as it was
+
+
+def test_cli_report_hazard_given_at_report_time(store, capsys, tmp_path):
+    d = store
+    oq2 = oq_file(tmp_path / "other.csv", sites=((10.0, 40.0, 2.0), (11.0, 41.0, 0.5)))
+    code, out, err = run_main(capsys, "campaign", "report", d / "store", "--out",
+                              tmp_path / "r", "--hazard", oq2, "--site", "11.1,41.2",
+                              "--t-years", "25")
+    assert code == 0, err
+    assert "service life 25 years" in out and "(11.00000, 41.00000)" in out
+    md = (tmp_path / "r" / "report.md").read_text()
+    assert "given at report time" in md
+    rk = pd.read_csv(tmp_path / "r" / "risk.csv")
+    ok = rk.dropna(subset=["annual_frequency"])
+    assert len(ok) and (ok["t_years"] == 25).all()
+    # site 1 of the other file is 0.5 x the power law of the store's site 0 (scale 1.0):
+    # the same fits, half the annual frequency (the curve is a power law within 1e-6)
+    code, out, err = run_main(capsys, "campaign", "report", d / "store", "--out",
+                              tmp_path / "r0")
+    base = pd.read_csv(tmp_path / "r0" / "risk.csv").dropna(subset=["annual_frequency"])
+    np.testing.assert_allclose(ok["annual_frequency"].to_numpy(),
+                               0.5 * base["annual_frequency"].to_numpy(), rtol=1e-4)
+
+
+@pytest.mark.parametrize("args, name", [
+    (["--site", "1"], "--site"),
+    (["--t-years", "-3"], "--t-years"),
+    (["--hazard", "nothing.csv"], "--hazard"),
+])
+def test_cli_report_bad_hazard_options(store, capsys, args, name):
+    code, out, err = run_main(capsys, "campaign", "report", store / "store", *args)
+    assert_one_line_error(code, err, name)
+
+
+def test_cli_report_refuses_a_hazard_of_another_im(store, capsys, tmp_path):
+    p = tmp_path / "pgv.csv"
+    p.write_text("PGV (m/s),annual rate\n0.1,0.01\n0.5,0.0004\n")
+    code, out, err = run_main(capsys, "campaign", "report", store / "store", "--out",
+                              tmp_path / "r", "--hazard", p)
+    assert_one_line_error(code, err, "hazard")
+    assert "PGV (m/s)" in err and "pga (m/s^2)" in err
+
+
+def test_resuming_with_another_hazard_keeps_the_runs(store, tmp_path):
+    """The hazard changes no run: a store resumes with another [hazard], keeps its chunks
+    (same records) and takes the new curve into its manifest."""
+    d = store
+    s = campaign.Store(d / "store")
+    before = {p.name: p.read_bytes() for p in (d / "store" / "chunks").iterdir()}
+    old = s.manifest["hazard"]
+    (d / "s2.toml").write_text(spec_text('[hazard]\npga_475 = "0.3g"\nt_years = 75'))
+    logs = []
+    st = campaign.run(d / "s2.toml", d / "store", progress=False, log=logs.append)
+    assert st["complete"]
+    after = {p.name: p.read_bytes() for p in (d / "store" / "chunks").iterdir()}
+    assert after == before
+    assert any("[hazard] changed" in m for m in logs)
+    new = campaign.Store(d / "store").manifest["hazard"]
+    assert new != old and new["approximate"] and new["t_years"] == 75.0
+    assert 'pga_475 = "0.3g"' in (d / "store" / "spec.toml").read_text()
+    # back to the first hazard, for the other tests of the module
+    campaign.run(d / "s.toml", d / "store", progress=False, log=lambda m: None)
+    assert campaign.Store(d / "store").manifest["hazard"] == old
