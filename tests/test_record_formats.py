@@ -398,3 +398,20 @@ def test_cli_motion_show_reads_esm(tmp_path, at2, capsys):
     assert f"PGA {pga:.4g} m/s^2" in out
     code, out, err = run_main(capsys, "motion", "show", p, "--no-plot")  # default: g
     assert_one_line_error(code, err, "--units cm/s^2")
+
+
+def test_knet_real_nied_file_shipped_with_obspy():
+    """A real K-NET file (AKT013, 1996, the one obspy tests with): 59 s at 100 Hz give
+    5900 values, and the peak after removing the mean equals the header's Max. Acc.
+    (4.383 gal) to its rounding."""
+    import obspy
+
+    p = __import__("pathlib").Path(obspy.__file__).parent / "io/nied/tests/data/test.knet"
+    if not p.is_file():
+        pytest.skip("obspy installed without its test data")
+    acc, dt, meta = read_record(p, units="gal")
+    assert (acc.size, dt, meta["station"], meta["component"]) == (5900, 0.01, "AKT013", "EW")
+    assert np.max(np.abs(acc)) / GAL == pytest.approx(4.383, abs=5e-4)
+    counts = np.array([int(t) for ln in p.read_text().splitlines()[17:] for t in ln.split()])
+    np.testing.assert_allclose(acc, (counts - counts.mean()) * 2000 / 8388608 * GAL,
+                               rtol=1e-12, atol=0)

@@ -44,10 +44,11 @@ these files too.
   (gal). ``Dir.`` 1-3 are KiK-net's borehole sensors, 4-6 its surface sensors.
 
 Why obspy for K-NET only: obspy has a maintained K-NET/KiK-net reader
-(``obspy.io.nied.knet``) but none for ESM or COSMOS (its formats are SAC, miniSEED, GSE2,
-SEG-Y, ..., and ``nied`` reads only K-NET ASCII and F-net moment tensors), so those two
-are read here, from their specifications; their readers in gmprocess depend on its own
-stream classes and configuration.
+(``obspy.io.nied.knet``, tested on NIED files), but none for ESM or COSMOS: the 31
+waveform formats obspy 1.5 registers (``obspy.plugin.waveform`` entry points: SAC,
+MSEED, GSE2, SEGY, KINEMETRICS_EVT, KNET, ...) include neither, and ``obspy.io.nied``
+reads only K-NET ASCII and F-net moment tensors. ESM and COSMOS are read here, from their
+specifications (the readers of gmprocess need its own stream classes and configuration).
 
 Every reader checks what the file declares and refuses a file that contradicts itself:
 
@@ -436,8 +437,8 @@ def read_cosmos(p: Path, lines: list[str], units: str | None, factor: float | No
     product = r["product"]
     stage = ival(1)
     if stage != 2 or not product.lower().startswith("corrected"):
-        what = _COSMOS_STAGES.get(stage, f"processing stage {stage}") if stage != 2 \
-            else f"'{product}'"
+        what = (f"'{product}'" if stage == 2 else "of an unknown processing stage"
+                if stage is None else _COSMOS_STAGES.get(stage, f"processing stage {stage}"))
         raise RecordError(f"{p}, line {r['line']}: the COSMOS file is {what} (line 1: "
                           f"'{product}', integer header #1 = {stage}); only Volume 2 "
                           "corrected acceleration is read")
