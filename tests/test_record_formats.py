@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 import sys
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -406,7 +407,7 @@ def test_knet_real_nied_file_shipped_with_obspy():
     (4.383 gal) to its rounding."""
     import obspy
 
-    p = __import__("pathlib").Path(obspy.__file__).parent / "io/nied/tests/data/test.knet"
+    p = Path(obspy.__file__).parent / "io/nied/tests/data/test.knet"
     if not p.is_file():
         pytest.skip("obspy installed without its test data")
     acc, dt, meta = read_record(p, units="gal")
@@ -415,3 +416,21 @@ def test_knet_real_nied_file_shipped_with_obspy():
     counts = np.array([int(t) for ln in p.read_text().splitlines()[17:] for t in ln.split()])
     np.testing.assert_allclose(acc, (counts - counts.mean()) * 2000 / 8388608 * GAL,
                                rtol=1e-12, atol=0)
+
+
+def test_units_none_takes_the_unit_at2_and_column_files_state(tmp_path):
+    """``units=None`` (the caller states no unit): the file's own unit, g if it states
+    none; never a re-scaling of a stated unit."""
+    at2 = ("PEER STRONG MOTION DATABASE RECORD\nTEST, 1/1/2000, STA, 0\n"
+           "ACCELERATION TIME SERIES IN UNITS OF CM/S/S\nNPTS=    3, DT=   .0100 SEC\n"
+           "  .1000000E+01  .2000000E+01 -.3000000E+01\n")
+    acc, _, meta = read_record(write(tmp_path, "a.AT2", at2), units=None)
+    np.testing.assert_allclose(acc, [0.01, 0.02, -0.03], rtol=1e-15)
+    assert meta["units"] == "cm/s^2"
+    acc, _, meta = read_record(write(tmp_path, "b.csv", "# units: gal\nt,acc\n0,1\n0.01,2\n"),
+                               units=None)
+    np.testing.assert_allclose(acc, [0.01, 0.02], rtol=1e-15)
+    assert meta["units"] == "gal"
+    acc, _, meta = read_record(write(tmp_path, "c.csv", "t,acc\n0,1\n0.01,2\n"), units=None)
+    np.testing.assert_allclose(acc, [9.80665, 19.6133], rtol=1e-15)
+    assert meta["units"] == "g"

@@ -192,6 +192,7 @@ def read_esm(p: Path, lines: list[str], units: str | None, factor: float | None,
              dt: float | None) -> tuple[np.ndarray, float, dict]:
     """Read an ESM ASCII file (see the module doc): ``(acc m/s^2, dt s, meta)``."""
     hdr: dict[str, str] = {}
+    where: dict[str, int] = {}  # key -> 1-based line
     first = None
     for i, ln in enumerate(lines):
         m = _ESM_KEY.match(ln.strip())
@@ -199,6 +200,7 @@ def read_esm(p: Path, lines: list[str], units: str | None, factor: float | None,
             first = i
             break
         hdr.setdefault(m[1], m[2].strip())
+        where.setdefault(m[1], i + 1)
     if first is None:
         raise RecordError(f"{p}: an ESM file with a header of {len(lines)} lines and no "
                           "data")
@@ -217,9 +219,11 @@ def read_esm(p: Path, lines: list[str], units: str | None, factor: float | None,
     f = _factor(p, key, f"ESM header UNITS: {word}", units, factor)
     ndata_s = need("NDATA")
     if not ndata_s.isdigit():
-        raise RecordError(f"{p}: NDATA must be a whole number, got {ndata_s!r}")
+        raise RecordError(f"{p}, line {where['NDATA']}: NDATA must be a whole number, got "
+                          f"{ndata_s!r}")
     ndata = int(ndata_s)
-    step = _as_float(p, 0, need("SAMPLING_INTERVAL_S"), "SAMPLING_INTERVAL_S")
+    step = _as_float(p, where.get("SAMPLING_INTERVAL_S", 0), need("SAMPLING_INTERVAL_S"),
+                     "SAMPLING_INTERVAL_S")
     _check_dt(p, step, dt, "the ESM header (SAMPLING_INTERVAL_S)")
 
     tokens: list[str] = []
@@ -253,7 +257,7 @@ def read_esm(p: Path, lines: list[str], units: str | None, factor: float | None,
     if pga_key and hdr[pga_key]:
         pga_unit = _unit_key(p, pga_key[4:], pga_key)
         s = hdr[pga_key]
-        pga = _as_float(p, 0, s, pga_key)
+        pga = _as_float(p, where[pga_key], s, pga_key)
         tol = 0.5 * 10.0 ** -_decimals(s) + 0.5 * 10.0 ** -max(_decimals(t) for t in tokens)
         _check_peak(p, f"the ESM header ({pga_key})",
                     pga * ACCELERATION[pga_unit] / ACCELERATION[key], peak, tol, key)
