@@ -371,6 +371,34 @@ def _box_closed_form() -> tuple[float, float, float]:
     return alpha, math.sqrt(3 * G / (4 * math.hypot(half, hh))), 1 - 1.5 * math.sin(alpha) ** 2
 
 
+# ------------------------------------------------------------------- Pena et al. 2007
+def _geometric(n: int, name: str) -> float:
+    from ..blocks.specimens import specimen
+
+    return float(getattr(specimen(n, "geometric"), name))
+
+
+TABLE2_HOW = ("Quoted from Table II of Pena et al. (2007), column T (the theoretical "
+              "parameters, Eqs 2-4), as printed (alpha and mu to 3 decimals, p to 2; the "
+              "page is not given in the project's copy of the paper). Computed: "
+              "rocking.specimen({n}, 'geometric'), Eqs 2-4 on the width and height of "
+              "Table I. Tolerance: half a unit of the last printed digit.")
+TABLE2_UNITS = {"alpha": ("rad", 5e-4), "p": ("1/s", 5e-3), "mu": ("-", 5e-4)}
+
+
+def _table2_case(n: int, name: str, printed: float, known: str = "",
+                 known_tolerance: float | None = None) -> Case:
+    unit, tol = TABLE2_UNITS[name]
+    return Case(
+        name=f"pena-table2-specimen{n}-{name}", source=PENA_2007,
+        what=f"{name} of specimen {n} from its Table I geometry (Eq "
+             f"{ {'alpha': 2, 'p': 3, 'mu': 4}[name] }) against the printed theoretical value",
+        how=TABLE2_HOW.format(n=n), reference=lambda: printed,
+        compute=lambda: _geometric(n, name), unit=unit, tolerance=tol,
+        tolerance_kind="abs", group="classical", known_difference=known,
+        known_tolerance=known_tolerance)
+
+
 # ------------------------------------------------------------------------------ cases
 def _rectangular_case(pt1: float) -> Case:
     return Case(
@@ -395,8 +423,8 @@ CASES: tuple[Case, ...] = (
         what="period of free rocking of the linearised block released from theta0 = alpha/2 "
              "(mu = 1)",
         how="T = (4/p) arccosh(1/(1 - theta0/alpha)), the period of the linearised free "
-            "motion (Housner 1963; also Pena et al. 2007, Eq 11 with mu = 1): theta = alpha "
-            "- (alpha - theta0) cosh(p t) reaches 0 at a quarter period.",
+            "motion (Housner 1963): theta = alpha - (alpha - theta0) cosh(p t) reaches 0 "
+            "at a quarter period.",
         reference=lambda: 4.0 / FREE["p"] * math.acosh(1.0 / (1.0 - FREE["frac"])),
         compute=_free_period, unit="s", tolerance=1e-7, group="classical"),
     Case(
@@ -409,7 +437,8 @@ CASES: tuple[Case, ...] = (
             "corner (Housner 1963; Eq 4 of Pena et al. 2007). Computed: the amplitudes "
             "theta0 and r1 before and after the first impact of the nonlinear model give "
             "the velocity ratio sqrt((cos(alpha - r1) - cos alpha)/(cos(alpha - theta0) - "
-            "cos alpha)) (energy conserved between impacts).",
+            "cos alpha)) (Eq 12 of Pena et al. 2007 with n = 1: energy is conserved "
+            "between impacts).",
         reference=lambda: 1.0 - 1.5 * math.sin(math.atan(RECT_BLOCK["width"]
                                                          / RECT_BLOCK["height"])) ** 2,
         compute=lambda: _velocity_ratio(_rect_block()), tolerance=1e-5, group="classical"),
@@ -520,6 +549,33 @@ CASES: tuple[Case, ...] = (
         reference=lambda: 1.0,
         compute=lambda: _dd_threshold(SIMILAR["p"][0]) / _dd_threshold(SIMILAR["p"][1]),
         tolerance=1e-9, group="similarity"),
+    _table2_case(2, "alpha", 0.168),
+    _table2_case(2, "p", 3.81),
+    _table2_case(2, "mu", 0.958),
+    _table2_case(
+        1, "alpha", 0.242, known_tolerance=4e-3,
+        known="Eq 2 on Table I's 2b = 0.25 m, 2h = 1.000 m gives atan(0.125/0.5) = 0.2450 "
+              "rad; the printed 0.242 (with mu = 0.914, which is Eq 4 of 0.242: the two "
+              "printed values agree with each other) would need 2b = 0.247 m. The paper "
+              "does not say which width it used; the 5 mm 45-degree cuts of the base "
+              "(rocking.specimen(1, 'geometric', shape='cut')) give 0.2355 rad, not 0.242 "
+              "either."),
+    _table2_case(
+        3, "mu", 0.978, known_tolerance=1e-3,
+        known="Eq 4 of Table I's geometry gives 0.97871 and Eq 4 of the printed alpha "
+              "0.119 gives 0.97886; both round to 0.979, one unit of the last digit above "
+              "the printed 0.978. The paper does not say how it rounded."),
+    _table2_case(
+        4, "alpha", 0.310, known_tolerance=3e-2,
+        known="specimen 4 has a 40 mm 45-degree cut at its base (Section 3.1) that Table I "
+              "does not describe fully: Eq 2 on Table I's rectangle gives 0.3368 rad and "
+              "the cut base as we model it (shape='cut') 0.1698 rad; the printed 0.310 "
+              "follows from neither (it would need 2b = 0.146 m with 2h = 0.457 m)."),
+    _table2_case(
+        4, "p", 5.16, known_tolerance=0.4,
+        known="Eq 3 on Table I's rectangle (R = 0.242 m) gives 5.51 1/s; the printed 5.16 "
+              "would need R = 0.276 m. As for its alpha, the paper does not say how the "
+              "40 mm cut of specimen 4 enters its theoretical values."),
     Case(
         name="ccrr-vs-classical",
         source=PENA_2007,

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 import re
+import textwrap
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -54,6 +55,11 @@ class Case:
     known_difference : str
         Why the case disagrees with the literature, when it does for a documented reason
         (empty when it should agree).
+    known_tolerance : float or None
+        With ``known_difference``: the documented size of the disagreement (same kind as
+        ``tolerance``). A case outside ``tolerance`` but inside ``known_tolerance`` is
+        shown as ``KNOWN`` (disagreeing, for the stated reason) and does not fail the
+        table; outside it, it fails.
     slow : bool
         Left out by ``quick=True``.
     """
@@ -69,11 +75,17 @@ class Case:
     tolerance_kind: str = "rel"
     group: str = ""
     known_difference: str = ""
+    known_tolerance: float | None = None
     slow: bool = False
 
     def __post_init__(self):
         if self.tolerance_kind not in TOLERANCE_KINDS:
             raise ValueError(f"tolerance_kind must be one of {TOLERANCE_KINDS}")
+        if self.known_tolerance is not None and not (
+                self.known_difference and self.tolerance_kind != "below"
+                and self.known_tolerance > self.tolerance):
+            raise ValueError("known_tolerance needs a known_difference, a value tolerance "
+                             "(rel or abs) and must exceed the tolerance")
 
     @property
     def tolerance_text(self) -> str:
@@ -83,14 +95,35 @@ class Case:
         unit = "" if self.tolerance_kind == "rel" or self.unit == "-" else f" {self.unit}"
         return f"{self.tolerance_kind} {self.tolerance:.0e}{unit}"
 
-    def passes(self, reference: float, computed: float) -> bool:
-        """Whether ``computed`` agrees with ``reference`` within the tolerance (NaN fails)."""
+    @property
+    def known_tolerance_text(self) -> str:
+        """The documented difference's bound as shown (empty when there is none)."""
+        if self.known_tolerance is None:
+            return ""
+        unit = "" if self.tolerance_kind == "rel" or self.unit == "-" else f" {self.unit}"
+        return f"{self.tolerance_kind} {self.known_tolerance:.0e}{unit}"
+
+    def passes(self, reference: float, computed: float, tolerance: float | None = None
+               ) -> bool:
+        """Whether ``computed`` agrees with ``reference`` within the tolerance (or the
+        given one; NaN fails)."""
+        tol = self.tolerance if tolerance is None else tolerance
         if not (math.isfinite(reference) and math.isfinite(computed)):
             return False
         if self.tolerance_kind == "below":
-            return reference - self.tolerance <= computed < reference
-        bound = self.tolerance * (abs(reference) if self.tolerance_kind == "rel" else 1.0)
+            return reference - tol <= computed < reference
+        bound = tol * (abs(reference) if self.tolerance_kind == "rel" else 1.0)
         return abs(computed - reference) <= bound
+
+    def status(self, reference: float, computed: float) -> str:
+        """``PASS`` (within the tolerance), ``KNOWN`` (outside it, inside the documented
+        ``known_tolerance``) or ``FAIL``."""
+        if self.passes(reference, computed):
+            return "PASS"
+        if self.known_tolerance is not None and self.passes(reference, computed,
+                                                            self.known_tolerance):
+            return "KNOWN"
+        return "FAIL"
 
     def run(self) -> Row:
         """Evaluate the case: an error while computing is a failing row with its message,
@@ -105,12 +138,15 @@ class Case:
             val = float(self.compute())
         except Exception as e:
             val, note = math.nan, f"computation failed: {type(e).__name__}: {e}"
-        ok = self.passes(ref, val)
-        if not ok and not note:
-            note = self.known_difference or "disagrees beyond the tolerance"
-        elif ok and self.known_difference:
-            note = self.known_difference
-        return Row(case=self, reference=ref, computed=val, passed=ok, note=note,
+        status = self.status(ref, val)
+        if status == "KNOWN":
+            note = f"disagrees as documented: {self.known_difference}"
+        elif status == "FAIL" and not note:
+            note = ("disagrees beyond the documented difference"
+                    if self.known_tolerance is not None else "disagrees beyond the tolerance")
+            if self.known_difference:
+                note += f" ({self.known_difference})"
+        return Row(case=self, reference=ref, computed=val, status=status, note=note,
                    seconds=time.perf_counter() - t0)
 
 
@@ -121,9 +157,14 @@ class Row:
     case: Case
     reference: float
     computed: float
-    passed: bool
+    status: str
     note: str = ""
     seconds: float = 0.0
+
+    @property
+    def passed(self) -> bool:
+        """Not a failure: ``PASS``, or ``KNOWN`` (a documented disagreement)."""
+        return self.status != "FAIL"
 
     @property
     def difference(self) -> float:
@@ -143,8 +184,10 @@ class Row:
         return {"case": c.name, "group": c.group, "source": c.source, "what": c.what,
                 "how": c.how, "reference": num(self.reference), "computed": num(self.computed),
                 "unit": c.unit, "tolerance": c.tolerance, "tolerance_kind": c.tolerance_kind,
-                "difference": num(self.difference), "passed": self.passed, "note": self.note,
-                "known_difference": c.known_difference, "seconds": self.seconds}
+                "difference": num(self.difference), "status": self.status,
+                "passed": self.passed, "note": self.note,
+                "known_difference": c.known_difference,
+                "known_tolerance": c.known_tolerance, "seconds": self.seconds}
 
 
 def short_source(source: str) -> str:
@@ -181,7 +224,7 @@ class VerificationTable:
 
     @property
     def passed(self) -> bool:
-        """True iff every case passed (an empty table passes nothing: False)."""
+        """True iff no case failed (``PASS`` or ``KNOWN``; an empty table: False)."""
         return bool(self.rows) and all(r.passed for r in self.rows)
 
     @property
@@ -199,11 +242,12 @@ class VerificationTable:
 
     def to_text(self) -> str:
         """The plain-text table of ``rocking verify``: case, source, reference, computed,
-        unit, tolerance, pass; the notes of failing and known-difference cases below it."""
+        unit, tolerance, pass (PASS, KNOWN: a documented disagreement, or FAIL); the notes
+        of the failing and the known-difference cases below it."""
         head = ("case", "source", "reference", "computed", "unit", "tolerance", "pass")
         body = [(r.case.name, short_source(r.case.source), _fmt(r.reference),
-                 _fmt(r.computed), r.case.unit, r.case.tolerance_text,
-                 "PASS" if r.passed else "FAIL") for r in self.rows]
+                 _fmt(r.computed), r.case.unit, r.case.tolerance_text, r.status)
+                for r in self.rows]
         widths = [max(len(h), *(len(b[i]) for b in body)) if body else len(h)
                   for i, h in enumerate(head)]
         lines = ["  ".join(h.ljust(w) for h, w in zip(head, widths, strict=True)).rstrip(),
@@ -211,12 +255,15 @@ class VerificationTable:
         lines += ["  ".join(c.ljust(w) for c, w in zip(b, widths, strict=True)).rstrip()
                   for b in body]
         n_fail = len(self.failed)
+        n_known = sum(r.status == "KNOWN" for r in self.rows)
         lines.append("")
-        lines.append(f"{len(self.rows) - n_fail} of {len(self.rows)} cases pass"
+        lines.append(f"{len(self.rows) - n_fail - n_known} of {len(self.rows)} cases pass"
+                     + (f"; {n_known} KNOWN (documented disagreements)" if n_known else "")
                      + (f"; {n_fail} FAIL" if n_fail else "") + ".")
-        notes = [r for r in self.rows if r.note]
-        for r in notes:
-            lines.append(f"  {r.case.name}: {r.note}")
+        for r in self.rows:
+            if r.note:
+                lines.extend(textwrap.wrap(f"{r.case.name}: {r.note}", width=100,
+                                           initial_indent="  ", subsequent_indent="      "))
         return "\n".join(lines)
 
     def to_markdown(self, details: bool = True) -> str:
@@ -229,7 +276,8 @@ class VerificationTable:
             c = r.case
             lines.append(f"| `{c.name}` | {_md(short_source(c.source))} | {_md(c.what)} | "
                          f"{_fmt(r.reference)} | {_fmt(r.computed)} | {c.unit} | "
-                         f"{c.tolerance_text} | {'PASS' if r.passed else '**FAIL**'} |")
+                         f"{c.tolerance_text} | "
+                         f"{'**FAIL**' if r.status == 'FAIL' else r.status} |")
         if details:
             lines.append("")
             for r in self.rows:
@@ -238,6 +286,8 @@ class VerificationTable:
                 lines.append(f"*Source*: {_md(c.source)}  ")
                 lines.append(f"*Reference*: {_md(c.how)}"
                              + (f"  \n*Known difference*: {_md(c.known_difference)}"
+                                + (f" (documented bound: {c.known_tolerance_text})"
+                                   if c.known_tolerance is not None else "")
                                 if c.known_difference else "")
                              + (f"  \n*Note*: {_md(r.note)}" if r.note and not r.passed
                                 else ""))
