@@ -1,0 +1,136 @@
+"""Sphinx configuration of the rocking documentation.
+
+Build (warnings are errors; no network needed)::
+
+    .venv/bin/python -m sphinx -W --keep-going -b html docs docs/_build/html
+
+Generated at build time, git-ignored, under ``docs/api/generated/``:
+
+* one page per public package listing what its ``__all__`` exports (``PACKAGES``
+  below), whose autosummary stubs autosummary writes beside it;
+* ``docs/architecture.md`` and ``docs/cluster.md`` turned into reStructuredText by
+  :func:`docs_md.convert` (the Markdown files stay the source, readable on GitHub).
+"""
+
+from __future__ import annotations
+
+import importlib
+import os
+import sys
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))              # docs_md
+sys.path.insert(0, str(HERE.parent / "src"))
+
+import docs_md  # noqa: E402
+
+import rocking  # noqa: E402
+
+project = "rocking"
+author = "the rocking authors"
+copyright = "2026, the rocking authors"
+release = rocking.__version__
+version = ".".join(release.split(".")[:2])
+
+extensions = [
+    "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
+    "sphinx.ext.mathjax",
+    "numpydoc",
+    "sphinx_click",
+]
+
+# -- the public API, generated from each package's __all__ --------------------------------
+PACKAGES = {
+    "rocking": "Blocks, simulation entry points, results, errors and constants.",
+    "rocking.blocks": "Rigid blocks, stacks and the paper's specimens.",
+    "rocking.motions": "Ground motions: harmonic, pulses, records, spectra, synthetics.",
+    "rocking.buildings": "Buildings as linear filters: floor motions and floor spectra.",
+    "rocking.shapes": "Rigid bodies from 3-D meshes: directional rocking parameters.",
+    "rocking.models": "The model interface, the registry and the driver.",
+    "rocking.analysis": "Spectra, Monte Carlo, IDA, fragility, hazard, record selection.",
+    "rocking.identify": "Identification of alpha, p and mu from free rocking.",
+    "rocking.campaign": "Campaigns: TOML specs, executors, the Parquet store.",
+    "rocking.report": "The reproduction report.",
+    "rocking.testing": "The model contract and plain reference implementations.",
+}
+GENERATED = HERE / "api" / "generated"
+
+
+def _write_if_changed(path: Path, text: str) -> None:
+    """Write ``text`` unless ``path`` already holds it (keeps incremental builds quick)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    if not path.exists() or path.read_text(encoding="utf-8") != text:
+        path.write_text(text, encoding="utf-8")
+
+
+_SEEN: dict[int, str] = {}       # id of an object -> the page's name that documents it
+
+
+def _package_page(name: str, summary: str) -> str:
+    """The page of package ``name``: its docstring and an autosummary of its ``__all__``.
+
+    An object exported by an earlier package of ``PACKAGES`` (``rocking.Block`` is
+    ``rocking.blocks.Block``) is documented once, there, and named here with a link.
+    """
+    mod = importlib.import_module(name)
+    own, again = [], []
+    for n in getattr(mod, "__all__", ()):
+        if n.startswith("_"):
+            continue
+        obj = getattr(mod, n)
+        first = _SEEN.get(id(obj)) if not isinstance(obj, (int, float, str, tuple)) else None
+        if first is None:
+            own.append(n)
+            if not isinstance(obj, (int, float, str, tuple)):
+                _SEEN[id(obj)] = f"{name}.{n}"
+        else:
+            again.append((n, first))
+    title = f"``{name}``"
+    lines = [title, "=" * len(title), "", summary, "",
+             f".. automodule:: {name}", "   :no-members:", "",
+             f".. currentmodule:: {name}", "",
+             ".. autosummary::", "   :toctree: .", "   :nosignatures:", ""]
+    lines += [f"   {n}" for n in own]
+    if again:
+        lines += ["", "Also exported here: " + ", ".join(
+            f":obj:`{n} <{first}>`" for n, first in again) + "."]
+    return "\n".join(lines) + "\n"
+
+
+for _name, _summary in PACKAGES.items():
+    _write_if_changed(GENERATED / f"{_name}.rst", _package_page(_name, _summary))
+for _md in ("architecture", "cluster"):
+    _write_if_changed(GENERATED / f"{_md}.rst",
+                      docs_md.convert((HERE / f"{_md}.md").read_text(encoding="utf-8")))
+
+autosummary_generate = True
+autosummary_imported_members = True
+autodoc_default_options: dict[str, object] = {}
+autodoc_typehints = "none"          # numpydoc's Parameters sections say the types
+autoclass_content = "class"
+numpydoc_show_class_members = False
+numpydoc_class_members_toctree = False
+numpydoc_validation_checks: set[str] = set()
+numpydoc_xref_param_type = False
+
+# -- no network: no intersphinx; mathjax is loaded by the reader's browser -----------------
+nitpicky = False
+templates_path = ["_templates"]
+exclude_patterns = ["_build", "**/.ipynb_checkpoints"]
+source_suffix = {".rst": "restructuredtext"}
+root_doc = "index"
+default_role = "literal"            # `x` is code, as in the Markdown files
+
+html_theme = "pydata_sphinx_theme"
+html_title = f"rocking {release}"
+html_theme_options = {
+    "navigation_with_keys": False,
+    "show_toc_level": 2,
+    "header_links_before_dropdown": 8,
+}
+html_static_path: list[str] = []
+html_show_sourcelink = False
+
+os.environ.setdefault("MPLBACKEND", "Agg")
