@@ -125,6 +125,10 @@ def test_max_scale_honoured_and_flagged():
     assert not res.compliant
     assert np.all(res.scales <= 4.0 * (1 + 1e-12)) and np.all(res.scales >= 0.25)
     assert res.min_ratio < 0.9
+    # the worst ratio is as high as the bound allows for the record chosen: factor 4
+    i = res.indices[0]
+    assert res.scales[0] == pytest.approx(4.0, rel=1e-9)
+    assert res.min_ratio == pytest.approx(float(np.min(4.0 * S[i] / target)), rel=1e-9)
 
 
 def test_ninety_percent_rule():
@@ -145,6 +149,29 @@ def test_ninety_percent_rule():
         res = select_records(S, target, T, n=2, max_scale=1.5)
     assert not res.compliant and res.min_ratio < 0.9
     assert np.all(res.scales <= 1.5 * (1 + 1e-12))
+
+
+def test_ninety_percent_rule_by_individual_factors():
+    """Two records, two periods, target 1: A = 0.25 (own factor 4 = max_scale), B = (2, 0.5).
+    The least-misfit mean is below 90 % at the second period and no common factor fits
+    (A is at the bound), but raising B alone to 1.6 gives (1 + 0.5 s_B) / 2 = 0.9 there:
+    the set is compliant with A = 4, B = 1.6 (the least change). With B = (2, 0.1) it
+    would need s_B = 8 > 4: the best within the bounds is s = 4 for both, worst ratio
+    (1 + 0.4) / 2 = 0.7 exactly."""
+    T2 = np.array([0.5, 1.0])
+    S = np.array([[0.25, 0.25], [2.0, 0.5]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        res = select_records(S, np.ones(2), T2, n=2, max_scale=4.0)
+    assert res.compliant
+    assert res.min_ratio == pytest.approx(0.9, rel=1e-6)
+    assert sorted(res.scales.tolist()) == pytest.approx([1.6, 4.0], rel=1e-6)
+    S[1, 1] = 0.1
+    with pytest.warns(PlausibilityWarning, match="NOT compliant"):
+        res = select_records(S, np.ones(2), T2, n=2, max_scale=4.0)
+    assert not res.compliant
+    assert res.min_ratio == pytest.approx(0.7, rel=1e-9)
+    assert res.scales.tolist() == pytest.approx([4.0, 4.0], rel=1e-9)
 
 
 @pytest.mark.filterwarnings("ignore::rocking.errors.PlausibilityWarning")

@@ -20,16 +20,19 @@ each multiplied by its own amplitude scale factor ``s_i`` in ``[1/max_scale, max
    polished by swaps judged after a joint refinement of all scales;
 4. (the scales stay in ``[1/max_scale, max_scale]`` throughout);
 5. if the mean falls below 90 % of the target somewhere, all factors are multiplied by a
-   common factor that lifts the minimum ratio to 0.9, when the bounds allow it.
+   common factor that lifts the minimum ratio to 0.9, when the bounds allow it; otherwise
+   the factors are raised individually, changed least (sum of relative changes, a linear
+   program: the mean is linear in the factors), when any factors within the bounds meet
+   the rule.
 
 The misfit is the root-mean-square log ratio over the periods
 ``sqrt(mean_k ln(mean_k / target_k)^2)`` (0 for a perfect match; 0.1 is about 10 %).
 When no factor within ``max_scale`` can honour the 90 % rule the set is returned with
 ``compliant=False`` and a :class:`~rocking.errors.PlausibilityWarning` (the factors then
-raised as far as ``max_scale`` allows): never a silently non-compliant set. The search is a
-heuristic (the exact problem is combinatorial): it finds a set that matches the target
-exactly when one exists among well-separated distractors (``tests/test_selection.py``),
-not a proven optimum in general.
+those that maximise the worst ratio within ``max_scale``, again a linear program): never a
+silently non-compliant set. The search is a heuristic (the exact problem is
+combinatorial): it finds a set that matches the target exactly when one exists among
+well-separated distractors (``tests/test_selection.py``), not a proven optimum in general.
 
 **The period range of a rocking block** (:func:`default_periods`) is not a structural
 period. The overturning spectra of :mod:`rocking.analysis.overturning` (Dimitrakopoulos
@@ -55,7 +58,7 @@ import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import least_squares
+from scipy.optimize import least_squares, linprog
 
 from .._validate import as_float, as_int, positive
 from ..errors import ParameterError, PlausibilityWarning, UnitError
@@ -383,6 +386,32 @@ def _polish(lt, S, own, idx, xs, best, lo, hi, top: int = 8):
     return np.array(idx), xs
 
 
+def _comply(R: np.ndarray, s0: np.ndarray, max_scale: float) -> tuple[np.ndarray, bool]:
+    """Scale factors in ``[1/max_scale, max_scale]`` whose mean ``s @ R / n`` (``R`` the
+    spectra over the target, n x periods) is >= 0.9 at every period, changed least from
+    ``s0`` (sum of ``|s_i - s0_i| / s0_i``): a linear program, since the mean is linear in
+    the factors. If none exists, the factors that maximise the worst ratio, and False."""
+    n, k = R.shape
+    lo, hi = 1.0 / max_scale, max_scale
+    goal = CODE_RATIO * (1 + 1e-9)
+    # variables (s, d): min sum d_i / s0_i with |s_i - s0_i| <= d_i and -R^T s / n <= -goal
+    eye = np.eye(n)
+    A = np.vstack([np.hstack([eye, -eye]), np.hstack([-eye, -eye]),
+                   np.hstack([-R.T / n, np.zeros((k, n))])])
+    b = np.concatenate([s0, -s0, np.full(k, -goal)])
+    res = linprog(np.concatenate([np.zeros(n), 1.0 / s0]), A_ub=A, b_ub=b,
+                  bounds=[(lo, hi)] * n + [(0, None)] * n, method="highs")
+    if res.status == 0:
+        return np.clip(res.x[:n], lo, hi), True
+    # variables (s, r): max r with r - R^T s / n <= 0
+    A = np.hstack([-R.T / n, np.ones((k, 1))])
+    res = linprog(np.concatenate([np.zeros(n), [-1.0]]), A_ub=A, b_ub=np.zeros(k),
+                  bounds=[(lo, hi)] * n + [(0, None)], method="highs")
+    if res.status != 0:  # cannot happen (s = hi, r = 0 is feasible); keep the factors
+        return np.clip(s0, lo, hi), False
+    return np.clip(res.x[:n], lo, hi), False
+
+
 def select_records(candidates, target_spectrum, periods=None, n: int = 11,
                    max_scale: float = 4.0, *, block=None, target_unit: str = "m/s^2",
                    damping: float = 0.05, restarts: int = 8) -> SelectionResult:
@@ -465,9 +494,11 @@ def select_records(candidates, target_spectrum, periods=None, n: int = 11,
             scales = np.minimum(scales * c, max_scale)
             notes.append(f"all factors multiplied by {c:.4g} to meet the 90 % rule")
         else:
-            c = min(c, float(max_scale / np.max(scales)))
-            scales = scales * c
-            notes.append("the 90 % rule cannot be met within max_scale")
+            scales, met = _comply(Ssel / target, scales, max_scale)
+            notes.append("scale factors raised individually (least total relative change, "
+                         "a linear program) to meet the 90 % rule" if met else
+                         "the 90 % rule cannot be met within max_scale by these records: "
+                         "factors chosen to raise the worst ratio as far as they allow")
         mean = scales @ Ssel / n
         ratio = float(np.min(mean / target))
     compliant = bool(ratio >= CODE_RATIO * (1 - 1e-9))
