@@ -190,7 +190,8 @@ _UNITS = tuple(ACCELERATION)
 
 @dataclass(frozen=True)
 class RecordParams(Options):
-    file: str = option(REQUIRED, help="record file (PEER .AT2, CSV or columns; in a spec "
+    file: str = option(REQUIRED, help="record file (PEER .AT2, ESM, COSMOS V2, K-NET/KiK-net, "
+                       "CSV or columns, recognised by content; in a spec "
                        "relative to the spec, and a list or glob gives one motion each)",
                        kind=str, required=True)
     units: str = option("g", help="unit of the file's accelerations", choices=_UNITS)

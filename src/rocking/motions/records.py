@@ -73,10 +73,12 @@ class Record(Motion):
     def from_file(cls, path, units: str = "g", dt: float | None = None, **kw) -> Record:
         """Read a record from ``path``.
 
-        Formats: PEER NGA ``.AT2``; CSV or whitespace columns with either time and
-        acceleration (uniform steps) or one acceleration column plus ``dt``. ``units`` is
-        one of ``g``, ``m/s^2``, ``cm/s^2`` (``gal``) and applies to the acceleration
-        column; a unit the file states must agree with it (see
+        Formats, recognised by content: PEER NGA ``.AT2``; ESM ASCII, COSMOS Volume 2 and
+        K-NET / KiK-net ASCII files as downloaded (:mod:`rocking.motions.formats`); CSV or
+        whitespace columns with either time and acceleration (uniform steps) or one
+        acceleration column plus ``dt``. ``units`` is one of ``g``, ``m/s^2``, ``cm/s^2``
+        (``gal``) and applies to the acceleration column; a unit the file states must
+        agree with it (``units=None``: the file's own, g if it states none; see
         :mod:`rocking.motions.io`). The record is stored in m/s^2.
         """
         return cls._from_read(*read_record(path, units=units, dt=dt), **kw)
