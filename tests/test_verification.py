@@ -235,3 +235,17 @@ def test_quick_leaves_out_the_slow_cases():
     assert quick and all(not c.slow for c in quick)
     assert len(quick) == len(CASES) - sum(c.slow for c in CASES)
     assert [c.name for c in get_cases(["dem-vs-classical"], quick=True)] == ["dem-vs-classical"]
+
+
+def test_rst_is_valid_restructuredtext():
+    """The documentation's page (verification_rst) parses without a docutils warning."""
+    import docutils.core
+
+    from rocking.verification import verification_rst
+
+    text = verification_rst(CHEAP + ["pena-table2-specimen1-alpha"])
+    assert text.startswith(".. list-table::")
+    html = docutils.core.publish_string(text, writer_name="html",
+                                        settings_overrides={"report_level": 2,
+                                                            "halt_level": 2}).decode()
+    assert "housner-free-period" in html and "KNOWN" in html

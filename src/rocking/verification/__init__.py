@@ -1,7 +1,9 @@
 """The verification manual (issue 22): cases from the literature and the closed forms of
 the package's other parts, each with its source, how its reference number was obtained, our
-computed value, its tolerance and whether it passes; ``rocking verify`` prints the table and
-the documentation's verification page is :func:`verification_markdown`.
+computed value, its tolerance and whether it passes (``PASS``; ``KNOWN``: a disagreement
+with a documented reason and bound; ``FAIL``); ``rocking verify`` prints the table, and the
+documentation's verification page is :func:`verification_markdown` (or
+:func:`verification_rst`).
 
 >>> from rocking.verification import run_cases
 >>> table = run_cases(["housner-free-period"])
@@ -46,5 +48,12 @@ def verification_markdown(names=None, quick: bool = False, details: bool = True)
     return run_cases(names, quick).to_markdown(details=details)
 
 
+def verification_rst(names=None, quick: bool = False, details: bool = True) -> str:
+    """The verification manual as reStructuredText (runs the cases): a ``list-table``, then
+    each case's source and how its reference was obtained."""
+    return run_cases(names, quick).to_rst(details=details)
+
+
 __all__ = ["CASES", "IMPACT_CASES", "TOLERANCE_KINDS", "Case", "Row", "VerificationTable",
-           "case_names", "get_cases", "run_cases", "verification_markdown"]
+           "case_names", "get_cases", "run_cases", "verification_markdown",
+           "verification_rst"]

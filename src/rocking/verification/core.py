@@ -294,5 +294,44 @@ class VerificationTable:
                 lines.append("")
         return "\n".join(lines).rstrip() + "\n"
 
+    def to_rst(self, details: bool = True) -> str:
+        """The same as :meth:`to_markdown` in reStructuredText: a ``list-table``, then, with
+        ``details``, one definition per case (source, reference, known difference)."""
+        cols = ("case", "source", "what", "reference", "computed", "unit", "tolerance",
+                "pass")
+        lines = [".. list-table::", "   :header-rows: 1", "   :widths: auto", ""]
+        lines.append("   * - " + "\n     - ".join(cols))
+        for r in self.rows:
+            c = r.case
+            cells = [f"``{c.name}``"] + [_rst(x) for x in (
+                short_source(c.source), c.what, _fmt(r.reference), _fmt(r.computed), c.unit,
+                c.tolerance_text)] + [f"**{r.status}**" if r.status == "FAIL" else r.status]
+            lines.append("   * - " + "\n     - ".join(cells))
+        if details:
+            lines.append("")
+            for r in self.rows:
+                c = r.case
+                lines.append(f"``{c.name}`` ({c.group})")
+                body = [_rst(c.what), f"*Source*: {_rst(c.source)}",
+                        f"*Reference*: {_rst(c.how)}"]
+                if c.known_difference:
+                    bound = (f" (documented bound: {c.known_tolerance_text})"
+                             if c.known_tolerance is not None else "")
+                    body.append(f"*Known difference*: {_rst(c.known_difference)}{bound}")
+                if r.note and not r.passed:
+                    body.append(f"*Note*: {_rst(r.note)}")
+                for b in body:
+                    lines.append(f"   {b}")
+                    lines.append("")
+        return "\n".join(lines).rstrip() + "\n"
+
+
+def _rst(text: str) -> str:
+    """Plain text safe in reStructuredText: markup characters escaped, one line."""
+    text = str(text).replace("\n", " ").replace("\\", "\\\\")
+    for ch in ("*", "`", "|", "_"):
+        text = text.replace(ch, "\\" + ch)
+    return text
+
 
 __all__ = ["TOLERANCE_KINDS", "Case", "Row", "VerificationTable", "short_source"]
