@@ -34,8 +34,10 @@ A table with a ``mitigation`` column (a campaign with ``[[mitigation]]``) is gro
 (mitigation, block, floor): every file above has a ``mitigation`` column after ``model``,
 the fragility sections and plots are one per mitigation (``p_overturn_<mitigation>.png``),
 and ``report.md`` begins its tables with P(overturn) by mitigation per block (rows the
-levels, columns the mitigations: the same realizations, common random numbers). The
-comparison itself (risk reduction, hazard) is :mod:`rocking.analysis.mitigation`'s.
+levels, columns the mitigations: the same realizations, common random numbers). With a
+hazard, ``risk.csv`` and the risk section have a row per mitigation and block. The
+comparison itself (medians and risk relative to the unmitigated block, isolator demand) is
+:mod:`rocking.analysis.mitigation`'s.
 
 The IM is the table's ``im`` column when the campaign scaled its motions to intensity
 levels (name and unit from ``manifest["im"]``, so every run of a level has the same IM),
@@ -373,7 +375,8 @@ def _bounds(ok: pd.DataFrame, im: dict, curve: HazardCurve, t: float) -> dict:
     def rate(v):
         c = float(site_hazard.to_im_unit(v, curve, im["unit"]))
         beyond = not curve.im[0] <= c <= curve.im[-1]
-        return curve.rate_at(c), " (beyond the hazard curve: its power-law tail)" * beyond
+        return curve.rate_at(c), " (that IM is beyond the hazard curve: its power-law " \
+            "tail)" * beyond
 
     if why == "separated" and lo >= hi:  # mixed outcomes at one IM, none below, all above
         lam, beyond = rate(hi)
@@ -390,20 +393,20 @@ def _bounds(ok: pd.DataFrame, im: dict, curve: HazardCurve, t: float) -> dict:
         lam, beyond = rate(lo)
         out["annual_frequency_upper_bound"] = lam
         out["probability_upper_bound"] = probability_in(t, lam)
-        parts.append(f"no run overturned up to {_g(lo)}{unit}: below {_g(lam)} per year, "
-                     f"the rate of that IM{beyond}")
+        parts.append(f"no run overturned up to {_g(lo)}{unit}: at most {_g(lam)} per year "
+                     f"if the fragility were a step there{beyond}")
     if math.isfinite(hi):  # every run overturned from hi: a step there has rate lambda(hi)
         lam, beyond = rate(hi)
         out["annual_frequency_lower_bound"] = lam
         out["probability_lower_bound"] = probability_in(t, lam)
-        parts.append(f"every run overturned from {_g(hi)}{unit}: above {_g(lam)} per year, "
-                     f"the rate of that IM{beyond}")
+        parts.append(f"every run overturned from {_g(hi)}{unit}: at least {_g(lam)} per "
+                     f"year if the fragility were a step there{beyond}")
     what = {"none failed": "no run overturned", "all failed": "every run overturned",
             "separated": "outcomes separated by the IM",
             "decreasing": "overturning only below the survivals"}.get(why, why)
     note = f"no overturning fit ({what}): no fitted number"
     if parts:
-        note += "; " + "; ".join(parts) + " (if the fragility were a step there)"
+        note += "; " + "; ".join(parts)
     return {**out, "note": note}
 
 
@@ -496,8 +499,10 @@ def _pm(x, se, digits: int) -> str:
 
 
 def _md_table(header: list[str], rows: list[list[str]]) -> list[str]:
-    return ["| " + " | ".join(header) + " |", "|" + "---|" * len(header),
-            *("| " + " | ".join(r) + " |" for r in rows), ""]
+    """A markdown table (a ``|`` in a cell, as in ``max|theta|``, escaped)."""
+    def cells(r):
+        return "| " + " | ".join(str(c).replace("|", "\\|") for c in r) + " |"
+    return [cells(header), "|" + "---|" * len(header), *(cells(r) for r in rows), ""]
 
 
 def _run_counts(t: pd.DataFrame) -> tuple[list[str], list[str], dict]:
@@ -589,7 +594,7 @@ def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
                 "From the damage-state curves (common beta); the last state is "
                 "overturning.", ""]
         rows = [[_run_name(r.to_dict()), _group_name(r["block_name"], r.to_dict()),
-                 f"DS{int(r['state'])} {r['label']}", _g(r["annual_frequency"]),
+                 str(r["label"]), _g(r["annual_frequency"]),
                  _g(r["probability"]), _g(100 * r["tail_share"], 2) + " %"]
                 for _, r in ds.iterrows()]
         out += _md_table(["run", "block", "state", "annual frequency (/yr)", ty, "tails"],

@@ -704,6 +704,8 @@ def _hazard_fail(e: ParameterError, given: dict) -> NoReturn:
         _fail(f"hazard.{name}", rest)
     if name in site_hazard.HAZARD_KEYS and name in given:
         _fail(f"hazard.{name}", rest)
+    if name in ("unit", "im"):  # a CSV that does not say it: the key to give
+        _fail(f"hazard.{name}", f"missing: {rest}")
     _fail("hazard.file" if "file" in given else "hazard", msg)
 
 

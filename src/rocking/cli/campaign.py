@@ -105,6 +105,10 @@ def _run(spec, out, executor, scheduler, dask_local, window, dry_run, quiet):
                    f"chunks of {e['chunk_size']}")
         click.echo(f"estimated time with the local executor: "
                    f"{_duration(e['estimated_seconds'])} (from {e['sampled']} sample runs)")
+        if s.hazard is not None:
+            h = s.hazard
+            click.echo(f"hazard: {h['label']} ({h['im_name']} in {h['unit']}, {len(h['im'])} "
+                       f"points); service life {h['t_years']:g} years (for the report)")
         if out is not None and Path(out, "manifest.json").is_file():
             st = status(out)
             click.echo(f"store {out}: {st['sims_done']} done, {st['sims_remaining']} to run")
@@ -251,8 +255,9 @@ def report_cmd(store, out, hazard, site, t_years):
         try:
             curve, src = read_hazard(hazard, site=None if site is None else parse_site(site))
         except ParameterError as e:
-            raise ParameterError(f"--{e}" if str(e).startswith("site") else
-                                 f"--hazard {str(e).removeprefix('file: ')}") from None
+            msg = str(e)
+            raise ParameterError(f"--{msg}" if msg.startswith(("site ", "site:")) else
+                                 f"--hazard {msg.removeprefix('file: ')}") from None
     s = Store(store)
     manifest = s.manifest
     if hazard is not None:  # the service life: --t-years, else the store's [hazard]'s
