@@ -15,7 +15,7 @@ an OpenQuake-format example file (:func:`hazard_curve`), not the hazard of any s
 Units: the simulations run in SI (the IDA levels are PGAs in m/s^2), and the curves are
 fitted to the PGA in g, the unit of the hazard curve and the pelicun table, so that the
 plots, the table and the text all give medians in g (the fits state their unit, and
-:func:`~rocking.analysis.annual_frequency` checks the hazard curve's against it).
+:func:`~rocking.analysis.hazard.risk` checks the hazard curve's against it).
 """
 
 from __future__ import annotations

@@ -612,7 +612,10 @@ def _text(res) -> list[str]:
         "blocks overturn with a mean annual "
         f"frequency from {_af_cell(lo_f)}/yr ({lo_f.block} on the {lo_f.floor}) "
         f"to {_af_cell(hi_f)}/yr ({hi_f.block} on the {hi_f.floor}); relative to "
-        "them, " + "; ".join(af_parts) + ". Only the method is meant: a real assessment "
+        "them, " + "; ".join(af_parts) + ". These integrals stop at the file's last "
+        "level (3 g), the PGAs beyond it counted as λ(3 g) P(f | 3 g), a lower bound "
+        "flagged in the CSV's note where it matters (the fragility section extends the "
+        "curve as a power law instead). Only the method is meant: a real assessment "
         "needs the site's hazard curve, and more records.")
 
     # displacement demand against the clearance
