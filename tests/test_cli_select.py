@@ -276,3 +276,30 @@ def test_bad_folder_target_and_period_source_are_one_line(capsys, tmp_path, fold
     code, _, err = run_main(capsys, "motion", "select", folder, "--target", "ec8",
                             "--periods", "0.1:1:5", "--n", "3", "--out", folder)
     assert_one_line_error(code, err, "out")
+
+
+def test_vertical_components_skipped_and_each_file_in_its_own_unit(capsys, tmp_path):
+    """A folder of downloads: shipped AT2 files in g (two horizontals and the vertical
+    ``UP``) and a CSV in m/s^2 that states its unit. Without --units every file is read in
+    the unit it states (the CSV's samples equal the record's), the vertical component is
+    skipped with the reason, and the 90 % rule still holds (EC8, --ag 0.2g, ground A)."""
+    src = tmp_path / "in"
+    src.mkdir()
+    root = resources.files("rocking.motions") / "data" / "records"
+    for name in ("three_component/RSN1158_KOCAELI_DZC180.AT2",
+                 "three_component/RSN1158_KOCAELI_DZC-UP.AT2", AT2):
+        (src / name.split("/")[-1]).write_bytes((root / name).read_bytes())
+    rec = load_builtin("RSN948_NORTHR_CAM009")
+    write_csv(rec, src / "cam009_ms2.csv")
+    out = tmp_path / "out"
+    code, stdout, err = run_main(capsys, "motion", "select", src, "--target", "ec8", "--ag",
+                                 "0.2g", "--periods", "0.2:1.5:15", "--n", 3, "--out", out,
+                                 "--no-plot", "--json")
+    assert code == 0, err
+    js, sel = _results(out)
+    skipped = {s["file"]: s["reason"] for s in js["skipped"]}
+    assert list(skipped) == ["RSN1158_KOCAELI_DZC-UP.AT2"]
+    assert "vertical" in skipped["RSN1158_KOCAELI_DZC-UP.AT2"]
+    assert js["candidates"] == 3 and js["compliant"] is True
+    back = Record.from_file(src / "cam009_ms2.csv", units=None)
+    np.testing.assert_allclose(back.acc, rec.acc, rtol=1e-12, atol=1e-12)

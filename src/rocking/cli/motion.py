@@ -817,14 +817,31 @@ def read_target_table(path, unit=None) -> tuple[np.ndarray, np.ndarray, str, lis
     return T, sa * acceleration_factor(u), u, notes
 
 
+_VERTICAL = re.compile(r"^(?:UP|UD|DWN|DOWN|V|VER|VERT|VERTICAL|Z|HNZ|HGZ|HLZ|BNZ|EHZ|"
+                       r"[A-Z]{2}Z|UP-DOWN|U-D)$", re.I)
+"""Component names of a vertical record (AT2 ``UP``, K-NET ``UD``, ESM/SEED ``HNZ``, ...)."""
+
+
 def _read_candidates(folder: Path, units, dt):
     """Every regular file of ``folder`` that the record reader reads: ``(records,
     sources, skipped)`` with ``skipped`` a list of ``(file name, one-line reason)``."""
+    from ..motions import Record
+
+    step = None if dt is None else parse_quantity(dt, "time", name="dt", default_unit="s")
     records, sources, skipped = [], [], []
     files = sorted(p for p in folder.iterdir() if p.is_file())
     for p in files:
         try:
-            rec, _ = read_record_arg(p, p.name, units, dt)
+            if units is None:  # each file in the unit it states (g if none): a folder of
+                # downloads mixes AT2 in g with ESM/COSMOS/K-NET in cm/s^2
+                rec = Record.from_file(p, units=None, dt=step)
+            else:
+                rec, _ = read_record_arg(p, p.name, units, dt)
+            comp = str(rec.meta.get("component", "") or rec.meta.get("direction", ""))
+            if _VERTICAL.match(comp.strip()):
+                skipped.append((p.name, f"vertical component ({comp.strip()}): the target "
+                                "is a horizontal spectrum"))
+                continue
         except RockingError as e:
             msg = one_line(e)
             for head in (f"{p}: ", f"{p.name}: ", f"file: {p}: ", f"{p.name}: {p}: "):
@@ -859,8 +876,10 @@ def _read_candidates(folder: Path, units, dt):
               help="Damping ratio of the spectra: 5% or 0.05 (a target table must refer to "
                    "it; uhs: 5 % only).")
 @click.option("--units", metavar="U",
-              help="Units of the record files that state none: g, m/s^2, cm/s^2 (gal); "
-                   "default g. A unit a file states must agree (else it is skipped).")
+              help="Units of the record files: g, m/s^2, cm/s^2 (gal). Default: each "
+                   "file's own stated unit (ESM, COSMOS, K-NET: cm/s^2; AT2: g), g for a "
+                   "file that states none. Given, a unit a file states must agree (else the "
+                   "file is skipped).")
 @click.option("--dt", metavar="DT", help="Time step of one-column record files (s).")
 @click.option("--ag", metavar="AG", help="ec8: design ground acceleration, e.g. 0.25g.")
 @click.option("--ground", type=click.Choice(list("ABCDE"), case_sensitive=False),
