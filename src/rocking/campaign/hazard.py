@@ -42,8 +42,8 @@ MAX_T_YEARS = 1e4
 """Longest service life accepted (years)."""
 HAZARD_KEYS = {
     "file": "a hazard-curve file, relative to the spec: an OpenQuake engine export "
-            "(hazard_curve-<kind>-<IMT>_<id>.csv) or a CSV of IM and annual rate or return "
-            "period; or give pga_475",
+            "(`hazard_curve-<kind>-<IMT>_<id>.csv`) or a CSV of IM and annual rate or "
+            "return period (header `PGA (g)`, `rate` or `return period`); or give pga_475",
     "format": f"{', '.join(FORMATS)} (default auto: an OpenQuake export by its first line)",
     "site": "OpenQuake: the site, a row index (default 0) or [lon, lat] (the nearest)",
     "im": "CSV: the IM's name if the header's is not it (e.g. \"PGA\")",
