@@ -25,7 +25,9 @@ from importlib import resources
 from ..errors import SpecimenError
 from .block import Block
 
+#: The parameter sets of :func:`specimen`: Table II column T, column E, or Eqs 2-4.
 PARAM_SETS = ("theoretical", "experimental", "geometric")
+#: The geometries of :func:`specimen`: Table I's rectangle, or with the cut corners.
 SHAPES = ("rectangle", "cut")
 
 

@@ -43,6 +43,7 @@ from .plan import Campaign
 from .spec import CampaignSpec, read_spec
 from .store import Store
 
+#: The executors of :func:`run`: this process (numba threads), or a Dask cluster.
 EXECUTORS = ("local", "dask")
 
 

@@ -80,6 +80,7 @@ from .._validate import as_int, warn_implausible
 from ..errors import ParameterError
 from ..units import G, parse_quantity
 
+#: The columns of the table of :func:`directional_parameters`, one row per direction.
 COLUMNS = ("phi", "phi_deg", "h", "b_plus", "b_minus", "radius_of_gyration", "alpha_plus",
            "alpha_minus", "R_plus", "R_minus", "I_plus", "I_minus", "p_plus", "p_minus",
            "mu_plus", "mu_minus", "uplift_plus", "uplift_minus", "alpha_min", "uplift_min",
