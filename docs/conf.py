@@ -15,7 +15,10 @@ Generated at build time, git-ignored, under ``docs/api/generated/``:
 from __future__ import annotations
 
 import importlib
+import importlib.util
+import inspect
 import os
+import pkgutil
 import sys
 from pathlib import Path
 
@@ -68,31 +71,79 @@ def _write_if_changed(path: Path, text: str) -> None:
 _SEEN: dict[int, str] = {}       # id of an object -> the page's name that documents it
 
 
+def _is_data(obj) -> bool:
+    return not (inspect.ismodule(obj) or inspect.isclass(obj) or callable(obj))
+
+
+def _modules_under(package: str) -> list[str]:
+    """``package`` and every module below it (found, not imported; no ``__main__``)."""
+    names = [package]
+    spec = importlib.util.find_spec(package)
+    for info in pkgutil.walk_packages(spec.submodule_search_locations or [], package + "."):
+        if not info.name.endswith("__main__"):
+            names.append(info.name)
+    return names
+
+
+def _data_doc(package: str, name: str) -> str:
+    """The ``#:`` comment (or the string after it) of constant ``name``, where it is
+    assigned: in ``package``'s modules first, then anywhere in ``rocking``."""
+    from sphinx.pycode import ModuleAnalyzer
+
+    for modname in _modules_under(package) + _modules_under("rocking"):
+        try:
+            docs = ModuleAnalyzer.for_module(modname).find_attr_docs()
+        except Exception:  # noqa: BLE001 - a module without source: look further
+            continue
+        if ("", name) in docs:
+            return "\n".join(docs[("", name)]).strip()
+    return ""
+
+
+def _data_entry(package: str, name: str, obj) -> list[str]:
+    """A constant: ``.. data::`` with its value (when short) and its doc comment."""
+    lines = [f".. data:: {name}"]
+    value = repr(obj)
+    if len(value) <= 70 and "<" not in value:
+        lines.append(f"   :value: {value}")
+    doc = _data_doc(package, name)
+    lines.append("")
+    lines += [f"   {ln}" if ln else "" for ln in doc.splitlines()] or [""]
+    return lines + [""]
+
+
 def _package_page(name: str, summary: str) -> str:
     """The page of package ``name``: its docstring and an autosummary of its ``__all__``.
 
     An object exported by an earlier package of ``PACKAGES`` (``rocking.Block`` is
     ``rocking.blocks.Block``) is documented once, there, and named here with a link.
+    Constants get a ``data`` entry with their value and doc comment (autosummary would
+    show the docstring of their type).
     """
     mod = importlib.import_module(name)
-    own, again = [], []
+    own, data, again = [], [], []
     for n in getattr(mod, "__all__", ()):
         if n.startswith("_"):
             continue
         obj = getattr(mod, n)
-        first = _SEEN.get(id(obj)) if not isinstance(obj, (int, float, str, tuple)) else None
-        if first is None:
-            own.append(n)
-            if not isinstance(obj, (int, float, str, tuple)):
-                _SEEN[id(obj)] = f"{name}.{n}"
-        else:
+        scalar = isinstance(obj, (int, float, str, tuple))
+        first = None if scalar else _SEEN.get(id(obj))
+        if first is not None:
             again.append((n, first))
+            continue
+        if not scalar:
+            _SEEN[id(obj)] = f"{name}.{n}"
+        (data if _is_data(obj) else own).append((n, obj))
     title = f"``{name}``"
     lines = [title, "=" * len(title), "", summary, "",
              f".. automodule:: {name}", "   :no-members:", "",
              f".. currentmodule:: {name}", "",
              ".. autosummary::", "   :toctree: .", "   :nosignatures:", ""]
-    lines += [f"   {n}" for n in own]
+    lines += [f"   {n}" for n, _ in own]
+    if data:
+        lines += ["", "Constants", "---------", ""]
+        for n, obj in data:
+            lines += _data_entry(name, n, obj)
     if again:
         lines += ["", "Also exported here: " + ", ".join(
             f":obj:`{n} <{first}>`" for n, first in again) + "."]
