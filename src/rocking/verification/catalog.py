@@ -206,6 +206,21 @@ def _velocity_ratio(block, model: str = "housner", th0_frac: float = 0.6) -> flo
     return math.sqrt((math.cos(a - r1) - math.cos(a)) / (math.cos(a - th0) - math.cos(a)))
 
 
+def _uplift_threshold() -> float:
+    """The least a/(g tan alpha) of a constant acceleration (a rectangular pulse of 0.2 s)
+    that uplifts the nonlinear block, by bisection on its uplift."""
+    from ..motions.pulses import Rectangular
+
+    blk = _block()
+    thr = G * math.tan(blk.alpha)
+
+    def uplifts(ratio: float) -> bool:
+        r = _simulate(blk, Rectangular(ratio * thr, 0.2, duration=0.5))
+        return not math.isnan(r.uplift_time)
+
+    return _bisect(uplifts, 0.9, 1.1, tol=1e-9)
+
+
 def _rect_pulse_response() -> float:
     """theta_max / alpha after a rectangular pulse at 90 % of its overturning amplitude."""
     from ..motions.pulses import Rectangular
@@ -448,6 +463,17 @@ CASES: tuple[Case, ...] = (
         reference=lambda: 1.0 - 1.5 * math.sin(math.atan(RECT_BLOCK["width"]
                                                          / RECT_BLOCK["height"])) ** 2,
         compute=lambda: _velocity_ratio(_rect_block()), tolerance=1e-5, group="classical"),
+    Case(
+        name="housner-uplift",
+        source=HOUSNER_1963,
+        what="least constant ground acceleration a/(g tan alpha) that uplifts the block "
+             "(nonlinear model)",
+        how="At rest the block uplifts when the overturning moment of the inertial force, "
+            "m a h, exceeds the restoring moment of gravity, m g b: a = g b/h = g tan "
+            "alpha (Housner 1963; Eq 1 of Pena et al. 2007 at theta = 0), so the ratio is "
+            "1. Computed by bisection on the uplift of rocking.simulate to 1e-9.",
+        reference=lambda: 1.0, compute=_uplift_threshold, tolerance=1e-8,
+        group="classical"),
     _rectangular_case(1.0),
     _rectangular_case(0.25),
     Case(
@@ -482,6 +508,17 @@ CASES: tuple[Case, ...] = (
         how="Root of the same equation at omega_p/p = 1 (module docstring). " + UNREAD,
         reference=lambda: half_sine_mode2(1.0),
         compute=lambda: _pulse_threshold("half_sine", 1.0, mode2=False),
+        tolerance=1e-5, group="pulses"),
+    Case(
+        name="makris-roussos-one-sine",
+        source=MAKRIS_ROUSSOS_2000,
+        what="least a_p/(g alpha) of a long one-sine pulse (omega_p/p = 2) that overturns "
+             "the linearised block without an impact",
+        how="Root of sqrt(A^2 - 1) - A exp(-(2 pi - asin(1/A)) p/omega_p) = omega_p/p, the "
+            "no-impact overturning condition of the linearised block under a one-sine "
+            "pulse (derived here, module docstring). " + UNREAD,
+        reference=lambda: one_sine_mode2(2.0),
+        compute=lambda: _pulse_threshold("one_sine", 2.0, bracket=(1.5, 10.0)),
         tolerance=1e-5, group="pulses"),
     Case(
         name="zhang-makris-one-sine",
