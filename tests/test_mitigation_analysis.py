@@ -160,6 +160,26 @@ def test_a_short_hazard_curve_gives_a_flagged_lower_bound():
     assert "lower bound" not in row(full, "isolated")["note"]
 
 
+def test_a_hazard_curve_object_integrates_its_power_law_tails():
+    """The short curve of the test above as a HazardCurve: risk() carries its power-law
+    tails beyond 4 m/s^2, so the annual frequency equals Cornell's closed form (no lower
+    bound); a curve of another IM is refused."""
+    from rocking.analysis import HazardCurve
+    k0, a0, k = 2e-3, 1.0, 2.5
+    x, lam = power_law(k0, a0, k, lo=1e-2, hi=4.0, num=12)
+    curve = HazardCurve(x, lam, im_name="PGA", unit="m/s^2")
+    comp = compare_mitigations(draw({"none": 2.0, "isolated": 4.0}), n_boot=0, hazard=curve,
+                               im_unit="m/s^2")
+    for m in ("none", "isolated"):
+        r = row(comp, m)
+        exact = cornell(r["median"], r["beta"], k0, a0, k)
+        assert r["annual_frequency"] == pytest.approx(exact, rel=1e-6)
+        assert "lower bound" not in r["note"]
+    sa = HazardCurve(x, lam, im_name="SA(1.0)", unit="m/s^2")
+    with pytest.raises(ParameterError, match="same IM"):
+        compare_mitigations(draw({"none": 2.0}), n_boot=0, hazard=sa, im_unit="m/s^2")
+
+
 @pytest.mark.parametrize("hazard, match", [
     (([0.1, 1.0], [1e-2, 1e-4], "m/s"), "incompatible"),
     (([0.1, 1.0], [1e-2, 1e-4], "furlong"), "unknown unit"),

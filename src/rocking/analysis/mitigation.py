@@ -37,6 +37,7 @@ from .fragility import (
     as_bool_array,
     fit_or_bounds,
 )
+from .hazard import HazardCurve, risk
 
 FAILURES = ("overturned", "overturned_or_clearance")
 """What counts as a failure: the block overturned, or (also) the isolator reached its
@@ -342,7 +343,10 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
     intervals). ``hazard``: ``(im, rate, unit)`` or ``{"im", "rate", "unit"}``, a hazard
     curve (annual rate of exceeding each IM) converted to ``im_unit`` when of the same
     kind (g to m/s^2), refused otherwise; the annual frequency of failure is
-    :func:`~.fragility.annual_frequency` of the fit (Cornell et al. 2002).
+    :func:`~.fragility.annual_frequency` of the fit (Cornell et al. 2002) over the curve's
+    range (the IMs beyond its ends flagged in ``note`` when they matter). A
+    :class:`~.hazard.HazardCurve` instead: :func:`~.hazard.risk` over the whole IM range,
+    power-law tails included (its IM name must be the fit's).
 
     Columns of the result's ``table`` (one row per group and mitigation): the ``by``
     columns, ``mitigation``, ``model`` (the model(s) run), ``n`` (runs used), ``n_failed``,
@@ -382,7 +386,15 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
         raise ParameterError(f"im_unit={im_unit!r} contradicts the table's own IM unit "
                              f"{attrs_unit!r} (table.attrs)")
     clear = parse_clearance(clearance)
+    curve = hazard if isinstance(hazard, HazardCurve) else None
+    if curve is not None:
+        if im_unit is None:
+            raise ParameterError("im_unit is required with a hazard curve: the IM's unit "
+                                 "must be known to check the hazard's")
+        hazard = (curve.im, curve.rate, curve.unit)
     hz = parse_hazard(hazard, im_unit) if hazard is not None else None
+    if curve is not None:
+        hz = (hz[0], hz[1], curve)
     table = table.reset_index(drop=True)  # positions, whatever the caller's index
 
     if table[mit_col].isna().any():
@@ -506,7 +518,15 @@ def _hazard_fields(row: dict, fit: FragilityFit | None, hz, im_unit) -> None:
                annual_frequency_upper_bound=math.nan)
     if hz is None:
         return
-    hx, hr = hz
+    hx, hr = hz[:2]
+    if fit is not None and len(hz) == 3:  # a HazardCurve: the whole IM range, tails too
+        r = risk(fit, hz[2])
+        row["annual_frequency"] = r.annual_frequency
+        if r.tail_share > 0.1:
+            row["note"] = "; ".join(s for s in (row["note"], (
+                f"{100 * r.tail_share:.0f} % of the annual frequency comes from the "
+                "hazard curve's power-law tails beyond its ends")) if s)
+        return
     if fit is not None:
         af = annual_frequency(fit, hx, hr, hazard_unit=im_unit)
         row["annual_frequency"] = af

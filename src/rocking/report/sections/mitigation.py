@@ -234,12 +234,13 @@ def clearance_pga(disp: pd.DataFrame) -> pd.DataFrame:
 
 def compare(runs: pd.DataFrame, failure: str, quick: bool):
     """:func:`~rocking.analysis.compare_mitigations` of the runs by block and floor, IM =
-    ground PGA in g, on the ILLUSTRATIVE hazard curve of the fragility section (its points,
-    :func:`.fragility.hazard_curve`), against :data:`CLEARANCE`."""
+    ground PGA in g, on the ILLUSTRATIVE hazard curve of the fragility section
+    (:func:`.fragility.hazard_curve`, power-law tails beyond its ends), against
+    :data:`CLEARANCE`."""
     hz = hazard_curve()
     return compare_mitigations(runs, im="pga", im_unit="g", failure=failure,
                                by=["block", "floor"], clearance=CLEARANCE,
-                               hazard=(hz.im, hz.rate, hz.unit),
+                               hazard=hz,
                                n_boot=N_BOOT[not quick], seed=0)
 
 
@@ -612,11 +613,11 @@ def _text(res) -> list[str]:
         "blocks overturn with a mean annual "
         f"frequency from {_af_cell(lo_f)}/yr ({lo_f.block} on the {lo_f.floor}) "
         f"to {_af_cell(hi_f)}/yr ({hi_f.block} on the {hi_f.floor}); relative to "
-        "them, " + "; ".join(af_parts) + ". These integrals stop at the file's last "
-        "level (3 g), the PGAs beyond it counted as λ(3 g) P(f | 3 g), a lower bound "
-        "flagged in the CSV's note where it matters (the fragility section extends the "
-        "curve as a power law instead). Only the method is meant: a real assessment "
-        "needs the site's hazard curve, and more records.")
+        "them, " + "; ".join(af_parts) + ". The integrals run over the whole PGA range: "
+        "beyond the file's levels (0.01-3 g) the curve goes on as a power law of its end "
+        "slopes, as in the fragility section (rocking.analysis.hazard.risk). Only the "
+        "method is meant: a real assessment needs the site's hazard curve, and more "
+        "records.")
 
     # displacement demand against the clearance
     cp = cpga.set_index(["floor", "mitigation"])
