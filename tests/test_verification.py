@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 
 import pytest
 from cli_helpers import assert_one_line_error, run_main
@@ -245,7 +246,9 @@ def test_rst_is_valid_restructuredtext():
 
     text = verification_rst(CHEAP + ["pena-table2-specimen1-alpha"])
     assert text.startswith(".. list-table::")
-    html = docutils.core.publish_string(text, writer_name="html",
-                                        settings_overrides={"report_level": 2,
-                                                            "halt_level": 2}).decode()
+    with warnings.catch_warnings():  # writer_name: pending deprecation in docutils 0.22
+        warnings.simplefilter("ignore", PendingDeprecationWarning)
+        html = docutils.core.publish_string(text, writer_name="html",
+                                            settings_overrides={"report_level": 2,
+                                                                "halt_level": 2}).decode()
     assert "housner-free-period" in html and "KNOWN" in html
