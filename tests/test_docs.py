@@ -146,20 +146,28 @@ def test_every_name_the_guide_mentions_exists(page):
     assert not missing, f"{page.name} names what does not exist: {missing}"
 
 
-def test_guide_command_lines_name_real_commands():
+def _guide_command_lines() -> list[tuple[str, str]]:
+    """(page, line) of every ``rocking ...`` line of the guide's bash blocks (joined over
+    trailing backslashes)."""
+    lines = []
+    for page in GUIDE_PAGES:
+        text = page.read_text(encoding="utf-8")
+        for m in re.finditer(r"\.\. code-block:: bash\n\n((?:   .*\n|\n)+)", text):
+            block = re.sub(r"\\\n\s*", " ", m.group(1))
+            lines += [(page.name, ln.strip()) for ln in block.splitlines()
+                      if ln.strip().startswith("rocking ")]
+    return lines
+
+
+def test_guide_command_lines_name_real_commands_and_options():
     import click
 
     from rocking.cli import cli
 
-    blocks = []
-    for page in GUIDE_PAGES:
-        text = page.read_text(encoding="utf-8")
-        for m in re.finditer(r"\.\. code-block:: bash\n\n((?:   .*\n|\n)+)", text):
-            blocks += [(page.name, ln.strip()) for ln in m.group(1).splitlines()
-                       if ln.strip().startswith("rocking ")]
-    assert len(blocks) >= 15
-    for name, line in blocks:
-        words = line.split()[1:]
+    lines = _guide_command_lines()
+    assert len(lines) >= 15
+    for name, line in lines:
+        words = line.split("#", 1)[0].replace("[", " ").replace("]", " ").split()[1:]
         cmd = cli
         while isinstance(cmd, click.Group) and words and not words[0].startswith("-"):
             if words[0] not in cmd.commands:
@@ -168,4 +176,10 @@ def test_guide_command_lines_name_real_commands():
                 raise AssertionError(f"{name}: '{line}' names no command '{words[0]}'")
             cmd = cmd.commands[words[0]]
             words = words[1:]
-        assert not isinstance(cmd, click.Group) or cmd is not cli, f"{name}: '{line}'"
+        assert cmd is not cli, f"{name}: '{line}' names no command"
+        ctx = click.Context(cmd, info_name=cmd.name)
+        flags = {opt for p in cmd.get_params(ctx) for opt in getattr(p, "opts", [])
+                 + getattr(p, "secondary_opts", [])}
+        unknown = [w.split("=")[0] for w in words
+                   if w.startswith("--") and w.split("=")[0] not in flags]
+        assert not unknown, f"{name}: '{line}': no option {unknown} of '{cmd.name}'"
