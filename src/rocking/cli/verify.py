@@ -10,9 +10,11 @@
     rocking verify --list               # the case names, their group and what they check
 
 Prints one row per case: case, source, reference value, computed value, unit, tolerance,
-PASS/FAIL, then the notes (why a case fails, or its documented difference). Exit code 0
-when every case passes, 1 when one fails (a failing verification is not bad input), 2 for
-an unknown case name (one line ``error: ...`` listing the known names).
+and PASS, KNOWN (the case disagrees with its source for a documented reason, within a
+documented bound) or FAIL, then the notes (why a case fails, or its documented
+difference). Exit code 0 when no case fails, 1 when one does (a failing verification is
+not bad input), 2 for an unknown case name (one line ``error: ...`` listing the known
+names).
 """
 
 from __future__ import annotations
@@ -30,7 +32,7 @@ from .common import CONTEXT, json_default
 @click.option("--quick", is_flag=True, help="Leave out the slow cases (the DEM).")
 @click.option("--json", "as_json", is_flag=True,
               help="Print JSON: {'passed': ..., 'n_cases': ..., 'n_failed': ..., 'cases': "
-                   "[one object per case]}.")
+                   "[one object per case, with its 'status']}.")
 @click.option("--markdown", "markdown", type=click.Path(dir_okay=False, path_type=Path),
               default=None, help="Also write the table and each case's source and "
                                  "derivation as Markdown to this file.")
@@ -38,7 +40,8 @@ from .common import CONTEXT, json_default
               help="List the cases (name, group, what) without running them.")
 def verify_cmd(cases, quick, as_json, markdown, list_only):
     """Run the verification cases and print the table: case, source, reference value,
-    computed value, tolerance, pass. Exit code 1 if any case fails.
+    computed value, tolerance, pass (PASS; KNOWN: a disagreement with a documented reason
+    and bound, not a failure; FAIL). Exit code 1 if any case fails.
 
     CASES: names of cases to run (all by default; see --list).
     """
