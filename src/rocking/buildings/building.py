@@ -38,7 +38,7 @@ With uniform ``m`` and ``k`` (the closed form of this tridiagonal eigenproblem)
           phi_ij  ∝ sin((2j - 1) i pi / (2N + 1)).
 
 Continuous shear-flexural beam (Miranda and Reyes 2002; Miranda and Taghavi 2005)
-------------------------------------------------------------------------------
+---------------------------------------------------------------------------------
 A flexural cantilever (``EI``) and a shear cantilever (``GA``) tied by axially rigid links,
 of uniform mass ``rho`` per height and height ``H``. With ``x = z/H`` and the lateral
 stiffness ratio ``alpha = H sqrt(GA / EI)`` (the paper's ``alpha_0``), the free vibration

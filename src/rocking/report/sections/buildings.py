@@ -9,7 +9,7 @@ storeys of 3 m, first period from EN 1998-1 Eq 4.6 for RC moment frames, 5 % dam
 every mode, all modes kept), under the 30 seed earthquakes of the paper's random tests
 scaled to a ladder of PGA levels and under the Rinaldi record of Northridge 1994
 (:class:`rocking.buildings.FloorMotion`, classical model, each run until the block
-settles). Compared: P(overturn) and the median max |theta| / alpha against the floor, the
+settles). Compared: P(overturn) and the median max ``|theta|`` / alpha against the floor, the
 peak floor acceleration against ASCE 7-22's ``H_f`` and EN 1998-1's amplification, and the
 roof's floor spectrum against EN 1998-1 Eq 4.25.
 """
@@ -142,12 +142,12 @@ def run_floors(blocks: dict, buildings: dict, records: list, fms: dict, levels: 
 
 
 def censored_median(theta: np.ndarray, overturned: np.ndarray) -> float:
-    """Median of max |theta| / alpha with the overturned runs counted as infinite."""
+    """Median of max ``|theta|`` / alpha with the overturned runs counted as infinite."""
     return float(np.median(np.where(overturned, np.inf, theta)))
 
 
 def summarise(runs: pd.DataFrame) -> pd.DataFrame:
-    """P(overturn) (Wilson 95 % band) and the median max |theta| / alpha per building,
+    """P(overturn) (Wilson 95 % band) and the median max ``|theta|`` / alpha per building,
     floor, block and PGA level."""
     out = []
     keys = ["building", "storeys", "floor", "z_over_H", "block", "pga_g"]

@@ -50,7 +50,7 @@ def describe(name: str, dist: dict) -> str:
 
 
 def parameter_uncertainty() -> dict:
-    """alpha, p, mu ~ normal around Table II E with std half the |T - E| difference."""
+    """alpha, p, mu ~ normal around Table II E with std half the ``|T - E|`` difference."""
     e, t = specimen(SPECIMEN, "experimental"), specimen(SPECIMEN, "theoretical")
     return {k: {"dist": "normal", "std": max(0.5 * abs(getattr(t, k) - getattr(e, k)), 1e-4)}
             for k in ("alpha", "p", "mu")}

@@ -11,7 +11,7 @@ same motions in both directions. Finally the two horizontal components of the bu
 Northridge 1994 Rinaldi record (228 and 318 deg; the object's x axis along the first) are
 projected on every direction and run at a few scale factors
 (:func:`rocking.analysis.direction_sweep`), with and without the vertical component:
-max |theta| / alpha against the direction, and the worst direction against the static
+max ``|theta|`` / alpha against the direction, and the worst direction against the static
 weakest one.
 
 The planar analysis in each direction is the standard engineering answer until a 3-D

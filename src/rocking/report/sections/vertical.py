@@ -6,7 +6,7 @@ at Duzce (0.21 g), each scaled so that its horizontal PGA runs from 0.9 to 2 tim
 block's uplift acceleration g tan(alpha). Every run is made twice, with the horizontal
 component alone and with the horizontal and vertical components scaled together
 (:class:`rocking.motions.GroundMotion`, effective gravity g + a_v), with the classical and
-CCRR models. Compared: max |theta|, overturning and the number of impacts.
+CCRR models. Compared: max ``|theta|``, overturning and the number of impacts.
 """
 
 from __future__ import annotations
