@@ -123,7 +123,7 @@ def test_a_documented_difference_is_shown_and_bounded():
     table = VerificationTable([known, _case(1.0, 1.0).run()])
     assert table.passed
     assert "KNOWN" in table.to_text() and "1 KNOWN" in table.to_text()
-    assert "documented bound: rel 5e-02" in table.to_markdown()
+    assert "documented bound: rel 0.05" in table.to_markdown()
     assert not VerificationTable([known, drift]).passed
     with pytest.raises(ValueError, match="known_tolerance"):
         _case(1.0, 1.0, known_tolerance=0.05)  # a bound without its reason

@@ -93,7 +93,7 @@ class Case:
         if self.tolerance_kind == "below":
             return f"in [ref-{self.tolerance:g}, ref)"
         unit = "" if self.tolerance_kind == "rel" or self.unit == "-" else f" {self.unit}"
-        return f"{self.tolerance_kind} {self.tolerance:.0e}{unit}"
+        return f"{self.tolerance_kind} {self.tolerance:.2g}{unit}"
 
     @property
     def known_tolerance_text(self) -> str:
@@ -101,7 +101,7 @@ class Case:
         if self.known_tolerance is None:
             return ""
         unit = "" if self.tolerance_kind == "rel" or self.unit == "-" else f" {self.unit}"
-        return f"{self.tolerance_kind} {self.known_tolerance:.0e}{unit}"
+        return f"{self.tolerance_kind} {self.known_tolerance:.2g}{unit}"
 
     def passes(self, reference: float, computed: float, tolerance: float | None = None
                ) -> bool:
