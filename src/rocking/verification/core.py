@@ -93,7 +93,7 @@ class Case:
         if self.tolerance_kind == "below":
             return f"in [ref-{self.tolerance:g}, ref)"
         unit = "" if self.tolerance_kind == "rel" or self.unit == "-" else f" {self.unit}"
-        return f"{self.tolerance_kind} {self.tolerance:.2g}{unit}"
+        return f"{self.tolerance_kind} {self.tolerance:.3g}{unit}"
 
     @property
     def known_tolerance_text(self) -> str:
@@ -101,7 +101,7 @@ class Case:
         if self.known_tolerance is None:
             return ""
         unit = "" if self.tolerance_kind == "rel" or self.unit == "-" else f" {self.unit}"
-        return f"{self.tolerance_kind} {self.known_tolerance:.2g}{unit}"
+        return f"{self.tolerance_kind} {self.known_tolerance:.3g}{unit}"
 
     def passes(self, reference: float, computed: float, tolerance: float | None = None
                ) -> bool:
@@ -212,6 +212,12 @@ def _fmt(x: float) -> str:
     return "nan" if not math.isfinite(x) else f"{x:.10g}"
 
 
+def _sentence(text: str) -> str:
+    """``text`` with a capital first letter and a final full stop."""
+    text = text.strip()
+    return text[:1].upper() + text[1:] + ("" if text.endswith(".") else ".")
+
+
 def _md(text: str) -> str:
     return text.replace("|", "\\|").replace("\n", " ")
 
@@ -282,7 +288,7 @@ class VerificationTable:
             lines.append("")
             for r in self.rows:
                 c = r.case
-                lines.append(f"**`{c.name}`** ({c.group}). {_md(c.what)}  ")
+                lines.append(f"**`{c.name}`** ({c.group}). {_md(_sentence(c.what))}  ")
                 lines.append(f"*Source*: {_md(c.source)}  ")
                 lines.append(f"*Reference*: {_md(c.how)}"
                              + (f"  \n*Known difference*: {_md(c.known_difference)}"
@@ -312,7 +318,7 @@ class VerificationTable:
             for r in self.rows:
                 c = r.case
                 lines.append(f"``{c.name}`` ({c.group})")
-                body = [_rst(c.what), f"*Source*: {_rst(c.source)}",
+                body = [_rst(_sentence(c.what)), f"*Source*: {_rst(c.source)}",
                         f"*Reference*: {_rst(c.how)}"]
                 if c.known_difference:
                     bound = (f" (documented bound: {c.known_tolerance_text})"
