@@ -58,7 +58,7 @@ def test_catalog_covers_the_literature_and_the_other_issues():
     cited = {short_source(c.source) for c in CASES}
     for author in ("Housner (1963)", "Makris and Roussos (2000)", "Zhang and Makris (2001)",
                    "Makris and Konstantinidis (2003)", "Dimitrakopoulos and DeJong (2012)",
-                   "Pena et al. (2007)"):
+                   "Peña et al. (2007)"):
         assert author in cited, author
     for c in CASES:
         assert c.source and "(" in c.source and c.what and len(c.how) > 40, c.name

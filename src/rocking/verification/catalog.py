@@ -73,7 +73,7 @@ DIMITRAKOPOULOS_DEJONG_2012 = ("Dimitrakopoulos, E. G. and DeJong, M. J. (2012).
                                "Revisiting the rocking block: closed-form solutions and "
                                "similarity laws. Proceedings of the Royal Society A 468, "
                                "2294-2318.")
-PENA_2007 = ("Pena, F., Prieto, F., Lourenco, P. B., Campos Costa, A. and Lemos, J. V. "
+PENA_2007 = ("Peña, F., Prieto, F., Lourenço, P. B., Campos Costa, A. and Lemos, J. V. "
              "(2007). On the dynamics of rocking motion of single rigid-block structures. "
              "Earthquake Engineering and Structural Dynamics 36(15), 2383-2399.")
 CHOPRA = ("Chopra, A. K. (2012). Dynamics of Structures: Theory and Applications to "

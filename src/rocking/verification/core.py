@@ -197,7 +197,7 @@ def short_source(source: str) -> str:
     i = source.find(")")
     head = source[: i + 1] if i > 0 else source
     j = head.find(" (")
-    names = re.findall(r"([A-Z][A-Za-z'-]+(?: [A-Z][A-Za-z'-]+)*), (?:[A-Z]\.[ -]?)+", head[:j])
+    names = re.findall(r"([A-Z][\w'-]+(?: [A-Z][\w'-]+)*), (?:[A-Z]\.[ -]?)+", head[:j])
     if j < 0 or not names:
         return head
     year = head[j:]
