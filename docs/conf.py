@@ -57,6 +57,7 @@ PACKAGES = {
     "rocking.campaign": "Campaigns: TOML specs, executors, the Parquet store.",
     "rocking.report": "The reproduction report.",
     "rocking.testing": "The model contract and plain reference implementations.",
+    "rocking.verification": "The verification manual: cases from the literature, run.",
 }
 GENERATED = HERE / "api" / "generated"
 
@@ -156,6 +157,11 @@ for _md in ("architecture", "cluster"):
     _write_if_changed(GENERATED / f"{_md}.rst",
                       docs_md.convert((HERE / f"{_md}.md").read_text(encoding="utf-8")))
 
+# the verification manual: every case run at build time (``rocking verify`` prints the same)
+from rocking.verification import verification_rst  # noqa: E402
+
+_write_if_changed(GENERATED / "verification_table.inc", verification_rst())
+
 autosummary_generate = True
 autosummary_imported_members = True
 autodoc_default_options: dict[str, object] = {}
@@ -181,6 +187,8 @@ html_theme_options = {
     "show_toc_level": 2,
     "header_links_before_dropdown": 8,
 }
+# pages without siblings: no empty "Section Navigation" column
+html_sidebars = {"verification": [], "changelog": [], "cli": []}
 html_static_path: list[str] = []
 html_show_sourcelink = False
 

@@ -416,7 +416,7 @@ def _table2_case(n: int, name: str, printed: float, known: str = "",
              f"{ {'alpha': 2, 'p': 3, 'mu': 4}[name] }) against the printed theoretical value",
         how=TABLE2_HOW.format(n=n), reference=lambda: printed,
         compute=lambda: _geometric(n, name), unit=unit, tolerance=tol,
-        tolerance_kind="abs", group="classical", known_difference=known,
+        tolerance_kind="abs", group="paper", known_difference=known,
         known_tolerance=known_tolerance)
 
 
@@ -640,7 +640,7 @@ CASES: tuple[Case, ...] = (
             "printing's rounding of its inputs allows, M +- 0.5 kg (7.3 N/m), p +- 0.005 "
             "1/s (4.3 N/m) and 2b +- 0.005 m (1.4 N/m): 13 N/m.",
         reference=lambda: 3302.0, compute=lambda: _table3_K(2), unit="N/m",
-        tolerance=13.0, tolerance_kind="abs", group="cross-model"),
+        tolerance=13.0, tolerance_kind="abs", group="paper"),
     Case(
         name="pena-table3-specimen3-K",
         source=PENA_2007,
@@ -649,7 +649,7 @@ CASES: tuple[Case, ...] = (
             "Eq 17 with M = 120 kg, 2b = 0.12 m, 2h = 1.000 m (Table I) and p = 3.82 1/s "
             "(Table II). Tolerance as for specimen 2 (rounding of the inputs, 13 N/m).",
         reference=lambda: 1174.0, compute=lambda: _table3_K(3), unit="N/m",
-        tolerance=13.0, tolerance_kind="abs", group="cross-model",
+        tolerance=13.0, tolerance_kind="abs", group="paper",
         known_difference="Eq 17 gives 1752 N/m, 49 % above the printed 1174 N/m, and Eq 14 "
                          "alone (M p^2 = 1751 N/m) does not give it either; no combination "
                          "of the paper's equations and tables found gives 1174 (Eq 17 "

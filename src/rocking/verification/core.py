@@ -303,33 +303,56 @@ class VerificationTable:
     def to_rst(self, details: bool = True) -> str:
         """The same as :meth:`to_markdown` in reStructuredText: a ``list-table``, then, with
         ``details``, one definition per case (source, reference, known difference)."""
-        cols = ("case", "source", "what", "reference", "computed", "unit", "tolerance",
-                "pass")
+        cols = ("case", "source", "reference", "computed", "unit", "tolerance", "pass")
         lines = [".. list-table::", "   :header-rows: 1", "   :widths: auto", ""]
         lines.append("   * - " + "\n     - ".join(cols))
         for r in self.rows:
             c = r.case
-            cells = [f"``{c.name}``"] + [_rst(x) for x in (
-                short_source(c.source), c.what, _fmt(r.reference), _fmt(r.computed), c.unit,
+            name = f"`{c.name} <verify-{c.name}_>`_" if details else f"``{c.name}``"
+            cells = [name] + [_rst(x) for x in (
+                short_source(c.source), _fmt(r.reference), _fmt(r.computed),
+                c.unit if c.unit.strip() not in ("", "-") else "\u2014",
                 c.tolerance_text)] + [f"**{r.status}**" if r.status == "FAIL" else r.status]
             lines.append("   * - " + "\n     - ".join(cells))
-        if details:
-            lines.append("")
+        if details:  # one section per group, one subsection per case (the page's contents)
+            groups: dict[str, list] = {}
             for r in self.rows:
-                c = r.case
-                lines.append(f"``{c.name}`` ({c.group})")
-                body = [_rst(_sentence(c.what)), f"*Source*: {_rst(c.source)}",
-                        f"*Reference*: {_rst(c.how)}"]
-                if c.known_difference:
-                    bound = (f" (documented bound: {c.known_tolerance_text})"
-                             if c.known_tolerance is not None else "")
-                    body.append(f"*Known difference*: {_rst(c.known_difference)}{bound}")
-                if r.note and not r.passed:
-                    body.append(f"*Note*: {_rst(r.note)}")
-                for b in body:
-                    lines.append(f"   {b}")
-                    lines.append("")
+                groups.setdefault(r.case.group, []).append(r)
+            for group, rows in groups.items():
+                title = GROUP_TITLES.get(group, str(group).capitalize())
+                lines += ["", title, "-" * len(title)]
+                for r in rows:
+                    c = r.case
+                    head = f"``{c.name}``"
+                    u = "" if c.unit.strip() in ("", "-") else " " + _rst(c.unit)
+                    lines += ["", f".. _verify-{c.name}:", "", head, "~" * len(head), ""]
+                    body = [f"**{r.status}**. {_rst(_sentence(c.what))}",
+                            f"*Source*: {_rst(c.source)}", f"*Reference*: {_rst(c.how)}",
+                            f"*Reference value*: {_rst(_fmt(r.reference))}{u}; "
+                            f"*computed*: {_rst(_fmt(r.computed))}{u}; "
+                            f"*tolerance*: {_rst(c.tolerance_text)}"]
+                    if c.known_difference:
+                        bound = (f" (documented bound: {c.known_tolerance_text})"
+                                 if c.known_tolerance is not None else "")
+                        body.append(f"*Known difference*: {_rst(c.known_difference)}{bound}")
+                    if r.note and not r.passed:
+                        body.append(f"*Note*: {_rst(r.note)}")
+                    for b in body:
+                        lines += [b, ""]
         return "\n".join(lines).rstrip() + "\n"
+
+
+GROUP_TITLES = {
+    "classical": "Classical model: Housner's closed forms",
+    "pulses": "Pulse thresholds",
+    "similarity": "Similarity",
+    "paper": "Values printed in Peña et al. (2007)",
+    "cross-model": "Cross-model checks",
+    "buildings": "Buildings",
+    "isolation": "Isolation",
+    "shapes": "Shapes from meshes",
+}
+"""Section titles of the case groups on the verification page."""
 
 
 def _rst(text: str) -> str:
