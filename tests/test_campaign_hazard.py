@@ -452,3 +452,154 @@ def test_resuming_with_another_hazard_keeps_the_runs(store, tmp_path):
     # back to the first hazard, for the other tests of the module
     campaign.run(d / "s.toml", d / "store", progress=False, log=lambda m: None)
     assert campaign.Store(d / "store").manifest["hazard"] == old
+
+
+# ------------------------------------------------------------------ runs stopped at the moat
+
+MOAT = """
+[campaign]
+name = "moat"
+seed = 5
+model = "housner"
+duration = 5.0
+
+[[blocks]]
+alpha = 0.25
+p = 2.2
+mu = 0.95
+
+[motions]
+kind = "sine"
+frequency = [0.7, 1.0, 1.5, 2.2]
+amplitude = 1.0
+cycles = 3
+im = "pga"
+levels = {start = 0.8, stop = 8.0, num = 6, spacing = "log"}
+
+[[mitigation]]
+name = "none"
+
+[[mitigation]]
+name = "iso"
+model = "isolated"
+isolation_period = "2.5s"
+isolation_damping = "10%"
+clearance = "0.2m"
+"""
+
+
+@pytest.fixture(scope="module")
+def moat():
+    """A tiny isolated campaign (48 sine runs) whose 0.2 m moat stops some runs."""
+    import warnings
+
+    from rocking.campaign.plan import Campaign
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the isolated model's restitution remark
+        spec = parse_spec(MOAT)
+        c = Campaign(spec)
+        t = c.run_ids(np.arange(c.n_sims))
+    return t, manifest_for(spec)
+
+
+def test_runs_stopped_at_the_clearance_fail_in_a_risk_of_their_own(moat, tmp_path):
+    """Runs stopped at the isolator's clearance are no known survivors: the report gives
+    the risk of overturned-or-clearance-reached, which is risk() of a fit of that failure
+    made here (and compare_mitigations' with failure='auto'); the overturning row keeps no
+    "at most" bound and says how many runs it counted as survivors."""
+    from rocking.analysis import fragility
+    from rocking.analysis.hazard import risk
+    from rocking.analysis.mitigation import compare_mitigations
+    table, man = moat
+    iso = table[table["mitigation"] == "iso"]
+    stop = iso["clearance_exceeded"].to_numpy(bool) & ~iso["overturned"].to_numpy(bool)
+    assert 0 < stop.sum() < len(iso)  # the moat stops some runs, not all: can fail
+    assert not iso["overturned"].any()  # so the overturning-only risk has no fit
+    curve, src = read_hazard(power_law_csv(tmp_path / "h.csv", 0.01, 3.0, 12))
+    res = report(table, man, tmp_path / "r", n_boot=0, hazard=record(curve, src, 50.0))
+    rk = pd.read_csv(tmp_path / "r" / "risk.csv")
+    r_iso = rk[rk["mitigation"] == "iso"].set_index("fit")
+    # (1) the combined failure, fitted independently
+    failed = iso["overturned"].to_numpy(bool) | iso["clearance_exceeded"].to_numpy(bool)
+    f = fragility(iso["im"].to_numpy(float), failed, n_boot=0, im_name="pga",
+                  im_unit="m/s^2")
+    want = risk(f, curve, t_years=50.0)
+    c = r_iso.loc["overturned_or_clearance"]
+    assert c["label"] == "overturned or clearance reached"
+    assert c["annual_frequency"] == pytest.approx(want.annual_frequency, rel=1e-8)
+    assert c["probability"] == pytest.approx(want.probability_in(50.0), rel=1e-8)
+    assert c["annual_frequency"] == pytest.approx(cornell(f.median / G, f.beta), rel=1e-6)
+    by_im = table.drop(columns="pga").rename(columns={"im": "pga"})  # the level's PGA
+    cmp = compare_mitigations(by_im, im="pga", im_unit="m/s^2", hazard=curve, n_boot=0)
+    assert cmp.failure == "overturned_or_clearance"
+    row = cmp.table.set_index("mitigation").loc["iso"]
+    assert c["annual_frequency"] == pytest.approx(row["annual_frequency"], rel=1e-6)
+    fr = pd.read_csv(tmp_path / "r" / "fragility.csv")
+    fc = fr[(fr["mitigation"] == "iso") & (fr["fit"] == "overturned_or_clearance")].iloc[0]
+    assert fc["n_exceed"] == failed.sum() and fc["median"] == pytest.approx(f.median,
+                                                                            rel=1e-5)
+    # (2) the overturning-only row: no number, no bound, the warning
+    o = r_iso.loc["overturning"]
+    assert math.isnan(o["annual_frequency"]) and math.isnan(o["annual_frequency_upper_bound"])
+    warn = f"{int(stop.sum())} of {len(iso)} runs stopped at the isolator's clearance"
+    assert warn in o["note"] and "not conservative" in o["note"] and "at most" not in \
+        o["note"]
+    fo = fr[(fr["mitigation"] == "iso") & (fr["fit"] == "overturning")].iloc[0]
+    assert warn in fo["note"]
+    lines = summary_lines(res)
+    iso_lines = [x for x in lines if x.startswith("iso (isolated) / ")]
+    ov_line = next(x for x in iso_lines if "no overturning fit (" in x)
+    assert warn in ov_line and "at most" not in ov_line
+    assert any(f"annual frequency {c['annual_frequency']:.3g} per year, 50-year probability "
+               f"{c['probability']:.3g}" in x and "overturned or clearance reached" in x
+               for x in iso_lines)
+    md = (tmp_path / "r" / "report.md").read_text()
+    assert "### iso (isolated): overturned or clearance reached" in md
+    # p_overturn.csv: the stopped runs per level
+    po = pd.read_csv(tmp_path / "r" / "p_overturn.csv")
+    got = po[po["mitigation"] == "iso"].set_index("level")["n_clearance_exceeded"]
+    pd.testing.assert_series_equal(
+        got.sort_index(), pd.Series(stop, index=iso["level"]).groupby(level=0).sum(),
+        check_names=False, check_dtype=False)
+    # a group without runs at a clearance is as in a report without the isolated runs
+    alone = report(table[table["mitigation"] == "none"].reset_index(drop=True), man,
+                   tmp_path / "r0", n_boot=0, hazard=record(curve, src, 50.0))
+    assert "overturned_or_clearance" not in set(alone["risk"]["fit"])
+    full = (tmp_path / "r" / "risk.csv").read_text().splitlines()
+    lone = (tmp_path / "r0" / "risk.csv").read_text().splitlines()
+    assert [x for x in full if x.startswith("housner,none,")] == lone[1:] and \
+        full[0] == lone[0] and len(lone) > 1
+
+
+def test_a_fitted_overturning_risk_with_stopped_runs_carries_the_warning(table, tmp_path):
+    """An isolated group that overturns (a fit) and whose moat stopped some survivors: the
+    overturning number stands, with the warning on its row and line; the combined risk is
+    at least as large (more failures at every IM) and is risk() of its own fit."""
+    from rocking.analysis import fragility
+    from rocking.analysis.hazard import risk
+    t = table.copy()
+    grp = ((t["mitigation"] == "isolated-2.5s") & (t["block"] == 0)).to_numpy()
+    rng = np.random.default_rng(7)
+    stop = grp & ~t["overturned"].to_numpy(bool) & (t["im"].to_numpy() > 3.0) & (
+        rng.random(len(t)) < 0.5)
+    t["clearance_exceeded"] = stop
+    assert stop.sum() > 5
+    curve, src = read_hazard(power_law_csv(tmp_path / "h.csv", 0.01, 3.0, 12))
+    res = report(t, manifest(record(curve, src, 50.0)), tmp_path / "r", n_boot=0)
+    rk = res["risk"]
+    g = rk[(rk["mitigation"] == "isolated-2.5s") & (rk["block"] == 0)].set_index("fit")
+    o, c = g.loc["overturning"], g.loc["overturned_or_clearance"]
+    assert np.isfinite(o["annual_frequency"])
+    assert f"{int(stop.sum())} of " in o["note"] and "not conservative" in o["note"]
+    assert c["annual_frequency"] > o["annual_frequency"]
+    x, y = t.loc[grp, "im"].to_numpy(), (t["overturned"].to_numpy(bool) | stop)[grp]
+    f = fragility(x, y, n_boot=0, im_name="pga", im_unit="m/s^2")
+    assert c["annual_frequency"] == pytest.approx(risk(f, curve).annual_frequency,
+                                                  rel=1e-8)
+    line = next(x for x in summary_lines(res) if x.startswith(
+        "isolated-2.5s (isolated) / block 0: annual frequency of overturning"))
+    assert "stopped at the isolator's clearance" in line
+    # the groups without stopped runs: no combined row, no warning
+    other = rk[~((rk["mitigation"] == "isolated-2.5s") & (rk["block"] == 0))]
+    assert "overturned_or_clearance" not in set(other["fit"])
+    assert not other["note"].fillna("").str.contains("clearance").any()

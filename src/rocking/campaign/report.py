@@ -99,6 +99,16 @@ RISK_COLUMNS = ("fit", "state", "label", "median", "beta", "im_unit", "annual_fr
                 "probability_upper_bound", "hazard", "approximate", "note")
 """The columns of ``risk.csv`` after the group's (model, mitigation, block, floor)."""
 
+CLEARANCE_FIT = "overturned_or_clearance"
+"""The ``fit`` of the combined failure of a group whose runs were stopped at the isolator's
+clearance: overturned, or the clearance reached (``clearance_exceeded``), as
+:func:`rocking.analysis.mitigation.compare_mitigations` with ``failure="auto"``."""
+CLEARANCE_LABEL = "overturned or clearance reached"
+"""The ``label`` of the :data:`CLEARANCE_FIT` rows."""
+STOPPED = "stopped at the isolator's clearance"
+"""The words of the warning on a group's overturning (and damage-state) rows when some of
+its runs were stopped at the clearance and count as survivors."""
+
 N_BOOT = 200
 """Bootstrap draws of the bands (asymptotic normal: cheap)."""
 DPI = 110
@@ -212,8 +222,11 @@ def _g(x, digits: int = 3) -> str:
 
 # --------------------------------------------------------------------------- tables
 
-def _p_overturn(g: pd.DataFrame, im_col: str, n_states: int) -> pd.DataFrame:
-    """The per-level table of one (model, block) group (all rows, failed runs counted)."""
+def _p_overturn(g: pd.DataFrame, im_col: str, n_states: int,
+                clearance: bool = False) -> pd.DataFrame:
+    """The per-level table of one (model, block) group (all rows, failed runs counted);
+    ``clearance``: with ``n_clearance_exceeded``, the runs of the level stopped at the
+    isolator's clearance (counted among the survivors)."""
     rows = []
     for lv, d in g.groupby("level", sort=True):
         ok = d[d["status"] == 0]
@@ -231,15 +244,37 @@ def _p_overturn(g: pd.DataFrame, im_col: str, n_states: int) -> pd.DataFrame:
                "n_excluded": int(len(d) - n)}
         if "settled" in ok.columns:
             row["n_unsettled"] = int((~ok["settled"]).sum())
+        if clearance:
+            row["n_clearance_exceeded"] = int(_stopped(ok).sum())
         for s in range(1, n_states + 1):
             row[f"p_ds_ge_{s}"] = float((ok["damage_state"] >= s).mean()) if n else math.nan
         rows.append(row)
     return pd.DataFrame(rows)
 
 
+def _stopped(d: pd.DataFrame) -> np.ndarray:
+    """The runs of ``d`` stopped at the isolator's clearance without having overturned
+    (``clearance_exceeded``; False without the column): their overturning is not known."""
+    if "clearance_exceeded" not in d.columns:
+        return np.zeros(len(d), dtype=bool)
+    return (d["clearance_exceeded"] == 1).to_numpy(bool) & ~d["overturned"].to_numpy(bool)
+
+
+def _stopped_note(n: int, total: int, what: str = "not overturned") -> str:
+    """The warning of a fit that counts ``n`` runs stopped at the clearance as survivors."""
+    return (f"{n} of {total} runs {STOPPED} (clearance_exceeded) count as {what}: whether "
+            f"they would have overturned is not known, so this is not conservative (the "
+            f"{CLEARANCE_FIT} rows count them as failures)")
+
+
 def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed):
     """Overturning fit and damage-state curves of one group: ``(rows, fit, curves,
-    notes)``; a fit that cannot be made leaves a row with a note."""
+    notes, clear)``; a fit that cannot be made leaves a row with a note. A group with runs
+    stopped at the isolator's clearance also gets the fit of :data:`CLEARANCE_FIT`
+    (overturned or clearance reached: those runs failed; ``clear`` is that fit, or None),
+    and its overturning and damage-state rows say how many runs count as survivors though
+    stopped (:func:`_stopped_note`). ``clear`` is ``False`` for a group without such
+    runs (its rows as before)."""
     n_states = len(labels)
     base = {"n": len(ok)}
     rows, notes = [], []
@@ -251,6 +286,8 @@ def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed)
                      "fits")
     x, ov = x[good], ok["overturned"].to_numpy(bool)[good]
     ds = ok["damage_state"].to_numpy(int)[good]
+    stop = _stopped(ok)[good]
+    n_stop = int(stop.sum())
     base["n"] = int(x.size)
 
     def attempt(fn):
@@ -277,6 +314,27 @@ def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed)
             "standard errors not finite (nearly separated data)"
         rows.append({**row, "median": fit.median, "median_se": fit.median_se,
                      "beta": fit.beta, "beta_se": fit.beta_se, "note": note})
+    clear = False
+    if n_stop:  # runs stopped at the clearance: not known survivors
+        rows[-1]["note"] = "; ".join(filter(None, [rows[-1]["note"],
+                                                   _stopped_note(n_stop, x.size)]))
+        failed = ov | stop
+        clear, why = attempt(lambda: fragility(x, failed, n_boot=n_boot, seed=seed,
+                                               label=CLEARANCE_LABEL, **units))
+        crow = {"fit": CLEARANCE_FIT, "state": -1, "label": CLEARANCE_LABEL, **base,
+                "n_exceed": int(failed.sum())}
+        what = (f"failures: the runs that overturned ({int(ov.sum())}) or were {STOPPED} "
+                f"({n_stop}), as rocking.analysis.mitigation's failure="
+                f"'overturned_or_clearance'")
+        if clear is None:
+            rows.append({**crow, "median": math.nan, "median_se": math.nan,
+                         "beta": math.nan, "beta_se": math.nan,
+                         "note": f"no {CLEARANCE_LABEL} fit: {why}; {what}"})
+        else:
+            se = "" if math.isfinite(clear.median_se) and math.isfinite(clear.beta_se) \
+                else "standard errors not finite (nearly separated data); "
+            rows.append({**crow, "median": clear.median, "median_se": clear.median_se,
+                         "beta": clear.beta, "beta_se": clear.beta_se, "note": se + what})
     curves, why = attempt(lambda: fragility_curves(x, ds, n_boot=n_boot, seed=seed, **units))
     if curves is None:
         rows.append({"fit": "damage_states", "state": -1, "label": "all states", **base,
@@ -288,11 +346,14 @@ def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed)
             rows.append({"fit": "damage_states", "state": s, "label": labels[s - 1], **base,
                          "n_exceed": int((ds >= s).sum()), "median": f.median,
                          "median_se": f.median_se, "beta": f.beta, "beta_se": f.beta_se,
-                         "note": "common beta (ordered probit)"})
+                         "note": "common beta (ordered probit)" + (
+                             "; " + _stopped_note(n_stop, x.size, "survivors with the "
+                                                  "angle they had reached")
+                             if n_stop else "")})
         if len(curves.fits) < n_states:
             notes.append(f"damage states above DS{len(curves.fits)} never reached: no "
                          "curve for them")
-    return rows, fit, curves, notes
+    return rows, fit, curves, notes, clear
 
 
 def _pelicun(curves, im: dict, ident: str):
@@ -355,23 +416,35 @@ def _risk_row(f, curve: HazardCurve, t: float) -> dict:
             "tail_share": r.tail_share, "probability": r.probability_in(t), "note": note}
 
 
-def _bounds(ok: pd.DataFrame, im: dict, curve: HazardCurve, t: float) -> dict:
+def _bounds(ok: pd.DataFrame, im: dict, curve: HazardCurve, t: float,
+            combined: bool = False) -> dict:
     """A group without an overturning fit: the rate of the IM bounds that the outcomes
     give (:func:`rocking.analysis.fragility.fit_or_bounds`), as the annual frequency of a
-    step fragility there, and a note; never a fitted number."""
+    step fragility there, and a note; never a fitted number. ``combined``: the failure is
+    :data:`CLEARANCE_FIT` (overturned, or stopped at the isolator's clearance). Without
+    it, runs stopped at the clearance are survivors of unknown fate: "no run overturned up
+    to IM" is then no bound if one of them ran at or below that IM (the upper bound is
+    left out and the note says why; the combined row has the bound)."""
     nan = math.nan
     out = {"annual_frequency_lower_bound": nan, "annual_frequency_upper_bound": nan,
            "probability_lower_bound": nan, "probability_upper_bound": nan}
     x = ok[im["column"]].to_numpy(float)
     good = np.isfinite(x) & (x > 0)
+    stop = _stopped(ok)[good]
     x, ov = x[good], ok["overturned"].to_numpy(bool)[good]
+    if combined:
+        ov = ov | stop
     unit = _unit_text(im["unit"])
+    fit_name, verb = ((f"{CLEARANCE_LABEL} fit", "overturned or reached the clearance")
+                      if combined else ("overturning fit", "overturned"))
+    warn = "" if combined or not stop.any() else \
+        "; " + _stopped_note(int(stop.sum()), x.size)
     if x.size == 0:
         return {**out, "note": "no fit, no run with a valid IM: no number"}
     try:
         _, lo, hi, why = fit_or_bounds(x, ov, n_boot=0)
     except _FIT_ERRORS as e:
-        return {**out, "note": f"no fit ({_line(e)}): no number"}
+        return {**out, "note": f"no fit ({_line(e)}): no number{warn}"}
     def rate(v):
         c = float(site_hazard.to_im_unit(v, curve, im["unit"]))
         beyond = not curve.im[0] <= c <= curve.im[-1]
@@ -380,34 +453,38 @@ def _bounds(ok: pd.DataFrame, im: dict, curve: HazardCurve, t: float) -> dict:
 
     if why == "separated" and lo >= hi:  # mixed outcomes at one IM, none below, all above
         lam, beyond = rate(hi)
-        return {**out, "note": f"no overturning fit (overturning from {_g(hi)}{unit} on, "
+        return {**out, "note": f"no {fit_name} ({verb} from {_g(hi)}{unit} on, "
                                f"none below; survivors there too): no fitted number; the "
                                f"rate of that IM is {_g(lam)} per year{beyond} (the annual "
-                               "frequency if the fragility were a step there, not a bound)"}
+                               f"frequency if the fragility were a step there, not a "
+                               f"bound){warn}"}
     if why not in ("none failed", "all failed", "separated"):
-        return {**out, "note": "no overturning fit (the outcomes give no bound of the "
-                               "median): no number"}
+        return {**out, "note": f"no {fit_name} (the outcomes give no bound of the "
+                               f"median): no number{warn}"}
     parts = []
 
-    if math.isfinite(lo):  # no overturning up to lo: a step there has rate lambda(lo)
+    if math.isfinite(lo) and warn and (x[stop] <= lo).any():  # unknown fates below lo
+        k = int((x[stop] <= lo).sum())
+        parts.append(f"no bound: {k} runs up to {_g(lo)}{unit} were {STOPPED}")
+    elif math.isfinite(lo):  # no overturning up to lo: a step there has rate lambda(lo)
         lam, beyond = rate(lo)
         out["annual_frequency_upper_bound"] = lam
         out["probability_upper_bound"] = probability_in(t, lam)
-        parts.append(f"no run overturned up to {_g(lo)}{unit}: at most {_g(lam)} per year "
+        parts.append(f"no run {verb} up to {_g(lo)}{unit}: at most {_g(lam)} per year "
                      f"if the fragility were a step there{beyond}")
     if math.isfinite(hi):  # every run overturned from hi: a step there has rate lambda(hi)
         lam, beyond = rate(hi)
         out["annual_frequency_lower_bound"] = lam
         out["probability_lower_bound"] = probability_in(t, lam)
-        parts.append(f"every run overturned from {_g(hi)}{unit}: at least {_g(lam)} per "
+        parts.append(f"every run {verb} from {_g(hi)}{unit}: at least {_g(lam)} per "
                      f"year if the fragility were a step there{beyond}")
-    what = {"none failed": "no run overturned", "all failed": "every run overturned",
+    what = {"none failed": f"no run {verb}", "all failed": f"every run {verb}",
             "separated": "outcomes separated by the IM",
-            "decreasing": "overturning only below the survivals"}.get(why, why)
-    note = f"no overturning fit ({what}): no fitted number"
+            "decreasing": f"{verb} only below the survivals"}.get(why, why)
+    note = f"no {fit_name} ({what}): no fitted number"
     if parts:
         note += "; " + "; ".join(parts)
-    return {**out, "note": note}
+    return {**out, "note": note + warn}
 
 
 def _line(e) -> str:
@@ -415,25 +492,47 @@ def _line(e) -> str:
 
 
 def _risk_rows(key: dict, ok: pd.DataFrame, im: dict, fit, curves, labels: list[str],
-               site: dict) -> list[dict]:
-    """The rows of ``risk.csv`` of one group: overturning (a fit, or bounds and a note)
-    and every damage state with a curve."""
+               site: dict, clear=False) -> list[dict]:
+    """The rows of ``risk.csv`` of one group: overturning (a fit, or bounds and a note),
+    for a group with runs stopped at the isolator's clearance (``clear`` not False: the
+    :data:`CLEARANCE_FIT` fit or None) the risk of overturned or clearance reached (a fit,
+    or bounds) right after it, and every damage state with a curve. The overturning and
+    damage-state rows of such a group say that those runs count as survivors."""
     curve, t = site["curve"], site["t_years"]
     nan = math.nan
     base = {**key, "im_unit": im["unit"], "t_years": t, "hazard": curve.label,
             "approximate": curve.approximate,
             "annual_frequency_lower_bound": nan, "annual_frequency_upper_bound": nan,
             "probability_lower_bound": nan, "probability_upper_bound": nan}
+    x = ok[im["column"]].to_numpy(float)
+    good = np.isfinite(x) & (x > 0)
+    n_stop, n_good = int(_stopped(ok)[good].sum()), int(good.sum())
+
+    def warned(r: dict, what: str = "not overturned") -> dict:
+        if n_stop:
+            r["note"] = "; ".join(filter(None, [r["note"],
+                                                _stopped_note(n_stop, n_good, what)]))
+        return r
+
     row = {**base, "fit": "overturning", "state": len(labels), "label": labels[-1]}
     if fit is not None:
-        rows = [{**row, **_risk_row(fit, curve, t)}]
-    else:
+        rows = [warned({**row, **_risk_row(fit, curve, t)})]
+    else:  # _bounds says it
         rows = [{**row, "median": nan, "beta": nan, "annual_frequency": nan,
                  "tail_share": nan, "probability": nan, **_bounds(ok, im, curve, t)}]
+    if clear is not False:
+        row = {**base, "fit": CLEARANCE_FIT, "state": -1, "label": CLEARANCE_LABEL}
+        if clear is not None:
+            rows.append({**row, **_risk_row(clear, curve, t)})
+        else:
+            rows.append({**row, "median": nan, "beta": nan, "annual_frequency": nan,
+                         "tail_share": nan, "probability": nan,
+                         **_bounds(ok, im, curve, t, combined=True)})
     if curves is not None:
         for s, f in enumerate(curves.fits, start=1):
-            rows.append({**base, "fit": "damage_states", "state": s, "label": labels[s - 1],
-                         **_risk_row(f, curve, t)})
+            rows.append(warned({**base, "fit": "damage_states", "state": s,
+                                "label": labels[s - 1], **_risk_row(f, curve, t)},
+                               "survivors with the angle they had reached"))
     return rows
 
 
@@ -481,6 +580,9 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
                 b = fit.band(x)
                 ax.fill_between(x, b["lower"], b["upper"], color=c, alpha=0.18, lw=0)
             lab += f"\nmedian {_g(fit.median)}{' ' + unit if unit else ''}, beta {_g(fit.beta, 2)}"
+        if "n_clearance_exceeded" in pt and pt["n_clearance_exceeded"].sum():
+            lab += (f"\n{int(pt['n_clearance_exceeded'].sum())} runs stopped at the "
+                    "clearance\n(counted as not overturned)")
         ax.errorbar(d["im"], d["p_overturn"], yerr=np.clip(yerr, 0, None), fmt="o", ms=4,
                     mfc="none", color=c, capsize=2, lw=0.8, label=lab)
     style_axes(ax, im_label(im["name"], im["unit"]), "P(overturn)")
@@ -588,6 +690,18 @@ def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
                  if math.isfinite(r["tail_share"]) else "–", r["note"] or ""]
                 for _, r in f.iterrows()]
         out += _md_table(["block", "annual frequency (/yr)", ty, "tails", "note"], rows)
+    for _, f in rk[rk["fit"] == CLEARANCE_FIT].groupby(by, sort=False):
+        out += [f"### {_run_name(f.iloc[0].to_dict())}: {CLEARANCE_LABEL}", "",
+                "The runs stopped at the isolator's clearance (clearance_exceeded) are no "
+                "known survivors: here they count as failures with those that overturned "
+                "(the fit of that combined failure; rocking.analysis.mitigation, "
+                "failure='overturned_or_clearance'), the conservative counterpart of the "
+                "overturning rows above, which count them as survivors.", ""]
+        rows = [[_group_name(r["block_name"], r.to_dict()), _g(r["annual_frequency"]),
+                 _g(r["probability"]), _g(100 * r["tail_share"], 2) + " %"
+                 if math.isfinite(r["tail_share"]) else "–", r["note"] or ""]
+                for _, r in f.iterrows()]
+        out += _md_table(["block", "annual frequency (/yr)", ty, "tails", "note"], rows)
     ds = rk[rk["fit"] == "damage_states"]
     if len(ds):
         out += ["### Damage states", "",
@@ -624,6 +738,16 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
                 for r in f.itertuples()]
         out += _md_table(["block", f"median{unit}", "beta", "runs", "overturned", "note"],
                          rows)
+    for _, f in fr[fr["fit"] == CLEARANCE_FIT].groupby(by, sort=False):
+        out += [f"### {_run_name(f.iloc[0].to_dict())}: {CLEARANCE_LABEL}", "",
+                "Runs stopped at the isolator's clearance (clearance_exceeded) count as "
+                "failures with those that overturned: whether they would have overturned "
+                "is not known (rocking.analysis.mitigation, failure='overturned_or_"
+                "clearance').", ""]
+        rows = [[_group_name(r.block_name, r._asdict()), _pm(r.median, r.median_se, 3),
+                 _pm(r.beta, r.beta_se, 2), str(r.n), str(r.n_exceed), r.note or ""]
+                for r in f.itertuples()]
+        out += _md_table(["block", f"median{unit}", "beta", "runs", "failed", "note"], rows)
     if risk is not None:
         out += _risk_md(risk, site)
     out += _by_mitigation(po, unit)
@@ -636,12 +760,19 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
     for _, d in po.groupby(keys, sort=False):
         out += [f"### {_run_name(d.iloc[0].to_dict())}, "
                 f"{_group_name(d['block_name'].iloc[0], d.iloc[0].to_dict())}", ""]
+        stops = "n_clearance_exceeded" in d and bool(d["n_clearance_exceeded"].sum())
         rows = [[str(r["level"]), _g(r["im"]), str(r["n"]), str(r["n_overturned"]),
+                 *([str(r["n_clearance_exceeded"])] if stops else []),
                  _g(r["p_overturn"]), f"{_g(r['ci_lower'], 2)}–{_g(r['ci_upper'], 2)}",
                  _g(r["median_ratio_survivors"]),
                  *(_g(r[f"p_ds_ge_{s}"], 2) for s in range(1, n_states))]
                 for _, r in d.iterrows()]
-        out += _md_table(["level", f"IM{unit}", "runs", "overturned", "P", "95% CI",
+        if stops:
+            out += [f"{int(d['n_clearance_exceeded'].sum())} runs stopped at the isolator's "
+                    "clearance (column stopped) count as not overturned: P and its interval "
+                    "are not conservative.", ""]
+        out += _md_table(["level", f"IM{unit}", "runs", "overturned",
+                          *(["stopped"] if stops else []), "P", "95% CI",
                           "ratio", *(f"P(DS>={s})" for s in range(1, n_states))], rows)
     if images:
         out += ["## Figures", ""] + [f"![P(overturn), {m}]({p.name})" for m, p in images]
@@ -659,13 +790,19 @@ def _by_mitigation(po: pd.DataFrame, unit: str) -> list[str]:
     out = ["## P(overturn) by mitigation", "",
            "Overturned fraction of each level (rows) for each mitigation (columns), runs "
            "that did not fail numerically; every mitigation ran the same realizations "
-           "(common random numbers). The same runs as the per-level tables below.", ""]
+           "(common random numbers). The same runs as the per-level tables below." + (
+               " \"k stopped\": k runs stopped at the isolator's clearance, counted as not "
+               "overturned (their overturning is not known)."
+               if "n_clearance_exceeded" in po and po["n_clearance_exceeded"].sum() else ""),
+           ""]
     where = [c for c in ("floor", "height_ratio") if c in po.columns]
     names = list(dict.fromkeys(po["mitigation"]))
     for _, d in po.groupby(["block", *where[:1]], sort=False):
         rows = []
         for lv, g in d.groupby("level", sort=True):
-            p = {r["mitigation"]: f"{_g(r['p_overturn'])} ({r['n_overturned']}/{r['n']})"
+            p = {r["mitigation"]: f"{_g(r['p_overturn'])} ({r['n_overturned']}/{r['n']}"
+                 + (f"; {r['n_clearance_exceeded']} stopped" if r.get(
+                     "n_clearance_exceeded", 0) else "") + ")"
                  for _, r in g.iterrows()}
             rows.append([str(lv), _g(g["im"].median()), *(p.get(m, "–") for m in names)])
         first = d.iloc[0].to_dict()
@@ -735,6 +872,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         notes.append(f"{n_excl} of {len(t)} runs failed numerically (status != 0) and are "
                      "excluded")
     po_parts, fr_rows, pel_rows, by_model, risk_rows = [], [], [], {}, []
+    any_stopped = bool(_stopped(t[~failed]).any())  # p_overturn.csv: n_clearance_exceeded
     floor = [c for c in ("floor", "height_ratio") if c in t.columns]
     mit = ["mitigation"] if "mitigation" in t.columns else []
     for _, g in t.groupby(["model", *mit, "block", *floor[:1]], sort=False):
@@ -744,13 +882,13 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
                **{c: g[c].iloc[0].item() for c in floor}}
         name = _group_name(key["block_name"], key)
         model = _run_name(key)  # with its mitigation, in the notes and the plots
-        pt = _p_overturn(g, im["column"], n_states)
+        pt = _p_overturn(g, im["column"], n_states, clearance=any_stopped)
         po_parts.append(pt.assign(**key)[[*key, *pt.columns]])
         ok = g[g["status"] == 0]
-        rows, fit, curves, gnotes = _fit_group(ok, im, labels, n_boot, seed)
+        rows, fit, curves, gnotes, clear = _fit_group(ok, im, labels, n_boot, seed)
         fr_rows += [{**key, **r} for r in rows]
         if site is not None:
-            risk_rows += _risk_rows(key, ok, im, fit, curves, labels, site)
+            risk_rows += _risk_rows(key, ok, im, fit, curves, labels, site, clear)
         notes += [f"{model}, {name}: {n}" for n in gnotes]
         notes += [f"{model}, {name}: {r['note']}" for r in rows
                   if r["note"].startswith("no ")]
@@ -823,10 +961,33 @@ def summary_lines(result: dict) -> list[str]:
         if math.isfinite(r.median):
             lines.append(f"{head} overturning median {_g(r.median)}{unit} "
                          f"(± {_g(r.median_se, 2)}), beta {_g(r.beta, 2)} "
-                         f"(± {_g(r.beta_se, 2)}), {r.n} runs")
+                         f"(± {_g(r.beta_se, 2)}), {r.n} runs{_stop_part(r.note)}")
         else:
             lines.append(f"{head} {r.note}")
+        c = fr[(fr["fit"] == CLEARANCE_FIT) & _same_group(fr, r._asdict())]
+        for q in c.itertuples():
+            if math.isfinite(q.median):
+                lines.append(f"{head} {CLEARANCE_LABEL}: median {_g(q.median)}{unit} "
+                             f"(± {_g(q.median_se, 2)}), beta {_g(q.beta, 2)} "
+                             f"(± {_g(q.beta_se, 2)}), {q.n_exceed} of {q.n} runs failed")
+            else:
+                lines.append(f"{head} {q.note}")
     return lines + risk_lines(result)
+
+
+def _stop_part(note) -> str:
+    """``"; <the warning>"`` if ``note`` holds :func:`_stopped_note`'s, else ``""``."""
+    parts = [p for p in str(note or "").split("; ") if STOPPED in p]
+    return f"; {parts[0]}" if parts else ""
+
+
+def _same_group(df: pd.DataFrame, key: dict) -> pd.Series:
+    """The rows of ``df`` of the group (model, mitigation, block, floor) of ``key``."""
+    m = pd.Series(True, index=df.index)
+    for c in ("model", "mitigation", "block", "floor", "height_ratio"):
+        if c in df.columns and c in key:
+            m &= df[c] == key[c]
+    return m
 
 
 def risk_lines(result: dict) -> list[str]:
@@ -849,9 +1010,22 @@ def risk_lines(result: dict) -> list[str]:
                         else "") + ")" if r["tail_share"] >= 0.005 else "")
             lines.append(f"{head} annual frequency of overturning "
                          f"{_g(r['annual_frequency'])} per year, {_g(t, 6)}-year probability "
-                         f"{_g(r['probability'])}{tails}{tag}")
+                         f"{_g(r['probability'])}{tails}{_stop_part(r['note'])}{tag}")
         else:
             lines.append(f"{head} {r['note']}{tag}")
+        for _, q in rk[(rk["fit"] == CLEARANCE_FIT) & _same_group(rk, d)].iterrows():
+            if math.isfinite(q["annual_frequency"]):
+                tails = (f" ({_g(100 * q['tail_share'], 2)}% from the extrapolated tails"
+                         + (": it rests on that extrapolation"
+                            if q["tail_share"] > TAIL_NOTE else "") + ")"
+                         if q["tail_share"] >= 0.005 else "")
+                lines.append(f"{head} {CLEARANCE_LABEL} (runs {STOPPED} count as "
+                             f"failures): annual frequency {_g(q['annual_frequency'])} per "
+                             f"year, {_g(t, 6)}-year probability {_g(q['probability'])}"
+                             f"{tails}{tag}")
+            else:
+                lines.append(f"{head} {CLEARANCE_LABEL} (runs {STOPPED} count as "
+                             f"failures): {q['note']}{tag}")
     return lines
 
 
