@@ -6,7 +6,9 @@ from a file (an OpenQuake engine export or a CSV of IM and annual rate or return
 or from a code value (EN 1998-1 2.1(4) note: the reference PGA at 475 years and a slope k;
 an approximation, labelled so wherever it appears). ``rocking campaign report`` then gives,
 per group (model or mitigation, block, floor), the annual frequency of overturning and the
-probability over ``t_years`` (:func:`rocking.analysis.risk`).
+probability over ``t_years`` (:func:`rocking.analysis.risk`); for a group with runs stopped
+at an isolator's clearance also of "overturned or clearance reached" (those runs are no
+known survivors; :mod:`rocking.campaign.report`).
 
 **The curve's points are kept in the manifest** (:func:`record`), with the file's sha256 and
 the site chosen, not re-read from the file at report time: a report must not change

@@ -21,6 +21,8 @@ writes, in one folder:
   (:func:`rocking.analysis.risk`); a group without an overturning fit gets the rates of its
   IM bounds (a step fragility there) and a note, never a fitted number; an approximate
   (code-value) hazard is named so in its ``hazard`` and ``approximate`` columns;
+  a group with runs stopped at an isolator's clearance also gets a row ``fit =
+  overturned_or_clearance`` (below);
 * ``report.md``: a short markdown summary linking the above.
 
 A table with a ``floor`` column (a campaign with ``[building]``) is grouped by (model,
@@ -52,6 +54,22 @@ redrawn because a draw lay beyond +-alpha (``theta0_truncated``) are counted the
 and so are the flags among the models' row outputs (``clearance_exceeded``: the isolated
 base reached its clearance and the run stopped there, a survivor with the angle it had
 reached; ``anchor_broken_plus``/``_minus``), among the runs of the models that report them.
+
+**Runs stopped at the clearance are no known survivors.** Whether a run that the isolated
+model stopped when its base reached the clearance (the moat) would have overturned is not
+known; counted as survivors they make P(overturn), its fit and its risk too small. A group
+with such runs (``clearance_exceeded`` and not overturned) therefore also gets the fit of
+the combined failure "overturned or clearance reached" (those runs failed, as
+:func:`rocking.analysis.mitigation.compare_mitigations` with ``failure="auto"``): a row
+``fit = overturned_or_clearance`` (``state`` -1, not a damage state) in ``fragility.csv``
+and, with a hazard, in ``risk.csv`` (its annual frequency and probability, or the rates of
+its IM bounds), a table of its own in ``report.md`` and a line in the terminal. Its
+overturning and damage-state rows keep their numbers with a note saying how many runs
+stopped at the clearance they count as survivors (not conservative); the overturning
+row's "no run overturned up to IM: at most ... per year" bound is left out when runs
+stopped at or below that IM (it is no bound then; the combined row's is).
+``p_overturn.csv`` then ends with ``n_clearance_exceeded``, those runs per level (a column
+only when some run stopped at a clearance: other campaigns' files are as before).
 """
 
 from __future__ import annotations
@@ -244,10 +262,10 @@ def _p_overturn(g: pd.DataFrame, im_col: str, n_states: int,
                "n_excluded": int(len(d) - n)}
         if "settled" in ok.columns:
             row["n_unsettled"] = int((~ok["settled"]).sum())
-        if clearance:
-            row["n_clearance_exceeded"] = int(_stopped(ok).sum())
         for s in range(1, n_states + 1):
             row[f"p_ds_ge_{s}"] = float((ok["damage_state"] >= s).mean()) if n else math.nan
+        if clearance:  # last: the columns before it as without stopped runs
+            row["n_clearance_exceeded"] = int(_stopped(ok).sum())
         rows.append(row)
     return pd.DataFrame(rows)
 
@@ -854,7 +872,9 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     ``"hazard"`` (``{"label", "approximate", "t_years", "im_name", "unit", "source",
     "given", "replaces"}``): per group the annual frequency of overturning and of each
     damage state (:func:`rocking.analysis.risk`), its share from the curve's extrapolated
-    tails and the probability in ``t_years`` (default: the record's, else 50).
+    tails and the probability in ``t_years`` (default: the record's, else 50); for a
+    group with runs stopped at an isolator's clearance also of :data:`CLEARANCE_FIT`
+    (overturned or clearance reached; see the module docstring).
     Raises :class:`~rocking.ParameterError` for an empty table or a missing column, or a
     hazard of another IM than the table's.
     """
@@ -950,7 +970,9 @@ def _hazard_info(site: dict) -> dict:
 
 def summary_lines(result: dict) -> list[str]:
     """A few lines for the terminal: per model and block the overturning median and beta
-    (with units), or why there is no fit."""
+    (with units), or why there is no fit; a group with runs stopped at an isolator's
+    clearance says how many it counted as survivors, and has a line of
+    overturned-or-clearance-reached after it."""
     im = result.get("im", {"name": "IM", "unit": ""})
     unit = f" {im['unit']}" if im.get("unit") else ""
     lines = [f"{result.get('n_runs', '?')} runs ({result.get('n_excluded', 0)} failed, "
@@ -993,7 +1015,9 @@ def _same_group(df: pd.DataFrame, key: dict) -> pd.Series:
 def risk_lines(result: dict) -> list[str]:
     """The terminal's lines of the risk (none without a hazard): the hazard, then per
     group the annual frequency of overturning and its probability over the service life,
-    or why there is no number; an approximate hazard says so on every line."""
+    or why there is no number (with runs stopped at an isolator's clearance: how many it
+    counted as survivors, then the line of overturned or clearance reached); an
+    approximate hazard says so on every line."""
     rk, hz = result.get("risk"), result.get("hazard")
     if rk is None or hz is None:
         return []
@@ -1030,4 +1054,4 @@ def risk_lines(result: dict) -> list[str]:
 
 
 __all__ = ["report", "summary_lines", "risk_lines", "REQUIRED_COLUMNS", "PELICUN_DEMAND",
-           "RISK_COLUMNS"]
+           "RISK_COLUMNS", "CLEARANCE_FIT", "CLEARANCE_LABEL"]
