@@ -70,7 +70,19 @@ GRANITE_DENSITY = 2650.0
 
 def polygon_properties(vertices) -> dict:
     """Area (m^2), centroid (m) and polar second moment about the centroid per unit area
-    (m^2, ``J_c / A``) of a simple polygon given counter-clockwise (Green's theorem)."""
+    (m^2, ``J_c / A``) of a simple polygon given counter-clockwise (Green's theorem).
+
+    Examples
+    --------
+    A 2 m x 1 m rectangle: ``J_c / A = (w^2 + h^2) / 12``.
+
+    >>> from rocking.blocks import polygon_properties
+    >>> props = polygon_properties([(0, 0), (2, 0), (2, 1), (0, 1)])
+    >>> props["area"], props["centroid"]
+    (2.0, (1.0, 0.5))
+    >>> round(props["j_c"], 4), round((2**2 + 1**2) / 12, 4)
+    (0.4167, 0.4167)
+    """
     v = [(float(x), float(y)) for x, y in vertices]
     n = len(v)
     a2 = cx = cy = jo = 0.0
@@ -171,7 +183,18 @@ def require_symmetric(block, model: str):
 
 
 def housner_mu(alpha: float) -> float:
-    """Housner's coefficient of restitution of a rectangular block, Eq 4."""
+    """Housner's coefficient of restitution of a rectangular block, Eq 4.
+
+    Examples
+    --------
+    ``mu = 1 - (3/2) sin^2(alpha)``; a slender block (``b/h = 1/4``) loses little energy
+    per impact:
+
+    >>> import math
+    >>> import rocking
+    >>> round(rocking.housner_mu(math.atan(0.25)), 4)
+    0.9118
+    """
     return 1.0 - 1.5 * math.sin(alpha) ** 2
 
 
@@ -186,6 +209,21 @@ class Block:
     (``alpha_plus``, ``alpha_minus``, ...; module docstring): ``sides`` holds their two
     sides, None for a symmetric block. :meth:`polygon` keeps one set of parameters (the
     smaller corner angle; both are in :attr:`alphas`).
+
+    Examples
+    --------
+    A block 0.2 m wide and 1 m tall: ``alpha = atan(b/h)`` (Eq 2), ``p^2 = 3 g / (4 R)``
+    (Eq 3) and Housner's ``mu`` (Eq 4).
+
+    >>> import math
+    >>> import rocking
+    >>> block = rocking.Block.rectangular(0.2, 1.0)
+    >>> round(block.alpha, 4), round(math.atan(0.1 / 0.5), 4)
+    (0.1974, 0.1974)
+    >>> round(block.p, 3), round(math.sqrt(3 * rocking.G / (4 * block.R)), 3)
+    (3.798, 3.798)
+    >>> block.mu == rocking.housner_mu(block.alpha)
+    True
     """
 
     alpha: float

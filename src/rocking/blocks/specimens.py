@@ -39,12 +39,35 @@ def paper_data() -> dict:
 
 
 def specimen_ids() -> list[int]:
-    """Numbers of the catalogued specimens."""
+    """Numbers of the catalogued specimens.
+
+    Examples
+    --------
+    >>> from rocking.blocks import specimen_ids
+    >>> specimen_ids()
+    [1, 2, 3, 4]
+    """
     return sorted(int(k) for k in paper_data()["specimens"])
 
 
 def specimen(n, params: str = "theoretical", shape: str = "rectangle") -> Block:
-    """Specimen ``n`` (1-4) of the paper as a :class:`Block` (see the module docstring)."""
+    """Specimen ``n`` (1-4) of the paper as a :class:`Block` (see the module docstring).
+
+    Examples
+    --------
+    Specimen 2 (Table I: 0.17 m x 1.0 m) with the Table II parameters (column T), close
+    to ``atan(b/h)`` of its geometry (Eq 2):
+
+    >>> import math
+    >>> import rocking
+    >>> block = rocking.specimen(2)
+    >>> block.width, block.height
+    (0.17, 1.0)
+    >>> block.alpha, round(math.atan(block.width / block.height), 4)
+    (0.168, 0.1684)
+    >>> block.mu, rocking.specimen(2, "experimental").mu  # Table II, columns T and E
+    (0.958, 0.973)
+    """
     ids = specimen_ids()
     try:
         key = int(n)

@@ -24,7 +24,21 @@ from .block import Block
 
 @dataclass(frozen=True, init=False)
 class Stack:
-    """Blocks stacked bottom to top (see the module docstring)."""
+    """Blocks stacked bottom to top (see the module docstring).
+
+    Examples
+    --------
+    Specimen 2 on specimen 4, at rest on a still base (discrete element model only):
+
+    >>> import rocking
+    >>> stack = rocking.Stack([rocking.specimen(4, "geometric"),
+    ...                        rocking.specimen(2, "geometric")])
+    >>> len(stack), stack.top.name
+    (2, 'specimen 2')
+    >>> r = rocking.simulate(stack, model="dem", duration=0.2)
+    >>> r.theta_all.shape, float(abs(r.theta_all).max())
+    ((2, 101), 0.0)
+    """
 
     blocks: tuple
     offsets: tuple
