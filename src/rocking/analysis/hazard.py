@@ -56,7 +56,17 @@ def _positive(name: str, value) -> float:
 
 def probability_in(t_years, annual_frequency):
     """Probability of at least one event in ``t_years`` for a Poisson process of annual
-    rate ``annual_frequency``: ``1 - exp(-lambda t)``."""
+    rate ``annual_frequency``: ``1 - exp(-lambda t)``.
+
+    Examples
+    --------
+    >>> from rocking.analysis import probability_in
+    >>> import math
+    >>> round(probability_in(50, 1e-3), 6), round(1 - math.exp(-0.05), 6)
+    (0.048771, 0.048771)
+    >>> round(probability_in(50, 1 / 475), 3)  # EN 1998-1: 10 % in 50 years
+    0.1
+    """
     t = np.asarray(t_years, dtype=float)
     lam = np.asarray(annual_frequency, dtype=float)
     if np.any(~np.isfinite(t)) or np.any(t < 0):
@@ -75,6 +85,19 @@ class HazardCurve:
     constant). Interpolated log-log between points; beyond its ends (:meth:`rate_at`,
     :func:`risk`) extended as a power law with the slope of the two end points.
     ``approximate`` flags a curve that is not a hazard model's output (a code value).
+
+    Examples
+    --------
+    The EN 1998-1 approximation passes through (0.25 g, 1/475) with slope k = 3:
+
+    >>> from rocking.analysis import HazardCurve
+    >>> curve = HazardCurve.from_code_value(0.25)  # PGA 0.25 g at 475 years
+    >>> round(curve.rate_at(0.25) * 475, 6), round(curve.im_at_return_period(475), 6)
+    (1.0, 0.25)
+    >>> round(curve.rate_at(0.5) / curve.rate_at(0.25), 6)  # 2^-3
+    0.125
+    >>> curve.to_unit("m/s^2")
+    HazardCurve('EN 1998-1 power law: ...', PGA in m/s^2, 30 points 0.2452..24.52, approximate)
     """
 
     def __init__(self, im, rate, *, im_name: str, unit: str, label: str = "",
@@ -321,7 +344,15 @@ class HazardCurve:
 
 @dataclass(frozen=True)
 class Risk:
-    """The risk of one fragility under one hazard curve (:func:`risk`)."""
+    """The risk of one fragility under one hazard curve (:func:`risk`).
+
+    Examples
+    --------
+    >>> from rocking.analysis import Risk
+    >>> r = Risk(annual_frequency=1e-3, tail_share=0.0, probability_50=0.0488)
+    >>> round(r.probability_in(100), 4)  # 1 - exp(-0.1)
+    0.0952
+    """
 
     annual_frequency: float
     tail_share: float
@@ -364,7 +395,25 @@ def risk(fit, curve: HazardCurve, *, t_years: float = 50.0):
     ``lambda_f = integral_0^inf P(f | im) |d lambda / d im| d im``, computed in ``ln im``
     with ``scipy.integrate.quad``. The IM names must agree and the units be of the same
     kind (g and m/s^2 are converted). ``fit``: a :class:`FragilityFit` (one :class:`Risk`)
-    or damage-state curves with ``fits`` (a list, one per state)."""
+    or damage-state curves with ``fits`` (a list, one per state).
+
+    Examples
+    --------
+    On a power-law hazard ``k0 a^-k`` the risk equals Cornell's closed form
+    ``k0 median^-k exp(k^2 beta^2 / 2)``:
+
+    >>> from scipy.stats import norm
+    >>> from rocking.analysis import HazardCurve, fragility, risk
+    >>> im = np.repeat([1.0, 2.0, 3.0, 4.0, 6.0], 100)  # PGA (m/s^2)
+    >>> failed = np.tile(np.arange(100), 5) < np.round(100 * norm.cdf(np.log(im / 3) / 0.4))
+    >>> fit = fragility(im, failed, n_boot=0, im_name="pga", im_unit="m/s^2")
+    >>> curve = HazardCurve.from_code_value(0.25)  # in g: converted to the fit's m/s^2
+    >>> r = risk(fit, curve)
+    >>> k0 = (0.25 * 9.80665) ** 3 / 475  # lambda(a) = k0 a^-3, a in m/s^2
+    >>> closed = k0 * fit.median**-3 * np.exp(9 * fit.beta**2 / 2)
+    >>> bool(np.isclose(r.annual_frequency, closed, rtol=1e-6)), round(r.probability_50, 3)
+    (True, 0.109)
+    """
     from scipy.integrate import quad
     from scipy.stats import norm
 
@@ -411,7 +460,20 @@ def risk(fit, curve: HazardCurve, *, t_years: float = 50.0):
 
 def plot_risk(curve: HazardCurve, fit, ax=None):
     """Hazard curve, fragility and the risk integrand ``P(f|im) |d lambda/d ln im|`` (which
-    IM levels contribute), on a common IM axis in the curve's unit. Returns the Figure."""
+    IM levels contribute), on a common IM axis in the curve's unit. Returns the Figure.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> from rocking.analysis import HazardCurve, fragility, plot_risk
+    >>> im = np.repeat([1.0, 2.0, 4.0], 10)  # PGA (m/s^2)
+    >>> failed = np.tile(np.arange(10), 3) < np.repeat([1, 5, 9], 10)
+    >>> fit = fragility(im, failed, n_boot=0, im_name="pga", im_unit="m/s^2")
+    >>> fig = plot_risk(HazardCurve.from_code_value(0.25), fit)
+    >>> type(fig).__name__, len(fig.axes)
+    ('Figure', 2)
+    """
     c = _fit_factor(fit, curve)
     res = risk(fit, curve)
     if ax is None:
