@@ -592,6 +592,9 @@ def test_a_fitted_overturning_risk_with_stopped_runs_carries_the_warning(table, 
     assert np.isfinite(o["annual_frequency"])
     assert f"{int(stop.sum())} of " in o["note"] and "not conservative" in o["note"]
     assert c["annual_frequency"] > o["annual_frequency"]
+    ds = rk[(rk["mitigation"] == "isolated-2.5s") & (rk["block"] == 0)
+            & (rk["fit"] == "damage_states")]
+    assert len(ds) and ds["note"].str.contains("survivors with the angle").all()
     x, y = t.loc[grp, "im"].to_numpy(), (t["overturned"].to_numpy(bool) | stop)[grp]
     f = fragility(x, y, n_boot=0, im_name="pga", im_unit="m/s^2")
     assert c["annual_frequency"] == pytest.approx(risk(f, curve).annual_frequency,

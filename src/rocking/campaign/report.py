@@ -582,7 +582,7 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
     floor), the legend beside the axes (it covered the curves of the weaker blocks)."""
     fig, ax = figure(figsize=(8.6, 3.8))
     unit = unit_label(im["unit"])
-    for i, (key, pt, fit) in enumerate(groups):
+    for i, (key, pt, fit, *clear) in enumerate(groups):
         c = PALETTE[i % len(PALETTE)]
         d = pt[(pt["n"] > 0) & pt["im"].notna()]
         yerr = np.vstack([d["p_overturn"] - d["ci_lower"], d["ci_upper"] - d["p_overturn"]])
@@ -601,6 +601,15 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
         if "n_clearance_exceeded" in pt and pt["n_clearance_exceeded"].sum():
             lab += (f"\n{int(pt['n_clearance_exceeded'].sum())} runs stopped at the "
                     "clearance\n(counted as not overturned)")
+        cf = clear[0] if clear and clear[0] else None
+        if cf is not None:  # the combined failure, dashed (no band: not the stripes' fit)
+            lo = np.nanmin(d["im"]) if len(d) else cf.median
+            hi = np.nanmax(d["im"]) if len(d) else cf.median
+            x = np.geomspace(min(lo, cf.median * math.exp(-2.0 * cf.beta)),
+                             max(hi, cf.median * math.exp(2.0 * cf.beta)), 150)
+            ax.plot(x, cf.probability(x), color=c, lw=1.2, ls="--")
+            lab += (f"\ndashed: {CLEARANCE_LABEL},\nmedian {_g(cf.median)}"
+                    f"{' ' + unit if unit else ''}, beta {_g(cf.beta, 2)}")
         ax.errorbar(d["im"], d["p_overturn"], yerr=np.clip(yerr, 0, None), fmt="o", ms=4,
                     mfc="none", color=c, capsize=2, lw=0.8, label=lab)
     style_axes(ax, im_label(im["name"], im["unit"]), "P(overturn)")
@@ -919,7 +928,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
                 pel_rows.append(pel)
             elif f"pelicun: {why}" not in notes:
                 notes.append(f"pelicun: {why}")
-        by_model.setdefault(model, []).append((key, pt, fit))
+        by_model.setdefault(model, []).append((key, pt, fit, clear))
     po = pd.concat(po_parts, ignore_index=True)
     fr = pd.DataFrame(fr_rows)
     files = []
