@@ -32,13 +32,44 @@ mode-2 amplitude is the least overturning amplitude; the one-sine and one-cosine
 **Quoted values.** Of the papers, only Pena et al. (2007) could be read in full (the
 project's copy); its Table II is quoted as printed, and four of its values disagree with
 Eqs 2-4 of its own Table I beyond the printing's rounding: they are shown as ``KNOWN``,
-each with what is known of the reason and a bound. The printed numbers (tables, figures)
-of Housner (1963), Makris and Roussos (2000), Zhang and Makris (2001), Makris and
-Konstantinidis (2003) and Dimitrakopoulos and DeJong (2012) could not be read in the sources
-available to this project (only the first page of Housner 1963 and citations of the
-others): no case quotes a number from them; their cases compare the closed forms derived
-above, and an equation number of one of those papers is named only where the case says
-that it was not checked against the paper.
+each with what is known of the reason and a bound.
+
+**What was searched for the other papers** (issue 22, 2026-11; the stored copies of public
+pages reachable by the project's search tool, which returns the opening of a page, never
+its whole text):
+
+* Housner (1963): two stored copies of the paper,
+  https://scribd.com/doc/263600760/1963-Housner-The-Bevavior-of-Inverted-Pendulum-Strtuctures-During-Earthquakes
+  and https://www.scribd.com/document/630563135 (through a mirror); only pages 403-404
+  could be read: the abstract, Fig. 1 and Eq (1), printed on page 404 as
+  ``I0 d2theta/dt2 = -WR sin(alpha - theta)``, followed by "For tall, slender blocks
+  having the angle alpha less than about 20 degrees the sine of the angle may be
+  approximated by the angle". Eq (1) is the reference of ``housner-eq1-acceleration``;
+  the rectangular-pulse result and its numbers (later pages) could not be read.
+* Makris (2014), "A half-century of rocking isolation", Earthquakes and Structures 7(6)
+  1187-1221 (https://www.scribd.com/document/529064400/A-half-century-of-rocking-isolation),
+  which reviews Housner (1963), Zhang and Makris (2001), Makris and Konstantinidis (2003)
+  and Dimitrakopoulos and DeJong (2012): only its first page (title, abstract) could be
+  read; none of its equations or figures.
+* Makris (2018), "The dynamics of rocking isolation" (book chapter,
+  https://scribd.com/document/539462415/The-Dynamics-of-Rocking-Isolation) and its
+  newsletter version (SECED 26(2), 2015): abstract only.
+* Zhang and Makris (2001): its abstract (https://discovery.researcher.life/article/
+  rocking-response-of-free-standing-blocks-under-cycloidal-pulses/
+  3ebc6c22970d33feaf6e6ec8b7cb4cc2), which states the two overturning modes and the
+  safe region but prints no number. What its Eq 47 states could not be established: no
+  reachable text quotes it.
+* Makris and Roussos (2000), Makris and Konstantinidis (2003) and Dimitrakopoulos and
+  DeJong (2012): no stored copy of their text was found (queries by title, by
+  "cycloidal pulse", "minimum overturning acceleration", "omega_p/p", "a_p/(g tan
+  alpha)", "similarity laws"); the source-code and documentation indexes hold no
+  implementation that quotes them.
+
+So no number printed by those five papers is quoted here: their cases compare the closed
+forms derived above (each says so), and an equation number of one of those papers is
+named only where the case says that it was not checked against the paper. A reader with
+the papers can replace a derived reference by the printed one; a disagreement must then
+be shown (``known_difference``), not tuned away.
 """
 
 from __future__ import annotations
@@ -87,7 +118,8 @@ VASSILIOU_MAKRIS_2012 = ("Vassiliou, M. F. and Makris, N. (2012). Analysis of th
                          "177-196.")
 
 UNREAD = ("The paper's printed values could not be read in the sources available to this "
-          "project; no number of it is quoted.")
+          "project (searched in 2026-11: see the module docstring of "
+          "rocking.verification.catalog for where); no number of it is quoted.")
 
 # ------------------------------------------------------------------------ shared pieces
 PULSE_BLOCK = dict(alpha=0.2, p=2.0, mu=0.9)
@@ -193,6 +225,29 @@ def _rect_block():
     from ..blocks.block import Block
 
     return Block.rectangular(**RECT_BLOCK)
+
+
+def _eq1_acceleration() -> float:
+    """theta''(0) of the nonlinear model's rectangular block released from rest at theta0 =
+    alpha/2: twice the t^2 coefficient of a degree-5 polynomial fitted to theta(t) over
+    the first 0.03 s (before the impact at about 0.3 s)."""
+    blk = _rect_block()
+    r = _simulate(blk, None, duration=0.05, theta0=0.5 * blk.alpha, dt_out=1e-4,
+                  rtol=1e-12)
+    t, th = np.asarray(r.t), np.asarray(r.theta)
+    m = t <= 0.03
+    return 2.0 * float(np.polyfit(t[m], th[m], 5)[-3])
+
+
+def _eq1_acceleration_ref() -> float:
+    """Housner (1963) Eq (1), I0 theta'' = -W R sin(alpha - theta), at theta = alpha/2, with
+    W, R, alpha from the block's width and height and I0 = (4/3)(W/g) R^2 (uniform
+    rectangle about its corner: (1/3) m (b^2 + h^2) about the centre plus m R^2)."""
+    b, h = RECT_BLOCK["width"] / 2, RECT_BLOCK["height"] / 2
+    m = RECT_BLOCK["mass"]
+    R, alpha = math.hypot(b, h), math.atan(b / h)
+    i0 = m * (b * b + h * h) / 3.0 + m * R * R
+    return -m * G * R * math.sin(alpha - 0.5 * alpha) / i0
 
 
 def _velocity_ratio(block, model: str = "housner", th0_frac: float = 0.6) -> float:
@@ -458,6 +513,21 @@ CASES: tuple[Case, ...] = (
         reference=lambda: 4.0 / FREE["p"] * math.acosh(1.0 / (1.0 - FREE["frac"])),
         compute=_free_period, unit="s", tolerance=1e-7, group="classical"),
     Case(
+        name="housner-eq1-acceleration",
+        source=HOUSNER_1963,
+        what="angular acceleration of a rectangular block (width 0.4 m, height 1.6 m) "
+             "released from rest at theta = alpha/2 (nonlinear model)",
+        how="Eq (1) of Housner (1963) as printed on its page 404 (stored copy of the "
+            "paper: https://scribd.com/doc/263600760), I0 d2theta/dt2 = -WR sin(alpha - "
+            "theta), with W = m g, R = sqrt(b^2 + h^2), alpha = atan(b/h) and I0 = (4/3) "
+            "(W/g) R^2 (the uniform rectangle's inertia about its corner, parallel-axis "
+            "theorem; derived here). This block's alpha (14.0 degrees) is below the 'about "
+            "20 degrees' under which Housner linearises (same page); the comparison is "
+            "with the nonlinear equation. Computed: twice the t^2 coefficient of a "
+            "polynomial fitted to rocking.simulate's theta(t) over the first 0.03 s.",
+        reference=_eq1_acceleration_ref, compute=_eq1_acceleration, unit="rad/s^2",
+        tolerance=1e-6, group="classical"),
+    Case(
         name="housner-restitution",
         source=HOUSNER_1963,
         what="ratio of angular velocities after and before an impact of a rectangular "
@@ -536,9 +606,10 @@ CASES: tuple[Case, ...] = (
              "linearised block without an impact (mode 2)",
         how="Root of sqrt(A^2 - 1) - A exp(-(2 pi - asin(1/A)) p/omega_p) = omega_p/p, "
             "the closed form of the minimum acceleration of a one-sine pulse that "
-            "overturns the linearised block without impact (the case referred to as "
-            "Zhang and Makris 2001's Eq 47; derived here, module docstring; the equation "
-            "number is not checked against the paper). " + UNREAD,
+            "overturns the linearised block without impact (derived here, module "
+            "docstring). Issue 22 names Zhang and Makris's Eq 47 for this threshold; what "
+            "Eq 47 states could not be read in any reachable source (module docstring), "
+            "so it is not claimed to be this equation. " + UNREAD,
         reference=lambda: one_sine_mode2(4.0),
         compute=lambda: _pulse_threshold("one_sine", 4.0, bracket=(2.0, 20.0)),
         tolerance=1e-5, group="pulses"),
@@ -780,6 +851,14 @@ def clear_caches() -> None:
 
 
 def case_names() -> list[str]:
+    """The names of the cases, in catalog order (``rocking verify --list``).
+
+    Examples
+    --------
+    >>> from rocking.verification import case_names
+    >>> case_names()[:2]
+    ['housner-free-period', 'housner-eq1-acceleration']
+    """
     return [c.name for c in CASES]
 
 

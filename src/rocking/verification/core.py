@@ -62,6 +62,22 @@ class Case:
         table; outside it, it fails.
     slow : bool
         Left out by ``quick=True``.
+
+    Examples
+    --------
+    A case whose reference is a closed form (here ``cosh(1)``) and whose computation agrees
+    with it; evaluated by :meth:`run` into a :class:`Row`:
+
+    >>> import math
+    >>> from rocking.verification import Case
+    >>> c = Case(name="cosh-1", source="Abramowitz, M. and Stegun, I. A. (1964). Handbook "
+    ...          "of Mathematical Functions.", what="cosh(1)", how="Eq 4.5.1, "
+    ...          "(e + 1/e)/2, against math.cosh", reference=lambda: (math.e + 1 / math.e) / 2,
+    ...          compute=lambda: math.cosh(1.0), tolerance=1e-12)
+    >>> c.run().status
+    'PASS'
+    >>> c.tolerance_text
+    'rel 1e-12'
     """
 
     name: str
@@ -152,7 +168,21 @@ class Case:
 
 @dataclass(frozen=True)
 class Row:
-    """One evaluated case."""
+    """One evaluated case: its reference and computed values, its status (``PASS``,
+    ``KNOWN`` or ``FAIL``) and a note saying why it disagrees, when it does.
+
+    Examples
+    --------
+    >>> from rocking.verification import Case
+    >>> c = Case(name="one", source="Nobody, A. (2000). Nothing.", what="one",
+    ...          how="a constant against a wrong constant", reference=lambda: 1.0,
+    ...          compute=lambda: 1.1, tolerance=0.01)
+    >>> row = c.run()
+    >>> row.status, row.passed, round(row.difference, 6)
+    ('FAIL', False, 0.1)
+    >>> row.note
+    'disagrees beyond the tolerance'
+    """
 
     case: Case
     reference: float
@@ -224,7 +254,19 @@ def _md(text: str) -> str:
 
 @dataclass
 class VerificationTable:
-    """The evaluated cases, in catalog order."""
+    """The evaluated cases, in catalog order (what :func:`rocking.verification.run_cases`
+    returns): ``passed``, ``failed``, and the table as text, Markdown, reStructuredText,
+    dicts or a DataFrame.
+
+    Examples
+    --------
+    >>> from rocking.verification import run_cases
+    >>> table = run_cases(["housner-free-period"])
+    >>> table.passed, len(table.rows), table.failed
+    (True, 1, [])
+    >>> print(table.to_text().splitlines()[-1])
+    1 of 1 cases pass.
+    """
 
     rows: list[Row] = field(default_factory=list)
 
