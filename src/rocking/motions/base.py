@@ -23,7 +23,17 @@ from . import _kernel as K
 
 
 class Motion:
-    """Abstract base of all base motions (dataclasses with a ``scale`` load factor)."""
+    """Abstract base of all base motions (dataclasses with a ``scale`` load factor).
+
+    Examples
+    --------
+    >>> from rocking.motions import Motion, Sine
+    >>> s = Sine(freq=2.0, amplitude=0.01, duration=5.0)
+    >>> isinstance(s, Motion), round(s.acceleration(0.125), 4)  # a = -X (2 pi f)^2 at u = X
+    (True, -1.5791)
+    >>> round((-s)(0.125), 4), round(s.scaled(2.0)(0.125), 4)
+    (1.5791, -3.1583)
+    """
 
     kind: ClassVar[int] = K.NONE
     duration: float

@@ -31,6 +31,16 @@ class GroundMotion(Motion):
 
     ``duration`` is the longer of the two; ``scale`` multiplies both components
     (:meth:`scaled` puts its factors on the components and leaves ``scale`` at 1).
+
+    Examples
+    --------
+    >>> from rocking.motions import GroundMotion, Sine
+    >>> gm = GroundMotion.builtin("rinaldi")  # Northridge 1994, H1 and UP
+    >>> gm.horizontal.name, gm.vertical.name, round(gm.duration, 2)
+    ('Rinaldi228', 'RinaldiUP', 19.9)
+    >>> gm2 = GroundMotion(Sine(2.0, 0.01, 5.0), Sine(4.0, 0.001, 8.0), scale=2.0)
+    >>> gm2.duration  # the longer component
+    8.0
     """
 
     horizontal: Motion

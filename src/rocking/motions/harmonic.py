@@ -33,7 +33,18 @@ def _check_amplitude(cls: str, x: float) -> None:
 
 @dataclass(frozen=True)
 class Sine(Motion):
-    """Constant sine of frequency ``freq`` (Hz) and displacement amplitude ``amplitude`` (m)."""
+    """Constant sine of frequency ``freq`` (Hz) and displacement amplitude ``amplitude`` (m).
+
+    Examples
+    --------
+    >>> import math
+    >>> from rocking.motions import Sine
+    >>> s = Sine(freq=2.0, amplitude=0.01, duration=5.0)  # 10 mm at 2 Hz
+    >>> round(s.acc_amplitude, 4), round(0.01 * (2 * math.pi * 2.0) ** 2, 4)  # X (2 pi f)^2
+    (1.5791, 1.5791)
+    >>> round(s.acceleration(0.125), 4)  # u = X at t = 1/(4 f)
+    -1.5791
+    """
 
     freq: float
     amplitude: float
@@ -77,7 +88,18 @@ class Sine(Motion):
 @dataclass(frozen=True)
 class HanningSine(Motion):
     """Sine of frequency ``freq`` (Hz) and displacement amplitude ``amplitude`` (m) under a
-    Hann window that spans ``duration`` (s)."""
+    Hann window that spans ``duration`` (s).
+
+    Examples
+    --------
+    >>> from rocking.motions import HanningSine, displacement, sample, velocity
+    >>> m = HanningSine(freq=2.0, amplitude=0.01, duration=2.0)
+    >>> bool(abs(m(0.0)) < 1e-12 and abs(m(2.0)) < 1e-12)  # a = 0 at both ends
+    True
+    >>> r = sample(m, 0.001)
+    >>> abs(round(float(velocity(r)[-1]), 6)), round(float(displacement(r).max()), 4)  # v = 0
+    (0.0, 0.0096)
+    """
 
     freq: float
     amplitude: float

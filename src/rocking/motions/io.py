@@ -144,6 +144,15 @@ def read_record(path, units: str | None = "g",
         The file is missing, empty or malformed (message names the file and line).
     UnitError
         ``units`` is not an acceleration unit.
+
+    Examples
+    --------
+    >>> from rocking.motions import load_builtin, read_record, write_csv
+    >>> rec = load_builtin("RSN126_GAZLI_GAZ000")
+    >>> path = write_csv(rec, "gazli.csv")
+    >>> acc, dt, meta = read_record("gazli.csv", units="m/s^2")
+    >>> dt, meta["npts"], meta["format"], bool(np.array_equal(acc, rec.values))
+    (0.0066, 2048, 'csv', True)
     """
     p = Path(path)
     factor = None if units is None else acceleration_factor(units)
@@ -171,6 +180,15 @@ def write_csv(record, path) -> Path:
     load factor applied (``record.values``) and with full float precision. A comment header
     states the units and ``dt``, so the file reads back with
     ``read_record(path, units="m/s^2")`` or ``Record.from_file(path, units="m/s^2")``.
+
+    Examples
+    --------
+    >>> from rocking.motions import Record, Sine, sample, write_csv
+    >>> rec = sample(Sine(freq=2.0, amplitude=0.01, duration=1.0), dt=0.01)
+    >>> path = write_csv(rec, "sine.csv")
+    >>> back = Record.from_file(path, units="m/s^2")
+    >>> path.name, back.dt, bool(np.array_equal(back.values, rec.values))
+    ('sine.csv', 0.01, True)
     """
     if not is_sampled(record):
         raise TypeError(
@@ -206,7 +224,17 @@ def _stems(folder) -> list[str]:
 def builtin_records(three_component: bool = False) -> list[str]:
     """Names of the PEER NGA records shipped with the package (for :func:`load_builtin`):
     the four horizontal records; with ``three_component=True`` also the six files of the
-    three-component sets (:func:`builtin_sets`)."""
+    three-component sets (:func:`builtin_sets`).
+
+    Examples
+    --------
+    >>> from rocking.motions import builtin_records
+    >>> builtin_records()
+    ['RSN126_GAZLI_GAZ000', 'RSN183_IMPVALL.H_H-E08140', 'RSN948_NORTHR_CAM009',
+     'RSN982_NORTHR_JEN292']
+    >>> len(builtin_records(three_component=True))
+    10
+    """
     names = _stems(_builtin_dir())
     if three_component:
         names += _stems(_builtin_dir() / THREE_COMPONENT)
@@ -220,7 +248,16 @@ SETS = {"rinaldi": ("Rinaldi228", "Rinaldi318", "RinaldiUP"),
 
 def builtin_sets() -> dict[str, tuple[str, str, str]]:
     """The three-component sets shipped with the package: ``{name: (H1, H2, UP)}``
-    (Northridge 1994 at Rinaldi, Kocaeli 1999 at Duzce)."""
+    (Northridge 1994 at Rinaldi, Kocaeli 1999 at Duzce).
+
+    Examples
+    --------
+    >>> from rocking.motions import builtin_sets
+    >>> builtin_sets()["rinaldi"]
+    ('Rinaldi228', 'Rinaldi318', 'RinaldiUP')
+    >>> sorted(builtin_sets())
+    ['duzce', 'rinaldi']
+    """
     return dict(SETS)
 
 

@@ -109,6 +109,17 @@ class HorizontalPair:
     Attributes after construction: ``a1``, ``a2`` (the samples with their load factors,
     padded to a common length, read-only), ``dt`` (s), ``handedness`` (+1: the second is
     90 deg clockwise of the first, -1: counter-clockwise).
+
+    Examples
+    --------
+    >>> from rocking.motions import HorizontalPair, pga
+    >>> pair = HorizontalPair.builtin("rinaldi")  # Rinaldi228 / Rinaldi318
+    >>> pair.dt, pair.handedness  # numbered clockwise
+    (0.01, 1)
+    >>> bool(np.array_equal(pair.along(0.0).values, pair.a1))  # phi = 0: the first component
+    True
+    >>> bool(pga(pair.along(0.7)) <= pair.peak_resultant)
+    True
     """
 
     first: Record

@@ -69,7 +69,17 @@ class _Pulse(Motion):
 
 @dataclass(frozen=True)
 class OneSine(_Pulse):
-    """One full sine cycle of period ``length`` (= Tp)."""
+    """One full sine cycle of period ``length`` (= Tp).
+
+    Examples
+    --------
+    >>> from rocking.motions import OneSine
+    >>> p = OneSine(amplitude=3.0, length=0.5)
+    >>> [round(float(a), 6) for a in p.acceleration([0.125, 0.375, 0.6])]  # Tp/4, 3Tp/4, after
+    [3.0, -3.0, 0.0]
+    >>> p.duration  # max(10 s, 5 Tp) after t0
+    10.0
+    """
 
     kind = K.ONE_SINE
     _length_name = "Tp"
@@ -77,7 +87,15 @@ class OneSine(_Pulse):
 
 @dataclass(frozen=True)
 class OneCosine(_Pulse):
-    """One full cosine cycle of period ``length`` (= Tp)."""
+    """One full cosine cycle of period ``length`` (= Tp).
+
+    Examples
+    --------
+    >>> from rocking.motions import OneCosine
+    >>> p = OneCosine(amplitude=3.0, length=0.5)
+    >>> [round(float(a), 6) for a in p.acceleration([0.0, 0.25, 0.6])]  # 0, Tp/2, after
+    [3.0, -3.0, 0.0]
+    """
 
     kind = K.ONE_COSINE
     _length_name = "Tp"
@@ -85,7 +103,15 @@ class OneCosine(_Pulse):
 
 @dataclass(frozen=True)
 class HalfSine(_Pulse):
-    """Half a sine cycle lasting ``length`` (= t1)."""
+    """Half a sine cycle lasting ``length`` (= t1).
+
+    Examples
+    --------
+    >>> from rocking.motions import HalfSine
+    >>> p = HalfSine(amplitude=3.0, length=0.5, t0=0.1)
+    >>> [round(float(a), 6) for a in p.acceleration([0.05, 0.35, 0.7])]  # before, peak, after
+    [0.0, 3.0, 0.0]
+    """
 
     kind = K.HALF_SINE
     _length_name = "t1"
@@ -93,7 +119,17 @@ class HalfSine(_Pulse):
 
 @dataclass(frozen=True)
 class Rectangular(_Pulse):
-    """Constant acceleration ``amplitude`` lasting ``length`` (= t1)."""
+    """Constant acceleration ``amplitude`` lasting ``length`` (= t1).
+
+    Examples
+    --------
+    >>> from rocking.motions import Rectangular, sample, velocity
+    >>> p = Rectangular(amplitude=1.0, length=2.0, duration=2.0)
+    >>> [float(a) for a in p.acceleration([1.0, 2.5])]
+    [1.0, 0.0]
+    >>> round(float(velocity(sample(p, 0.01))[-1]), 6)  # velocity change A t1
+    2.0
+    """
 
     kind = K.RECTANGULAR
     _length_name = "t1"
@@ -101,7 +137,18 @@ class Rectangular(_Pulse):
 
 @dataclass(frozen=True)
 class Ricker(Motion):
-    """Ricker wavelet of peak frequency ``fp`` (Hz), centred at ``tc`` (default 1.5/fp)."""
+    """Ricker wavelet of peak frequency ``fp`` (Hz), centred at ``tc`` (default 1.5/fp).
+
+    Examples
+    --------
+    >>> import math
+    >>> from rocking.motions import Ricker
+    >>> w = Ricker(amplitude=4.0, fp=2.0)
+    >>> w.tc, round(w(w.tc), 6)  # centre 1.5/fp, peak A
+    (0.75, 4.0)
+    >>> round(w(w.tc + 1 / (math.sqrt(2) * math.pi * w.fp)), 9)  # zero at x = 1/sqrt(2)
+    0.0
+    """
 
     amplitude: float
     fp: float
@@ -191,6 +238,17 @@ class MavroeidisPapageorgiou(Motion):
         ``max(10 s, 5 gamma / fp)``.
     scale : float
         Load factor.
+
+    Examples
+    --------
+    >>> from rocking.motions import MavroeidisPapageorgiou, pga, sample
+    >>> mp = MavroeidisPapageorgiou(amplitude=5.0, fp=1.0, gamma=2.0, nu=0.0)
+    >>> mp.half_length, mp.t0  # gamma / (2 fp): the pulse starts at t = 0
+    (1.0, 1.0)
+    >>> round(float(mp.velocity(mp.t0)) / mp.velocity_amplitude, 6)  # v(t0) = A for nu = 0
+    1.0
+    >>> round(pga(sample(mp, 0.001)), 3)  # the peak acceleration is ``amplitude``
+    5.0
     """
 
     amplitude: float

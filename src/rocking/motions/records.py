@@ -41,6 +41,16 @@ class Record(Motion):
     A PGA above 5 g (before the load factor) or a time step above 0.1 s is valid but
     most likely a unit mistake: it gives a one-line
     :class:`~rocking._validate.PlausibilityWarning`.
+
+    Examples
+    --------
+    >>> from rocking.motions import Record, load_builtin
+    >>> rec = load_builtin("RSN126_GAZLI_GAZ000")  # Gazli 1976, PEER NGA
+    >>> rec.dt, len(rec), round(rec.duration, 4)  # duration = (npts - 1) dt
+    (0.0066, 2048, 13.5102)
+    >>> r = Record(np.array([0.0, 1.0, -2.0, 0.5]), dt=0.01, name="toy", scale=0.5)
+    >>> r.pga, r.values.tolist()  # the load factor applied
+    (1.0, [0.0, 0.5, -1.0, 0.25])
     """
 
     acc: np.ndarray
@@ -186,7 +196,15 @@ def _check_plausible(acc: np.ndarray, dt: float, name: str) -> None:
 
 
 def sample(motion: Motion, dt: float, duration: float | None = None) -> Record:
-    """Sample any motion on a uniform grid of step ``dt`` into a :class:`Record`."""
+    """Sample any motion on a uniform grid of step ``dt`` into a :class:`Record`.
+
+    Examples
+    --------
+    >>> from rocking.motions import Sine, sample
+    >>> r = sample(Sine(freq=2.0, amplitude=0.01, duration=5.0), dt=0.005)
+    >>> len(r), r.dt, round(r.pga, 4)  # a sample at t = 1/(4 f) hits X (2 pi f)^2
+    (1001, 0.005, 1.5791)
+    """
     dt = positive("dt", dt, "s")
     dur = motion.duration if duration is None else positive("duration", duration, "s")
     t = np.arange(int(round(dur / dt)) + 1) * dt
@@ -199,5 +217,14 @@ def load_builtin(name: str) -> Record:
 
     ``name`` is the file stem (``"RSN982_NORTHR_JEN292"``), optionally with ``.AT2``, or
     an unambiguous leading part of it such as ``"RSN982"``; case is ignored.
+
+    Examples
+    --------
+    >>> from rocking.motions import load_builtin
+    >>> rec = load_builtin("RSN126")  # an unambiguous leading part of the name
+    >>> rec.name, rec.dt, len(rec)
+    ('RSN126_GAZLI_GAZ000', 0.0066, 2048)
+    >>> round(rec.pga / 9.80665, 3)  # PGA in g
+    0.702
     """
     return Record._from_read(*read_builtin(name))
