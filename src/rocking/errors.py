@@ -130,7 +130,7 @@ class SpecError(ParameterError):
     >>> from rocking import SpecError
     >>> from rocking.campaign import parse_spec
     >>> try:
-    ...     parse_spec("[campaign]\nnme = 'typo'\n")
+    ...     parse_spec("[campaign]\\nnme = 'typo'\\n")
     ... except SpecError as e:
     ...     print(e)
     spec: campaign.nme: unknown key (allowed in [campaign]: duration, ...)

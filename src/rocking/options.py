@@ -55,6 +55,24 @@ def option(default, *, help: str, unit: str = "", lo: float | None = None,
     (free form, checked by the owner); ``quantity`` lets a string with a unit stand for the
     number (``"0.3g"``); ``required`` marks a parameter without a default. ``None`` is
     accepted when it is the default (meaning "automatic" or "not given").
+
+    Examples
+    --------
+    A model's options declared with their range, checked when built:
+
+    >>> from dataclasses import dataclass
+    >>> from rocking.models import ModelOptions, option
+    >>> @dataclass(frozen=True)
+    ... class DampedOptions(ModelOptions):
+    ...     damping_ratio: float = option(0.05, help="viscous damping ratio", lo=0.0,
+    ...                                   hi=1.0, lo_open=False)
+    >>> DampedOptions().damping_ratio
+    0.05
+    >>> try:
+    ...     DampedOptions(damping_ratio=2.0)
+    ... except ValueError as e:
+    ...     print(e)
+    damping_ratio must be in [0, 1], got 2.0
     """
     meta = {"help": help, "unit": unit, "lo": lo, "hi": hi, "lo_open": lo_open,
             "hi_open": hi_open, "choices": choices, "quantity": quantity,

@@ -120,7 +120,23 @@ from ..results import Response
 @dataclass(frozen=True)
 class ModelOptions(Options):
     """Base of the option dataclasses of the models (validated when built; declare each
-    field with :func:`rocking.options.option`)."""
+    field with :func:`rocking.options.option`).
+
+    Examples
+    --------
+    The isolated model's options take quantities with units and refuse unknown names:
+
+    >>> import rocking
+    >>> Options = rocking.MODELS["isolated"].Options
+    >>> opts = Options(isolation_period="2.5s", clearance="15cm")
+    >>> opts.isolation_period, opts.clearance
+    (2.5, 0.15)
+    >>> try:
+    ...     Options.build("isolated", isolation_perod=2.5)
+    ... except rocking.ParameterError as e:
+    ...     print(e)
+    unknown option(s) for model 'isolated': isolation_perod (allowed: clearance, ...)
+    """
 
     @classmethod
     def build(cls, model_name: str, **values) -> ModelOptions:
@@ -136,7 +152,19 @@ class ModelOptions(Options):
 
 # =================================================================================== model
 class Model:
-    """Base class of the rocking models (see the module docstring for the contract)."""
+    """Base class of the rocking models (see the module docstring for the contract).
+
+    Examples
+    --------
+    Every registered model is a subclass; its class attributes describe it:
+
+    >>> from rocking.models import MODELS, Model
+    >>> Isolated = MODELS["isolated"]
+    >>> issubclass(Isolated, Model), Isolated.mitigation, MODELS["housner"].mitigation
+    (True, True, False)
+    >>> [o.name for o in Isolated.row_outputs]
+    ['max_base_displacement', 'max_plate_acceleration', 'clearance_exceeded', 'clearance_time']
+    """
 
     name: ClassVar[str] = ""
     label: ClassVar[str] = ""
@@ -254,11 +282,18 @@ def row_output_arrays(outputs: tuple, row_out: np.ndarray) -> dict:
 KernelResult = namedtuple("KernelResult", [
     "n_out", "n_impacts", "max_abs_theta", "overturned", "overturn_time", "uplift_time",
     "n_steps", "status", "lift_off_time", "settled"])
-"""What a kernel returns (compiled by numba as a named tuple): the number of history
+KernelResult.__doc__ = """What a kernel returns (compiled by numba as a named tuple): the number of history
 samples written, the impacts, ``max |theta|`` (rad), whether and when (s) it overturned,
 the first uplift (s), the steps taken, the status (0: success), the lift-off time (s) and
 whether the block had settled. A new output is one field here, one array in
-:data:`Batch` and one line in :func:`store_row`."""
+:data:`Batch` and one line in :func:`store_row`.
+
+Examples
+--------
+>>> from rocking.models import KernelResult
+>>> KernelResult._fields[:4]
+('n_out', 'n_impacts', 'max_abs_theta', 'overturned')
+"""
 
 BATCH_INPUTS = ("kinds", "prms", "samples", "nsamp", "t_ends", "t_quiets", "h_scans",
                 "theta0", "omega0", "dt_out")
@@ -271,7 +306,16 @@ BATCH_OUTPUTS = ("theta", "omega", "max_abs_theta", "overturned", "overturn_time
 ``row_out``: the model's :attr:`Model.row_outputs`, rows x outputs, NaN where not
 written)."""
 Batch = namedtuple("Batch", BATCH_INPUTS + BATCH_OUTPUTS)
-"""A batch as the compiled batch kernels see it: named arrays, one entry per row."""
+Batch.__doc__ = """A batch as the compiled batch kernels see it: named arrays, one entry per
+row (the inputs :data:`BATCH_INPUTS`, then the outputs :data:`BATCH_OUTPUTS`).
+
+Examples
+--------
+>>> from rocking.models import Batch
+>>> from rocking.models.base import BATCH_INPUTS
+>>> Batch._fields[:len(BATCH_INPUTS)] == BATCH_INPUTS, Batch._fields[-1]
+(True, 'row_out')
+"""
 
 
 @njit(cache=True)

@@ -14,5 +14,12 @@ MODELS: dict[str, type[Model]] = {cls.name: cls for cls in (Housner, CCRR, DEM, 
 
 
 def available() -> tuple[str, ...]:
-    """Names of the registered models."""
+    """Names of the registered models.
+
+    Examples
+    --------
+    >>> from rocking.models import available
+    >>> available()
+    ('housner', 'ccrr', 'dem', 'anchored', 'isolated')
+    """
     return tuple(MODELS)
