@@ -166,7 +166,8 @@ class SimulationError(RuntimeError):
     ...     rocking.simulate(block, theta0=0.1, model="ccrr", duration=1.0, dt=0.1)
     ... except rocking.SimulationError as e:
     ...     print(isinstance(e, RuntimeError), e)
-    True ccrr integration failed near the origin at t = ...; use a smaller dt or the adaptive mode (dt=None)
+    True ccrr integration failed near the origin at t = ...; use a smaller dt or the
+    adaptive mode (dt=None)
     """
 
 
