@@ -125,6 +125,14 @@ def ec8_spectrum(periods, ag, ground: str = "A", spectrum_type: int = 1,
         Type 1 (Table 3.2) or Type 2 (Table 3.3) recommended parameters.
     damping : float
         Viscous damping ratio as a fraction (0.05 = 5 %), giving ``eta``.
+
+    Examples
+    --------
+    >>> from rocking.motions import ec8_spectrum
+    >>> [round(float(s), 4) for s in ec8_spectrum([0.0, 0.3], ag=2.0, ground="C")]  # S = 1.15
+    [2.3, 5.75]
+    >>> round(2.5 * 1.15 * 2.0, 4)  # plateau 2.5 S ag (eta = 1 at 5 %)
+    5.75
     """
     ag = non_negative("ag", ag, "m/s^2")
     prm = ec8_parameters(ground, spectrum_type)
@@ -146,6 +154,13 @@ class DesignSpectrum:
 
         target = DesignSpectrum(pga=2.8, plateau=7.0, tb=0.1, tc=0.3, td=1.2)
         target([0.0, 0.2, 1.0])   # -> array([2.8, 7.0, 2.1])
+
+    Examples
+    --------
+    >>> from rocking.motions import DesignSpectrum
+    >>> target = DesignSpectrum(pga=2.8, plateau=7.0, tb=0.1, tc=0.3, td=1.2)
+    >>> [round(float(s), 4) for s in target([0.0, 0.2, 1.0, 2.4])]  # 7 tc/T, 7 tc td/T^2
+    [2.8, 7.0, 2.1, 0.4375]
     """
 
     pga: float
@@ -220,6 +235,15 @@ def paper_target() -> DesignSpectrum:
 
     Plateau 7 m/s^2 from 0.1 to 0.3 s, PGA 2.8 m/s^2, 5 % damping, and ``TD = 1.2 s``
     (EC8 Type 2, ground D; the paper does not state TD, see the module doc).
+
+    Examples
+    --------
+    >>> from rocking.motions import paper_target
+    >>> t = paper_target()
+    >>> t.pga, t.plateau, t.tb, t.tc, t.td
+    (2.8, 7.0, 0.1, 0.3, 1.2)
+    >>> round(float(t(0.6)), 4)  # 7 tc / T on the 1/T branch
+    3.5
     """
     return DesignSpectrum(pga=2.8, plateau=7.0, tb=0.1, tc=0.3, td=PAPER_TD, damping=0.05,
                           name="paper target (EC8 shape, Type 2 ground D corners)")

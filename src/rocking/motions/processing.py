@@ -76,13 +76,31 @@ def integrate(acc, dt: float) -> tuple[np.ndarray, np.ndarray]:
 
 
 def velocity(record) -> np.ndarray:
-    """Ground velocity (m/s) at the samples, from rest, load factor applied."""
+    """Ground velocity (m/s) at the samples, from rest, load factor applied.
+
+    Examples
+    --------
+    >>> from rocking.motions import Rectangular, sample
+    >>> r = sample(Rectangular(amplitude=1.0, length=2.0, duration=2.0), dt=0.01)  # A = 1, t1 = 2
+    >>> from rocking.motions import velocity
+    >>> round(float(velocity(r)[-1]), 6)  # A t1
+    2.0
+    """
     r = _check_record(record)
     return integrate(r.values, r.dt)[0]
 
 
 def displacement(record) -> np.ndarray:
-    """Ground (table) displacement (m) at the samples, from rest, load factor applied."""
+    """Ground (table) displacement (m) at the samples, from rest, load factor applied.
+
+    Examples
+    --------
+    >>> from rocking.motions import Rectangular, sample
+    >>> r = sample(Rectangular(amplitude=1.0, length=2.0, duration=2.0), dt=0.01)  # A = 1, t1 = 2
+    >>> from rocking.motions import displacement
+    >>> round(float(displacement(r)[-1]), 6)  # A t1^2 / 2
+    2.0
+    """
     r = _check_record(record)
     return integrate(r.values, r.dt)[1]
 
@@ -130,6 +148,16 @@ def baseline_correct(record):
     is hardly changed. ``c_0, c_1`` solve the two linear conditions ``v(T) = d(T) = 0``
     exactly (the integration is exact for the piecewise-linear record). Pass a record
     through :func:`bandpass` first if it has a large low-frequency noise.
+
+    Examples
+    --------
+    >>> from rocking.motions import baseline_correct, displacement, load_builtin, velocity
+    >>> rec = load_builtin("RSN126_GAZLI_GAZ000")
+    >>> b = baseline_correct(rec)
+    >>> bool(abs(velocity(b)[-1]) < 1e-12 and abs(displacement(b)[-1]) < 1e-12)
+    True
+    >>> bool(b.values[0] == rec.values[0]), bool(b.values[-1] == rec.values[-1])  # ends kept
+    (True, True)
     """
     r = _check_record(record)
     acc = baseline_correct_acc(r.acc, r.dt)
@@ -204,6 +232,14 @@ def resample(record, dt: float, method: str = "auto"):
 
     Content above the new Nyquist frequency ``1 / (2 dt)`` is removed when downsampling.
     The last sample is at or just before the original end.
+
+    Examples
+    --------
+    >>> from rocking.motions import load_builtin, resample
+    >>> rec = load_builtin("RSN126_GAZLI_GAZ000")  # dt = 0.0066 s
+    >>> r = resample(rec, 0.01)  # polyphase, 50/33
+    >>> r.dt, len(r), bool(r.duration <= rec.duration)
+    (0.01, 1352, True)
     """
     r = _check_record(record)
     acc, how = _resample(r.acc, r.dt, dt, method)
@@ -268,6 +304,14 @@ def bandpass(record, low: float | None = 0.1, high: float | None = None, order: 
     consistent with the acceleration; ``meta["t_shift"]`` says how much earlier it starts);
     by default the pads are cut off, and :func:`baseline_correct` can then bring the final
     velocity and displacement back to zero.
+
+    Examples
+    --------
+    >>> from rocking.motions import bandpass, load_builtin
+    >>> rec = load_builtin("RSN126_GAZLI_GAZ000")
+    >>> f = bandpass(rec, low=0.1)  # 0.1 Hz high-pass, zero phase
+    >>> len(f) == len(rec), f.dt, round(f.pga / rec.pga, 2)
+    (True, 0.0066, 1.0)
     """
     r = _check_record(record)
     y, npad, desc = _bandpass(r.acc, r.dt, low, high, order)
@@ -279,17 +323,43 @@ def bandpass(record, low: float | None = 0.1, high: float | None = None, order: 
 
 # --------------------------------------------------------------------------- measures
 def pga(record) -> float:
-    """Peak ground acceleration (units of the record, m/s^2)."""
+    """Peak ground acceleration (units of the record, m/s^2).
+
+    Examples
+    --------
+    >>> from rocking.motions import Sine, pga, sample
+    >>> r = sample(Sine(freq=2.0, amplitude=0.01, duration=2.0), dt=0.005)
+    >>> round(pga(r), 4), round(0.01 * (2 * np.pi * 2.0) ** 2, 4)  # X (2 pi f)^2
+    (1.5791, 1.5791)
+    """
     return float(np.max(np.abs(_check_record(record).values)))
 
 
 def pgv(record) -> float:
-    """Peak ground velocity (m/s)."""
+    """Peak ground velocity (m/s).
+
+    Examples
+    --------
+    >>> from rocking.motions import Rectangular, sample
+    >>> r = sample(Rectangular(amplitude=1.0, length=2.0, duration=2.0), dt=0.01)  # A = 1, t1 = 2
+    >>> from rocking.motions import pgv
+    >>> round(pgv(r), 6)  # A t1
+    2.0
+    """
     return float(np.max(np.abs(velocity(record))))
 
 
 def pgd(record) -> float:
-    """Peak ground (table) displacement (m)."""
+    """Peak ground (table) displacement (m).
+
+    Examples
+    --------
+    >>> from rocking.motions import Rectangular, sample
+    >>> r = sample(Rectangular(amplitude=1.0, length=2.0, duration=2.0), dt=0.01)  # A = 1, t1 = 2
+    >>> from rocking.motions import pgd
+    >>> round(pgd(r), 6)  # A t1^2 / 2
+    2.0
+    """
     return float(np.max(np.abs(displacement(record))))
 
 
@@ -310,7 +380,16 @@ def _husid(acc, dt: float) -> np.ndarray:
 
 
 def arias_intensity(record) -> float:
-    """Arias intensity ``pi / (2 g) * integral a^2 dt`` (m/s for a record in m/s^2)."""
+    """Arias intensity ``pi / (2 g) * integral a^2 dt`` (m/s for a record in m/s^2).
+
+    Examples
+    --------
+    >>> from rocking.motions import Rectangular, sample
+    >>> r = sample(Rectangular(amplitude=1.0, length=2.0, duration=2.0), dt=0.01)  # A = 1, t1 = 2
+    >>> from rocking.motions import arias_intensity
+    >>> round(arias_intensity(r), 4), round(np.pi / (2 * 9.80665) * 1.0**2 * 2.0, 4)
+    (0.3204, 0.3204)
+    """
     r = _check_record(record)
     return float(arias_cumulative(r.values, r.dt)[-1])
 
@@ -346,6 +425,15 @@ def significant_duration(record, start: float = 0.05, end: float = 0.95,
 
     The default 5-95 % is the usual ``D5-95``. The crossing times are interpolated
     linearly between samples. ``return_times=True`` gives ``(duration, t_start, t_end)``.
+
+    Examples
+    --------
+    >>> from rocking.motions import Rectangular, sample
+    >>> r = sample(Rectangular(amplitude=1.0, length=2.0, duration=2.0), dt=0.01)  # A = 1, t1 = 2
+    >>> from rocking.motions import significant_duration
+    >>> d, t5, t95 = significant_duration(r, return_times=True)  # uniform a: 0.9 t1
+    >>> round(d, 6), round(t5, 6), round(t95, 6)
+    (1.8, 0.1, 1.9)
     """
     r = _check_record(record)
     res = significant_duration_acc(r.values, r.dt, start, end)
@@ -409,6 +497,17 @@ def intensity_measures(record, block=None) -> dict:
     :class:`rocking.Block`), also the dimensionless rocking measures ``pga_ratio`` =
     ``PGA / (g tan alpha)`` (> 1 is needed to uplift a block from rest) and ``pgv_ratio`` =
     ``PGV p / (g tan alpha)``.
+
+    Examples
+    --------
+    >>> import rocking
+    >>> from rocking.motions import intensity_measures, load_builtin
+    >>> block = rocking.specimen(2)
+    >>> im = intensity_measures(load_builtin("RSN126_GAZLI_GAZ000"), block)
+    >>> im["npts"], im["dt"], round(im["pga_g"], 3)
+    (2048, 0.0066, 0.702)
+    >>> bool(np.isclose(im["pga_ratio"], im["pga"] / (9.80665 * np.tan(block.alpha))))
+    True
     """
     r = _check_record(record)
     return intensity_measures_acc(r.values, r.dt, block=block)

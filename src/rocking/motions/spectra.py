@@ -233,6 +233,15 @@ def response_spectra(record, periods, damping: float = 0.05, *, dt: float | None
     """All spectral quantities at once: ``{"T", "psa", "sa", "sd", "psv", "sv"}``.
 
     Same arguments as :func:`response_spectrum`; one integration gives every quantity.
+
+    Examples
+    --------
+    >>> from rocking.motions import load_builtin, response_spectra
+    >>> sp = response_spectra(load_builtin("RSN126_GAZLI_GAZ000"), [0.5, 1.0])
+    >>> sorted(sp)
+    ['T', 'psa', 'psv', 'sa', 'sd', 'sv']
+    >>> bool(np.allclose(sp["psv"], 2 * np.pi / sp["T"] * sp["sd"]))  # psv = omega sd
+    True
     """
     acc, dt = _signal(record, dt)
     T = _period_array(periods)
@@ -276,6 +285,16 @@ def response_spectrum(record, periods, damping: float = 0.05, kind: str = "psa",
     -------
     numpy.ndarray or float
         One value per period (a float for a scalar period).
+
+    Examples
+    --------
+    >>> from rocking.motions import load_builtin, response_spectrum
+    >>> rec = load_builtin("RSN126_GAZLI_GAZ000")
+    >>> round(response_spectrum(rec, 0.0), 4) == round(rec.pga, 4)  # T = 0: the PGA
+    True
+    >>> sa, sd = (response_spectrum(rec, 1.0, kind=k) for k in ("psa", "sd"))
+    >>> round(sa / sd, 4) == round((2 * np.pi / 1.0) ** 2, 4)  # psa = omega^2 sd
+    True
     """
     if kind not in KINDS:
         raise ParameterError(f"kind must be one of {', '.join(KINDS)}; got {kind!r}")
@@ -290,6 +309,16 @@ def sdof_response(record, period: float, damping: float = 0.05, *, dt: float | N
     Returns ``{"t", "u", "v", "a"}``: time (s), relative displacement, relative velocity and
     absolute acceleration ``u'' + a_g`` (from the equation of motion). ``substeps`` splits
     each step (the result at the samples does not depend on it: the recurrence is exact).
+
+    Examples
+    --------
+    >>> from rocking.motions import load_builtin, response_spectrum, sdof_response
+    >>> rec = load_builtin("RSN126_GAZLI_GAZ000")
+    >>> h = sdof_response(rec, period=1.0)
+    >>> sorted(h), len(h["t"]) == len(rec)
+    (['a', 't', 'u', 'v'], True)
+    >>> bool(np.isclose(np.abs(h["u"]).max(), response_spectrum(rec, 1.0, kind="sd")))
+    True
     """
     acc, dt = _signal(record, dt)
     T = positive("period", period, "s")

@@ -105,6 +105,15 @@ class Envelope:
     1 up to ``t2 = t1 + stationary``, then an exponential decay ``exp(-decay (t - t2))``,
     shifted and rescaled to reach exactly 0 at ``duration``. ``kind="trapezoidal"``:
     linear rise, flat, linear decay to 0 at ``duration``. Times in s, ``decay`` in 1/s.
+
+    Examples
+    --------
+    >>> from rocking.motions import Envelope
+    >>> e = Envelope()  # Jennings: 2 s rise, 10 s stationary, 20 s in all
+    >>> e.t1, e.t2
+    (2.0, 12.0)
+    >>> [round(float(x), 4) for x in e([0.0, 1.0, 5.0, 20.0])]  # (t/t1)^2, 1, 0 at the end
+    [0.0, 0.25, 1.0, 0.0]
     """
 
     kind: str = "jennings"
@@ -334,6 +343,14 @@ def synthetic(target=None, n: int = 1, duration: float | None = None, seed: int 
         ``stationary`` (start, end in s), ``match_error`` (largest ``|ln(Sa/target)|``
         over the control periods in the range), ``pga_factor`` (the set's PGA scaling, 1
         if none) and the generation details.
+
+    Examples
+    --------
+    >>> from rocking.motions import Envelope, synthetic
+    >>> env = Envelope(rise=1.0, stationary=5.0, duration=8.0)
+    >>> recs = synthetic(n=1, duration=8.0, envelope=env, seed=1)  # paper target
+    >>> len(recs), recs[0].dt, len(recs[0]), recs[0].meta["stationary"]
+    (1, 0.01, 801, (1.0, 6.0))
     """
     target = paper_target() if target is None else target
     if not callable(target):
@@ -499,6 +516,13 @@ def seed_earthquakes(use_cache: bool = True) -> list[Record]:
     :func:`~rocking.motions.ec8.paper_target` (see the module doc). Made once, then
     cached in memory and on disk (see :func:`cache_dir`); ``use_cache=False`` regenerates
     them (a few seconds) without touching either cache.
+
+    Examples
+    --------
+    >>> from rocking.motions import seed_earthquakes
+    >>> eqs = seed_earthquakes()
+    >>> len(eqs), eqs[0].number, eqs[0].dt, round(eqs[0].duration, 2)
+    (30, 1, 0.01, 20.0)
     """
     if not use_cache:
         return list(_generate_paper())
@@ -541,14 +565,30 @@ def _number(n) -> int:
 
 
 def paper_earthquake(n) -> Record:
-    """Record number ``n`` (1-30) of :func:`seed_earthquakes`."""
+    """Record number ``n`` (1-30) of :func:`seed_earthquakes`.
+
+    Examples
+    --------
+    >>> from rocking.motions import paper_earthquake
+    >>> rec = paper_earthquake(3)
+    >>> rec.number, rec.name, rec.meta["stationary"]
+    (3, 'synthetic earthquake 3', (2.0, 12.0))
+    """
     k = _number(n)
     return seed_earthquakes()[k - 1]
 
 
 def earthquake_motion(n, load_factor: float = 1.0) -> Record:
     """Our earthquake ``n`` (1-30) multiplied by ``load_factor`` (> 0), for
-    ``rocking simulate --earthquake N --load-factor F``."""
+    ``rocking simulate --earthquake N --load-factor F``.
+
+    Examples
+    --------
+    >>> from rocking.motions import earthquake_motion, paper_earthquake
+    >>> m = earthquake_motion(3, load_factor=0.5)
+    >>> m.scale, round(m.pga / paper_earthquake(3).pga, 6)
+    (0.5, 0.5)
+    """
     k = _number(n)
     f = positive("load_factor", load_factor)
     rec = paper_earthquake(k)
@@ -558,7 +598,15 @@ def earthquake_motion(n, load_factor: float = 1.0) -> Record:
 # ----------------------------------------------------------------------------- compatibility
 @dataclass
 class Compatibility:
-    """Result of :func:`check_compatibility` (accelerations in m/s^2, periods in s)."""
+    """Result of :func:`check_compatibility` (accelerations in m/s^2, periods in s).
+
+    Examples
+    --------
+    >>> from rocking.motions import check_compatibility, seed_earthquakes
+    >>> c = check_compatibility(seed_earthquakes())
+    >>> bool(c.min_ratio >= 0.9), bool(c.mean_pga >= c.target_pga)  # EC8 3.2.3.1.2
+    (True, True)
+    """
 
     passed: bool
     checks: dict
@@ -625,6 +673,13 @@ def check_compatibility(records, target=None, period_range=PERIOD_RANGE,
     where the spectra are computed; only those inside ``period_range`` are judged. The
     stationary duration is read from ``record.meta["stationary"]`` (synthetic records);
     for other records it is not known and the check is reported as ``None``.
+
+    Examples
+    --------
+    >>> from rocking.motions import check_compatibility, seed_earthquakes
+    >>> c = check_compatibility(seed_earthquakes())
+    >>> c.passed, c.n_records, c.checks
+    (True, 30, {'stationary': True, 'pga': True, 'spectrum': True})
     """
     recs = list(records)
     if not recs:
