@@ -80,6 +80,21 @@ def free_rocking(t, theta, *, units: str = "rad", offset="auto", min_amplitude=N
         or an error surface without an interior minimum (alpha not identifiable).
     ParameterError
         Malformed input: NaN or inf samples, non-increasing times, mismatched lengths.
+
+    Examples
+    --------
+    Identify specimen 2 back from its own simulated free rocking (classical model,
+    500 Hz): the fit recovers the parameters it was simulated with.
+
+    >>> import rocking
+    >>> from rocking.identify import free_rocking
+    >>> block = rocking.specimen(2)
+    >>> r = rocking.simulate(block, theta0=0.6 * block.alpha, duration=6.0, dt_out=0.002)
+    >>> fit = free_rocking(r.t, r.theta)
+    >>> round(fit.alpha, 3), round(fit.p, 2), round(fit.mu, 3)
+    (0.168, 3.81, 0.958)
+    >>> (block.alpha, block.p, block.mu)
+    (0.168, 3.81, 0.958)
     """
     rec, n_boot = _read_input(t, theta, units, loss, n_boot)
     z, c, method = remove_offset(rec, offset)
