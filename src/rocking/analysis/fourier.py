@@ -89,6 +89,19 @@ class FourierSpectrum:
     DataFrame (``freq``, ``amplitude``, ``prominence``), largest peak first; ``dt`` (s) is
     the step of the uniform grid the FFT ran on and ``resampled`` says whether the input
     had to be interpolated onto it.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> from rocking.analysis import fourier_spectrum
+    >>> t = np.linspace(0.0, 10.0, 1001)  # s
+    >>> x = np.sin(2 * np.pi * 1.5 * t) + 0.5 * np.sin(2 * np.pi * 4.0 * t)
+    >>> fs = fourier_spectrum((t, x), fmax=10.0)
+    >>> fs.peaks[["freq", "amplitude"]].round(3).values.tolist()
+    [[1.5, 1.0], [4.0, 0.5]]
+    >>> round(fs.dt, 6), fs.resampled, type(fs.plot()).__name__
+    (0.01, False, 'Axes')
     """
 
     freq: np.ndarray
@@ -194,6 +207,19 @@ def fourier_spectrum(response_or_signal, *, detrend: str | None = "constant",
         ``spectrum`` (DataFrame ``freq``, ``amplitude``), ``peaks`` (DataFrame ``freq``,
         ``amplitude``, ``prominence``, highest first; frequency and height refined by a
         parabola through the three samples around each maximum) and ``plot()``.
+
+    Examples
+    --------
+    A sine of 2 Hz and amplitude 0.3 peaks at 2 Hz with height 0.3 (the amplitude is
+    normalised by the window's sum):
+
+    >>> from rocking.analysis import fourier_spectrum
+    >>> t = np.linspace(0.0, 10.0, 1001)  # s
+    >>> fs = fourier_spectrum((t, 0.3 * np.sin(2 * np.pi * 2.0 * t)))
+    >>> round(fs.peak_freq, 4), round(fs.peak_amplitude, 4)
+    (2.0, 0.3)
+
+    Of a rocking response: ``fourier_spectrum(rocking.simulate(block, motion))``.
     """
 
     t, x, label = _as_signal(response_or_signal)

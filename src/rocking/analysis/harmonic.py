@@ -62,6 +62,19 @@ def motion_space(block, freqs, amplitudes, kind: str = "sine", duration: float =
     ``acc_ratio`` (acceleration amplitude / (g tan alpha), the uplift criterion of a block at
     rest is ``acc_ratio > 1`` for the constant sine), ``max_abs_theta`` (rad),
     ``max_abs_theta_over_alpha``, ``n_impacts``, ``rocked`` and ``overturned``.
+
+    Examples
+    --------
+    Constant sines on specimen 2: a block at rest lifts off when the acceleration amplitude
+    ``(2 pi f)^2 X`` exceeds ``g tan alpha`` (``acc_ratio > 1``):
+
+    >>> import rocking
+    >>> from rocking.analysis import motion_space
+    >>> df = motion_space(rocking.specimen(2), [1.0, 2.0], [0.005, 0.05], duration=3.0)
+    >>> df["acc_ratio"].round(2).tolist()
+    [0.12, 1.19, 0.47, 4.75]
+    >>> df["rocked"].tolist(), bool((df["rocked"] == (df["acc_ratio"] > 1)).all())
+    ([False, True, False, True], True)
     """
     if kind not in KINDS:
         raise ParameterError(f"kind must be one of {', '.join(KINDS)}; got {kind!r}")
@@ -85,7 +98,19 @@ def motion_space(block, freqs, amplitudes, kind: str = "sine", duration: float =
 
 def plot_motion_space(df: pd.DataFrame, ax=None):
     """Map of a :func:`motion_space` table: max ``|theta|`` / alpha per cell, overturned cells
-    marked, no-rocking cells blank. Returns the Axes."""
+    marked, no-rocking cells blank. Returns the Axes.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import rocking
+    >>> from rocking.analysis import motion_space, plot_motion_space
+    >>> df = motion_space(rocking.specimen(2), [1.0, 2.0], [0.005, 0.05], duration=3.0)
+    >>> ax = plot_motion_space(df)
+    >>> type(ax).__name__, ax.get_xlabel()
+    ('Axes', 'frequency (Hz)')
+    """
 
     if ax is None:
         _, ax = figure()

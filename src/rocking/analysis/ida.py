@@ -60,6 +60,21 @@ def ida(block, records, im: str = "pga", levels=None, model="housner",
     ``n_impacts``, ``settled`` (the block was at rest or had overturned when the run
     ended; an unsettled run is still rocking: it counts as not overturned, with the angle
     it reached) and ``damage_state``.
+
+    Examples
+    --------
+    A 1 Hz one-sine record scaled to PGA levels (m/s^2) on specimen 2 (``g tan alpha`` =
+    1.66 m/s^2): below it the block does not rock (state 0), above it overturns (the last
+    state, 3):
+
+    >>> import rocking
+    >>> from rocking.analysis import ida
+    >>> from rocking.motions import Record
+    >>> t = np.arange(0.0, 1.0, 0.005)
+    >>> rec = Record(np.sin(2 * np.pi * t), 0.005, name="one sine 1 Hz")  # PGA 1 m/s^2
+    >>> tab = ida(rocking.specimen(2), [rec], levels=[1.0, 3.0, 10.0], duration=6.0)
+    >>> tab["scale"].tolist(), tab["damage_state"].tolist()
+    ([1.0, 3.0, 10.0], [0, 3, 3])
     """
     recs = list(records) if not isinstance(records, Record) else [records]
     if not recs or not all(isinstance(r, Record) for r in recs):
@@ -102,6 +117,19 @@ def ida_capacity(table: pd.DataFrame, state: int | None = None) -> pd.DataFrame:
     exceeds it). Feed ``capacity`` and ``censored`` to :func:`~.fragility.fragility_ida`.
     The capacity is the first level reached, so it is high by up to one level step (the
     true capacity lies between that level and the one below): use fine levels.
+
+    Examples
+    --------
+    >>> import rocking
+    >>> from rocking.analysis import ida, ida_capacity
+    >>> from rocking.motions import Record
+    >>> t = np.arange(0.0, 1.0, 0.005)
+    >>> rec = Record(np.sin(2 * np.pi * t), 0.005, name="one sine 1 Hz")  # PGA 1 m/s^2
+    >>> tab = ida(rocking.specimen(2), [rec], levels=[1.0, 2.0, 3.0], duration=6.0)
+    >>> ida_capacity(tab)[["capacity", "censored"]].values.tolist()
+    [[2.0, False]]
+    >>> ida_capacity(tab[tab["im"] < 1.5])["censored"].tolist()  # never overturned: censored
+    [True]
     """
     need = {"record", "im", "damage_state"}
     if not need <= set(table.columns):
@@ -121,7 +149,21 @@ def ida_capacity(table: pd.DataFrame, state: int | None = None) -> pd.DataFrame:
 
 def plot_ida(table: pd.DataFrame, ax=None):
     """IDA curves of an :func:`ida` table: max ``|theta|`` / alpha against the IM level, one
-    line per record, overturning marked at the top. Returns the Axes."""
+    line per record, overturning marked at the top. Returns the Axes.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import rocking
+    >>> from rocking.analysis import ida, plot_ida
+    >>> from rocking.motions import Record
+    >>> t = np.arange(0.0, 1.0, 0.005)
+    >>> rec = Record(np.sin(2 * np.pi * t), 0.005, name="one sine 1 Hz")
+    >>> tab = ida(rocking.specimen(2), [rec], levels=[1.0, 3.0], duration=6.0)
+    >>> type(plot_ida(tab)).__name__
+    'Axes'
+    """
 
     if ax is None:
         _, ax = figure()

@@ -238,6 +238,21 @@ def pulse_motion(block, pulse: str, omega_ratio: float, accel_ratio: float, *,
     :data:`PULSES` and ``pulse_params`` its other catalog parameters (``gamma``, ``nu``).
     This is the motion that :func:`overturning_spectrum` and :func:`outcome_map` simulate
     at that point.
+
+    Examples
+    --------
+    The pulse's peak is ``accel_ratio * g tan alpha`` and its period ``2 pi / omega_p`` with
+    ``omega_p = omega_ratio * p``:
+
+    >>> import math
+    >>> import rocking
+    >>> from rocking.analysis import pulse_motion
+    >>> block = rocking.specimen(2)
+    >>> m = pulse_motion(block, "one_sine", 2.0, 1.5)
+    >>> round(m.pga / (rocking.G * math.tan(block.alpha)), 6)
+    1.5
+    >>> round(m.length, 6) == round(2 * math.pi / (2.0 * block.p), 6)
+    True
     """
     name, pulse_params, _ = _resolve("pulse_motion", pulse, None, pulse_params, deprecated)
     _check_block(block)
@@ -298,6 +313,19 @@ def overturning_spectrum(block, pulse: str = "one_sine", omega_ratio=None, model
         ``min_overturn_ratio``). ``df.attrs`` holds the block's ``alpha``, ``p``, ``mu``,
         ``pulse``, ``tol``, ``model`` and ``n_simulations``. Plot with
         :func:`plot_overturning_spectrum`.
+
+    Examples
+    --------
+    Specimen 2 under one-sine pulses: the least overturning ``a_p / (g tan alpha)`` is just
+    above the static uplift bound 1 for long pulses and grows with ``omega_p / p``:
+
+    >>> import rocking
+    >>> from rocking.analysis import overturning_spectrum
+    >>> sp = overturning_spectrum(rocking.specimen(2), "one_sine", [1.0, 4.0], tol=0.02)
+    >>> sp["min_overturn_ratio"].round(1).tolist(), sp["mode"].tolist()
+    ([1.1, 1.7], [1, 1])
+    >>> bool((sp["safe_ratio"] < sp["min_overturn_ratio"]).all())
+    True
     """
 
     name, pulse_params, options = _resolve("overturning_spectrum", pulse, model, pulse_params,
@@ -419,6 +447,21 @@ def outcome_map(block, pulse: str = "one_sine", omega_ratio=None, accel_ratio=No
         ``max_abs_theta_over_alpha``. For the one-sine pulse the map shows the safe region
         between the mode-1 tongue and the mode-2 boundary. Plot with
         :func:`plot_outcome_map`.
+
+    Examples
+    --------
+    Below ``a_p / (g tan alpha) = 1`` the block does not even lift off; at
+    ``omega_p / p = 4`` the safe region between the mode-1 and mode-2 boundaries shows:
+
+    >>> import rocking
+    >>> from rocking.analysis import outcome_map
+    >>> om = outcome_map(rocking.specimen(2), "one_sine", [1.0, 4.0], [0.9, 1.5, 3.0])
+    >>> om["accel_ratio"].tolist()
+    [0.9, 1.5, 3.0, 0.9, 1.5, 3.0]
+    >>> om["rocked"].tolist()
+    [False, True, True, False, True, True]
+    >>> om["mode"].tolist()  # 0 safe, 1 overturned after impacts, 2 without any
+    [0, 2, 2, 0, 0, 1]
     """
 
     name, pulse_params, options = _resolve("outcome_map", pulse, model, pulse_params,
@@ -468,7 +511,19 @@ def _title(attrs) -> str:
 
 def plot_overturning_spectrum(df, ax=None, *, label: str | None = None, **kw):
     """Plot an :func:`overturning_spectrum`: ``min_overturn_ratio`` against
-    ``omega_ratio``, the points marked by overturning mode. Returns the Axes."""
+    ``omega_ratio``, the points marked by overturning mode. Returns the Axes.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import rocking
+    >>> from rocking.analysis import overturning_spectrum, plot_overturning_spectrum
+    >>> sp = overturning_spectrum(rocking.specimen(2), "one_sine", [1.0, 4.0], tol=0.05)
+    >>> ax = plot_overturning_spectrum(sp, label="specimen 2")
+    >>> type(ax).__name__
+    'Axes'
+    """
 
     if ax is None:
         _, ax = new_axes()
@@ -502,7 +557,18 @@ def plot_outcome_map(df, ax=None, *, spectrum=None):
     """Plot an :func:`outcome_map`: the cells coloured by outcome (no rocking, rocking
     without overturning, overturning in mode 1 or mode 2), which shows both overturning
     modes and the safe region between them. ``spectrum`` (an :func:`overturning_spectrum`
-    of the same block and pulse) is overlaid as a line. Returns the Axes."""
+    of the same block and pulse) is overlaid as a line. Returns the Axes.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import rocking
+    >>> from rocking.analysis import outcome_map, plot_outcome_map
+    >>> om = outcome_map(rocking.specimen(2), "one_sine", [1.0, 4.0], [0.9, 1.5, 3.0])
+    >>> type(plot_outcome_map(om)).__name__
+    'Axes'
+    """
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
 

@@ -79,7 +79,22 @@ def default_periods(block, n: int = 100, omega_ratio_min: float = 1.0,
     """``n`` log-spaced periods (s) from ``2 pi / (omega_ratio_max p)`` to ``2 pi /
     (omega_ratio_min p)``: the pulse periods that govern a block's overturning (module doc).
 
-    ``block`` is a :class:`~rocking.blocks.Block` (its ``p``, 1/s) or ``p`` itself."""
+    ``block`` is a :class:`~rocking.blocks.Block` (its ``p``, 1/s) or ``p`` itself.
+
+    Examples
+    --------
+    The pulse periods ``2 pi / omega_p`` for ``omega_p / p`` from 10 down to 1:
+
+    >>> import math
+    >>> import rocking
+    >>> from rocking.analysis import default_periods
+    >>> block = rocking.specimen(2)  # p = 3.81 1/s
+    >>> T = default_periods(block, n=5)
+    >>> T.round(3).tolist()
+    [0.165, 0.293, 0.522, 0.927, 1.649]
+    >>> bool(np.isclose(T[-1], 2 * math.pi / block.p))
+    True
+    """
     p = getattr(block, "p", block)
     try:
         p = positive("block", p, "1/s (the block's frequency parameter p)")
@@ -105,7 +120,20 @@ def uniform_hazard_spectrum(curves, return_period: float = 475.0):
     value exceeded at the rate ``1 / return_period`` (years) is read off the curve
     (:meth:`HazardCurve.im_at_return_period`). The result is a table for
     :func:`select_records`'s ``target_spectrum`` (log-log interpolated, no extrapolation:
-    the curves' periods must cover the periods of the match)."""
+    the curves' periods must cover the periods of the match).
+
+    Examples
+    --------
+    Three SA hazard curves (EN 1998-1 power laws through the values at 475 years): the
+    spectrum at 475 years is those values, in m/s^2:
+
+    >>> from rocking.analysis import HazardCurve, uniform_hazard_spectrum
+    >>> curves = [HazardCurve.from_code_value(a, im_name=f"SA({T})")  # a in g
+    ...           for T, a in ((0.1, 0.5), (0.5, 0.6), (1.0, 0.3))]
+    >>> periods, values = uniform_hazard_spectrum(curves, return_period=475)
+    >>> periods.tolist(), (values / 9.80665).round(6).tolist()
+    ([0.1, 0.5, 1.0], [0.5, 0.6, 0.3])
+    """
     tr = positive("return_period", return_period, "years")
     items = list(curves.items()) if isinstance(curves, dict) else [(None, c) for c in
                                                                    curves]
@@ -231,7 +259,24 @@ class SelectionResult:
     scaled spectrum and ``target`` (m/s^2) at ``periods`` (s), the ``misfit`` (RMS log
     ratio), ``min_ratio`` (min of mean / target) and ``compliant`` (min_ratio >= 0.9 with
     every scale within ``max_scale``); ``notes`` says what was adjusted (the common factor)
-    and what the code would also ask (at least 3 records)."""
+    and what the code would also ask (at least 3 records).
+
+    Examples
+    --------
+    Three candidates' spectra (m/s^2) at 0.2, 0.5 and 1 s; the second, doubled, is the
+    target:
+
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> from rocking.analysis import select_records
+    >>> target = np.array([6.0, 5.0, 2.5])
+    >>> spectra = np.array([[6.0, 4.0, 1.0], [3.0, 2.5, 1.25], [2.0, 2.0, 2.0]])
+    >>> sel = select_records(spectra, target, [0.2, 0.5, 1.0], n=1)
+    >>> sel.indices.tolist(), sel.scales.tolist(), sel.min_ratio, sel.compliant
+    ([1], [2.0], 1.0, True)
+    >>> type(sel.plot()).__name__
+    'Axes'
+    """
 
     indices: np.ndarray
     scales: np.ndarray
@@ -447,6 +492,24 @@ def select_records(candidates, target_spectrum, periods=None, n: int = 11,
     SelectionResult
         ``compliant=False`` (with a PlausibilityWarning) if the 90 % rule cannot be met
         within ``max_scale``.
+
+    Examples
+    --------
+    Precomputed spectra (m/s^2) of seven candidates at three periods: five of other shapes
+    and two with the target's shape (half and 1.5 times it). The pair of those two, scaled
+    by 2 and 2/3, matches the target exactly:
+
+    >>> from rocking.analysis import select_records
+    >>> periods = np.array([0.2, 0.5, 1.0])  # s
+    >>> target = np.array([6.0, 5.0, 2.5])  # m/s^2
+    >>> rng = np.random.default_rng(1)
+    >>> others = target * np.exp(rng.normal(0.0, 0.5, (5, 3)))
+    >>> spectra = np.vstack([others, target / 2.0, 1.5 * target])
+    >>> sel = select_records(spectra, target, periods, n=2)
+    >>> sel.indices.tolist(), sel.scales.round(4).tolist(), round(sel.misfit, 6)
+    ([5, 6], [2.0, 0.6667], 0.0)
+    >>> sel.compliant, sel.notes[0][:10]
+    (True, 'n = 2 < 3:')
     """
     if periods is None:
         if block is None:
