@@ -351,6 +351,18 @@ class Building:
         the first period (:meth:`shear`).
     alpha : float or None
         Lateral stiffness ratio of a continuous building (:meth:`continuous`).
+
+    Examples
+    --------
+    >>> import math
+    >>> from rocking.buildings import Building
+    >>> b = Building.shear(3, period=0.6)  # uniform masses and storey stiffnesses
+    >>> ratio = math.sin(3 * math.pi / 14) / math.sin(math.pi / 14)  # omega_j ~ sin((2j-1) pi/14)
+    >>> round(float(b.periods[0] / b.periods[1]), 4), round(ratio, 4)
+    (2.8019, 2.8019)
+    >>> omega, zeta, gamma_phi = b.modal_factors(floor=3)
+    >>> round(float(gamma_phi.sum()), 6)  # sum of Gamma_j phi_j = 1 at every floor
+    1.0
     """
 
     def __init__(self, periods, damping, participation, shapes=None,

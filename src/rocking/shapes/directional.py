@@ -175,7 +175,18 @@ def directional_parameters(shape, directions=360):
     """The rocking parameters of ``shape`` (:class:`rocking.shapes.Shape`) per direction
     of shaking: a :class:`pandas.DataFrame`, one row per ``phi`` (rad; an int ``n``: ``n``
     directions evenly spaced over [0, 2 pi), default one per degree), the columns of
-    :data:`COLUMNS` (module docstring)."""
+    :data:`COLUMNS` (module docstring).
+
+    Examples
+    --------
+    >>> import trimesh
+    >>> from rocking.shapes import Shape
+    >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)), density=2000.0)
+    >>> from rocking.shapes import directional_parameters
+    >>> tab = directional_parameters(box, 4)  # phi = 0, 90, 180, 270 deg
+    >>> [round(float(a), 4) for a in tab["alpha_plus"]]  # atan(0.2/1), atan(0.3/1)
+    [0.1974, 0.2915, 0.1974, 0.2915]
+    """
     import pandas as pd
 
     phi = as_directions(directions)
@@ -188,7 +199,20 @@ def directional_parameters(shape, directions=360):
 class Direction:
     """One direction of a directional table: ``phi`` (rad), ``phi_deg``, the ``side``
     ("+" or "-") that uplifts first there, its ``alpha`` (rad) and ``uplift`` acceleration
-    (m/s^2; ``uplift_g`` in g), and ``index``, the table's row label."""
+    (m/s^2; ``uplift_g`` in g), and ``index``, the table's row label.
+
+    Examples
+    --------
+    >>> import trimesh
+    >>> from rocking.shapes import Shape
+    >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)), density=2000.0)
+    >>> from rocking.shapes import directional_parameters, weakest_direction
+    >>> d = weakest_direction(directional_parameters(box, 4))  # along the 0.4 m side
+    >>> d.phi_deg, d.side, round(d.alpha, 4), round(float(np.arctan(0.2 / 1.0)), 4)
+    (0.0, '+', 0.1974, 0.1974)
+    >>> round(d.uplift_g, 6)  # tan(alpha) = b / h
+    0.2
+    """
 
     phi: float
     phi_deg: float
@@ -222,12 +246,34 @@ def weakest_direction(table) -> Direction:
     """The direction of the table with the smallest uplift acceleration
     ``min(uplift_plus, uplift_minus)`` and its side. The table samples the directions:
     the exact minimum is at a normal of the support hull's edge nearest to the centre of
-    mass (the support function's minimum); :meth:`Shape.weakest` gives it."""
+    mass (the support function's minimum); :meth:`Shape.weakest` gives it.
+
+    Examples
+    --------
+    >>> import trimesh
+    >>> from rocking.shapes import Shape
+    >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)), density=2000.0)
+    >>> from rocking.shapes import directional_parameters, weakest_direction
+    >>> d = weakest_direction(directional_parameters(box, 72))
+    >>> d.phi_deg, round(d.uplift_g, 6)  # the smaller half-width: 0.2 / 1.0
+    (0.0, 0.2)
+    """
     return pick(table, "weakest")
 
 
 def strongest_direction(table) -> Direction:
-    """The direction of the table whose smaller uplift acceleration is the largest."""
+    """The direction of the table whose smaller uplift acceleration is the largest.
+
+    Examples
+    --------
+    >>> import trimesh
+    >>> from rocking.shapes import Shape
+    >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)), density=2000.0)
+    >>> from rocking.shapes import directional_parameters, strongest_direction
+    >>> d = strongest_direction(directional_parameters(box, 72))  # every 5 deg
+    >>> d.phi_deg, round(d.uplift_g, 2), round(float(np.hypot(0.2, 0.3)), 2)  # max b(phi)/h
+    (55.0, 0.36, 0.36)
+    """
     return pick(table, "strongest")
 
 
@@ -243,7 +289,16 @@ def parse_direction(value):
     """One ``direction`` of shaking as given by a user: an angle, returned in rad (a bare
     number is in degrees, the unit of ``direction`` at every edge: spec, CLI,
     :meth:`rocking.Block.from_mesh`; a string may carry its unit, ``"30deg"``,
-    ``"0.5rad"``), or ``"weakest"`` / ``"strongest"`` (returned as such)."""
+    ``"0.5rad"``), or ``"weakest"`` / ``"strongest"`` (returned as such).
+
+    Examples
+    --------
+    >>> from rocking.shapes import parse_direction
+    >>> round(parse_direction(30), 6), round(float(np.radians(30)), 6)  # a bare number: deg
+    (0.523599, 0.523599)
+    >>> parse_direction("0.5rad"), parse_direction("weakest")
+    (0.5, 'weakest')
+    """
     if isinstance(value, str) and value.strip().lower() in NAMED_DIRECTIONS:
         return value.strip().lower()
     if isinstance(value, bool) or not isinstance(value, int | float | str):
@@ -256,7 +311,19 @@ def resolve_direction(shape, direction) -> float:
     """The angle ``phi`` (rad) of one :func:`parse_direction` result for ``shape``:
     ``"weakest"`` is :meth:`Shape.weakest` (exact: the normal of the support edge nearest
     to the centre of mass), ``"strongest"`` the largest smaller uplift acceleration over
-    3600 directions refined by a bounded search; an angle is returned as it is."""
+    3600 directions refined by a bounded search; an angle is returned as it is.
+
+    Examples
+    --------
+    >>> import trimesh
+    >>> from rocking.shapes import Shape
+    >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)), density=2000.0)
+    >>> from rocking.shapes import resolve_direction
+    >>> round(abs(float(np.cos(resolve_direction(box, "weakest")))), 6)  # normal to the 0.6 m face
+    1.0
+    >>> round(resolve_direction(box, "strongest"), 4), round(float(np.arctan(0.3 / 0.2)), 4)
+    (0.9828, 0.9828)
+    """
     if direction == "weakest":
         return float(shape.weakest().phi)
     if direction == "strongest":

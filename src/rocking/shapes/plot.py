@@ -14,7 +14,20 @@ def plot_directional(table, *, title: str | None = None):
     acceleration ``min(uplift_plus, uplift_minus)`` (g; dashed: the 3-D body's,
     ``uplift_3d``, lower where the shaking crosses a support edge obliquely), the weakest
     direction marked (:func:`rocking.shapes.weakest_direction`). No pyplot state is
-    touched."""
+    touched.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import trimesh
+    >>> from rocking.shapes import Shape
+    >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)), density=2000.0)
+    >>> from rocking.shapes import directional_parameters, plot_directional
+    >>> fig = plot_directional(directional_parameters(box, 36), title="box")
+    >>> type(fig).__name__, len(fig.axes)
+    ('Figure', 2)
+    """
     from matplotlib.figure import Figure
 
     weak = weakest_direction(table)

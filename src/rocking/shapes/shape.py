@@ -45,13 +45,38 @@ PLAUSIBLE_HEIGHT = 50.0
 
 
 class MeshRepairWarning(UserWarning):
-    """A defective mesh was replaced by its convex hull (``repair="hull"``)."""
+    """A defective mesh was replaced by its convex hull (``repair="hull"``).
+
+    Examples
+    --------
+    >>> import warnings, trimesh
+    >>> from rocking.shapes import MeshRepairWarning, load_shape
+    >>> mesh = trimesh.creation.box(extents=(0.4, 0.6, 2.0))
+    >>> mesh.faces = mesh.faces[:-1]  # one triangle missing: not watertight
+    >>> _ = mesh.export("open_box.stl")
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     shape = load_shape("open_box.stl", density=2000.0, repair="hull")
+    >>> caught[0].category is MeshRepairWarning, shape.repaired, round(shape.volume, 6)
+    (True, True, 0.48)
+    """
 
 
 @dataclass(frozen=True, eq=False)
 class Shape:
     """A validated watertight mesh with its mass properties and support (module
-    docstring). Build it with :func:`load_shape` or :meth:`from_trimesh`."""
+    docstring). Build it with :func:`load_shape` or :meth:`from_trimesh`.
+
+    Examples
+    --------
+    >>> import trimesh
+    >>> from rocking.shapes import Shape
+    >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)), density=2000.0)
+    >>> round(box.mass, 6), round(box.h, 6), round(box.height, 6)  # 2000 x 0.48 m^3; h = H/2
+    (960.0, 1.0, 2.0)
+    >>> box.contact_points, bool(np.allclose(box.com, 0.0))  # 4 corners; centred box
+    (4, True)
+    """
 
     vertices: np.ndarray
     faces: np.ndarray
@@ -229,7 +254,19 @@ def load_shape(path, *, density=None, mass=None, up="z", repair=None, tol=None,
     (with a :class:`MeshRepairWarning` stating the volume added) instead of refusing it.
     ``tol``: the contact patch's tolerance (m, or "2mm"; default 1e-3 of the height).
     ``units``: the file's length unit ("m", "cm", "mm"). ``weld``: the vertex-merging
-    distance (m; default 1e-9 of the bounding box's diagonal)."""
+    distance (m; default 1e-9 of the bounding box's diagonal).
+
+    Examples
+    --------
+    >>> import trimesh
+    >>> from rocking.shapes import load_shape
+    >>> _ = trimesh.creation.box(extents=(0.4, 0.6, 2.0)).export("box.stl")
+    >>> box = load_shape("box.stl", density=2000.0)
+    >>> round(box.mass, 3), round(box.h, 6)  # 2000 kg/m^3 x 0.48 m^3; h = H/2
+    (960.0, 1.0)
+    >>> round(load_shape("box.stl", mass=100.0, units="cm").height, 6)  # a 2 cm box
+    0.02
+    """
     import os
 
     v, f = read_mesh(path, units)
