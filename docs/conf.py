@@ -10,6 +10,10 @@ Generated at build time, git-ignored, under ``docs/api/generated/``:
   below), whose autosummary stubs autosummary writes beside it;
 * ``docs/architecture.md`` and ``docs/cluster.md`` turned into reStructuredText by
   :func:`docs_md.convert` (the Markdown files stay the source, readable on GitHub).
+
+The gallery (sphinx-gallery): every script of ``docs/gallery/`` runs during the build
+(``abort_on_example_error``: an example that fails fails the build) and its pages, figures
+and downloads go to ``docs/auto_examples/`` (git-ignored, like ``docs/sg_execution_times.rst``).
 """
 
 from __future__ import annotations
@@ -42,6 +46,7 @@ extensions = [
     "sphinx.ext.mathjax",
     "numpydoc",
     "sphinx_click",
+    "sphinx_gallery.gen_gallery",
 ]
 
 # -- the public API, generated from each package's __all__ --------------------------------
@@ -161,6 +166,28 @@ for _md in ("architecture", "cluster"):
 from rocking.verification import verification_rst  # noqa: E402
 
 _write_if_changed(GENERATED / "verification_table.inc", verification_rst())
+
+# -- the gallery: runnable examples, each run at build time ----------------------------------
+sphinx_gallery_conf = {
+    "examples_dirs": "gallery",
+    "gallery_dirs": "auto_examples",
+    "filename_pattern": r"\.py$",         # every example runs (not only plot_*)
+    "ignore_pattern": r"__init__\.py",
+    "abort_on_example_error": True,        # a failing example fails the build
+    "only_warn_on_example_error": False,
+    "image_scrapers": ("matplotlib",),
+    "within_subsection_order": "gallery_order.GalleryOrder",   # docs/gallery_order.py
+    "download_all_examples": False,
+    "remove_config_comments": True,
+    "show_memory": False,
+    "show_signature": False,
+    "plot_gallery": "True",
+    "capture_repr": ("_repr_html_", "__repr__"),
+    "matplotlib_animations": False,
+    "reference_url": {},                   # no network: no links resolved online
+    "backreferences_dir": None,
+    "min_reported_time": 1,
+}
 
 autosummary_generate = True
 autosummary_imported_members = True
