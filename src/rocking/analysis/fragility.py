@@ -281,11 +281,11 @@ class FragilityFit:
     Examples
     --------
     >>> from rocking.analysis import fragility
-    >>> im = np.repeat([1.0, 2.0, 4.0], 10)  # PGA (m/s^2)
-    >>> failed = np.tile(np.arange(10), 3) < np.repeat([1, 5, 9], 10)
+    >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10)  # PGA (m/s^2)
+    >>> failed = np.tile(np.arange(10), 5) < np.repeat([1, 3, 5, 7, 9], 10)
     >>> fit = fragility(im, failed, n_boot=0, im_name="pga", im_unit="m/s^2")
     >>> fit
-    FragilityFit('failure', pga: median ... m/s^2, beta ..., n 30, glm-probit ...)
+    FragilityFit('failure', pga: median 2 m/s^2, beta ..., n 50, glm-probit ...)
     >>> float(fit.probability(fit.median))  # the median is the 50 % point
     0.5
     >>> bool(np.isclose(fit.median, np.exp(-fit.coef[0] / fit.coef[1])))
@@ -761,10 +761,10 @@ def annual_frequency(fit, hazard_im, hazard_rate, *, hazard_unit: str | None = N
     ``k0 median^-k exp(k^2 beta^2 / 2)``:
 
     >>> from rocking.analysis import annual_frequency, fragility
-    >>> im = np.repeat([1.0, 2.0, 4.0], 10)  # PGA (m/s^2)
-    >>> failed = np.tile(np.arange(10), 3) < np.repeat([1, 5, 9], 10)
+    >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10)  # PGA (m/s^2)
+    >>> failed = np.tile(np.arange(10), 5) < np.repeat([1, 3, 5, 7, 9], 10)
     >>> fit = fragility(im, failed, n_boot=0, im_name="pga", im_unit="m/s^2")
-    >>> x = np.logspace(-2, 2, 50)  # m/s^2
+    >>> x = np.logspace(-4, 3, 80)  # m/s^2
     >>> lam = annual_frequency(fit, x, 1e-2 * x**-2.0, hazard_unit="m/s^2")
     >>> closed = 1e-2 * fit.median**-2.0 * np.exp(2.0 * fit.beta**2)
     >>> bool(abs(lam / closed - 1) < 1e-3)

@@ -467,8 +467,8 @@ def plot_risk(curve: HazardCurve, fit, ax=None):
     >>> import matplotlib
     >>> matplotlib.use("Agg")
     >>> from rocking.analysis import HazardCurve, fragility, plot_risk
-    >>> im = np.repeat([1.0, 2.0, 4.0], 10)  # PGA (m/s^2)
-    >>> failed = np.tile(np.arange(10), 3) < np.repeat([1, 5, 9], 10)
+    >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10)  # PGA (m/s^2)
+    >>> failed = np.tile(np.arange(10), 5) < np.repeat([1, 3, 5, 7, 9], 10)
     >>> fit = fragility(im, failed, n_boot=0, im_name="pga", im_unit="m/s^2")
     >>> fig = plot_risk(HazardCurve.from_code_value(0.25), fit)
     >>> type(fig).__name__, len(fig.axes)
