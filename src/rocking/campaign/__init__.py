@@ -21,7 +21,27 @@ from .store import Store, load
 
 
 def status(store) -> dict:
-    """How many simulations (and chunks) of the store are done and how many remain."""
+    """How many simulations (and chunks) of the store are done and how many remain.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> from rocking import campaign
+    >>> _ = Path("pulses.toml").write_text('''
+    ... campaign = {name = "pulses", seed = 1, model = "housner"}
+    ... blocks = [{specimen = 2}]
+    ... run = {chunk_size = 2}
+    ... [motions]
+    ... kind = "one_sine"
+    ... period = 0.5
+    ... amplitude = 1.0
+    ... load_factors = [1.0, 1.5, 2.0, 3.0]
+    ... ''')
+    >>> _ = campaign.run("pulses.toml", "pulses_store", progress=False)
+    >>> s = campaign.status("pulses_store")
+    >>> s["n_sims"], s["sims_remaining"], s["chunks_done"], s["complete"]
+    (4, 0, 2, True)
+    """
     return Store(store).status()
 
 

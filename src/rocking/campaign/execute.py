@@ -130,7 +130,20 @@ def _restore(environ: dict) -> None:
 
 def local_cluster(n_workers: int):
     """A ``LocalCluster`` of ``n_workers`` process workers, one Dask thread each, with
-    ``NUMBA_NUM_THREADS = cores // n_workers`` set in each before it starts."""
+    ``NUMBA_NUM_THREADS = cores // n_workers`` set in each before it starts.
+
+    Examples
+    --------
+    :func:`run` starts one with ``executor="dask", dask_local=2``; by hand (starting the
+    worker processes takes seconds, so this example is not run as a test):
+
+    >>> from distributed import Client
+    >>> from rocking.campaign import local_cluster
+    >>> cluster = local_cluster(2)  # doctest: +SKIP
+    >>> client = Client(cluster)  # doctest: +SKIP
+    >>> len(client.scheduler_info()["workers"])  # doctest: +SKIP
+    2
+    """
     import logging
 
     from distributed import LocalCluster
@@ -211,6 +224,31 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
     store directory is created (a spec that fails never leaves a store behind); then the
     store is locked, every chunk verified against its record, files that fail moved into
     ``STORE/quarantine/`` (each named through ``log``) and their chunks recomputed.
+
+    Examples
+    --------
+    Four one-sine pulses on specimen 2, in two chunks:
+
+    >>> from pathlib import Path
+    >>> from rocking import campaign
+    >>> _ = Path("pulses.toml").write_text('''
+    ... campaign = {name = "pulses", seed = 1, model = "housner"}
+    ... blocks = [{specimen = 2}]
+    ... run = {chunk_size = 2}
+    ... [motions]
+    ... kind = "one_sine"
+    ... period = 0.5
+    ... amplitude = 1.0
+    ... load_factors = [1.0, 1.5, 2.0, 3.0]
+    ... ''')
+    >>> status = campaign.run("pulses.toml", "pulses_store", progress=False)
+    >>> status["sims_done"], status["chunks_done"], status["complete"]
+    (4, 2, True)
+
+    Running it again resumes: nothing is left to compute.
+
+    >>> campaign.run("pulses.toml", "pulses_store", progress=False)["sims_done"]
+    4
     """
     if not isinstance(spec, CampaignSpec):
         spec = read_spec(spec)
@@ -277,7 +315,28 @@ def _check_buildable(campaign: Campaign) -> None:
 def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:
     """A dry run: counts, and the time of the local executor estimated from the time to
     build the motions (up to 500 of them, extrapolated) and ``n_sample`` simulations per
-    model drawn at random over the campaign's axes (after a warm-up)."""
+    model drawn at random over the campaign's axes (after a warm-up).
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> from rocking import campaign
+    >>> _ = Path("pulses.toml").write_text('''
+    ... campaign = {name = "pulses", seed = 1, model = "housner"}
+    ... blocks = [{specimen = 2}]
+    ... run = {chunk_size = 2}
+    ... [motions]
+    ... kind = "one_sine"
+    ... period = 0.5
+    ... amplitude = 1.0
+    ... load_factors = [1.0, 1.5, 2.0, 3.0]
+    ... ''')
+    >>> est = campaign.estimate(campaign.read_spec("pulses.toml"), n_sample=4)
+    >>> est["n_sims"], est["n_chunks"], est["shape"]["levels"]
+    (4, 2, 4)
+    >>> bool(est["estimated_seconds"] > 0)
+    True
+    """
     from ..models.registry import MODELS
     c = Campaign(spec)
     warm_up(spec)

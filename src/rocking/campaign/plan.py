@@ -215,7 +215,32 @@ class MotionSet:
 
 
 class Campaign:
-    """The simulations of a checked spec (:class:`~.spec.CampaignSpec`), chunk by chunk."""
+    """The simulations of a checked spec (:class:`~.spec.CampaignSpec`), chunk by chunk.
+
+    Examples
+    --------
+    Run the four pulses of a spec in memory (no store): the block rocks exactly when the
+    pulse's peak exceeds ``g tan(alpha)`` (1.66 m/s^2 for specimen 2):
+
+    >>> import math
+    >>> import rocking
+    >>> from rocking.campaign import Campaign, parse_spec
+    >>> spec = parse_spec('''
+    ... campaign = {name = "pulses", seed = 1, model = "housner"}
+    ... blocks = [{specimen = 2}]
+    ... [motions]
+    ... kind = "one_sine"
+    ... period = 0.5
+    ... amplitude = 1.0
+    ... load_factors = [1.0, 1.5, 2.0, 3.0]
+    ... ''')
+    >>> rows = Campaign(spec).run_ids(range(spec.n_sims))
+    >>> up = rocking.G * math.tan(spec.blocks[0].alpha)
+    >>> ((rows.max_abs_theta > 0) == (rows.pga > up)).tolist()
+    [True, True, True, True]
+    >>> rows.overturned.tolist()
+    [False, False, False, True]
+    """
 
     def __init__(self, spec: CampaignSpec):
         self.spec = spec

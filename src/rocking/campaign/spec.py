@@ -784,7 +784,28 @@ def _quantity(key: str, v) -> float:
 @dataclass(frozen=True)
 class CampaignSpec:
     """A checked campaign spec (see the module docstring); build it with :func:`read_spec`
-    or :func:`parse_spec`."""
+    or :func:`parse_spec`.
+
+    Examples
+    --------
+    Four one-sine pulses on specimen 2 (a TOML inline table such as ``campaign = {...}``
+    is the same as a ``[campaign]`` table):
+
+    >>> from rocking.campaign import parse_spec
+    >>> spec = parse_spec('''
+    ... campaign = {name = "pulses", seed = 1, model = "housner"}
+    ... blocks = [{specimen = 2}]
+    ... [motions]
+    ... kind = "one_sine"
+    ... period = 0.5
+    ... amplitude = 1.0
+    ... load_factors = [1.0, 1.5, 2.0, 3.0]
+    ... ''')
+    >>> spec.name, spec.models, spec.n_sims, spec.n_chunks
+    ('pulses', ('housner',), 4, 1)
+    >>> spec.blocks[0].name
+    'specimen 2 (theoretical)'
+    """
 
     name: str
     seed: int
@@ -1143,7 +1164,28 @@ def _usable(models: tuple, blocks: tuple, options: dict, entries=(),
 
 
 def parse_spec(text: str, base_dir=".") -> CampaignSpec:
-    """Check a spec given as TOML text (record paths relative to ``base_dir``)."""
+    """Check a spec given as TOML text (record paths relative to ``base_dir``).
+
+    Examples
+    --------
+    >>> spec_text = '''
+    ... [campaign]
+    ... name = "pulses"
+    ... seed = 1
+    ... model = "housner"
+    ... [[blocks]]
+    ... specimen = 2
+    ... [motions]
+    ... kind = "one_sine"            # one-sine pulses of 1 m/s^2 ...
+    ... period = 0.5
+    ... amplitude = 1.0
+    ... load_factors = [1.0, 1.5, 2.0, 3.0]   # ... scaled: PGA 1 to 3 m/s^2
+    ... '''
+    >>> from rocking.campaign import parse_spec
+    >>> spec = parse_spec(spec_text)
+    >>> spec.n_sims, spec.motions["load_factors"]
+    (4, [1.0, 1.5, 2.0, 3.0])
+    """
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
@@ -1175,7 +1217,30 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
 
 
 def read_spec(path) -> CampaignSpec:
-    """Read and check the spec at ``path`` (see the module docstring)."""
+    """Read and check the spec at ``path`` (see the module docstring).
+
+    Examples
+    --------
+    >>> spec_text = '''
+    ... [campaign]
+    ... name = "pulses"
+    ... seed = 1
+    ... model = "housner"
+    ... [[blocks]]
+    ... specimen = 2
+    ... [motions]
+    ... kind = "one_sine"            # one-sine pulses of 1 m/s^2 ...
+    ... period = 0.5
+    ... amplitude = 1.0
+    ... load_factors = [1.0, 1.5, 2.0, 3.0]   # ... scaled: PGA 1 to 3 m/s^2
+    ... '''
+    >>> from pathlib import Path
+    >>> from rocking.campaign import read_spec
+    >>> _ = Path("pulses.toml").write_text(spec_text)
+    >>> spec = read_spec("pulses.toml")
+    >>> spec.name, spec.n_sims
+    ('pulses', 4)
+    """
     p = Path(path)
     if not p.is_file():
         raise SpecError(f"spec: no such file: {p}")

@@ -239,7 +239,32 @@ class Check:
 
 
 class Store:
-    """A campaign store at ``path`` (see the module docstring)."""
+    """A campaign store at ``path`` (see the module docstring).
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> from rocking import campaign
+    >>> _ = Path("pulses.toml").write_text('''
+    ... campaign = {name = "pulses", seed = 1, model = "housner"}
+    ... blocks = [{specimen = 2}]
+    ... run = {chunk_size = 2}
+    ... [motions]
+    ... kind = "one_sine"
+    ... period = 0.5
+    ... amplitude = 1.0
+    ... load_factors = [1.0, 1.5, 2.0, 3.0]
+    ... ''')
+    >>> from rocking.campaign import Store
+    >>> store = Store("pulses_store")
+    >>> store.exists()
+    False
+    >>> _ = campaign.run("pulses.toml", "pulses_store", progress=False)
+    >>> store.exists(), store.done(), store.spec().n_sims
+    (True, {0, 1}, 4)
+    >>> store.read_chunk(1).sim_id.tolist()
+    [2, 3]
+    """
 
     def __init__(self, path):
         self.path = Path(path)
@@ -762,6 +787,29 @@ def load(store, lazy: bool | None = None):
     chunk files (for stores larger than memory). ``lazy=None`` (default) chooses lazy when
     the files, as columns in memory (about 4 times their size on disk), would exceed half
     of the memory available now.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> from rocking import campaign
+    >>> _ = Path("pulses.toml").write_text('''
+    ... campaign = {name = "pulses", seed = 1, model = "housner"}
+    ... blocks = [{specimen = 2}]
+    ... run = {chunk_size = 2}
+    ... [motions]
+    ... kind = "one_sine"
+    ... period = 0.5
+    ... amplitude = 1.0
+    ... load_factors = [1.0, 1.5, 2.0, 3.0]
+    ... ''')
+    >>> _ = campaign.run("pulses.toml", "pulses_store", progress=False)
+    >>> rows = campaign.load("pulses_store")
+    >>> rows[["sim_id", "pga", "overturned"]]
+       sim_id  pga  overturned
+    0       0  1.0       False
+    1       1  1.5       False
+    2       2  2.0       False
+    3       3  3.0        True
     """
     if lazy is not None and not isinstance(lazy, bool):
         raise ParameterError(f"lazy must be True, False or None, got {lazy!r}")
