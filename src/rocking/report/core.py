@@ -51,7 +51,17 @@ from . import html as H
 
 @dataclass(frozen=True)
 class Section:
-    """A registered report section."""
+    """A registered report section.
+
+    Examples
+    --------
+    >>> from rocking.report import SECTIONS
+    >>> table2 = SECTIONS["table2"]
+    >>> table2.id, table2.order
+    ('table2', 10.0)
+    >>> table2.title
+    'Table II — classical parameters α, p, μ'
+    """
 
     id: str
     title: str
@@ -68,6 +78,22 @@ def section(id: str, title: str, order: float = 100.0):
 
     ``id`` is short and file-name safe (it prefixes the section's files and is the HTML
     anchor); ``title`` is the heading; ``order`` sets the position in the page.
+
+    Examples
+    --------
+    Register a one-line section, build a page with it alone, then unregister it:
+
+    >>> import math
+    >>> from rocking.report import SECTIONS, reproduce, section
+    >>> @section("hello", "Hello", order=1)
+    ... def build(ctx):
+    ...     return f"<p>alpha = {math.atan(0.085 / 0.5):.4f} rad</p>"
+    >>> try:
+    ...     path = reproduce("report", only="hello", progress=False)
+    ... finally:
+    ...     del SECTIONS["hello"]
+    >>> "alpha = 0.1684 rad" in path.read_text()
+    True
     """
     if not id.replace("_", "").replace("-", "").isalnum():
         raise ValueError(f"section id must be alphanumeric (with - or _), got {id!r}")
@@ -80,7 +106,14 @@ def section(id: str, title: str, order: float = 100.0):
 
 
 def ordered_sections() -> list[Section]:
-    """The registered sections in page order."""
+    """The registered sections in page order.
+
+    Examples
+    --------
+    >>> from rocking.report import ordered_sections
+    >>> [s.id for s in ordered_sections()][:4]
+    ['table2', 'table3', 'identification', 'table4']
+    """
     return sorted(SECTIONS.values(), key=lambda s: (s.order, s.id))
 
 
@@ -92,7 +125,14 @@ MODEL_LINESTYLES = ("-", "--", "-.", ":")
 
 @dataclass(frozen=True)
 class ModelStyle:
-    """How the report names and draws a registered model."""
+    """How the report names and draws a registered model.
+
+    Examples
+    --------
+    >>> from rocking.report import model_style
+    >>> model_style("ccrr")
+    ModelStyle(name='ccrr', label=..., colour='#D55E00', linestyle='--')
+    """
 
     name: str
     label: str
@@ -103,13 +143,31 @@ class ModelStyle:
 def report_models() -> list[str]:
     """Names of every registered model of the free-standing block, in registry order
     (:data:`rocking.models.MODELS`; mitigation models, ``Model.mitigation``, are not
-    models of the paper's specimens and are left out)."""
+    models of the paper's specimens and are left out).
+
+    Examples
+    --------
+    >>> from rocking.models import available
+    >>> from rocking.report import report_models
+    >>> report_models()
+    ['housner', 'ccrr', 'dem']
+    >>> sorted(set(available()) - set(report_models()))  # the mitigations
+    ['anchored', 'isolated']
+    """
     return [name for name, cls in MODELS.items() if not cls.mitigation]
 
 
 def model_style(name: str) -> ModelStyle:
     """Label (the class's ``label``), colour and line style of the registered model
-    ``name``; fixed by its position in the registry, hence the same on every run."""
+    ``name``; fixed by its position in the registry, hence the same on every run.
+
+    Examples
+    --------
+    >>> from rocking.report import model_style
+    >>> style = model_style("housner")
+    >>> style.label, style.colour, style.linestyle
+    ('classical (Housner)', '#0072B2', '-')
+    """
     names = list(MODELS)
     if name not in MODELS:
         raise KeyError(f"unknown model {name!r}; registered: {names}")
@@ -129,6 +187,17 @@ class Context:
     machine: a section decides what to run from these flags and fixed lists only. Files
     are named ``<section id>_<name>`` in ``out`` and collected in ``files`` (relative
     names) for :meth:`files_html`.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> import pandas as pd
+    >>> from rocking.report import Context
+    >>> ctx = Context(out=Path("."), quick=True, section_id="demo")
+    >>> ctx.save_csv(pd.DataFrame({"specimen": [2], "alpha": [0.168]}), "params")
+    'demo_params.csv'
+    >>> ctx.files, ctx.dpi
+    (['demo_params.csv'], 70)
     """
 
     out: Path
@@ -172,6 +241,22 @@ class ReportError(RuntimeError):
     """Raised by :func:`reproduce` after writing the page when some sections failed.
 
     ``path`` is the written ``index.html``; ``failed`` maps section ids to error messages.
+
+    Examples
+    --------
+    A section that raises is shown in the page; the error comes after the page is written:
+
+    >>> from rocking.report import SECTIONS, ReportError, reproduce, section
+    >>> @section("broken", "Broken", order=1)
+    ... def build(ctx):
+    ...     raise ValueError("no data")
+    >>> try:
+    ...     reproduce("report", only="broken", progress=False)
+    ... except ReportError as e:
+    ...     print(e.failed, e.path.is_file())
+    ... finally:
+    ...     del SECTIONS["broken"]
+    {'broken': 'ValueError: no data'} True
     """
 
     def __init__(self, path: Path, failed: dict[str, str]):
@@ -253,6 +338,20 @@ def reproduce(out, quick: bool = False, full: bool = False, progress: bool = Tru
     section on stderr; ``only`` restricts the report to some section ids.
     Raises :class:`ReportError` (a RuntimeError) *after* writing the page if any section
     failed.
+
+    Examples
+    --------
+    The whole report takes minutes; one section is cheap. Table II in quick mode: our
+    ``alpha = atan(b/h)`` of specimen 2 (Eq 2) next to the paper's:
+
+    >>> import pandas as pd
+    >>> from rocking.report import reproduce
+    >>> path = reproduce("report", quick=True, only="table2", progress=False)
+    >>> path.name
+    'index.html'
+    >>> t2 = pd.read_csv(path.parent / "table2_parameters.csv").set_index("specimen")
+    >>> round(float(t2.loc[2, "alpha_ours"]), 4), float(t2.loc[2, "alpha_paper_T"])
+    (0.1684, 0.168)
     """
     # Sections draw on matplotlib.figure.Figure objects (Agg canvas), never through pyplot,
     # so building a report does not change the user's backend or open windows.
