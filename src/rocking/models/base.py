@@ -284,9 +284,9 @@ KernelResult = namedtuple("KernelResult", [
     "n_steps", "status", "lift_off_time", "settled"])
 KernelResult.__doc__ = """What a kernel returns (compiled by numba as a named tuple): the
 number of history samples written, the impacts, ``max |theta|`` (rad), whether and when
-(s) it overturned, the first uplift (s), the steps taken, the status (0: success), the lift-off time (s) and
-whether the block had settled. A new output is one field here, one array in
-:data:`Batch` and one line in :func:`store_row`.
+(s) it overturned, the first uplift (s), the steps taken, the status (0: success), the
+lift-off time (s) and whether the block had settled. A new output is one field here, one
+array in :data:`Batch` and one line in :func:`store_row`.
 
 Examples
 --------
