@@ -175,8 +175,8 @@ sphinx_gallery_conf = {
     "ignore_pattern": r"__init__\.py",
     "abort_on_example_error": True,        # a failing example fails the build
     "only_warn_on_example_error": False,
-    "image_scrapers": ("matplotlib",),
-    "within_subsection_order": "gallery_order.GalleryOrder",   # docs/gallery_order.py
+    "image_scrapers": ("gallery_tools", "matplotlib"),   # the library's Figures, pyplot's
+    "within_subsection_order": "gallery_tools.GalleryOrder",   # docs/gallery_tools.py
     "download_all_examples": False,
     "remove_config_comments": True,
     "show_memory": False,
@@ -202,7 +202,8 @@ numpydoc_xref_param_type = False
 # -- no network: no intersphinx; mathjax is loaded by the reader's browser -----------------
 nitpicky = False
 templates_path = ["_templates"]
-exclude_patterns = ["_build", "**/.ipynb_checkpoints"]
+exclude_patterns = ["_build", "**/.ipynb_checkpoints",
+                    "gallery"]            # the gallery's sources: pages in auto_examples/
 source_suffix = {".rst": "restructuredtext"}
 root_doc = "index"
 default_role = "literal"            # `x` is code, as in the Markdown files

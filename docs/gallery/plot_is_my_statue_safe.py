@@ -36,14 +36,14 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
+from matplotlib.ticker import FormatStrFormatter, NullFormatter
 
 import rocking
 import rocking.analysis as A
 from rocking.buildings import Building, FloorMotion
 from rocking.errors import PlausibilityWarning
 from rocking.motions import DesignSpectrum, builtin_records, load_builtin
-from rocking.shapes import (directional_parameters, load_example, plot_directional,
-                            weakest_direction)
+from rocking.shapes import directional_parameters, load_example, plot_directional, weakest_direction
 from rocking.units import G
 
 shape = load_example(density=2600.0)                    # kg/m^3, marble
@@ -116,7 +116,12 @@ print(f"{len(candidates)} candidates, {len(records)} selected; compliant: "
       f"{sel.compliant}, min ratio {sel.min_ratio:.2f}, RMS log misfit {sel.misfit:.3f}")
 print(pd.DataFrame({"record": [r.name for r in records], "scale": sel.scales,
                     "PGA (g)": [r.pga / G for r in records]}).round(3).to_string(index=False))
-fig = sel.plot()
+ax = sel.plot()
+for axis in (ax.xaxis, ax.yaxis):
+    axis.set_major_formatter(FormatStrFormatter("%g"))
+    axis.set_minor_formatter(NullFormatter())
+ax.set_xticks([0.2, 0.3, 0.5, 1.0, 2.0])
+ax.set_yticks([1, 2, 5, 10])
 
 # %%
 # 4. The floor
@@ -138,7 +143,7 @@ ax.plot(t, roof[0].acceleration(t) / G, lw=0.7, color="tab:red", label="roof")
 ax.plot(t, records[0].acceleration(t) / G, lw=0.7, color="0.2", label="ground")
 ax.axhline(weak.uplift_g, color="tab:blue", ls="--", lw=0.8,
            label="uplift of the weak side, g tan(alpha)")
-ax.set(xlabel="time (s)", ylabel="acceleration (g)", title=f"{records[0].name}, scaled")
+ax.set(xlabel="time (s)", ylabel="acceleration (g)", title=f"{records[0].name}, scaled by {sel.scales[0]:.3g} (the selection)")
 ax.legend(fontsize=8, loc="lower right")
 ax.grid(alpha=0.3)
 
@@ -235,7 +240,8 @@ for (where, config), fit in fits.items():
     a1.plot(x, fit.probability(x), color=colours[config],
             ls="-" if where == "roof" else ":", label=f"{config}, {where}")
 a1.axvline(pga475, color="0.4", lw=0.8)
-a1.text(pga475, 0.02, " 475 yr", color="0.4", fontsize=8)
+a1.text(pga475 * 0.96, 0.6, "475-year PGA", color="0.4", fontsize=8, rotation=90,
+        ha="right", va="center")
 a1.set(xscale="log", xlabel="ground PGA (g)", ylabel="P(failure | PGA)",
        title="fragility (solid: roof, dotted: ground)")
 a1.legend(fontsize=7, loc="upper left")
@@ -247,6 +253,8 @@ for T in (475, 2475):
     a2.axhline(1.0 / T, color="0.6", lw=0.7, ls="--")
     a2.text(curve.im[0], 1.0 / T, f"{T} yr", fontsize=8, va="bottom")
 a2.grid(alpha=0.3, which="both")
+for ax in (a1, a2):
+    ax.xaxis.set_major_formatter(FormatStrFormatter("%g"))
 
 # %%
 # Which ground motions make the risk of the free statue on the roof:
