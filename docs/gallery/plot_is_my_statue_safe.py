@@ -143,7 +143,8 @@ ax.plot(t, roof[0].acceleration(t) / G, lw=0.7, color="tab:red", label="roof")
 ax.plot(t, records[0].acceleration(t) / G, lw=0.7, color="0.2", label="ground")
 ax.axhline(weak.uplift_g, color="tab:blue", ls="--", lw=0.8,
            label="uplift of the weak side, g tan(alpha)")
-ax.set(xlabel="time (s)", ylabel="acceleration (g)", title=f"{records[0].name}, scaled by {sel.scales[0]:.3g} (the selection)")
+ax.set(xlabel="time (s)", ylabel="acceleration (g)",
+       title=f"{records[0].name}, scaled by {sel.scales[0]:.3g} (the selection)")
 ax.legend(fontsize=8, loc="lower right")
 ax.grid(alpha=0.3)
 
