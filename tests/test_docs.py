@@ -9,7 +9,10 @@ as errors (``sphinx -W``), and what it says is the code's.
 * the CLI reference documents every command of the click group;
 * every ``rocking.x.y`` name and every ``A.name`` (``rocking.analysis``) the user guide
   mentions exists, and every ``rocking ...`` command line of its code blocks names a real
-  command: the guide cannot silently drift from the code.
+  command: the guide cannot silently drift from the code;
+* the gallery (sphinx-gallery): every script of ``docs/gallery/`` ran during the build
+  (an example that raises fails it: ``abort_on_example_error``) and its page shows its
+  output and every figure it drew.
 
 Sphinx is a third-party package of the ``docs`` extra: without it the build is skipped.
 """
@@ -28,6 +31,7 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs"
 GUIDE_PAGES = sorted((DOCS / "guide").glob("*.rst")) + [DOCS / "index.rst"]
+GALLERY = sorted((DOCS / "gallery").glob("*.py"))
 
 
 def _public_packages() -> dict[str, str]:
@@ -49,10 +53,14 @@ def site(tmp_path_factory):
     pytest.importorskip("numpydoc", reason="numpydoc is not installed (the docs extra)")
     pytest.importorskip("sphinx_click", reason="sphinx-click is not installed (the docs extra)")
     pytest.importorskip("pydata_sphinx_theme", reason="the docs extra is not installed")
+    pytest.importorskip("sphinx_gallery", reason="sphinx-gallery is not installed (the docs "
+                        "extra)")
     tmp = tmp_path_factory.mktemp("docs")
     src = tmp / "docs"
-    shutil.copytree(DOCS, src, ignore=shutil.ignore_patterns("_build", "generated",
-                                                            "__pycache__"))
+    # no output of an earlier local build: sphinx-gallery would skip the examples whose
+    # source has not changed since (it keeps their MD5 next to their output)
+    shutil.copytree(DOCS, src, ignore=shutil.ignore_patterns(
+        "_build", "generated", "__pycache__", "auto_examples", "sg_execution_times.rst"))
     out = tmp / "html"
     proc = subprocess.run(
         [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-q", "-b", "html",
@@ -66,9 +74,33 @@ def site(tmp_path_factory):
 
 def test_site_builds_with_warnings_as_errors(site):
     for page in ("index", "cli", "changelog", "verification", "api/index",
+                 "auto_examples/index",
                  "api/generated/architecture", "api/generated/cluster",
                  *(f"guide/{p.stem}" for p in GUIDE_PAGES if p.parent.name == "guide")):
         assert (site / f"{page}.html").is_file(), page
+
+
+def test_every_gallery_example_ran_and_shows_its_figures(site):
+    """Each script of docs/gallery/ has its page, with its captured output and one image
+    per figure it drew (sphinx-gallery numbers them ``sphx_glr_<name>_NNN.png``; the
+    thumbnail alone would not do), each image present in the site."""
+    assert len(GALLERY) >= 4, [p.name for p in GALLERY]
+    index = (site / "auto_examples" / "index.html").read_text(encoding="utf-8")
+    for script in GALLERY:
+        page = site / "auto_examples" / f"{script.stem}.html"
+        assert page.is_file(), f"no page for gallery example {script.name}"
+        assert f"{script.stem}.html" in index, f"{script.name} is not in the gallery index"
+        html = page.read_text(encoding="utf-8")
+        assert "sphx-glr-script-out" in html, f"{script.name}: no captured output"
+        images = sorted(set(re.findall(rf"sphx_glr_{re.escape(script.stem)}_\d{{3}}\.png",
+                                       html)))
+        assert images, f"{script.name} produced no figure"
+        for name in images:
+            assert (site / "_images" / name).is_file(), f"{script.name}: {name} is missing"
+        # the page shows what the script draws: as many figures as it makes
+        source = script.read_text(encoding="utf-8")
+        drawn = len(re.findall(r"^(?:fig|ax)\b.*=.*(?:subplots|plot\w*)\(", source, re.M))
+        assert len(images) >= drawn, (script.name, images, drawn)
 
 
 def test_api_reference_covers_every_public_name(site):
