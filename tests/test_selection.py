@@ -111,24 +111,49 @@ def test_agrees_with_exhaustive_search(max_scale):
         warnings.simplefilter("ignore", PlausibilityWarning)
         res = select_records(S, target, T, n=2, max_scale=max_scale, restarts=9)
     got = cost[tuple(sorted(res.indices.tolist()))]
-    assert got == pytest.approx(min(cost.values()), rel=1e-6, abs=1e-12)
+    best = min(cost, key=cost.get)
+    if max_scale == 1.0:  # factors fixed at 1: compliance of a pair is known exactly
+        def ratio(pair):
+            return np.min(S[list(pair)].mean(axis=0) / target)
+
+        if ratio(best) < 0.9 and any(ratio(q) >= 0.9 for q in cost):
+            # the least-misfit pair cannot comply and another can: a compliant pair is
+            # chosen (the one closest to the target in sum |mean/target - 1|)
+            ok = [q for q in cost if ratio(q) >= 0.9]
+            l1 = {q: np.sum(np.abs(S[list(q)].mean(axis=0) / target - 1)) for q in ok}
+            pair = tuple(sorted(res.indices.tolist()))
+            assert res.compliant and pair in l1
+            assert l1[pair] == pytest.approx(min(l1.values()), rel=1e-6)
+            return
+    assert got == pytest.approx(cost[best], rel=1e-6, abs=1e-12)
 
 
 def test_max_scale_honoured_and_flagged():
+    """n = 1: a record complies within max_scale iff max_scale * min(S_i / target) >= 0.9
+    (brute force over the candidates): the result is compliant exactly when one exists,
+    and otherwise flagged with the worst ratio the bound allows (factor max_scale)."""
     S = _spectra_set(2)
     target = 10.0 * S[5]
     res = select_records(S, target, T, n=1, max_scale=20.0)
     assert res.indices.tolist() == [5]
     assert res.scales[0] == pytest.approx(10.0, rel=1e-6)
+    for max_scale, factor in ((4.0, 10.0), (4.0, 40.0)):
+        best = max_scale * np.min(S / (factor * S[5]), axis=1)  # each record at the bound
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", PlausibilityWarning)
+            res = select_records(S, factor * S[5], T, n=1, max_scale=max_scale)
+        assert res.compliant == bool(np.any(best >= 0.9))
+        assert np.all(res.scales <= max_scale * (1 + 1e-12))
+        assert np.all(res.scales >= 1 / max_scale * (1 - 1e-12))
+        if res.compliant:
+            assert res.min_ratio >= 0.9 * (1 - 1e-9)
+        else:  # the worst ratio is as high as the bound allows for the record chosen
+            i = res.indices[0]
+            assert res.scales[0] == pytest.approx(max_scale, rel=1e-9)
+            assert res.min_ratio == pytest.approx(best[i], rel=1e-9)
+    assert not np.any(4.0 * np.min(S / (40.0 * S[5]), axis=1) >= 0.9)  # the second case
     with pytest.warns(PlausibilityWarning, match="NOT compliant"):
-        res = select_records(S, target, T, n=1, max_scale=4.0)
-    assert not res.compliant
-    assert np.all(res.scales <= 4.0 * (1 + 1e-12)) and np.all(res.scales >= 0.25)
-    assert res.min_ratio < 0.9
-    # the worst ratio is as high as the bound allows for the record chosen: factor 4
-    i = res.indices[0]
-    assert res.scales[0] == pytest.approx(4.0, rel=1e-9)
-    assert res.min_ratio == pytest.approx(float(np.min(4.0 * S[i] / target)), rel=1e-9)
+        select_records(S, 40.0 * S[5], T, n=1, max_scale=4.0)
 
 
 def test_ninety_percent_rule():
@@ -172,6 +197,25 @@ def test_ninety_percent_rule_by_individual_factors():
     assert not res.compliant
     assert res.min_ratio == pytest.approx(0.7, rel=1e-9)
     assert res.scales.tolist() == pytest.approx([4.0, 4.0], rel=1e-9)
+
+
+def test_a_compliant_set_is_found_when_the_least_misfit_one_cannot_comply():
+    """Target (6, 5, 2.5), n = 1, max_scale = 2: the least-misfit record (6, 4, 1) cannot
+    reach 90 % at the last period within a factor 2 (2/2.5 = 0.8), but (3, 3, 3) scaled by
+    1.8 (the least change of ratio sum) or more does: the result is that record, compliant.
+    With max_scale = 1.4 no record complies (3 * 1.4 / 5 = 0.84): flagged."""
+    T3 = np.array([0.5, 1.0, 2.0])
+    S = np.array([[3.0, 3.0, 3.0], [6.0, 4.0, 1.0], [2.0, 2.0, 1.0]])
+    target = np.array([6.0, 5.0, 2.5])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        res = select_records(S, target, T3, n=1, max_scale=2.0)
+    assert res.compliant and res.indices.tolist() == [0]
+    assert res.min_ratio >= 0.9 * (1 - 1e-9)
+    assert 0.9 * 5.0 / 3.0 * (1 - 1e-9) <= res.scales[0] <= 2.0
+    with pytest.warns(PlausibilityWarning, match="NOT compliant"):
+        res = select_records(S, target, T3, n=1, max_scale=1.4)
+    assert not res.compliant
 
 
 @pytest.mark.filterwarnings("ignore::rocking.errors.PlausibilityWarning")
