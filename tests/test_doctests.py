@@ -1,0 +1,49 @@
+"""Every public function and class (what each package's ``__all__`` exports) has an
+``Examples`` section, and its examples run as doctests (issue 22)."""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+import inspect
+
+import numpy as np
+import pytest
+
+PACKAGES = ("rocking", "rocking.blocks", "rocking.motions", "rocking.buildings",
+            "rocking.shapes", "rocking.models", "rocking.analysis", "rocking.identify",
+            "rocking.campaign", "rocking.report", "rocking.testing", "rocking.verification")
+
+
+def public_objects() -> list[tuple[str, object]]:
+    """``(qualified name, object)`` of every public function and class, each once (under
+    the first package of :data:`PACKAGES` that exports it)."""
+    seen, out = set(), []
+    for pkg in PACKAGES:
+        mod = importlib.import_module(pkg)
+        for name in getattr(mod, "__all__", ()):
+            obj = getattr(mod, name)
+            if not (inspect.isfunction(obj) or inspect.isclass(obj)) or id(obj) in seen:
+                continue
+            seen.add(id(obj))
+            out.append((f"{pkg}.{name}", obj))
+    return out
+
+
+OBJECTS = public_objects()
+
+
+@pytest.mark.parametrize("name, obj", OBJECTS, ids=[n for n, _ in OBJECTS])
+def test_has_examples_that_run(name, obj, tmp_path, monkeypatch):
+    doc = inspect.getdoc(obj) or ""
+    assert "Examples\n--------" in doc, f"{name}: no numpydoc 'Examples' section"
+    finder = doctest.DocTestFinder(recurse=False)
+    tests = [t for t in finder.find(obj, name, globs={"np": np}) if t.examples]
+    assert tests, f"{name}: the Examples section has no '>>>' example"
+    monkeypatch.chdir(tmp_path)  # examples that write files write them here
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS
+                                   | doctest.NORMALIZE_WHITESPACE)
+    for t in tests:
+        runner.run(t)
+    res = runner.summarize(verbose=False)
+    assert res.failed == 0, f"{name}: {res.failed} of {res.attempted} examples failed"
