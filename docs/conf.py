@@ -182,7 +182,7 @@ sphinx_gallery_conf = {
     "show_memory": False,
     "show_signature": False,
     "plot_gallery": "True",
-    "capture_repr": ("_repr_html_", "__repr__"),
+    "capture_repr": (),                    # printed output only, no stray reprs
     "matplotlib_animations": False,
     "reference_url": {},                   # no network: no links resolved online
     "backreferences_dir": None,

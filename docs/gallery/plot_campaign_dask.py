@@ -4,7 +4,7 @@ A campaign on a Dask cluster
 
 A study declared once in a TOML spec runs by chunks into a store that can be stopped,
 resumed, verified and reported on, here on a ``dask.distributed`` ``LocalCluster`` of two
-worker processes (the same code runs on a remote scheduler, e.g. a SLURM cluster through
+workers (the same code runs on a remote scheduler, e.g. a SLURM cluster through
 dask-jobqueue: pass its address). The study: specimens 3 and 4 of Peña et al. (2007)
 (Table II E parameters) under eight of the paper's spectrum-compatible earthquakes scaled
 to six PGA stripes, 96 runs in 6 chunks, and the risk on the EN 1998-1 code approximation
@@ -23,6 +23,7 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
+from distributed import Client, LocalCluster
 from scipy.stats import norm
 
 from rocking import campaign
@@ -57,22 +58,31 @@ t_years = 50
 chunk_size = 16
 """
 spec = campaign.parse_spec(SPEC)
-print(campaign.estimate(spec))
+est = campaign.estimate(spec)
+print(f"{est['n_sims']} runs in {est['n_chunks']} chunks of {est['chunk_size']}: "
+      f"{est['shape']}")
 
 # %%
 # Running on a LocalCluster
 # -------------------------
-# :func:`rocking.campaign.local_cluster` starts process workers with one Dask thread each
-# and gives each worker's numba its share of the cores (``NUMBA_NUM_THREADS``), so that
-# workers x threads never oversubscribes the machine. Results come back to this process,
-# which writes the store (the workers need no shared disk). The ``with`` block closes the
-# cluster.
+# Two Dask workers with one thread each. Here they are threads of this process
+# (``processes=False``: nothing to start, and the script runs as it is, without an
+# ``if __name__ == "__main__"`` guard); :func:`rocking.campaign.local_cluster` (what
+# ``rocking campaign run --executor dask --dask-local 2`` uses) gives process workers
+# instead, each with its share of the cores for numba. On every worker each chunk is one
+# compiled batch; results come back to this process, which writes the store (the workers
+# need no shared disk). Leaving the ``with`` blocks closes the client and the cluster.
 
 store = Path(tempfile.mkdtemp()) / "store"
-with campaign.local_cluster(2) as cluster:
+with LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+                  dashboard_address=None) as cluster, Client(cluster) as client:
+    print(f"{len(client.scheduler_info()['workers'])} workers, "
+          f"{sum(client.nthreads().values())} threads")
     status = campaign.run(spec, store, executor="dask", scheduler=cluster.scheduler_address,
                           progress=False)
-print(status)
+print(f"{status['sims_done']} of {status['n_sims']} runs done, "
+      f"{status['chunks_done']} chunks, complete: {status['complete']}, "
+      f"problems: {status['problems'] or 'none'}")
 
 # %%
 # The store

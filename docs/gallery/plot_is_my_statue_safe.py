@@ -50,8 +50,8 @@ shape = load_example(density=2600.0)                    # kg/m^3, marble
 table = directional_parameters(shape, 72)               # every 5 degrees
 weak = weakest_direction(table)
 statue = rocking.Block.from_shape(shape, weak.phi)
-print(f"mass {shape.mass:.0f} kg, height {shape.com[2] * 2:.2f} m (about twice its centre "
-      f"of mass)")
+print(f"mass {shape.mass:.0f} kg, height {shape.height:.2f} m, centre of mass "
+      f"{shape.h:.2f} m above the base")
 print(f"weakest direction {weak.phi_deg:.0f} deg, side {weak.side}: alpha = "
       f"{weak.alpha:.3f} rad, uplift at {weak.uplift_g:.3f} g")
 print(statue)
