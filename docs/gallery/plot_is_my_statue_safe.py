@@ -17,6 +17,8 @@ Everything is small so that the page builds in seconds (7 records, 9 levels); a 
 would use more records and levels, or a campaign (:doc:`plot_campaign_dask`).
 """
 
+# sphinx_gallery_thumbnail_number = 4
+
 # %%
 # 1. The statue and its weakest direction
 # ---------------------------------------
@@ -56,6 +58,8 @@ print(f"weakest direction {weak.phi_deg:.0f} deg, side {weak.side}: alpha = "
       f"{weak.alpha:.3f} rad, uplift at {weak.uplift_g:.3f} g")
 print(statue)
 fig = plot_directional(table)
+fig.axes[0].set_rticks([5, 10, 15])              # fewer radial labels: deg
+fig.axes[1].set_rticks([0.1, 0.2, 0.3])          # g
 
 # %%
 # The isolated model takes symmetric blocks only, so for the comparison with isolation we
