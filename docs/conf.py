@@ -179,13 +179,7 @@ sphinx_gallery_conf = {
     "within_subsection_order": "gallery_tools.GalleryOrder",   # docs/gallery_tools.py
     "download_all_examples": False,
     "remove_config_comments": True,
-    "show_memory": False,
-    "show_signature": False,
-    "plot_gallery": "True",
     "capture_repr": (),                    # printed output only, no stray reprs
-    "matplotlib_animations": False,
-    "reference_url": {},                   # no network: no links resolved online
-    "backreferences_dir": None,
     "min_reported_time": 1,
 }
 
