@@ -297,3 +297,20 @@ def test_plot(tmp_path):
     res = select_records(S, S[:3].mean(axis=0), T, n=3)
     ax = res.plot()
     assert len(ax.lines) == 3 + 3
+
+
+def test_uniform_hazard_spectrum_warns_when_it_extrapolates():
+    """A return period beyond a curve's rates is read off its power-law tail, with a
+    warning; within them, none. EN 1998-1 power laws: the value at T_R is
+    a_475 (475 / T_R)^(-1/k) either way."""
+    from rocking.analysis import HazardCurve, uniform_hazard_spectrum
+    curves = [HazardCurve.from_code_value(a, im_name=f"SA({T})")
+              for T, a in ((0.2, 0.5), (1.0, 0.3))]
+    top = max(c.return_periods.max() for c in curves)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        uniform_hazard_spectrum(curves, return_period=2475)
+    with pytest.warns(PlausibilityWarning, match="extrapolated"):
+        _, v = uniform_hazard_spectrum(curves, return_period=10 * top)
+    np.testing.assert_allclose(v / 9.80665, np.array([0.5, 0.3]) * (10 * top / 475) ** (1 / 3),
+                               rtol=1e-9)

@@ -123,7 +123,9 @@ def uniform_hazard_spectrum(curves, return_period: float = 475.0):
     value exceeded at the rate ``1 / return_period`` (years) is read off the curve
     (:meth:`HazardCurve.im_at_return_period`). The result is a table for
     :func:`select_records`'s ``target_spectrum`` (log-log interpolated, no extrapolation:
-    the curves' periods must cover the periods of the match).
+    the curves' periods must cover the periods of the match). A return period beyond a
+    curve's rates is read off its power-law tail, with a
+    :class:`~rocking.errors.PlausibilityWarning`.
 
     Examples
     --------
@@ -161,6 +163,11 @@ def uniform_hazard_spectrum(curves, return_period: float = 475.0):
                                  f"acceleration unit ({c.unit!r})") from None
         if T in pts:
             raise ParameterError(f"curves: two curves for the period {T:g} s")
+        if not cs.rate.min() <= 1.0 / tr <= cs.rate.max():
+            warnings.warn(f"uniform_hazard_spectrum: 1/{tr:g} per year is beyond the rates "
+                          f"of the curve at T = {T:g} s ({cs.rate.min():.3g} to "
+                          f"{cs.rate.max():.3g}): its value is extrapolated along the "
+                          "curve's power-law tail", PlausibilityWarning, stacklevel=2)
         pts[T] = cs.im_at_return_period(tr)
     if len(pts) < 2:
         raise ParameterError("curves must hold SA curves at >= 2 periods > 0")
@@ -466,8 +473,8 @@ def _compliant_set(R: np.ndarray, n: int, max_scale: float, time_limit: float = 
     factor in ``[1/max_scale, max_scale]``, with the least sum of ``|mean / target - 1|``:
     a mixed-integer linear program (HiGHS). Within ``time_limit`` s the best set found is
     returned (``proven`` False: compliant, not proven the closest; 500 candidates over 100
-    periods do not finish in 20 s, but a compliant set is found well within 1 s); None if
-    no such set exists (or none is found in time)."""
+    periods do not finish in 20 s, but a compliant set is found well within 1 s);
+    ``"none"`` if no such set exists (proven), ``"timeout"`` if none was found in time."""
     from scipy.optimize import Bounds, LinearConstraint, milp
 
     m, k = R.shape
@@ -494,15 +501,15 @@ def _compliant_set(R: np.ndarray, n: int, max_scale: float, time_limit: float = 
     res = milp(cost, constraints=LinearConstraint(np.vstack(A), lb, ub),
                integrality=integrality, bounds=bounds,
                options={"time_limit": time_limit})
-    if res.x is None:
-        return None
+    if res.x is None:  # status 2: proven infeasible; else no solution within the limit
+        return "none" if res.status == 2 else "timeout"
     z = res.x[m:2 * m] > 0.5
     if int(z.sum()) != n:
-        return None
+        return "timeout"
     idx = np.flatnonzero(z)
     scales = np.clip(res.x[:m][idx], lo, hi)
     if np.min(scales @ R[idx] / n) < CODE_RATIO * (1 - 1e-9):
-        return None
+        return "timeout"
     return idx, scales, res.status == 0
 
 
@@ -612,11 +619,17 @@ def select_records(candidates, target_spectrum, periods=None, n: int = 11,
                              "change, a linear program) to meet the 90 % rule")
             else:  # another set may comply: an exact search among all the candidates
                 found = _compliant_set(S / target, n, max_scale)
-                if found is None:
+                if found == "none":
                     notes.append("the 90 % rule cannot be met within max_scale by any set "
                                  "of n candidates (a mixed-integer program over all of "
                                  "them): factors chosen to raise the worst ratio as far as "
                                  "they allow")
+                elif found == "timeout":
+                    notes.append("the 90 % rule cannot be met within max_scale by the "
+                                 "least-misfit set, and a mixed-integer program over all "
+                                 "candidates found no compliant set within its time limit "
+                                 "(not proven that none exists): factors chosen to raise "
+                                 "the worst ratio as far as they allow")
                 else:
                     idx, scales, proven = found
                     Ssel = S[idx]
