@@ -115,7 +115,12 @@ RISK_COLUMNS = ("fit", "state", "label", "median", "beta", "im_unit", "annual_fr
                 "tail_share", "probability", "t_years", "annual_frequency_lower_bound",
                 "annual_frequency_upper_bound", "probability_lower_bound",
                 "probability_upper_bound", "hazard", "approximate", "note")
-"""The columns of ``risk.csv`` after the group's (model, mitigation, block, floor)."""
+"""The columns of ``risk.csv`` after the group's (model, mitigation, block, floor). The
+``*_lower_bound``/``*_upper_bound`` columns of a group without a fit are the annual
+frequency (and probability) of a step fragility at the IM bounds its outcomes give (the
+largest IM without failure, the smallest with): bounds only under that step model, not
+statistical confidence bounds (a fragility could rise below the largest IM run without
+failure)."""
 
 CLEARANCE_FIT = "overturned_or_clearance"
 """The ``fit`` of the combined failure of a group whose runs were stopped at the isolator's
