@@ -106,14 +106,19 @@ print(f"PGA with 10 % in 50 years (475 years): {pga475:.3f} g; "
 # ----------
 # EN 1998-1 3.2.3.1.2: at least 7 records for the mean response, whose mean 5 %-damped
 # spectrum is nowhere below 90 % of the target over the periods of interest. The target
-# is the EC8 Type 1 spectrum on ground C for the 475-year PGA; the periods of interest of
+# is the EC8 Type 1 spectrum on ground C whose PGA, ``S ag`` (S = 1.15 for ground C), is the
+# curve's 475-year PGA: the curve above is taken as the hazard of the *surface* PGA at the
+# site (site effects included, as a site-specific study gives it), the IM the fragility
+# below is fitted to. (A national model's curve is usually on rock, ``ag``: its PGA
+# would then be multiplied by S first.) The periods of interest of
 # a rocking block are the pulse periods that govern overturning, ``2 pi/(10 p)`` to
 # ``2 pi/p`` (``A.default_periods``). The candidates are the horizontal components
 # shipped with the package (PEER NGA).
 
 names = [n for n in builtin_records(three_component=True) if not n.upper().endswith("UP")]
 candidates = [load_builtin(n) for n in names]
-target = DesignSpectrum.ec8(pga475 * G, ground="C")       # m/s^2
+S_C = 1.15                                                 # EN 1998-1 Table 3.2
+target = DesignSpectrum.ec8(pga475 * G / S_C, ground="C")  # m/s^2; PGA = S ag = pga475
 sel = A.select_records(candidates, target, A.default_periods(statue), n=7, max_scale=4.0)
 records = sel.records(candidates)
 print(f"{len(candidates)} candidates, {len(records)} selected; compliant: "
