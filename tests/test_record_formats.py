@@ -83,10 +83,11 @@ def esm_text(acc, dt, **over) -> str:
 # ---------------------------------------------------------------------- COSMOS writer
 def cosmos_text(acc, dt, product="Corrected acceleration", stage=2, param=1, code=4,
                 quantity="acceleration", units_text="cm/sec2(04)", npts=None, peak=None,
-                dt_ms=None) -> str:
+                dt_ms=None, dt_s=None, e_format=False) -> str:
     """A COSMOS v1.20 file with one channel: 13 text lines, 100 integers (10I8), 100 reals
-    (5F15.6), one comment, the data header and the values in (8F10.5), cm/s^2."""
-    cm = np.round(np.asarray(acc) / GAL, 5)
+    (5F15.6), one comment, the data header and the values in (8F10.5), cm/s^2; with
+    ``e_format`` one value per line in (1E15.6), as gmprocess writes them."""
+    cm = np.asarray(acc) / GAL if e_format else np.round(np.asarray(acc) / GAL, 5)
     n = len(cm)
     k = int(np.argmax(np.abs(cm)))
     text = [
@@ -108,7 +109,7 @@ def cosmos_text(acc, dt, product="Corrected acceleration", stage=2, param=1, cod
     ints = np.full(100, -999, dtype=int)
     ints[:4] = [stage, param, code, 120]
     reals = np.full(100, -999.0)
-    reals[33] = dt                                     # #34 sampling interval (s)
+    reals[33] = dt if dt_s is None else dt_s            # #34 sampling interval (s)
     reals[61] = dt * 1000.0 if dt_ms is None else dt_ms  # #62 time step (ms)
     reals[62] = n * dt                                 # #63 series length npts dt (s)
     reals[63] = cm[k] if peak is None else peak        # #64 maximum value
@@ -120,8 +121,11 @@ def cosmos_text(acc, dt, product="Corrected acceleration", stage=2, param=1, cod
     out += ['   1 Comment line(s) follow, each starting with a "|":',
             "| written by tests/test_record_formats.py from the COSMOS v1.20 specification"]
     out.append(f"{n if npts is None else npts:8d} {quantity} pts, approx {int(n * dt):4d} "
-               f"secs, units={units_text}, Format=(8F10.5)")
-    out += ["".join(f"{v:10.5f}" for v in cm[r:r + 8]) for r in range(0, n, 8)]
+               f"secs, units={units_text}, Format=({'1E15.6' if e_format else '8F10.5'})")
+    if e_format:
+        out += [f"{v:15.6E}" for v in cm]
+    else:
+        out += ["".join(f"{v:10.5f}" for v in cm[r:r + 8]) for r in range(0, n, 8)]
     out.append(f"End-of-data for Chan  1 {quantity}")
     return "\n".join(out) + "\n"
 
@@ -433,4 +437,78 @@ def test_units_none_takes_the_unit_at2_and_column_files_state(tmp_path):
     assert meta["units"] == "gal"
     acc, _, meta = read_record(write(tmp_path, "c.csv", "t,acc\n0,1\n0.01,2\n"), units=None)
     np.testing.assert_allclose(acc, [9.80665, 19.6133], rtol=1e-15)
+    assert meta["units"] == "g"
+
+
+def test_e_format_peak_rounding_is_relative(tmp_path, at2):
+    """Data in (1E15.6) carry 7 significant digits: 2677.000456 cm/s^2 is written
+    2.677000E+03, 4.6e-4 from the real header's 2677.000456 (F15.6), within half a unit
+    in the last place of the E value (5e-4), so it agrees: no warning. A stated peak off by
+    more than that rounding still warns (both peaks printed in full) or is refused."""
+    acc, dt = at2
+    a = acc[:600].copy()
+    k = int(np.argmax(np.abs(a)))
+    a[k] = 2677.000456 * GAL
+    p = write(tmp_path, "e.v2", cosmos_text(a, dt, e_format=True, peak=2677.000456))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        got, step, meta = read_record(p, units=None)
+    assert got[k] / GAL == pytest.approx(2677.0, abs=1e-9)  # the E value as written
+    np.testing.assert_allclose(got / GAL, a / GAL, rtol=0.5e-6, atol=0)  # 7 digits
+    with pytest.warns(PlausibilityWarning, match=r"peak of 2677\.912345 cm/s\^2 .* is 2677 "):
+        read_record(write(tmp_path, "w.v2", cosmos_text(a, dt, e_format=True,
+                                                        peak=2677.912345)), units=None)
+    with pytest.raises(RecordError, match="real header #64"):
+        read_record(write(tmp_path, "x.v2", cosmos_text(a, dt, e_format=True, peak=2800.0)),
+                    units=None)
+    # ESM: a PGA written with an exponent is precise to its last digit (0.5 cm/s^2 here)
+    b = acc[:600].copy()
+    b[k] = 2677.4 * GAL
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        read_record(write(tmp_path, "e.asc", esm_text(b, dt, **{"PGA_CM/S^2": "2.677E+03"})),
+                    units=None)
+    with pytest.warns(PlausibilityWarning, match="states a peak"):
+        read_record(write(tmp_path, "f.asc", esm_text(b, dt, **{"PGA_CM/S^2": "2.676E+03"})),
+                    units=None)
+
+
+def test_cosmos_without_a_time_step_takes_the_dt_passed(tmp_path, at2):
+    """Real #62 and #34 unknown (-999): refused without dt; with dt it is the record (the
+    same samples as when the file states it), said in meta; a dt that contradicts the
+    series length #63 the file states is refused."""
+    acc, dt = at2
+    a = acc[:800]
+    p = write(tmp_path, "nodt.v2", cosmos_text(a, dt, dt_ms=-999.0, dt_s=-999.0))
+    with pytest.raises(RecordError, match=r"states no time step .*pass dt"):
+        read_record(p, units=None)
+    got, step, meta = read_record(p, units=None, dt=dt)
+    ref, ref_step, ref_meta = read_record(write(tmp_path, "dt.v2", cosmos_text(a, dt)),
+                                          units=None)
+    assert step == dt and meta["dt_from"] == "caller" and ref_meta["dt_from"] == "file"
+    np.testing.assert_array_equal(got, ref)
+    with pytest.raises(RecordError, match="#63 states a series length"):
+        read_record(p, units=None, dt=2 * dt)
+
+
+def test_meta_says_whether_the_file_states_its_unit(tmp_path, at2):
+    """``units_stated``/``units_from``: the database formats and an AT2 units line state
+    the unit; an AT2 file without one is in g by the PEER convention; a column file without
+    one is in the caller's unit, or g assumed with units=None."""
+    acc, dt = at2
+    body = "NPTS=    3, DT=   .0100 SEC\n  .1000000E+01  .2000000E+01 -.3000000E+01\n"
+    cases = [
+        (esm_text(acc[:100], dt), "e.asc", None, "file"),
+        (cosmos_text(acc[:100], dt), "c.v2", None, "file"),
+        ("PEER\nX, 1/1/2000, S, 0\nACCELERATION TIME SERIES IN UNITS OF G\n" + body,
+         "a.AT2", None, "file"),
+        ("PEER\nX, 1/1/2000, S, 0\nACCELERATION TIME SERIES\n" + body, "b.AT2", None,
+         "convention"),
+        ("t,acc\n0,1\n0.01,2\n", "n.csv", None, "default"),
+        ("t,acc\n0,1\n0.01,2\n", "n.csv", "g", "caller"),
+        ("t,acc_g\n0,1\n0.01,2\n", "s.csv", None, "file"),
+    ]
+    for text, name, units, where in cases:
+        _, _, meta = read_record(write(tmp_path, name, text), units=units)
+        assert (meta["units_from"], meta["units_stated"]) == (where, where == "file"), name
     assert meta["units"] == "g"

@@ -64,7 +64,13 @@ Every reader checks what the file declares and refuses a file that contradicts i
   Acc.``) is compared with the peak of the data: within the rounding of the two numbers it
   agrees; up to 1 % off it gives a :class:`~rocking.errors.PlausibilityWarning`; beyond
   that the file is refused.
-* **time step.** A ``dt`` passed by the caller must agree with the file's.
+* **time step.** A ``dt`` passed by the caller must agree with the file's. A COSMOS file
+  that states none (real #62 and #34 unknown) is read with the caller's ``dt`` (still
+  checked against the series length #63), and ``meta["dt_from"]`` says ``"caller"``
+  (``"file"`` otherwise); without ``dt`` it is refused.
+* **rounding.** A number's rounding is half a unit in its last place as written: an
+  absolute ``0.5 10^-d`` for ``d`` decimals, ``0.5 10^(e - d)`` with an exponent ``e``
+  (``Format=(1E15.6)`` data, as gmprocess writes COSMOS files).
 """
 
 from __future__ import annotations
@@ -149,6 +155,17 @@ def _decimals(text: str) -> int:
     return len(m[1]) if m else 0
 
 
+def _half_ulp(text: str) -> float:
+    """Half a unit in the last place of a number as written: ``0.5 10^(e - d)`` for ``d``
+    digits after the point and exponent ``e`` (0 without one): ``2677.001`` -> 5e-4,
+    ``2.677001E+03`` -> 5e-4, ``0.2677E+04`` -> 0.5 (a fixed number of decimals is an
+    absolute precision only without an exponent)."""
+    t = text.strip()
+    m = re.search(r"[eEdD]([-+]?\d+)$", t)
+    e = int(m[1]) if m else 0
+    return 0.5 * 10.0 ** (e - _decimals(t[:m.start()] if m else t))
+
+
 def _check_peak(p: Path, where: str, stated: float, peak: float, tol: float,
                 unit: str) -> None:
     """The peak a header states against the data's: within ``tol`` (the rounding of both
@@ -156,8 +173,8 @@ def _check_peak(p: Path, where: str, stated: float, peak: float, tol: float,
     diff = abs(abs(stated) - peak)
     if diff <= tol * (1.0 + 1e-9) + 1e-12 * peak:
         return
-    msg = (f"{p}: {where} states a peak of {abs(stated):g} {unit} but the data's peak is "
-           f"{peak:.9g} {unit}")
+    msg = (f"{p}: {where} states a peak of {abs(stated):.15g} {unit} but the data's peak "
+           f"is {peak:.15g} {unit}")
     if diff <= _PEAK_WARN * max(abs(stated), peak):
         warn_implausible(msg + f" ({100 * diff / max(abs(stated), peak):.2g} % apart)")
         return
@@ -258,7 +275,7 @@ def read_esm(p: Path, lines: list[str], units: str | None, factor: float | None,
         pga_unit = _unit_key(p, pga_key[4:], pga_key)
         s = hdr[pga_key]
         pga = _as_float(p, where[pga_key], s, pga_key)
-        tol = 0.5 * 10.0 ** -_decimals(s) + 0.5 * 10.0 ** -max(_decimals(t) for t in tokens)
+        tol = _half_ulp(s) + _half_ulp(tokens[int(np.argmax(np.abs(vals)))])
         _check_peak(p, f"the ESM header ({pga_key})",
                     pga * ACCELERATION[pga_unit] / ACCELERATION[key], peak, tol, key)
 
@@ -352,6 +369,14 @@ def _fixed(p: Path, lines: list[str], start: int, n: int, fmt: str, fmt_ln: int,
     return out, start + nlines, dec
 
 
+def _field(lines: list[str], start: int, fmt: str, k: int) -> str:
+    """The text of the ``k``-th (0-based) value of a fixed-width block that starts at line
+    ``start`` (0-based) in the Fortran format ``fmt`` (already read by :func:`_fixed`)."""
+    m = _FORTRAN.match(fmt)
+    per, width = int(m[1] or 1), int(m[3])
+    return lines[start + k // per][(k % per) * width:(k % per + 1) * width]
+
+
 def _cosmos_records(p: Path, lines: list[str]) -> list[dict]:
     """Parse every record (channel and quantity) of a COSMOS file."""
     recs = []
@@ -385,6 +410,7 @@ def _cosmos_records(p: Path, lines: list[str]) -> list[dict]:
                 raise RecordError(f"{p}, line {j + 1}: {n} {what} in format ({mm[3]}) take "
                                   f"{nxt - j - 1} lines, the line states {nl}")
             rec[key], rec[key + "_decimals"] = vals, dec
+            rec[key + "_start"], rec[key + "_fmt"] = j + 1, mm[3]
             j = nxt
         mm = _COMMENTS.match(lines[j]) if j < len(lines) else None
         if mm is None:
@@ -477,14 +503,17 @@ def read_cosmos(p: Path, lines: list[str], units: str | None, factor: float | No
     key = sorted(keys, key=len)[-1]  # 'cm/s^2' over 'gal' for the same factor
     f = _factor(p, key, f"COSMOS data header units={r['units_text']}", units, factor)
 
-    # time step: real #62 (ms), else real #34 (s)
+    # time step: real #62 (ms), else real #34 (s), else the caller's dt
+    dt_from = "file"
     if (ms := rval(62)) is not None:
         step, where = ms / 1000.0, "the COSMOS real header #62 (time step in ms)"
     elif (s34 := rval(34)) is not None:
         step, where = s34, "the COSMOS real header #34 (sampling interval in s)"
+    elif dt is not None:  # the file states none: the caller's, still checked against #63
+        step, where, dt_from = dt, "dt passed", "caller"
     else:
         raise RecordError(f"{p}: the COSMOS real header states no time step (#62 in ms, #34 "
-                          "in s)")
+                          "in s): pass dt")
     _check_dt(p, step, dt, where)
     vals, n = r["values"], r["npts"]
     if n < 2:
@@ -501,9 +530,9 @@ def read_cosmos(p: Path, lines: list[str], units: str | None, factor: float | No
                           f"{n * step:g} s")
     peak = float(np.max(np.abs(vals)))
     pga = rval(64)
-    if pga is not None:
-        real_dec = r["reals_decimals"]
-        tol = 0.5 * 10.0 ** -real_dec + 0.5 * 10.0 ** -r["decimals"]
+    if pga is not None:  # the rounding of both numbers as written (E formats: relative)
+        tol = _half_ulp(_field(lines, r["reals_start"], r["reals_fmt"], 63)) + \
+            _half_ulp(_field(lines, r["data_line"], r["fmt"], int(np.argmax(np.abs(vals)))))
         _check_peak(p, "the COSMOS real header #64 (maximum value)", pga, peak, tol, key)
 
     code = re.search(r"Code:\s*(\S+)", r["text"][4]) if len(r["text"]) > 4 else None
@@ -515,7 +544,7 @@ def read_cosmos(p: Path, lines: list[str], units: str | None, factor: float | No
     meta = {
         "name": p.stem, "format": "COSMOS-V2", "path": str(p), "npts": n, "dt": step,
         "units": key, "t_start": 0.0, "network": network, "station": station,
-        "component": _cosmos_component(r), "event": r["text"][1].strip() if
+        "dt_from": dt_from, "component": _cosmos_component(r), "event": r["text"][1].strip() if
         len(r["text"]) > 1 else "", "product": product, "cosmos_version": r["version"],
         "description": r["text"][1].strip() if len(r["text"]) > 1 else "",
         "header": r["text"], "comments": r["comments"], "data_header": r["data_header"],

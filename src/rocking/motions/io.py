@@ -136,7 +136,11 @@ def read_record(path, units: str | None = "g",
         four header lines) and, when the description has the usual four comma-separated
         fields, ``event``, ``date``, ``station`` and ``component``. The database formats give
         ``network``, ``station``, ``component``, ``event``, ``pga_declared`` (the peak the
-        header states, in ``units``) and more (:mod:`rocking.motions.formats`).
+        header states, in ``units``) and more (:mod:`rocking.motions.formats`). Always
+        ``units_stated`` (True when the file states its unit) and ``units_from``: ``"file"``
+        (stated), ``"convention"`` (an ``.AT2`` file that states none: g, the PEER
+        convention), ``"caller"`` (a column file that states none, read in ``units``) or
+        ``"default"`` (a column file that states none read with ``units=None``: g assumed).
 
     Raises
     ------
@@ -162,14 +166,19 @@ def read_record(path, units: str | None = "g",
     lines = text.splitlines()
     kind = formats.detect(lines)
     if kind == "ESM":
-        return formats.read_esm(p, lines, units, factor, dt)
-    if kind == "COSMOS":
-        return formats.read_cosmos(p, lines, units, factor, dt)
-    if kind == "KNET":
-        return formats.read_knet(p, lines, units, factor, dt, text)
-    if _is_at2(p, lines):
-        return _read_at2(p, lines, units, factor, dt)
-    return _read_columns(p, lines, units, factor, dt, text.endswith(("\n", "\r")))
+        out = formats.read_esm(p, lines, units, factor, dt)
+    elif kind == "COSMOS":
+        out = formats.read_cosmos(p, lines, units, factor, dt)
+    elif kind == "KNET":
+        out = formats.read_knet(p, lines, units, factor, dt, text)
+    elif _is_at2(p, lines):
+        out = _read_at2(p, lines, units, factor, dt)
+    else:
+        out = _read_columns(p, lines, units, factor, dt, text.endswith(("\n", "\r")))
+    meta = out[2]
+    meta.setdefault("units_from", "file")  # the database formats always state their unit
+    meta["units_stated"] = meta["units_from"] == "file"
+    return out
 
 
 def write_csv(record, path) -> Path:
@@ -334,9 +343,10 @@ def _tokens(line: str) -> list[str]:
 
 
 # ---- PEER NGA .AT2
-def _at2_factor(p: Path, lines: list[str], units: str, factor: float) -> tuple[float, str]:
+def _at2_factor(p: Path, lines: list[str], units: str,
+                factor: float) -> tuple[float, str, bool]:
     """SI factor and name of the samples' unit: the one line 3 states (``UNITS OF G``; g if
-    it states none), which must agree with ``units``."""
+    it states none), which must agree with ``units``; and whether line 3 states it."""
     line3 = lines[2] if len(lines) > 2 else ""
     m_k, m_u = _AT2_KIND.search(line3), _AT2_UNITS.search(line3)
     if m_k and m_k[1].upper() != "ACCELERATION":
@@ -351,7 +361,7 @@ def _at2_factor(p: Path, lines: list[str], units: str, factor: float) -> tuple[f
         where = f"line 3 states units of {word}" if m_u else "a PEER .AT2 file is in g"
         raise RecordError(f"{p}: the file is in {key} ({where}) but units={units!r} was "
                           f"passed; pass units={key!r}")
-    return ACCELERATION[key], key
+    return ACCELERATION[key], key, m_u is not None
 
 
 def _read_at2(p: Path, lines: list[str], units: str, factor: float, dt: float | None):
@@ -360,7 +370,7 @@ def _read_at2(p: Path, lines: list[str], units: str, factor: float, dt: float | 
             f"{p}: not a valid PEER .AT2 file: expected 4 header lines, the 4th stating "
             f"'NPTS= <n>, DT= <s> SEC'; the file has only {len(lines)} line(s)"
         )
-    factor, unit_key = _at2_factor(p, lines, units, factor)
+    factor, unit_key, unit_stated = _at2_factor(p, lines, units, factor)
     hdr = lines[3]
     m_n, m_dt, m_alt = _AT2_NPTS.search(hdr), _AT2_DT.search(hdr), _AT2_ALT.match(hdr)
     if m_n and m_dt:
@@ -416,7 +426,8 @@ def _read_at2(p: Path, lines: list[str], units: str, factor: float, dt: float | 
     desc = lines[1].strip()
     meta = {
         "name": p.stem, "format": "AT2", "path": str(p), "npts": npts, "dt": step,
-        "units": unit_key, "t_start": 0.0, "title": lines[0].strip(), "description": desc,
+        "units": unit_key, "units_from": "file" if unit_stated else "convention",
+        "t_start": 0.0, "title": lines[0].strip(), "description": desc,
         "header": [ln.rstrip() for ln in lines[:4]],
     }
     parts = [s.strip() for s in desc.split(",")]
@@ -739,6 +750,7 @@ def _read_columns(p: Path, lines: list[str], units: str, factor: float, dt: floa
     meta = {
         "name": p.stem, "format": "columns" if delim is None else "csv", "path": str(p),
         "npts": n, "dt": step, "units": unit_name, "t_start": t_start, "columns": ncols,
+        "units_from": "file" if stated else "default" if units is None else "caller",
     }
     if ncols == 2:
         meta["time_units"] = t_unit or "s"
