@@ -303,3 +303,71 @@ def test_vertical_components_skipped_and_each_file_in_its_own_unit(capsys, tmp_p
     assert js["candidates"] == 3 and js["compliant"] is True
     back = Record.from_file(src / "cam009_ms2.csv", units=None)
     np.testing.assert_allclose(back.acc, rec.acc, rtol=1e-12, atol=1e-12)
+
+
+def _shipped(src, *names):
+    root = resources.files("rocking.motions") / "data" / "records"
+    for name in names:
+        (src / name).write_bytes((root / name).read_bytes())
+
+
+def _select(capsys, src, out, *args):
+    code, stdout, err = run_main(capsys, "motion", "select", src, "--target", "ec8", "--ag",
+                                 "0.2g", "--out", out, "--no-plot", *args)
+    assert code == 0, err
+    js, _ = _results(out)
+    return js, {s["file"]: s["reason"] for s in js["skipped"]}, stdout
+
+
+def test_files_without_a_unit_and_short_records_are_skipped(capsys, tmp_path):
+    """Without --units a column file that states no unit is skipped (g would be a guess;
+    an AT2 file is in g by the PEER convention and is read); with --units g it is read.
+    A record shorter than max(5 s, 2 Tmax) is skipped: a 6 s record (stating its unit) is
+    a candidate for periods up to 2.5 s (5 s needed) and not up to 4 s (8 s needed); the
+    reviewer's 4-sample, 0.03 s file is never one."""
+    src = tmp_path / "in"
+    src.mkdir()
+    _shipped(src, AT2, "RSN948_NORTHR_CAM009.AT2")
+    rec = load_builtin("RSN982_NORTHR_JEN292")
+    np.savetxt(src / "nounit.csv", np.column_stack([rec.t, rec.acc / G]), delimiter=",",
+               header="t,acc", comments="")  # long, in g, but says nothing
+    short = Record(rec.acc[:round(6.0 / rec.dt)], rec.dt, name="short")
+    write_csv(short, src / "short_ms2.csv")
+    (src / "tiny.csv").write_text("t,acc\n0,0.1\n0.01,0.2\n0.02,-0.1\n0.03,0.05\n")
+
+    js, skipped, stdout = _select(capsys, src, tmp_path / "o1", "--periods", "0.2:2.5:8",
+                                  "--n", "2")
+    assert skipped == {"nounit.csv": "states no unit: pass --units to read such files",
+                       "tiny.csv": "states no unit: pass --units to read such files"}
+    assert js["candidates"] == 3  # the two AT2 files and the 6 s record (>= 5 s)
+    assert "skipped     nounit.csv: states no unit" in stdout
+
+    js, skipped, _ = _select(capsys, src, tmp_path / "o2", "--periods", "0.2:4:8", "--n", "2")
+    assert js["candidates"] == 2
+    assert skipped["short_ms2.csv"].startswith(f"too short: {short.duration:.4g} s, less "
+                                               "than 8 s")
+
+    # --units g: the unit-less files are read in g; short_ms2.csv states m/s^2 (refused)
+    js, skipped, _ = _select(capsys, src, tmp_path / "o3", "--periods", "0.2:2.5:8", "--n",
+                             "2", "--units", "g")
+    assert "nounit.csv" not in skipped and js["candidates"] == 3
+    assert skipped["tiny.csv"].startswith("too short: 0.03 s, less than 5 s")
+    assert "m/s^2" in skipped["short_ms2.csv"]
+
+
+def test_the_same_motion_in_two_files_is_noted(capsys, tmp_path):
+    """A record shipped as AT2 (g) and the same motion scaled by 0.5 in a CSV (m/s^2):
+    their spectra are in the constant ratio 0.5, so when both are selected a note names the
+    two (in selection.json and on the terminal), and no other record; distinct records
+    are not named."""
+    src = tmp_path / "in"
+    src.mkdir()
+    _shipped(src, AT2, "RSN948_NORTHR_CAM009.AT2", "RSN183_IMPVALL.H_H-E08140.AT2")
+    write_csv(load_builtin("RSN948_NORTHR_CAM009").scaled(0.5), src / "cam_copy.csv")
+    js, _, stdout = _select(capsys, src, tmp_path / "o", "--periods", "0.2:1.5:10", "--n",
+                            "4")
+    same = [s for s in js["notes"] if "nearly identical spectra" in s]
+    assert len(same) == 1
+    assert "RSN948_NORTHR_CAM009.AT2" in same[0] and "cam_copy.csv" in same[0]
+    assert AT2 not in same[0] and "IMPVALL" not in same[0]
+    assert f"note        {same[0]}" in stdout

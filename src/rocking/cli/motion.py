@@ -656,6 +656,18 @@ def floor_cmd(record, units, dt, building, storeys, building_period, building_da
 SELECT_SHOWN_SKIPS = 10
 """``rocking motion select`` prints at most this many skipped files (all are in
 selection.json)."""
+SELECT_MIN_DURATION_S = 5.0
+SELECT_MIN_CYCLES = 2.0
+"""A candidate must last at least max(SELECT_MIN_DURATION_S, SELECT_MIN_CYCLES Tmax):
+the spectrum is the peak response over the record (no free vibration after it), and the
+peak of a lightly damped oscillator of period T comes within the cycles after the strong
+pulses, so a record shorter than two cycles at the longest period cuts the response
+where its peak would be; and a few seconds is less than the strong phase of any
+earthquake record (EN 1998-1 3.2.3.1.2 asks 10 s of stationary part of an artificial
+one): shorter files are fragments (a trigger, a test file, a cut download)."""
+SELECT_SAME_SPECTRUM = 0.01
+"""Two selected records whose spectra are in a ratio constant within 1 % over the period
+range are noted as the same motion (one download in two formats, or a scaled copy)."""
 
 
 def period_range(text) -> tuple[float, float, int]:
@@ -822,9 +834,13 @@ _VERTICAL = re.compile(r"^(?:UP|UD|DWN|DOWN|V|VER|VERT|VERTICAL|Z|HNZ|HGZ|HLZ|BN
 """Component names of a vertical record (AT2 ``UP``, K-NET ``UD``, ESM/SEED ``HNZ``, ...)."""
 
 
-def _read_candidates(folder: Path, units, dt):
+def _read_candidates(folder: Path, units, dt, tmax: float = 0.0):
     """Every regular file of ``folder`` that the record reader reads: ``(records,
-    sources, skipped)`` with ``skipped`` a list of ``(file name, one-line reason)``."""
+    sources, files, skipped)`` with ``skipped`` a list of ``(file name, one-line reason)``.
+
+    Skipped too: without ``units``, a file that states no unit (a column file; an AT2
+    file is in g by the PEER convention, ``meta["units_from"]``); a vertical component;
+    a record shorter than max(SELECT_MIN_DURATION_S, SELECT_MIN_CYCLES ``tmax``)."""
     from ..motions import Record
 
     step = None if dt is None else parse_quantity(dt, "time", name="dt", default_unit="s")
@@ -832,15 +848,26 @@ def _read_candidates(folder: Path, units, dt):
     files = sorted(p for p in folder.iterdir() if p.is_file())
     for p in files:
         try:
-            if units is None:  # each file in the unit it states (g if none): a folder of
-                # downloads mixes AT2 in g with ESM/COSMOS/K-NET in cm/s^2
+            if units is None:  # each file in the unit it states: a folder of downloads
+                # mixes AT2 in g with ESM/COSMOS/K-NET in cm/s^2
                 rec = Record.from_file(p, units=None, dt=step)
+                if rec.meta.get("units_from") == "default":  # g would be a guess
+                    skipped.append((p.name, "states no unit: pass --units to read such "
+                                    "files"))
+                    continue
             else:
                 rec, _ = read_record_arg(p, p.name, units, dt)
             comp = str(rec.meta.get("component", "") or rec.meta.get("direction", ""))
             if _VERTICAL.match(comp.strip()):
                 skipped.append((p.name, f"vertical component ({comp.strip()}): the target "
                                 "is a horizontal spectrum"))
+                continue
+            need = max(SELECT_MIN_DURATION_S, SELECT_MIN_CYCLES * tmax)
+            if rec.duration < need:
+                skipped.append((p.name, f"too short: {rec.duration:.4g} s, less than "
+                                f"{need:.4g} s (max of {SELECT_MIN_DURATION_S:g} s and "
+                                f"{SELECT_MIN_CYCLES:g} cycles of the longest period "
+                                f"{tmax:.4g} s)"))
                 continue
         except RockingError as e:
             msg = one_line(e)
@@ -855,6 +882,41 @@ def _read_candidates(folder: Path, units, dt):
         records.append(rec)
         sources.append(p)
     return records, sources, files, skipped
+
+
+def same_motion_notes(spectra, indices, names, periods,
+                      rtol: float = SELECT_SAME_SPECTRUM) -> list[str]:
+    """Notes naming the groups of selected candidates (``indices`` into the rows of
+    ``spectra``) whose spectra are in a constant ratio, max/min of the ratio - 1 <= rtol
+    over ``periods`` (pairs linked into groups): the same motion more than once (one
+    download in two formats, a scaled copy), which the set then counts as two records."""
+    idx = list(dict.fromkeys(int(i) for i in indices))
+    group = {i: i for i in idx}  # union-find over the linked pairs
+
+    def root(i):
+        while group[i] != i:
+            i = group[i]
+        return i
+
+    spread: dict[int, float] = {}
+    for a in range(len(idx)):
+        for b in range(a + 1, len(idx)):
+            r = np.asarray(spectra[idx[a]]) / np.asarray(spectra[idx[b]])
+            sp = float(r.max() / r.min() - 1.0)
+            if sp <= rtol:
+                ra, rb = root(idx[a]), root(idx[b])
+                group[rb] = ra
+                spread[ra] = max(spread.get(ra, 0.0), spread.pop(rb, 0.0), sp)
+    out = []
+    for g in dict.fromkeys(root(i) for i in idx):
+        members = [names[i] for i in idx if root(i) == g]
+        if len(members) > 1:
+            out.append(f"{', '.join(members[:-1])} and {members[-1]} have nearly identical "
+                       f"spectra (in ratios constant within {100 * spread[g]:.2g} % from "
+                       f"{periods[0]:.4g} to {periods[-1]:.4g} s): likely one motion (in "
+                       f"{len(members)} formats, or scaled copies) selected {len(members)} "
+                       "times; keep one of these files to count it once")
+    return out
 
 
 @motion.command("select")
@@ -877,9 +939,9 @@ def _read_candidates(folder: Path, units, dt):
                    "it; uhs: 5 % only).")
 @click.option("--units", metavar="U",
               help="Units of the record files: g, m/s^2, cm/s^2 (gal). Default: each "
-                   "file's own stated unit (ESM, COSMOS, K-NET: cm/s^2; AT2: g), g for a "
-                   "file that states none. Given, a unit a file states must agree (else the "
-                   "file is skipped).")
+                   "file's own stated unit (ESM, COSMOS, K-NET: cm/s^2; AT2: g); a file "
+                   "that states none is skipped. Given, a unit a file states must agree "
+                   "(else the file is skipped).")
 @click.option("--dt", metavar="DT", help="Time step of one-column record files (s).")
 @click.option("--ag", metavar="AG", help="ec8: design ground acceleration, e.g. 0.25g.")
 @click.option("--ground", type=click.Choice(list("ABCDE"), case_sensitive=False),
@@ -918,7 +980,11 @@ def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, 
     \b
     FOLDER: every file that the record reader reads is a candidate (PEER .AT2, CSV or
     columns, and the downloaded formats the reader detects); files it refuses are listed
-    as skipped, with the reason. The spectra are computed once per candidate.
+    as skipped, with the reason, and so are, without --units, files that state no unit
+    (an AT2 file without its units line is in g, the PEER convention), vertical
+    components, and records shorter than max(5 s, 2 Tmax). Two selected records with
+    spectra in a ratio constant within 1 % (one motion in two formats) are named in a
+    note. The spectra are computed once per candidate.
     \b
     Targets:
       ec8        EN 1998-1 elastic spectrum: --ag 0.25g [--ground C] [--type 1]
@@ -1080,7 +1146,7 @@ def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, 
     if dest.exists() and dest.resolve() == src.resolve():
         raise ParameterError("out must not be FOLDER itself (the scaled records would "
                              "become candidates of the next run)")
-    records, sources, files, skipped = _read_candidates(src, units, step)
+    records, sources, files, skipped = _read_candidates(src, units, step, float(T[-1]))
     if not records:
         first = f"; e.g. {skipped[0][0]}: {skipped[0][1]}" if skipped else ""
         raise ParameterError(f"FOLDER: no record file in {folder} ({len(files)} files, none "
@@ -1098,6 +1164,7 @@ def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, 
                 and "NOT compliant" in str(w.message)):
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
     notes += res.notes
+    notes += same_motion_notes(S, res.indices, [p.name for p in sources], T)
 
     # ---- rows, ranked by each record's own misfit
     per = [log_misfit(s, res.target) for s in res.spectra]
@@ -1194,4 +1261,4 @@ def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, 
 
 
 __all__ = ["motion", "synth_cmd", "spectrum_cmd", "show_cmd", "floor_cmd", "floor_list",
-           "select_cmd", "period_range", "read_target_table"]
+           "select_cmd", "period_range", "read_target_table", "same_motion_notes"]
