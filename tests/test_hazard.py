@@ -259,3 +259,195 @@ def test_cli_hazard_bad_input_is_one_line(capsys, tmp_path, monkeypatch, args, n
     write_openquake(tmp_path / "oq.csv", [0.1, 0.2], [(10.0, 45.0, [0.3, 0.1])])
     code, _, err = run_main(capsys, "hazard", "show", *args)
     assert_one_line_error(code, err, name)
+
+
+# ------------------------------------------------------------------ review: CSV headers
+
+
+def write_csv(path, head, x, y):
+    path.write_text(f"PGA (g),{head}\n" + "\n".join(
+        f"{float(a)!r},{float(b)!r}" for a, b in zip(x, y, strict=True)) + "\n")
+    return path
+
+
+X = np.array([0.05, 0.1, 0.2, 0.4])
+LAM = 2e-4 * X ** -2.5                        # a power law, rates of exceedance
+
+
+@pytest.mark.parametrize("head", ["rate", "annual_rate", "annual rate", "Rate",
+                                  "annual rate (1/year)", "lambda", "AFE", "MAFE",
+                                  "mean annual frequency of exceedance", "frequency",
+                                  "1/yr", "rate per year", "exceedance rate [1/yr]"])
+def test_csv_rate_headers_read_as_rates(tmp_path, head):
+    c = HazardCurve.from_csv(write_csv(tmp_path / "r.csv", head, X, LAM))
+    assert np.allclose(c.rate, LAM, rtol=1e-12)
+
+
+@pytest.mark.parametrize("head", ["return period", "return_period", "return period (years)",
+                                  "T_R", "Tr", "RP", "T", "T (years)", "years"])
+def test_csv_return_period_headers_read_as_periods(tmp_path, head):
+    c = HazardCurve.from_csv(write_csv(tmp_path / "t.csv", head, X, 1 / LAM))
+    assert np.allclose(c.rate, LAM, rtol=1e-12)
+
+
+@pytest.mark.parametrize("head", ["poe", "probability of exceedance", "poe_50yr", "prob",
+                                  "PoE in 50 years"])
+def test_csv_probability_of_exceedance_needs_its_time_and_is_poisson(tmp_path, head):
+    """The reviewer's case: a poe column was read as rates. Refused without
+    investigation_time; with it, the rate is the Poisson rate whose probability in T years
+    is the poe (checked through probability_in, the other direction)."""
+    T = 50.0
+    poe = -np.expm1(-LAM * T)
+    f = write_csv(tmp_path / "p.csv", head, X, poe)
+    with pytest.raises(ParameterError, match=r"investigation_time.*-ln\(1 - poe\)"):
+        HazardCurve.from_csv(f)
+    c = HazardCurve.from_csv(f, investigation_time=T)
+    assert np.allclose(c.rate, LAM, rtol=1e-10)
+    assert np.allclose(probability_in(T, c.rate), poe, rtol=1e-12)
+
+
+def test_csv_probability_checks(tmp_path):
+    poe = -np.expm1(-LAM * 50.0)
+    f = write_csv(tmp_path / "p.csv", "poe_50yr", X, poe)
+    with pytest.raises(ParameterError, match="investigation_time=1 contradicts"):
+        HazardCurve.from_csv(f, investigation_time=1.0)       # the header says 50 years
+    with pytest.raises(ParameterError, match="investigation_time"):
+        HazardCurve.from_csv(f, investigation_time=-5)
+    sat = write_csv(tmp_path / "s.csv", "poe", X, np.r_[1.0, poe[1:]])
+    with pytest.raises(ParameterError, match=r"\(0, 1\).*0\.05"):   # poe 1: infinite rate
+        HazardCurve.from_csv(sat, investigation_time=50)
+    r = write_csv(tmp_path / "r.csv", "rate", X, LAM)
+    with pytest.raises(ParameterError, match="investigation_time applies"):
+        HazardCurve.from_csv(r, investigation_time=50)
+
+
+@pytest.mark.parametrize("head", ["value", "PGA exceedance", "hazard", "rate (years)"])
+def test_csv_unknown_or_ambiguous_header_refused(tmp_path, head):
+    f = write_csv(tmp_path / "u.csv", head, X, LAM)
+    with pytest.raises(ParameterError, match=r"rate.*(return period|years)"):
+        HazardCurve.from_csv(f)
+
+
+# ------------------------------------------------------------------ review: OpenQuake site
+
+
+def two_sites(tmp_path):
+    levels = [0.05, 0.1, 0.2, 0.4]
+    lam = 2e-4 * np.array(levels) ** -2.0
+    sites = [(13.40, 42.35, -np.expm1(-lam * 50)), (14.25, 40.85, -np.expm1(-lam * 25))]
+    return write_openquake(tmp_path / "hazard_curve-mean-PGA_9.csv", levels, sites)
+
+
+def test_site_distance_is_the_great_circle_arc(tmp_path):
+    """Along a meridian the haversine distance is R d(lat) (R = 6371.0 km); the distance
+    is kept in the metadata and the label; an index choice has none."""
+    f = two_sites(tmp_path)
+    c = HazardCurve.from_openquake(f, site=(14.25, 40.85 + 0.2))
+    assert c.metadata["site_index"] == 1
+    assert c.metadata["site_distance_km"] == pytest.approx(6371.0 * math.radians(0.2),
+                                                           rel=1e-9)
+    assert "22.2 km" in c.label
+    # on the equator the arc crosses the date line: 179.9 and -179.9 are 0.2 deg apart
+    eq = tmp_path / "hazard_curve-mean-PGA_8.csv"
+    write_openquake(eq, [0.1, 0.2], [(179.9, 0.0, [0.3, 0.1]), (0.0, 0.0, [0.3, 0.1])])
+    e = HazardCurve.from_openquake(eq, site=(-179.9, 0.0))
+    assert e.metadata["site_index"] == 0
+    assert e.metadata["site_distance_km"] == pytest.approx(6371.0 * math.radians(0.2))
+    assert HazardCurve.from_openquake(f, site=1).metadata["site_distance_km"] is None
+
+
+@pytest.mark.parametrize("site, match", [
+    ((float("nan"), float("nan")), "lon must be finite"),
+    ((13.4, 95.0), r"lat must be finite, in \[-90, 90\]"),
+    ((400.0, 42.0), r"lon must be finite, in \[-180, 360\)"),
+    ((13.4, float("inf")), "lat"),
+    (("east", 42.0), "site"),
+    ((1.0, 2.0, 3.0), "site"),
+])
+def test_bad_site_coordinates_refused(tmp_path, site, match):
+    with pytest.raises(ParameterError, match=match):
+        HazardCurve.from_openquake(two_sites(tmp_path), site=site)
+
+
+def test_far_site_refused_naming_the_nearest_and_the_override(tmp_path):
+    f = two_sites(tmp_path)
+    with pytest.raises(ParameterError, match=r"site 1 at \(14\.25, 40\.85\), \d{4} km "
+                       r"away.*max_distance_km=50.*site 0: lon and lat swapped"):
+        HazardCurve.from_openquake(f, site=(42.35, 13.40))        # lat, lon swapped
+    with pytest.raises(ParameterError, match=r"site 1 .*site=1"):
+        HazardCurve.from_openquake(f, site=(15.0, 40.85))        # ~63 km east of site 1
+    d = 6371.0 * 2 * math.asin(math.cos(math.radians(40.85)) * math.sin(math.radians(0.375)))
+    c = HazardCurve.from_openquake(f, site=(15.0, 40.85), max_distance_km=100)
+    assert c.metadata["site_index"] == 1
+    assert c.metadata["site_distance_km"] == pytest.approx(d, rel=1e-9)
+    with pytest.raises(ParameterError, match="max_distance_km"):
+        HazardCurve.from_openquake(f, site=(15.0, 40.85), max_distance_km=0)
+
+
+def test_poe_rising_with_level_refused_naming_the_levels(tmp_path):
+    """The reviewer's row 0.5, 0.0, 0.01 was read after dropping its zero."""
+    f = write_openquake(tmp_path / "hazard_curve-mean-PGA_4.csv", [0.1, 0.2, 0.4],
+                        [(1.0, 1.0, [0.5, 0.0, 0.01])])
+    with pytest.raises(ParameterError, match=r"rises.*poe-0\.2.*poe-0\.4"):
+        HazardCurve.from_openquake(f)
+    # flat saturated (1, 1) and flat zero (0, 0) ends are not rises: dropped, recorded
+    g = write_openquake(tmp_path / "hazard_curve-mean-PGA_5.csv", [0.05, 0.1, 0.2, 0.4, 0.8],
+                        [(1.0, 1.0, [1.0, 1.0, 0.2, 0.01, 0.0])])
+    c = HazardCurve.from_openquake(g)
+    assert c.metadata["dropped_levels"] == [0.05, 0.1, 0.8]
+    assert np.allclose(c.rate, -np.log1p(-np.array([0.2, 0.01])) / 50.0)
+
+
+def test_tail_slopes_are_the_first_two_and_last_two_points():
+    """The documented tail model: below the curve, the slope of its first two points; above
+    it, that of its last two (here 2 and 4: the curve bends)."""
+    x = np.array([0.1, 0.2, 0.4])
+    lam = np.array([1e-2, 1e-2 * 2.0 ** -2, 1e-2 * 2.0 ** -2 * 2.0 ** -4])
+    c = HazardCurve(x, lam, im_name="PGA", unit="g")
+    assert c.tail_slopes == pytest.approx((2.0, 4.0), rel=1e-12)
+    assert c.rate_at(0.05) == pytest.approx(lam[0] * 2.0 ** 2, rel=1e-12)
+    assert c.rate_at(0.8) == pytest.approx(lam[-1] * 2.0 ** -4, rel=1e-12)
+
+
+def test_cli_show_reports_site_distance_dropped_levels_and_poe(capsys, tmp_path):
+    from cli_helpers import run_main
+
+    f = write_openquake(tmp_path / "hazard_curve-mean-PGA_6.csv", [0.05, 0.1, 0.2, 0.4],
+                        [(14.25, 40.85, [1.0, 0.3, 0.1, 0.01])])
+    code, out, err = run_main(capsys, "hazard", "show", f, "--site", "14.25,41.05")
+    assert code == 0, err
+    km = 6371.0 * math.radians(0.2)
+    line = next(s for s in out.splitlines() if s.startswith("site 0"))
+    assert f"{km:.3g} km" in line
+    assert "dropped levels" in out and "0.05 (poe 1)" in out
+    code, _, err = run_main(capsys, "hazard", "show", f, "--site", "14.25,43",
+                            "--max-distance-km", "300")
+    assert code == 0, err
+    T = 50.0
+    poe = -np.expm1(-LAM * T)
+    p = write_csv(tmp_path / "p.csv", "probability of exceedance", X, poe)
+    code, out, err = run_main(capsys, "hazard", "show", p, "--investigation-time", "50yr",
+                              "--json")
+    assert code == 0, err
+    import json
+    assert np.allclose(json.loads(out)["rate"], LAM, rtol=1e-10)
+
+
+@pytest.mark.parametrize("args, name", [
+    (["oq.csv", "--site", "nan,nan"], "lon"),
+    (["oq.csv", "--site", "10,95"], "lat"),
+    (["oq.csv", "--site", "45,10"], "--max-distance-km"),        # swapped: 1000s of km
+    (["oq.csv", "--investigation-time", "50"], "--investigation-time"),
+    (["p.csv"], "--investigation-time"),
+    (["p.csv", "--max-distance-km", "10"], "--max-distance-km"),
+    (["v.csv"], "return period"),
+])
+def test_cli_hazard_review_refusals_are_one_line(capsys, tmp_path, monkeypatch, args, name):
+    from cli_helpers import assert_one_line_error, run_main
+
+    monkeypatch.chdir(tmp_path)
+    write_openquake(tmp_path / "oq.csv", [0.1, 0.2], [(10.0, 45.0, [0.3, 0.1])])
+    write_csv(tmp_path / "p.csv", "poe", X, -np.expm1(-LAM * 50))
+    write_csv(tmp_path / "v.csv", "value", X, LAM)
+    code, _, err = run_main(capsys, "hazard", "show", *args)
+    assert_one_line_error(code, err, name)

@@ -6,15 +6,17 @@ IM's name and unit. It is built from
 * an OpenQuake engine export (:meth:`HazardCurve.from_openquake`, the documented
   ``hazard_curve-<kind>-<IMT>_<id>.csv``: probabilities of exceedance ``poe`` in the
   investigation time ``T`` become rates ``-ln(1 - poe) / T``);
-* a plain CSV of IM and annual rate or return period (:meth:`HazardCurve.from_csv`);
+* a plain CSV of IM and annual rate or return period (:meth:`HazardCurve.from_csv`; a
+  probability of exceedance only with its ``investigation_time``);
 * a code value (:meth:`HazardCurve.from_code_value`): EN 1998-1 (2004) 2.1(4) note,
   ``lambda(a) = (1/475) (a / a_475)^-k`` with k of the order of 3 -- an approximation,
   flagged ``approximate=True`` and labelled so.
 
 :func:`risk` integrates a fragility against the curve over the whole IM range
 (Cornell et al. 2002, ``lambda_f = integral P(f | im) |d lambda / d im| d im``). Tail model:
-beyond its first and last points the curve is extended as a power law with the log-log
-slope of its two end points, so the integral runs from 0 to infinity; the share of the
+beyond its first and last points the curve is extended as a power law, below the first
+with the log-log slope of its first two points and above the last with that of its last
+two (:attr:`HazardCurve.tail_slopes`), so the integral runs from 0 to infinity; the share of the
 result that comes from these extrapolated tails is reported (``tail_share``).
 """
 
@@ -44,6 +46,46 @@ def _unit_factor(unit: str):
     return None
 
 
+#: Default ``max_distance_km`` of :meth:`HazardCurve.from_openquake`: a site chosen by
+#: (lon, lat) farther than this from the nearest site of the file is refused.
+MAX_SITE_DISTANCE_KM = 50.0
+EARTH_RADIUS_KM = 6371.0  # mean radius (IUGG R1 = 6371.0088 km)
+
+
+def great_circle_km(lon0, lat0, lon, lat):
+    """Great-circle distance (km) on a sphere of radius :data:`EARTH_RADIUS_KM`
+    (haversine formula), degrees in; periodic in longitude.
+
+    Examples
+    --------
+    >>> from rocking.analysis.hazard import great_circle_km
+    >>> round(float(great_circle_km(0, 0, 1, 0)), 3)  # pi R / 180
+    111.195
+    """
+    lo0, la0, lo, la = (np.radians(np.asarray(v, dtype=float)) for v in (lon0, lat0, lon, lat))
+    h = (np.sin((la - la0) / 2) ** 2
+         + np.cos(la) * np.cos(la0) * np.sin((lo - lo0) / 2) ** 2)
+    return 2 * EARTH_RADIUS_KM * np.arcsin(np.sqrt(np.clip(h, 0.0, 1.0)))
+
+
+def _lon_lat(site) -> tuple[float, float]:
+    """``(lon, lat)`` in degrees, checked: finite, lon in [-180, 360), lat in [-90, 90]."""
+    if len(site) != 2:
+        raise ParameterError(f"site must be an index or (lon, lat), got {site!r}")
+    try:
+        lon, lat = (float(v) for v in site)
+    except (TypeError, ValueError):
+        raise ParameterError(f"site must be an index or (lon, lat) in degrees, got "
+                             f"{site!r}") from None
+    if not (math.isfinite(lon) and -180.0 <= lon < 360.0):
+        raise ParameterError(f"site: lon must be finite, in [-180, 360) degrees, got "
+                             f"{site[0]!r}")
+    if not (math.isfinite(lat) and -90.0 <= lat <= 90.0):
+        raise ParameterError(f"site: lat must be finite, in [-90, 90] degrees, got "
+                             f"{site[1]!r}")
+    return lon, lat
+
+
 def _positive(name: str, value) -> float:
     try:
         v = float(value)
@@ -52,6 +94,55 @@ def _positive(name: str, value) -> float:
     if not math.isfinite(v) or v <= 0:
         raise ParameterError(f"{name} must be a finite number > 0, got {value!r}")
     return v
+
+
+#: Second-column header words of :meth:`HazardCurve.from_csv` (shown in its refusals).
+RATE_WORDS = ("rate", "annual rate", "lambda", "AFE", "MAFE", "frequency", "1/yr",
+              "per year")
+PERIOD_WORDS = ("return period", "T_R", "Tr", "RP", "T", "years")
+POE_WORDS = ("poe", "prob", "probability")
+
+_RATE_TOKENS = {"rate", "rates", "lambda", "afe", "mafe", "frequency", "freq"}
+_PERIOD_TOKENS = {"period", "periods", "return", "tr", "rp", "t"}
+_YEAR_TOKENS = {"y", "yr", "yrs", "year", "years"}
+_POE_TOKENS = {"poe", "poes", "prob", "probability", "probabilities", "ape"}
+_PER_YEAR = re.compile(r"1\s*/\s*(?:y|yr|yrs|year|years|a|annum)(?![a-z])"
+                       r"|/\s*(?:yr|year)(?![a-z])|per\s*[-_ ]?\s*(?:year|yr|annum)(?![a-z])"
+                       r"|(?:yr|year|y)\s*\^?\s*-\s*1(?![0-9])")
+_STATED_YEARS = re.compile(r"(\d+(?:\.\d+)?)\s*[-_ ]?\s*(?:y|yr|yrs|year|years)(?![a-z])")
+
+
+def column_kind(header: str):
+    """``(kind, stated_years)`` of a hazard CSV's second-column header: kind ``"rate"``
+    (rate words or a per-year unit), ``"period"`` (return-period words or a unit of
+    years), ``"poe"`` (a probability of exceedance, whatever else it says),
+    ``"ambiguous"`` (both rate and period words) or None (none of these);
+    ``stated_years``: the times a poe header states (``poe_50yr`` -> 50, ``annual`` -> 1).
+
+    Examples
+    --------
+    >>> from rocking.analysis.hazard import column_kind
+    >>> column_kind("annual rate (1/year)"), column_kind("T_R (years)")
+    (('rate', ()), ('period', ()))
+    >>> column_kind("poe_50yr"), column_kind("value")
+    (('poe', (50.0,)), (None, ()))
+    """
+    low = str(header).strip().lower()
+    words = set(re.findall(r"[a-z]+", low))
+    if words & _POE_TOKENS or re.search(r"(?<![a-z0-9])p[\s_]*\(?\s*(?:im\s*)?>", low):
+        stated = {float(v) for v in _STATED_YEARS.findall(low)}
+        if words & {"annual", "yearly", "ape"}:
+            stated.add(1.0)
+        return "poe", tuple(sorted(stated))
+    per_year = _PER_YEAR.search(low) is not None
+    rest = _PER_YEAR.sub(" ", low)
+    rest = re.sub(r"(?<![a-z0-9])t[\s_-]?r(?![a-z0-9])", " tr ", rest)
+    tokens = set(re.findall(r"[a-z]+", rest))
+    rate = bool(tokens & _RATE_TOKENS) or per_year
+    period = bool(tokens & _PERIOD_TOKENS) or bool(tokens & _YEAR_TOKENS)
+    if rate and period:
+        return "ambiguous", ()
+    return ("rate" if rate else "period" if period else None), ()
 
 
 def probability_in(t_years, annual_frequency):
@@ -83,7 +174,8 @@ class HazardCurve:
 
     ``im`` > 0 strictly increasing in ``unit``; ``rate`` > 0 and non-increasing (not
     constant). Interpolated log-log between points; beyond its ends (:meth:`rate_at`,
-    :func:`risk`) extended as a power law with the slope of the two end points.
+    :func:`risk`) extended as a power law with the slope of the first two points (below)
+    and of the last two (above), :attr:`tail_slopes`.
     ``approximate`` flags a curve that is not a hazard model's output (a code value).
 
     Examples
@@ -223,11 +315,15 @@ class HazardCurve:
 
     @classmethod
     def from_csv(cls, path, *, im_name: str | None = None, unit: str | None = None,
-                 label: str = ""):
-        """A CSV with two columns: the IM and the annual rate of exceedance, or the return
-        period (a second header naming ``period``, ``T``, ``Tr``, ``RP`` or years; else a rate). The
-        IM unit is taken from the first header (``pga_g``, ``PGA (g)``, ``PGA [m/s^2]``)
-        unless given as ``unit``; lines starting with ``#`` are skipped."""
+                 label: str = "", investigation_time=None):
+        """A CSV with two columns: the IM and, by the second header (:func:`column_kind`),
+        the annual rate of exceedance (``rate``, ``annual rate``, ``lambda``, ``AFE``,
+        ``MAFE``, ``frequency``, ``1/yr``, ``per year``) or the return period (``return
+        period``, ``T_R``, ``Tr``, ``RP``, ``T``, ``years``). A probability of exceedance
+        (``poe``, ``probability``) is read only with ``investigation_time`` T (years):
+        ``rate = -ln(1 - poe) / T`` (Poisson, as for OpenQuake); any other header is
+        refused. The IM unit is taken from the first header (``pga_g``, ``PGA (g)``,
+        ``PGA [m/s^2]``) unless given as ``unit``; lines starting with ``#`` are skipped."""
         p = Path(path)
         if not p.is_file():
             raise ParameterError(f"path: no such hazard-curve file {str(path)!r}")
@@ -247,27 +343,65 @@ class HazardCurve:
         u = (unit or head_unit).strip()
         if unit and head_unit and _unit_factor(head_unit) != _unit_factor(unit):
             raise ParameterError(f"unit={unit!r} contradicts the header {h_im!r}")
+        kind, stated = column_kind(h_y)
+        if kind is None:
+            raise ParameterError(
+                f"{p.name}: the second column's header {h_y!r} does not say what it holds: "
+                f"head it with an annual rate of exceedance ({', '.join(RATE_WORDS)}) or a "
+                f"return period ({', '.join(PERIOD_WORDS)}); a probability of exceedance "
+                f"({', '.join(POE_WORDS)}) needs investigation_time=")
+        if kind == "ambiguous":
+            raise ParameterError(f"{p.name}: the second column's header {h_y!r} names both "
+                                 "a rate and a return period: keep one")
+        if kind == "poe" and investigation_time is None:
+            hint = (f"{stated[0]:g} (the years it refers to)" if len(stated) == 1
+                    else "T (the years it refers to, e.g. 50)")
+            raise ParameterError(
+                f"investigation_time: {p.name}'s column {h_y!r} is a probability of "
+                f"exceedance, not an annual rate: give investigation_time={hint} to "
+                "convert it by rate = -ln(1 - poe)/T, or convert it and head the column "
+                "'annual rate'")
+        if kind != "poe" and investigation_time is not None:
+            raise ParameterError(f"investigation_time applies to a probability-of-"
+                                 f"exceedance column only; {p.name}'s {h_y!r} is a {kind}")
         try:
             data = np.array([[float(r[0]), float(r[1])] for r in rows[1:]])
         except (ValueError, IndexError):
             raise ParameterError(f"{p.name}: every row must hold two numbers") from None
-        low = h_y.lower()
-        is_period = ("period" in low or "year" in low
-                     or re.search(r"(^|[_\s(\[])(t|tr|rp|yr|years?)($|[_\s)\]])", low)
-                     is not None)
-        y = 1.0 / data[:, 1] if is_period else data[:, 1]
-        if is_period and np.any(data[:, 1] <= 0):
-            raise ParameterError(f"{p.name}: return periods must be > 0")
+        v = data[:, 1]
+        if kind == "period":
+            if np.any(~(v > 0)):
+                raise ParameterError(f"{p.name}: return periods must be > 0")
+            y = 1.0 / v
+        elif kind == "poe":
+            T = _positive("investigation_time", investigation_time)
+            if stated and not any(math.isclose(T, s, rel_tol=1e-9) for s in stated):
+                raise ParameterError(f"investigation_time={T:g} contradicts {p.name}'s "
+                                     f"header {h_y!r} ({', '.join(f'{s:g}' for s in stated)}"
+                                     " years)")
+            if np.any(~((v > 0) & (v < 1))):
+                bad = data[~((v > 0) & (v < 1)), 0]
+                raise ParameterError(f"{p.name}: a probability of exceedance must be in "
+                                     f"(0, 1) (0 and 1 carry no finite non-zero rate); "
+                                     f"not so at IM {', '.join(f'{x:g}' for x in bad)}")
+            y = -np.log1p(-v) / T
+        else:
+            y = v
         return cls(data[:, 0], y, im_name=name, unit=u, label=label or p.name)
 
     @classmethod
-    def from_openquake(cls, path, site=0, *, label: str = ""):
+    def from_openquake(cls, path, site=0, *, label: str = "",
+                       max_distance_km: float = MAX_SITE_DISTANCE_KM):
         """An OpenQuake engine hazard-curve export (``hazard_curve-<kind>-<IMT>_<id>.csv``):
         a first comment line of ``key=value`` metadata (``investigation_time``, ``imt``),
         then the header ``lon,lat,depth,poe-<level>,...`` and one row per site.
-        ``poe`` in ``investigation_time`` T becomes ``rate = -ln(1 - poe) / T``.
-        ``site``: a row index, or ``(lon, lat)`` for the nearest site (great circle).
-        PGA and SA(T) levels are in g."""
+        ``poe`` in ``investigation_time`` T becomes ``rate = -ln(1 - poe) / T``; a poe that
+        rises with the level is refused; levels with poe 1 or 0 (no finite non-zero rate)
+        are dropped and listed in ``metadata["dropped_levels"]``.
+        ``site``: a row index, or ``(lon, lat)`` in degrees (lon in [-180, 360), lat in
+        [-90, 90]) for the nearest site on a sphere of radius 6371.0 km (haversine); its
+        distance is ``metadata["site_distance_km"]`` and a nearest site farther than
+        ``max_distance_km`` is refused. PGA and SA(T) levels are in g."""
         p = Path(path)
         if not p.is_file():
             raise ParameterError(f"path: no such OpenQuake file {str(path)!r}")
@@ -275,7 +409,8 @@ class HazardCurve:
         if not lines or not lines[0].lstrip().startswith("#"):
             raise ParameterError(f"{p.name}: not an OpenQuake hazard-curve export (no "
                                  "first comment line of metadata)")
-        meta = dict(re.findall(r"(\w+)\s*=\s*'?([^,']*)'?", lines[0].lstrip("# ")))
+        meta = {k: v.strip().strip("\"'").strip() for k, v in
+                re.findall(r"(\w+)\s*=\s*'?([^,']*)'?", lines[0].lstrip("# "))}
         try:
             T = float(meta["investigation_time"])
         except (KeyError, ValueError):
@@ -306,15 +441,28 @@ class HazardCurve:
                                  "must hold numbers") from None
         if not data:
             raise ParameterError(f"{p.name}: no site rows")
-        if isinstance(site, (tuple, list)):
-            if len(site) != 2:
-                raise ParameterError(f"site must be an index or (lon, lat), got {site!r}")
-            lon0, lat0 = np.radians([float(site[0]), float(site[1])])
-            lon = np.radians([float(r[ilon]) for r in data])
-            lat = np.radians([float(r[ilat]) for r in data])
-            hav = (np.sin((lat - lat0) / 2) ** 2
-                   + np.cos(lat) * np.cos(lat0) * np.sin((lon - lon0) / 2) ** 2)
-            idx = int(np.argmin(hav))
+        dist = None
+        if isinstance(site, (tuple, list, np.ndarray)):
+            lon0, lat0 = _lon_lat(site)
+            dmax = _positive("max_distance_km", max_distance_km)
+            lon = np.array([float(r[ilon]) for r in data])
+            lat = np.array([float(r[ilat]) for r in data])
+            d_km = great_circle_km(lon0, lat0, lon, lat)
+            idx = int(np.argmin(d_km))
+            dist = float(d_km[idx])
+            if dist > dmax:
+                swapped = ""
+                if -90 <= lon0 <= 90 and -180 <= lat0 < 360:
+                    ds = great_circle_km(lat0, lon0, lon, lat)
+                    if ds.min() <= dmax:
+                        swapped = (f"; (lon {lat0:g}, lat {lon0:g}) is {ds.min():.3g} km from site "
+                                   f"{int(np.argmin(ds))}: lon and lat swapped?")
+                raise ParameterError(
+                    f"site: the nearest site of {p.name} to (lon {lon0:g}, lat {lat0:g}) is "
+                    f"site {idx} at ({data[idx][ilon].strip()}, {data[idx][ilat].strip()}), "
+                    f"{dist:.4g} km away, beyond max_distance_km={dmax:g}{swapped}; give the "
+                    f"site by its index (site={idx}) or a larger max_distance_km if it is "
+                    "meant")
         else:
             if isinstance(site, bool) or not isinstance(site, (int, np.integer)) \
                     or not 0 <= site < len(data):
@@ -325,18 +473,29 @@ class HazardCurve:
         poe = np.array([float(row[i]) for i in cols])
         if np.any(~np.isfinite(poe)) or np.any(poe < 0) or np.any(poe > 1):
             raise ParameterError(f"{p.name}: poe must be in [0, 1]")
+        order = np.argsort(levels, kind="stable")
+        lv, pv = levels[order], poe[order]
+        rise = np.flatnonzero(np.diff(pv) > 0)
+        if rise.size:
+            i = int(rise[0])
+            raise ParameterError(
+                f"{p.name}: site {idx}'s poe rises with the level (a probability of "
+                f"exceedance cannot): {pv[i]:g} at poe-{lv[i]:g} then {pv[i + 1]:g} at "
+                f"poe-{lv[i + 1]:g}" + (f" ({rise.size} rises)" if rise.size > 1 else ""))
         # poe = 1 (infinite rate) and poe = 0 levels carry no rate: dropped and recorded
         keep = (poe > 0) & (poe < 1)
         rate = np.full(poe.shape, np.nan)
         rate[keep] = -np.log1p(-poe[keep]) / T
         if keep.sum() < 2:
             raise ParameterError(f"{p.name}: site {idx} has fewer than 2 non-zero poe")
-        lab = label or (f"OpenQuake {imt} at ({row[ilon].strip()}, {row[ilat].strip()}), "
-                        f"{meta.get('kind', p.name)}")
+        where = "" if dist is None else f", {dist:.3g} km from the site asked"
+        lab = label or (f"OpenQuake {imt} at ({row[ilon].strip()}, {row[ilat].strip()})"
+                        f"{where}, {meta.get('kind', p.name)}")
         curve = cls(levels[keep], rate[keep], im_name=imt, unit="g", label=lab)
         curve.metadata = {**meta, "site_index": idx, "lon": float(row[ilon]),
-                          "lat": float(row[ilat]),
-                          "dropped_levels": [float(v) for v in levels[~keep]]}
+                          "lat": float(row[ilat]), "site_distance_km": dist,
+                          "dropped_levels": [float(v) for v in levels[~keep]],
+                          "dropped_poe": [float(v) for v in poe[~keep]]}
         return curve
 
 

@@ -3,22 +3,25 @@
 ::
 
     rocking hazard show hazard_curve-mean-PGA_22.csv [--site 0 | --site 13.4,42.35] [--json]
-    rocking hazard show site.csv [--unit g]
+    rocking hazard show site.csv [--unit g] [--investigation-time 50]
 
 An OpenQuake engine export (first line a ``#`` comment with ``investigation_time``) is read
 with :meth:`HazardCurve.from_openquake`, any other CSV with :meth:`HazardCurve.from_csv`
-(IM and annual rate or return period). Prints the curve's label, IM and unit, its points
+(IM and annual rate or return period; a probability of exceedance with
+``--investigation-time``). Prints the curve's label, IM and unit, the OpenQuake site chosen
+(and its distance from ``--site LON,LAT``) and the levels dropped (poe 1 or 0), its points
 and the IM exceeded at 475 and 2475 years (rate 1/475, 1/2475). Bad input: one line, exit 2.
 """
 
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import click
 
-from ..analysis.hazard import RETURN_PERIODS, HazardCurve
+from ..analysis.hazard import MAX_SITE_DISTANCE_KM, RETURN_PERIODS, HazardCurve
 from ..errors import ParameterError
 from .common import CONTEXT, json_default
 
@@ -37,7 +40,29 @@ def _site(text):
     raise ParameterError(f"--site must be a site index (0, 1, ...) or LON,LAT, got {text!r}")
 
 
-def read_curve(path, site=None, unit=None) -> HazardCurve:
+def _years(text):
+    """``--investigation-time``: years, as ``50``, ``50y``, ``50yr`` or ``50 years``."""
+    if text is None:
+        return None
+    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(?:y|yr|yrs|year|years)?\s*", str(text))
+    try:
+        return float(m.group(1)) if m else float(text)
+    except ValueError:
+        raise ParameterError(f"--investigation-time must be a number of years (e.g. 50 "
+                             f"or 50yr), got {text!r}") from None
+
+
+def _cli_names(msg: str) -> str:
+    """A library message with the command line's option names."""
+    return (msg.replace("investigation_time=", "--investigation-time ")
+            .replace("investigation_time", "--investigation-time")
+            .replace("max_distance_km=", "--max-distance-km ")
+            .replace("max_distance_km", "--max-distance-km")
+            .replace("(site=", "(--site "))
+
+
+def read_curve(path, site=None, unit=None, investigation_time=None,
+               max_distance_km=None) -> HazardCurve:
     """The hazard curve in ``path``: an OpenQuake export or a plain CSV (by content)."""
     p = Path(path)
     if not p.is_file():
@@ -47,14 +72,23 @@ def read_curve(path, site=None, unit=None) -> HazardCurve:
             first = fh.readline()
     except (OSError, UnicodeDecodeError) as e:
         raise ParameterError(f"FILE: cannot read {p.name} as text ({e})") from None
-    if first.lstrip().startswith("#") and "investigation_time" in first:
-        if unit is not None:
-            raise ParameterError("--unit is not used with an OpenQuake export (its PGA and "
-                                 "SA levels are in g)")
-        return HazardCurve.from_openquake(p, site=_site(site))
-    if site is not None:
-        raise ParameterError("--site applies to an OpenQuake export only")
-    return HazardCurve.from_csv(p, unit=unit)
+    try:
+        if first.lstrip().startswith("#") and "investigation_time" in first:
+            if unit is not None:
+                raise ParameterError("--unit is not used with an OpenQuake export (its PGA "
+                                     "and SA levels are in g)")
+            if investigation_time is not None:
+                raise ParameterError("--investigation-time is not used with an OpenQuake "
+                                     "export (its metadata line states it)")
+            dmax = MAX_SITE_DISTANCE_KM if max_distance_km is None else max_distance_km
+            return HazardCurve.from_openquake(p, site=_site(site), max_distance_km=dmax)
+        if site is not None or max_distance_km is not None:
+            raise ParameterError("--site and --max-distance-km apply to an OpenQuake "
+                                 "export only")
+        return HazardCurve.from_csv(p, unit=unit,
+                                    investigation_time=_years(investigation_time))
+    except ParameterError as e:
+        raise ParameterError(_cli_names(str(e))) from None
 
 
 @click.group("hazard", context_settings=CONTEXT)
@@ -67,10 +101,16 @@ def hazard():
 @click.option("--site", default=None, help="OpenQuake: site index or LON,LAT (nearest).")
 @click.option("--unit", default=None, help="CSV: unit of the IM column if its header "
               "states none (g, m/s^2).")
+@click.option("--investigation-time", default=None, help="CSV: the years of a "
+              "probability-of-exceedance column (poe), read as rate = -ln(1 - poe)/T.")
+@click.option("--max-distance-km", type=float, default=None, help="OpenQuake: refuse a "
+              f"--site LON,LAT farther than this from every site (default "
+              f"{MAX_SITE_DISTANCE_KM:g} km).")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def show_cmd(file, site, unit, as_json):
+def show_cmd(file, site, unit, investigation_time, max_distance_km, as_json):
     """The hazard curve in FILE, its IM and unit, and the IM at 475 and 2475 years."""
-    c = read_curve(file, site, unit)
+    c = read_curve(file, site, unit, investigation_time, max_distance_km)
+    meta = getattr(c, "metadata", {})
     at = {int(T): c.im_at_return_period(T) for T in RETURN_PERIODS}
     outside = {int(T): not (c.rate[-1] <= 1 / T <= c.rate[0]) for T in RETURN_PERIODS}
     if as_json:
@@ -79,12 +119,23 @@ def show_cmd(file, site, unit, as_json):
             "approximate": c.approximate, "im": c.im.tolist(), "rate": c.rate.tolist(),
             "im_at_return_period": {str(k): v for k, v in at.items()},
             "extrapolated": {str(k): v for k, v in outside.items()},
-            "metadata": getattr(c, "metadata", {}),
+            "metadata": meta,
         }, default=json_default, indent=2))
         return
     click.echo(f"{c.label}")
     click.echo(f"IM: {c.im_name} in {c.unit}; {c.im.size} points"
                + ("; APPROXIMATION (code value)" if c.approximate else ""))
+    if "site_index" in meta:
+        d = meta.get("site_distance_km")
+        click.echo(f"site {meta['site_index']} at (lon {meta['lon']:g}, lat {meta['lat']:g})"
+                   + ("" if d is None else f", {d:.3g} km from --site {site}"))
+    dropped = meta.get("dropped_levels") or []
+    if dropped:
+        poes = meta.get("dropped_poe") or [None] * len(dropped)
+        items = ", ".join(f"{x:g} (poe {q:g})" if q is not None else f"{x:g}"
+                          for x, q in zip(dropped, poes, strict=True))
+        click.echo(f"dropped levels ({c.unit}; poe 1 or 0 give no finite non-zero rate): "
+                   f"{items}")
     click.echo(f"{'IM (' + c.unit + ')':>14} {'rate (1/yr)':>12} {'T (yr)':>10}")
     for x, r in zip(c.im, c.rate, strict=True):
         click.echo(f"{x:14.4g} {r:12.4g} {1 / r:10.4g}")
