@@ -17,8 +17,6 @@ Everything is small so that the page builds in seconds (7 records, 9 levels); a 
 would use more records and levels, or a campaign (:doc:`plot_campaign_dask`).
 """
 
-# sphinx_gallery_thumbnail_number = 4
-
 # %%
 # 1. The statue and its weakest direction
 # ---------------------------------------
@@ -31,6 +29,7 @@ would use more records and levels, or a campaign (:doc:`plot_campaign_dask`).
 # for a general body). The block uplifts when the floor acceleration exceeds
 # ``g tan(alpha)`` towards that side (Eq 1 at ``theta = 0``).
 
+# sphinx_gallery_thumbnail_number = 4
 import tempfile
 import warnings
 from pathlib import Path
