@@ -606,3 +606,114 @@ def test_a_fitted_overturning_risk_with_stopped_runs_carries_the_warning(table, 
     other = rk[~((rk["mitigation"] == "isolated-2.5s") & (rk["block"] == 0))]
     assert "overturned_or_clearance" not in set(other["fit"])
     assert not other["note"].fillna("").str.contains("clearance").any()
+
+
+# ------------------------------------------ probability-of-exceedance CSV, far OpenQuake site
+
+def poe_csv(path: Path, t: float = 50.0, lo: float = 0.1, hi: float = 0.5,
+            n: int = 6) -> Path:
+    """The power law of :func:`power_law_csv` as a probability of exceedance in ``t``
+    years (Poisson): ``poe = 1 - exp(-lambda t)``."""
+    a = np.geomspace(lo, hi, n)
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["PGA (g)", f"poe in {t:g} years"])
+        w.writerows([[repr(float(x)), repr(float(-math.expm1(-t * K0 * x ** -K)))]
+                     for x in a])
+    return path
+
+
+def test_a_poe_csv_with_investigation_time_is_the_rate_csv(tmp_path):
+    """-ln(1 - poe)/T inverts poe = 1 - exp(-lambda T): the same curve as the rate CSV."""
+    power_law_csv(tmp_path / "rate.csv")
+    poe_csv(tmp_path / "poe.csv", t=50.0)
+    a = parse_spec(spec_text('[hazard]\nfile = "rate.csv"'), base_dir=tmp_path).hazard
+    b = parse_spec(spec_text('[hazard]\nfile = "poe.csv"\ninvestigation_time = 50'),
+                   base_dir=tmp_path).hazard
+    np.testing.assert_allclose(b["im"], a["im"], rtol=0)
+    np.testing.assert_allclose(b["rate"], a["rate"], rtol=1e-12)
+    assert b["source"]["investigation_time"] == 50.0
+
+
+@pytest.mark.parametrize("hazard, key", [
+    ('file = "poe.csv"', "hazard.investigation_time"),            # poe without T: refused
+    ('file = "poe.csv"\ninvestigation_time = 30', "hazard.investigation_time"),  # header 50
+    ('file = "poe.csv"\ninvestigation_time = 0', "hazard.investigation_time"),
+    ('file = "rate.csv"\ninvestigation_time = 50', "hazard.investigation_time"),  # a rate
+    ('file = "hazard_curve-mean-PGA_7.csv"\ninvestigation_time = 50',
+     "hazard.investigation_time"),                                # OpenQuake states it
+    ('file = "rate.csv"\nmax_distance_km = 100', "hazard.max_distance_km"),
+    ('file = "hazard_curve-mean-PGA_7.csv"\nsite = [13.4, 42.4]\nmax_distance_km = -1',
+     "hazard.max_distance_km"),
+    ('file = "hazard_curve-mean-PGA_7.csv"\nsite = 0\nmax_distance_km = 100',
+     "hazard.max_distance_km"),                                   # an index is that site
+    ('pga_475 = "0.25g"\ninvestigation_time = 50', "hazard.investigation_time"),
+    ('pga_475 = "0.25g"\nmax_distance_km = 50', "hazard.max_distance_km"),
+])
+def test_bad_poe_and_distance_keys_are_named(oq, tmp_path, hazard, key):
+    power_law_csv(tmp_path / "rate.csv")
+    poe_csv(tmp_path / "poe.csv", t=50.0)
+    with pytest.raises(SpecError) as e:
+        parse_spec(spec_text(f"[hazard]\n{hazard}"), base_dir=tmp_path)
+    assert str(e.value).startswith(f"spec: {key}:"), str(e.value)
+    assert "\n" not in str(e.value)
+
+
+def test_a_far_openquake_site_is_refused_and_accepted_with_a_larger_limit(oq, tmp_path):
+    """One degree of latitude north of site 0 is pi R / 180 = 111.19 km from it (on a
+    meridian), farther from site 1: refused at the default 50 km, accepted at 200 km with
+    that distance in the manifest's source."""
+    ask = '[hazard]\nfile = "hazard_curve-mean-PGA_7.csv"\nsite = [13.4, 43.35]'
+    with pytest.raises(SpecError, match=r"^spec: hazard\.site: .*max_distance_km"):
+        parse_spec(spec_text(ask), base_dir=tmp_path)
+    with pytest.raises(SpecError, match=r"^spec: hazard\.site: .*max_distance_km"):
+        parse_spec(spec_text(ask + "\nmax_distance_km = 100"), base_dir=tmp_path)
+    h = parse_spec(spec_text(ask + "\nmax_distance_km = 200"), base_dir=tmp_path).hazard
+    src = h["source"]
+    assert src["site_index"] == 0 and src["max_distance_km"] == 200.0
+    assert src["site_distance_km"] == pytest.approx(math.pi * 6371.0 / 180.0, rel=1e-9)
+    # the curve is site 0's, the same as asked by index
+    by_index = parse_spec(spec_text('[hazard]\nfile = "hazard_curve-mean-PGA_7.csv"\n'
+                                    'site = 0'), base_dir=tmp_path).hazard
+    assert h["rate"] == by_index["rate"] and "site_distance_km" not in by_index["source"]
+
+
+def test_cli_report_poe_csv_and_a_far_site(store, capsys, tmp_path):
+    """--investigation-time: a poe CSV gives the rate CSV's risk; --max-distance-km: a far
+    OpenQuake site is refused (exit 2) at the default and accepted with a larger limit."""
+    d = store
+    rate, poe = power_law_csv(tmp_path / "rate.csv"), poe_csv(tmp_path / "poe.csv", t=50.0)
+    code, out, err = run_main(capsys, "campaign", "report", d / "store", "--out",
+                              tmp_path / "ra", "--hazard", rate)
+    assert code == 0, err
+    code, out, err = run_main(capsys, "campaign", "report", d / "store", "--out",
+                              tmp_path / "rb", "--hazard", poe, "--investigation-time", "50")
+    assert code == 0, err
+    ra, rb = (pd.read_csv(tmp_path / r / "risk.csv") for r in ("ra", "rb"))
+    assert np.isfinite(ra["annual_frequency"]).any()
+    for col in ("annual_frequency", "probability"):
+        np.testing.assert_allclose(rb[col], ra[col], rtol=1e-9)
+    code, out, err = run_main(capsys, "campaign", "report", d / "store", "--hazard", poe)
+    assert_one_line_error(code, err, "--investigation-time")
+    code, out, err = run_main(capsys, "campaign", "report", d / "store", "--hazard",
+                              d / "hazard_curve-mean-PGA_7.csv", "--site", "13.4,43.35")
+    assert_one_line_error(code, err, "--max-distance-km")
+    assert "--site" in err and "111" in err
+    code, out, err = run_main(capsys, "campaign", "report", d / "store", "--out",
+                              tmp_path / "rc", "--hazard", d / "hazard_curve-mean-PGA_7.csv",
+                              "--site", "13.4,43.35", "--max-distance-km", "200")
+    assert code == 0, err
+    code, out, err = run_main(capsys, "campaign", "report", d / "store", "--out",
+                              tmp_path / "rd")  # the store's own: site 0 of that file
+    assert code == 0, err
+    rc, rd = (pd.read_csv(tmp_path / r / "risk.csv") for r in ("rc", "rd"))
+    np.testing.assert_allclose(rc["annual_frequency"], rd["annual_frequency"], rtol=1e-12)
+
+
+@pytest.mark.parametrize("args, name", [
+    (["--investigation-time", "50"], "--investigation-time"),
+    (["--max-distance-km", "100"], "--max-distance-km"),
+])
+def test_cli_report_poe_and_distance_options_need_hazard(store, capsys, args, name):
+    code, out, err = run_main(capsys, "campaign", "report", store / "store", *args)
+    assert_one_line_error(code, err, name)

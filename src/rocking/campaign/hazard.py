@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from ..analysis.fragility import IM_UNITS
-from ..analysis.hazard import HazardCurve
+from ..analysis.hazard import MAX_SITE_DISTANCE_KM, HazardCurve
 from ..errors import ParameterError
 from ..units import G
 
@@ -48,8 +48,12 @@ HAZARD_KEYS = {
             "return period (header `PGA (g)`, `rate` or `return period`); or give pga_475",
     "format": f"{', '.join(FORMATS)} (default auto: an OpenQuake export by its first line)",
     "site": "OpenQuake: the site, a row index (default 0) or [lon, lat] (the nearest)",
+    "max_distance_km": "OpenQuake, with site = [lon, lat]: refuse a nearest site farther "
+                       f"than this, km, > 0; default {MAX_SITE_DISTANCE_KM:g}",
     "im": "CSV: the IM's name if the header's is not it (e.g. \"PGA\")",
     "unit": "CSV: the IM's unit if the header states none (g, m/s^2, ...)",
+    "investigation_time": "CSV of a probability of exceedance (header `poe`): the years T "
+                          "it refers to, > 0; read as rate = -ln(1 - poe)/T",
     "pga_475": "instead of file: the reference PGA at 475 years with its unit (\"0.25g\", "
                "\"2.45m/s^2\"), EN 1998-1 2.1(4): lambda = (1/475) (a / a_475)^-k, "
                "an approximation (labelled so)",
@@ -96,10 +100,15 @@ def parse_site(text):
 
 
 def read_hazard(path, *, format: str = "auto", site=None, im=None, unit=None,
-                label: str = "") -> tuple[HazardCurve, dict]:
+                label: str = "", investigation_time=None, max_distance_km=None
+                ) -> tuple[HazardCurve, dict]:
     """The hazard curve in ``path`` and its source (file name, sha256, format, site; for
-    an OpenQuake export its metadata). Errors (:class:`~rocking.errors.ParameterError`)
-    start with the argument's name: ``file``, ``format``, ``site``, ``im``, ``unit``."""
+    an OpenQuake export its metadata and the ``site_distance_km`` of a site given by
+    [lon, lat], refused beyond ``max_distance_km`` (default
+    :data:`~rocking.analysis.hazard.MAX_SITE_DISTANCE_KM`); for a CSV of a probability of
+    exceedance its ``investigation_time``, :meth:`HazardCurve.from_csv`). Errors
+    (:class:`~rocking.errors.ParameterError`) start with the argument's name: ``file``,
+    ``format``, ``site``, ``im``, ``unit``, ``investigation_time``, ``max_distance_km``."""
     p = Path(path)
     if not p.is_file():
         raise ParameterError(f"file: no such hazard-curve file {str(path)!r}")
@@ -113,23 +122,37 @@ def read_hazard(path, *, format: str = "auto", site=None, im=None, unit=None,
                 if v is not None:
                     raise ParameterError(f"{k} applies to a CSV only (an OpenQuake export "
                                          "states its IMT; its PGA and SA levels are in g)")
+            if investigation_time is not None:
+                raise ParameterError("investigation_time applies to a CSV of a probability "
+                                     "of exceedance only (an OpenQuake export states it)")
             s = 0 if site is None else site
             if isinstance(s, list):
                 s = tuple(s)
-            curve = HazardCurve.from_openquake(p, site=s, label=label)
+            if max_distance_km is not None and not isinstance(s, tuple):
+                raise ParameterError("max_distance_km applies with a site given as "
+                                     "[lon, lat] only (a row index is that site)")
+            dmax = MAX_SITE_DISTANCE_KM if max_distance_km is None else max_distance_km
+            curve = HazardCurve.from_openquake(p, site=s, label=label, max_distance_km=dmax)
             meta = getattr(curve, "metadata", {})
             src["site"] = list(s) if isinstance(s, tuple) else s
             src.update({k: meta[k] for k in ("site_index", "lon", "lat",
-                                             "investigation_time", "kind", "generated_by",
-                                             "dropped_levels") if k in meta})
+                                             "site_distance_km", "investigation_time",
+                                             "kind", "generated_by", "dropped_levels")
+                        if k in meta and meta[k] is not None})
+            if isinstance(s, tuple):
+                src["max_distance_km"] = float(dmax)
         else:
-            if site is not None:
-                raise ParameterError("site applies to an OpenQuake export only (a CSV "
-                                     "holds one curve)")
-            curve = HazardCurve.from_csv(p, im_name=im, unit=unit, label=label)
+            for k, v in (("site", site), ("max_distance_km", max_distance_km)):
+                if v is not None:
+                    raise ParameterError(f"{k} applies to an OpenQuake export only (a CSV "
+                                         "holds one curve)")
+            curve = HazardCurve.from_csv(p, im_name=im, unit=unit, label=label,
+                                         investigation_time=investigation_time)
+            if investigation_time is not None:
+                src["investigation_time"] = float(investigation_time)
     except ParameterError as e:
         msg = str(e)
-        if not re.match(r"(site|im|unit|format)\b", msg):
+        if not re.match(r"(site|im|unit|format|investigation_time|max_distance_km)\b", msg):
             msg = "file: " + msg.removeprefix("path: ")
         raise ParameterError(msg) from None
     except (OSError, UnicodeDecodeError, ValueError) as e:

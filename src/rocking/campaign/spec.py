@@ -56,6 +56,8 @@
     [hazard]                      # optional: the site's hazard, for the report's risk
     file = "hazard_curve-mean-PGA_0.csv"   # an OpenQuake export or a CSV (IM, rate)
     site = 0                      # OpenQuake: a row index or [lon, lat]
+    # max_distance_km = 50        # OpenQuake, site = [lon, lat]: refused farther away
+    # investigation_time = 50     # a CSV of poe in T years: rate = -ln(1 - poe)/T
     t_years = 50                  # service life: P = 1 - exp(-lambda t)
     # or: pga_475 = "0.25g" and k = 3 (EN 1998-1 code value: an approximation)
 
@@ -113,7 +115,8 @@ realizations.
 
 ``[hazard]`` (optional; issue 21) gives the site's hazard curve (:mod:`rocking.campaign.hazard`):
 ``file`` (an OpenQuake engine export, told by its first line, or a CSV of IM and annual
-rate or return period; ``format``, ``site``, ``im``, ``unit``) or ``pga_475`` with ``k`` or
+rate or return period; ``format``, ``site``, ``max_distance_km``, ``im``, ``unit``,
+``investigation_time`` for a CSV of a probability of exceedance) or ``pga_475`` with ``k`` or
 ``pga_2475`` (the EN 1998-1 power law: an approximation, labelled so), and ``t_years`` (the
 service life). :func:`parse_spec` reads the file and refuses a curve whose IM is not the
 campaign's (``motions.im``, or the PGA of each run without it), naming both. The curve's
@@ -700,11 +703,14 @@ def _hazard_fail(e: ParameterError, given: dict) -> NoReturn:
     msg = (str(e).splitlines() or [""])[0]
     name, _, rest = msg.partition(" ")
     name = name.rstrip(":")
+    if "=" in name:  # "investigation_time=30 contradicts ...": the whole message
+        name, rest = name.partition("=")[0], msg
     if name == "pga_475" or name == "pga_2475" or name == "k":
         _fail(f"hazard.{name}", rest)
     if name in site_hazard.HAZARD_KEYS and name in given:
         _fail(f"hazard.{name}", rest)
-    if name in ("unit", "im"):  # a CSV that does not say it: the key to give
+    if name in ("unit", "im", "investigation_time"):  # a CSV that does not say it
+        rest = rest.replace("investigation_time=", "investigation_time = ")
         _fail(f"hazard.{name}", f"missing: {rest}")
     _fail("hazard.file" if "file" in given else "hazard", msg)
 
@@ -744,10 +750,18 @@ def _hazard(raw: dict, base_dir: Path, motions: dict) -> dict | None:
                     site = _number("hazard.site", site, 0, MAX_SIMS, integer=True)
             im = _string("hazard.im", t["im"]) if "im" in t else None
             unit = _string("hazard.unit", t["unit"]) if "unit" in t else None
+            inv = (_number("hazard.investigation_time", t["investigation_time"], 0,
+                           site_hazard.MAX_T_YEARS, lo_open=True)
+                   if "investigation_time" in t else None)
+            dmax = (_number("hazard.max_distance_km", t["max_distance_km"], 0, math.inf,
+                            lo_open=True) if "max_distance_km" in t else None)
             curve, source = site_hazard.read_hazard(path, format=fmt, site=site, im=im,
-                                                    unit=unit, label=label)
+                                                    unit=unit, label=label,
+                                                    investigation_time=inv,
+                                                    max_distance_km=dmax)
         else:
-            for k in ("format", "site", "im", "unit"):
+            for k in ("format", "site", "im", "unit", "investigation_time",
+                      "max_distance_km"):
                 if k in t:
                     _fail(f"hazard.{k}", "applies with file only (pga_475 is a code value)")
             a = _quantity("hazard.pga_475", t["pga_475"])

@@ -8,8 +8,8 @@ Parquet store.
     rocking campaign status STORE [--json]
     rocking campaign verify STORE [--json]
     rocking campaign upgrade STORE
-    rocking campaign report STORE [--out DIR] [--hazard FILE [--site I|LON,LAT]]
-                            [--t-years 50]
+    rocking campaign report STORE [--out DIR] [--hazard FILE [--site I|LON,LAT]
+                            [--max-distance-km 50] [--investigation-time T]] [--t-years 50]
 
 ``run`` on an existing store resumes it (finished chunks are not recomputed, damaged ones
 are moved into ``STORE/quarantine/`` and recomputed) and refuses a different spec. Ctrl-C
@@ -229,10 +229,16 @@ def upgrade_cmd(store):
 @click.option("--site", default=None, metavar="INDEX|LON,LAT",
               help="With --hazard, an OpenQuake export: the site (row index, default 0, or "
                    "the nearest to LON,LAT).")
+@click.option("--investigation-time", "investigation_time", default=None, type=float,
+              metavar="YEARS", help="With --hazard, a CSV of a probability of exceedance "
+                                    "(poe): the years T it refers to; rate = -ln(1 - poe)/T.")
+@click.option("--max-distance-km", "max_distance_km", default=None, type=float, metavar="KM",
+              help="With --hazard, an OpenQuake export and --site LON,LAT: refuse a nearest "
+                   "site farther than this (default 50 km).")
 @click.option("--t-years", "t_years", default=None, type=float, metavar="YEARS",
               help="Service life of the probability 1 - exp(-lambda t) (default: the "
                    "[hazard]'s t_years, else 50).")
-def report_cmd(store, out, hazard, site, t_years):
+def report_cmd(store, out, hazard, site, investigation_time, max_distance_km, t_years):
     """Fragility curves, P(overturn) tables and plots from STORE (rocking.analysis); with a
     hazard (the spec's [hazard], or --hazard) the annual frequency of overturning and its
     probability over the service life per block and mitigation (risk.csv)."""
@@ -248,15 +254,19 @@ def report_cmd(store, out, hazard, site, t_years):
     given = None
     if t_years is not None:
         t_years = check_t_years(t_years, "--t-years")
-    if site is not None and hazard is None:
-        raise ParameterError("--site applies with --hazard (the store's [hazard] holds one "
-                             "site's curve)")
+    for name, v in (("--site", site), ("--investigation-time", investigation_time),
+                    ("--max-distance-km", max_distance_km)):
+        if v is not None and hazard is None:
+            raise ParameterError(f"{name} applies with --hazard (the store's [hazard] holds "
+                                 "one site's curve, read as its spec says)")
     if hazard is not None:
         try:
-            curve, src = read_hazard(hazard, site=None if site is None else parse_site(site))
+            curve, src = read_hazard(hazard, site=None if site is None else parse_site(site),
+                                     investigation_time=investigation_time,
+                                     max_distance_km=max_distance_km)
         except ParameterError as e:
-            msg = str(e)
-            raise ParameterError(f"--{msg}" if msg.startswith(("site ", "site:")) else
+            msg = _option_names(str(e))
+            raise ParameterError(msg if msg.startswith("--") else
                                  f"--hazard {msg.removeprefix('file: ')}") from None
     s = Store(store)
     manifest = s.manifest
@@ -285,6 +295,16 @@ def report_cmd(store, out, hazard, site, t_years):
         click.echo(line)
     click.echo(f"report: {out / 'report.md'}")
     return 0
+
+
+def _option_names(msg: str) -> str:
+    """A hazard loader's message with the command line's option names."""
+    if msg.startswith(("site ", "site:")):
+        msg = "--" + msg
+    for key, opt in (("investigation_time", "--investigation-time"),
+                     ("max_distance_km", "--max-distance-km")):
+        msg = msg.replace(f"{key}=", f"{opt} ").replace(key, opt)
+    return msg.replace("(site=", "(--site ")
 
 
 def _publish(tmp: Path, out: Path) -> None:
