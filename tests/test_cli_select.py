@@ -203,6 +203,94 @@ def test_uhs_target_from_power_law_hazard_curves(capsys, tmp_path, folder):
     assert any("PGA curve is not used" in n for n in js["notes"])
 
 
+def _sa_curves(tmp_path, A=0.2, k=3.0, t_poe=None):
+    """SA(T) CSV curves lambda(a) = (a / a475(T))^-k / 475, a475 = A T^-0.5, as annual
+    rates or (``t_poe``) as probabilities of exceedance 1 - exp(-lambda t) in t years."""
+    files = []
+    for Tc in (0.1, 0.3, 1.0, 2.0):
+        a475 = A * Tc ** -0.5
+        im = a475 * np.geomspace(0.5, 10.0, 15)  # poe < 1 in double precision
+        lam = (im / a475) ** -k / 475
+        col, y = (("rate", lam) if t_poe is None
+                  else (f"poe in {t_poe:g} years", -np.expm1(-t_poe * lam)))
+        f = tmp_path / f"SA{Tc:g}.csv"
+        rows = [f"{float(x)!r},{float(v)!r}" for x, v in zip(im, y, strict=True)]
+        f.write_text("\n".join([f"SA({Tc:g}) (g),{col}", *rows]) + "\n")
+        files.append(f)
+    return files
+
+
+def _oq_sa(tmp_path, A=0.2, k=3.0, site=(13.4, 42.35)):
+    """OpenQuake SA(T) exports (the engine's layout: a metadata comment line, then
+    lon,lat,depth,poe-<level>) of the same law at one site, poe in 50 years."""
+    files = []
+    for Tc in (0.1, 0.3, 1.0, 2.0):
+        a475 = A * Tc ** -0.5
+        im = a475 * np.geomspace(0.5, 10.0, 15)
+        poe = -np.expm1(-50.0 * (im / a475) ** -k / 475)
+        f = tmp_path / f"hazard_curve-mean-SA({Tc:g})_3.csv"
+        f.write_text("\n".join([
+            f"#,,,,,\"generated_by='OpenQuake engine 3.18.0', kind='mean', "
+            f"investigation_time=50.0, imt='SA({Tc:g})'\"",
+            "lon,lat,depth," + ",".join(f"poe-{float(x)!r}" for x in im),
+            f"{site[0]:.5f},{site[1]:.5f},-0.10000," + ",".join(f"{float(q)!r}" for q in poe)])
+            + "\n")
+        files.append(f)
+    return files
+
+
+def test_uhs_from_poe_curves_and_a_far_openquake_site(capsys, tmp_path, folder):
+    """--investigation-time: poe curves in 50 years give the rate curves' spectrum (the
+    closed form A T^-0.5 (Tr/475)^(1/k) g); --max-distance-km: OpenQuake curves asked one
+    degree of latitude (111.19 km) from their site are refused (exit 2) at the default
+    50 km and accepted at 200 km, with the same spectrum and that distance recorded."""
+    A, k, tr = 0.2, 3.0, 2475.0
+    common = ("--return-period", "2475", "--periods", "0.1:1.5:15", "--n", 3, "--units",
+              "m/s^2", "--no-plot")
+    poe = [a for f in _sa_curves(tmp_path, A, k, t_poe=50.0) for a in ("--hazard", f)]
+    code, _, err = run_main(capsys, "motion", "select", folder, "--target", "uhs", *poe,
+                            *common, "--out", tmp_path / "x")
+    assert_one_line_error(code, err, "investigation-time")
+    code, _, err = run_main(capsys, "motion", "select", folder, "--target", "uhs", *poe,
+                            *common, "--investigation-time", "50", "--out", tmp_path / "a")
+    assert code == 0, err
+    sp = pd.read_csv(tmp_path / "a" / "selection_spectra.csv")
+    T = sp["period_s"].to_numpy()
+    closed = A * T ** -0.5 * (tr / 475.0) ** (1.0 / k) * G
+    np.testing.assert_allclose(sp["target_ms2"], closed, rtol=1e-6)
+
+    (tmp_path / "oq").mkdir()
+    oq = [a for f in _oq_sa(tmp_path / "oq", A, k) for a in ("--hazard", f)]
+    far = ("--site", "13.4,43.35")
+    code, _, err = run_main(capsys, "motion", "select", folder, "--target", "uhs", *oq, *far,
+                            *common, "--out", tmp_path / "y")
+    assert_one_line_error(code, err, "max-distance-km")
+    assert "111.2 km" in err
+    code, _, err = run_main(capsys, "motion", "select", folder, "--target", "uhs", *oq, *far,
+                            *common, "--max-distance-km", "200", "--out", tmp_path / "b")
+    assert code == 0, err
+    js, _ = _results(tmp_path / "b")
+    for h in js["target"]["hazard"]:
+        assert h["site_distance_km"] == pytest.approx(math.pi * 6371.0 / 180.0, rel=1e-9)
+    sp = pd.read_csv(tmp_path / "b" / "selection_spectra.csv")
+    np.testing.assert_allclose(sp["target_ms2"], closed, rtol=1e-6)
+
+
+@pytest.mark.parametrize("args, name", [
+    (("--target", "ec8", "--investigation-time", "50"), "investigation-time"),
+    (("--target", "ec8", "--max-distance-km", "100"), "max-distance-km"),
+    (("--target", "uhs", "--hazard", "SA.csv", "--investigation-time", "-5"),
+     "investigation-time"),
+    (("--target", "uhs", "--hazard", "SA.csv", "--max-distance-km", "far"),
+     "max-distance-km"),
+])
+def test_poe_and_distance_options_bad_input_is_one_line(capsys, tmp_path, folder, args,
+                                                        name):
+    code, _, err = run_main(capsys, "motion", "select", folder, *args, "--periods",
+                            "0.1:1:5", "--out", tmp_path / "o")
+    assert_one_line_error(code, err, name)
+
+
 @pytest.mark.parametrize("table, extra, name", [
     ("T (s)\n0.1\n1\n", (), "target"),                                   # one column
     ("T (s),Sa (g)\n0.1,0.5\n1,abc\n", (), "target"),                      # not numbers

@@ -20,7 +20,8 @@ command line.
 listed as skipped, with the reason), computes the candidates' spectra once and calls
 :func:`rocking.analysis.select_records`; the target is the EC8 spectrum (``--ag``), a
 uniform hazard spectrum of SA(T) hazard curves (:func:`rocking.analysis.selection.
-uniform_hazard_spectrum`, curves read as by ``rocking hazard show``) or a table
+uniform_hazard_spectrum`, curves read as by ``rocking hazard show``, with
+``--investigation-time`` and ``--max-distance-km``) or a table
 (:func:`read_target_table`); the periods are ``--periods`` (:func:`period_range`) or the
 block's default range (:func:`rocking.analysis.default_periods`). It writes the scaled
 records (``write_csv``: m/s^2), ``selection.csv`` (one row per record, ranked by its own
@@ -714,10 +715,37 @@ def _site_arg(text):
     raise ParameterError(f"site must be a site index (0, 1, ...) or LON,LAT, got {text!r}")
 
 
-def _hazard_curve(path, site, unit):
+def _years(text) -> float:
+    """``--investigation-time``: years > 0, as ``50``, ``50y``, ``50yr`` or ``50 years``."""
+    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(?:y|yr|yrs|year|years)?\s*", str(text))
+    try:
+        v = float(m.group(1)) if m else math.nan
+    except ValueError:
+        v = math.nan
+    if not (math.isfinite(v) and v > 0):
+        raise ParameterError(f"investigation-time must be a number of years > 0 (e.g. 50 "
+                             f"or 50yr), got {text!r}")
+    return v
+
+
+def _km(text) -> float:
+    """``--max-distance-km``: km > 0 (a number, or with ``km``)."""
+    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(?:km)?\s*", str(text))
+    try:
+        v = float(m.group(1)) if m else math.nan
+    except ValueError:
+        v = math.nan
+    if not (math.isfinite(v) and v > 0):
+        raise ParameterError(f"max-distance-km must be a distance in km > 0, got {text!r}")
+    return v
+
+
+def _hazard_curve(path, site, unit, investigation_time=None, max_distance_km=None):
     """A hazard curve file: an OpenQuake export (first line a ``#`` comment naming
-    ``investigation_time``) or a CSV of IM and annual rate or return period."""
-    from ..analysis.hazard import HazardCurve
+    ``investigation_time``; a site by LON,LAT refused beyond ``max_distance_km``) or a CSV
+    of IM and annual rate or return period (or a probability of exceedance in
+    ``investigation_time`` years), as :meth:`rocking.analysis.HazardCurve.from_csv`."""
+    from ..analysis.hazard import MAX_SITE_DISTANCE_KM, HazardCurve
 
     p = Path(path)
     if not p.is_file():
@@ -732,10 +760,21 @@ def _hazard_curve(path, site, unit):
             if unit is not None:
                 raise ParameterError(f"hazard-unit does not apply to the OpenQuake export "
                                      f"{p.name} (its SA levels are in g)")
-            return HazardCurve.from_openquake(p, site=_site_arg(site))
-        return HazardCurve.from_csv(p, unit=unit)
+            if investigation_time is not None:
+                raise ParameterError(f"investigation-time does not apply to the OpenQuake "
+                                     f"export {p.name} (its metadata line states it)")
+            dmax = MAX_SITE_DISTANCE_KM if max_distance_km is None else max_distance_km
+            return HazardCurve.from_openquake(p, site=_site_arg(site), max_distance_km=dmax)
+        if max_distance_km is not None:
+            raise ParameterError(f"max-distance-km applies to OpenQuake exports only "
+                                 f"({p.name} is a CSV of one curve)")
+        return HazardCurve.from_csv(p, unit=unit, investigation_time=investigation_time)
     except ParameterError as e:
         msg = one_line(e).replace("give unit='g'", "give --hazard-unit g")
+        for key, opt in (("investigation_time", "investigation-time"),
+                         ("max_distance_km", "max-distance-km")):
+            msg = msg.replace(f"{key}=", f"--{opt} ").replace(key, opt)
+        msg = msg.replace("(site=", "(--site ")
         msg = re.sub(r"^(unit|path|site)\b", lambda m: {"unit": "hazard-unit",
                                                         "path": "hazard"}.get(m[1], m[1]),
                      msg)
@@ -959,6 +998,12 @@ def same_motion_notes(spectra, indices, names, periods,
                    "default 0).")
 @click.option("--hazard-unit", "hazard_unit", metavar="U",
               help="uhs: unit of CSV curves whose header states none (g, m/s^2).")
+@click.option("--investigation-time", "investigation_time", metavar="YEARS",
+              help="uhs: the years T of CSV curves of a probability of exceedance (poe), "
+                   "read as rate = -ln(1 - poe)/T.")
+@click.option("--max-distance-km", "max_distance_km", metavar="KM",
+              help="uhs: refuse an OpenQuake site (--site LON,LAT) whose nearest row is "
+                   "farther than this (default 50 km).")
 @click.option("--target-unit", "target_unit", metavar="U",
               help="Target table: unit of Sa if its header states none (g, m/s^2, cm/s^2).")
 @click.option("--restarts", default="8", show_default=True, metavar="K",
@@ -971,8 +1016,8 @@ def same_motion_notes(spectra, indices, names, periods,
                                                       "the summary.")
 def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, width,
                height, alpha, p, mu, damping, units, dt, ag, ground, stype, hazard_files,
-               return_period, site, hazard_unit, target_unit, restarts, out, no_plot,
-               as_json):
+               return_period, site, hazard_unit, investigation_time, max_distance_km,
+               target_unit, restarts, out, no_plot, as_json):
     """Select N amplitude-scaled records from the files in FOLDER whose mean spectrum
     matches a target (EN 1998-1 3.2.3.1.2: the mean not below 90 % of the target at any
     period of the range; rocking.analysis.select_records).
@@ -991,6 +1036,7 @@ def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, 
                  (without --ag: the paper's target, rocking motion synth)
       uhs        uniform hazard spectrum: --hazard FILE (repeatable; one SA(T) curve per
                  period, >= 2 periods) [--return-period 475] [--site IDX|LON,LAT]
+                 [--max-distance-km 50] [--investigation-time T (CSV of poe)]
       FILE.csv   a table of period (s) and Sa, header e.g. 'T (s),Sa (g)' (or
                  --target-unit g); log-log interpolated, never extrapolated
     \b
@@ -1041,9 +1087,12 @@ def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, 
     kind = kind.lower() if kind.lower() in ("ec8", "uhs") else kind
     if kind != "ec8" and (ag or ground or stype):
         raise ParameterError("ag, ground and type apply to --target ec8 only")
-    if kind != "uhs" and (hazard_files or return_period or site or hazard_unit):
-        raise ParameterError("hazard, return-period, site and hazard-unit apply to "
-                             "--target uhs only")
+    if kind != "uhs" and (hazard_files or return_period or site or hazard_unit
+                          or investigation_time is not None or max_distance_km is not None):
+        raise ParameterError("hazard, return-period, site, hazard-unit, investigation-time "
+                             "and max-distance-km apply to --target uhs only")
+    inv_t = None if investigation_time is None else _years(investigation_time)
+    dmax = None if max_distance_km is None else _km(max_distance_km)
     if kind in ("ec8", "uhs") and target_unit is not None:
         raise ParameterError("target-unit applies to a target table (--target FILE.csv) "
                              "only")
@@ -1095,7 +1144,8 @@ def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, 
                 raise ParameterError("hazard: --target uhs needs SA(T) hazard curves: "
                                      "--hazard FILE, repeatable (>= 2 periods)")
             tr = _return_period(475.0 if return_period is None else return_period)
-            curves = [_hazard_curve(f, site, hazard_unit) for f in hazard_files]
+            curves = [_hazard_curve(f, site, hazard_unit, inv_t, dmax)
+                      for f in hazard_files]
             try:
                 tp, tv = uniform_hazard_spectrum(curves, tr)
             except ParameterError as e:
@@ -1116,7 +1166,9 @@ def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, 
                                                          "years", "return_period": tr,
                           "hazard": [{"file": str(f), "label": c.label,
                                       "im_name": c.im_name, "unit": c.unit,
-                                      "approximate": c.approximate}
+                                      "approximate": c.approximate,
+                                      "site_distance_km": getattr(c, "metadata", {}).get(
+                                          "site_distance_km")}
                                      for f, c in zip(hazard_files, curves, strict=True)],
                           "uhs_period_s": tp.tolist(), "uhs_sa_ms2": tv.tolist()})
         else:
