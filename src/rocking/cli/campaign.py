@@ -38,7 +38,7 @@ import click
 
 from .._atomic import fsync_dir, fsync_file, replace, temporary_name
 from ..errors import ParameterError, StoreError
-from .common import CONTEXT, json_default, one_line
+from .common import CONTEXT, hazard_option_words, json_default, one_line
 
 
 def _duration(seconds: float) -> str:
@@ -301,10 +301,7 @@ def _option_names(msg: str) -> str:
     """A hazard loader's message with the command line's option names."""
     if msg.startswith(("site ", "site:")):
         msg = "--" + msg
-    for key, opt in (("investigation_time", "--investigation-time"),
-                     ("max_distance_km", "--max-distance-km")):
-        msg = msg.replace(f"{key}=", f"{opt} ").replace(key, opt)
-    return msg.replace("(site=", "(--site ")
+    return hazard_option_words(msg)
 
 
 def _publish(tmp: Path, out: Path) -> None:

@@ -758,6 +758,88 @@ def error_report(e: BaseException) -> tuple[str, int] | None:
     return None
 
 
+# ------------------------------------------------------------------------- hazard curves
+def years_option(text, name: str = "investigation-time") -> float | None:
+    """``--investigation-time``: years > 0, as ``50``, ``50y``, ``50yr`` or ``50 years``."""
+    if text is None:
+        return None
+    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(?:y|yr|yrs|year|years)?\s*", str(text))
+    try:
+        v = float(m.group(1)) if m else math.nan
+    except ValueError:
+        v = math.nan
+    if not (math.isfinite(v) and v > 0):
+        raise ParameterError(f"{name} must be a number of years > 0 (e.g. 50 or 50yr), "
+                             f"got {text!r}")
+    return v
+
+
+def km_option(text, name: str = "max-distance-km") -> float | None:
+    """``--max-distance-km``: km > 0 (a number, or with ``km``)."""
+    if text is None:
+        return None
+    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(?:km)?\s*", str(text))
+    try:
+        v = float(m.group(1)) if m else math.nan
+    except ValueError:
+        v = math.nan
+    if not (math.isfinite(v) and v > 0):
+        raise ParameterError(f"{name} must be a distance in km > 0, got {text!r}")
+    return v
+
+
+def hazard_option_words(msg: str) -> str:
+    """A hazard reader's message with the command line's option names."""
+    for key, opt in (("investigation_time", "--investigation-time"),
+                     ("max_distance_km", "--max-distance-km")):
+        msg = msg.replace(f"{key}=", f"{opt} ").replace(key, opt)
+    return msg.replace("(site=", "(--site ")
+
+
+def read_hazard_option(path, *, site=None, unit=None, investigation_time=None,
+                       max_distance_km=None, file_name: str = "FILE",
+                       unit_name: str = "--unit"):
+    """The hazard curve in ``path`` as an option gives it: an OpenQuake export (first line
+    a ``#`` comment naming ``investigation_time``; ``site`` an index or ``LON,LAT``,
+    refused beyond ``max_distance_km``) or a CSV of one curve
+    (:meth:`rocking.analysis.HazardCurve.from_csv`, ``investigation_time`` for a column of
+    probabilities of exceedance). Errors name ``file_name`` and the options."""
+    from ..analysis.hazard import MAX_SITE_DISTANCE_KM, HazardCurve
+    from ..campaign.hazard import parse_site
+
+    p = Path(path)
+    if not p.is_file():
+        raise ParameterError(f"{file_name}: no such file {str(path)!r}")
+    try:
+        with p.open() as fh:
+            first = fh.readline()
+    except (OSError, UnicodeDecodeError) as e:
+        raise ParameterError(f"{file_name}: cannot read {p.name} as text ({e})") from None
+    years = years_option(investigation_time)
+    dmax = km_option(max_distance_km)
+    try:
+        if first.lstrip().startswith("#") and "investigation_time" in first:
+            if unit is not None:
+                raise ParameterError(f"{unit_name} does not apply to the OpenQuake export "
+                                     f"{p.name} (its PGA and SA levels are in g)")
+            if years is not None:
+                raise ParameterError(f"--investigation-time does not apply to the OpenQuake "
+                                     f"export {p.name} (its metadata line states it)")
+            return HazardCurve.from_openquake(
+                p, site=0 if site is None else parse_site(site),
+                max_distance_km=MAX_SITE_DISTANCE_KM if dmax is None else dmax)
+        if site is not None or dmax is not None:
+            raise ParameterError(f"--site and --max-distance-km apply to OpenQuake exports "
+                                 f"only ({p.name} is a CSV of one curve)")
+        return HazardCurve.from_csv(p, unit=unit, investigation_time=years)
+    except ParameterError as e:
+        msg = hazard_option_words(one_line(e)).replace("give unit='g'",
+                                                       f"give {unit_name} g")
+        msg = re.sub(r"^unit\b", unit_name, msg)
+        raise ParameterError(msg if p.name in msg else f"{file_name} {p.name}: {msg}") \
+            from None
+
+
 __all__ = ["CONTEXT", "quantity", "number", "check_positive", "positive_quantity", "integer",
            "specimen_number", "json_default", "block_options", "make_block", "model_classes",
            "ModelChoice", "option_value", "parse_options", "validate_options",
@@ -766,4 +848,5 @@ __all__ = ["CONTEXT", "quantity", "number", "check_positive", "positive_quantity
            "BLOCK_FLAGS", "MESH_FLAGS", "mesh_flags", "BUILDING_FLAGS", "building_options",
            "make_building",
            "QUANTITY_OF_UNIT", "MODEL_FLAG_DEST", "option_flag", "option_declarations",
-           "declared_value", "model_flag_values", "ModelFlagsCommand", "model_flags_given"]
+           "declared_value", "model_flag_values", "ModelFlagsCommand", "model_flags_given",
+           "years_option", "km_option", "hazard_option_words", "read_hazard_option"]

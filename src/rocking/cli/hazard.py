@@ -16,79 +16,19 @@ and the IM exceeded at 475 and 2475 years (rate 1/475, 1/2475). Bad input: one l
 from __future__ import annotations
 
 import json
-import re
-from pathlib import Path
 
 import click
 
 from ..analysis.hazard import MAX_SITE_DISTANCE_KM, RETURN_PERIODS, HazardCurve
-from ..errors import ParameterError
-from .common import CONTEXT, json_default
-
-
-def _site(text):
-    if text is None:
-        return 0
-    parts = [t.strip() for t in str(text).split(",")]
-    try:
-        if len(parts) == 1:
-            return int(parts[0])
-        if len(parts) == 2:
-            return (float(parts[0]), float(parts[1]))
-    except ValueError:
-        pass
-    raise ParameterError(f"--site must be a site index (0, 1, ...) or LON,LAT, got {text!r}")
-
-
-def _years(text):
-    """``--investigation-time``: years, as ``50``, ``50y``, ``50yr`` or ``50 years``."""
-    if text is None:
-        return None
-    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(?:y|yr|yrs|year|years)?\s*", str(text))
-    try:
-        return float(m.group(1)) if m else float(text)
-    except ValueError:
-        raise ParameterError(f"--investigation-time must be a number of years (e.g. 50 "
-                             f"or 50yr), got {text!r}") from None
-
-
-def _cli_names(msg: str) -> str:
-    """A library message with the command line's option names."""
-    return (msg.replace("investigation_time=", "--investigation-time ")
-            .replace("investigation_time", "--investigation-time")
-            .replace("max_distance_km=", "--max-distance-km ")
-            .replace("max_distance_km", "--max-distance-km")
-            .replace("(site=", "(--site "))
+from .common import CONTEXT, json_default, read_hazard_option
 
 
 def read_curve(path, site=None, unit=None, investigation_time=None,
                max_distance_km=None) -> HazardCurve:
     """The hazard curve in ``path``: an OpenQuake export or a plain CSV (by content)."""
-    p = Path(path)
-    if not p.is_file():
-        raise ParameterError(f"FILE: no such file {str(path)!r}")
-    try:
-        with p.open() as fh:
-            first = fh.readline()
-    except (OSError, UnicodeDecodeError) as e:
-        raise ParameterError(f"FILE: cannot read {p.name} as text ({e})") from None
-    try:
-        if first.lstrip().startswith("#") and "investigation_time" in first:
-            if unit is not None:
-                raise ParameterError("--unit is not used with an OpenQuake export (its PGA "
-                                     "and SA levels are in g)")
-            if investigation_time is not None:
-                raise ParameterError("--investigation-time is not used with an OpenQuake "
-                                     "export (its metadata line states it)")
-            dmax = MAX_SITE_DISTANCE_KM if max_distance_km is None else max_distance_km
-            return HazardCurve.from_openquake(p, site=_site(site), max_distance_km=dmax)
-        if site is not None or max_distance_km is not None:
-            raise ParameterError("--site and --max-distance-km apply to an OpenQuake "
-                                 "export only")
-        return HazardCurve.from_csv(p, unit=unit,
-                                    investigation_time=_years(investigation_time))
-    except ParameterError as e:
-        raise ParameterError(_cli_names(str(e))) from None
+    return read_hazard_option(path, site=site, unit=unit,
+                              investigation_time=investigation_time,
+                              max_distance_km=max_distance_km)
 
 
 @click.group("hazard", context_settings=CONTEXT)

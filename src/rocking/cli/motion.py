@@ -75,12 +75,15 @@ from .common import (
     in_flag_words,
     integer,
     json_default,
+    km_option,
     make_block,
     make_building,
     mesh_flags,
     one_line,
     positive_quantity,
+    read_hazard_option,
     read_record_arg,
+    years_option,
 )
 
 # matplotlib, pandas and rocking.motions (numba) are imported inside the functions: lazy,
@@ -701,84 +704,12 @@ def _return_period(text) -> float:
     return x
 
 
-def _site_arg(text):
-    if text is None:
-        return 0
-    parts = [t.strip() for t in str(text).split(",")]
-    try:
-        if len(parts) == 1:
-            return int(parts[0])
-        if len(parts) == 2:
-            return (float(parts[0]), float(parts[1]))
-    except ValueError:
-        pass
-    raise ParameterError(f"site must be a site index (0, 1, ...) or LON,LAT, got {text!r}")
-
-
-def _years(text) -> float:
-    """``--investigation-time``: years > 0, as ``50``, ``50y``, ``50yr`` or ``50 years``."""
-    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(?:y|yr|yrs|year|years)?\s*", str(text))
-    try:
-        v = float(m.group(1)) if m else math.nan
-    except ValueError:
-        v = math.nan
-    if not (math.isfinite(v) and v > 0):
-        raise ParameterError(f"investigation-time must be a number of years > 0 (e.g. 50 "
-                             f"or 50yr), got {text!r}")
-    return v
-
-
-def _km(text) -> float:
-    """``--max-distance-km``: km > 0 (a number, or with ``km``)."""
-    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(?:km)?\s*", str(text))
-    try:
-        v = float(m.group(1)) if m else math.nan
-    except ValueError:
-        v = math.nan
-    if not (math.isfinite(v) and v > 0):
-        raise ParameterError(f"max-distance-km must be a distance in km > 0, got {text!r}")
-    return v
-
-
 def _hazard_curve(path, site, unit, investigation_time=None, max_distance_km=None):
-    """A hazard curve file: an OpenQuake export (first line a ``#`` comment naming
-    ``investigation_time``; a site by LON,LAT refused beyond ``max_distance_km``) or a CSV
-    of IM and annual rate or return period (or a probability of exceedance in
-    ``investigation_time`` years), as :meth:`rocking.analysis.HazardCurve.from_csv`."""
-    from ..analysis.hazard import MAX_SITE_DISTANCE_KM, HazardCurve
-
-    p = Path(path)
-    if not p.is_file():
-        raise ParameterError(f"hazard: no such file {str(path)!r}")
-    try:
-        with p.open() as fh:
-            first = fh.readline()
-    except (OSError, UnicodeDecodeError) as e:
-        raise ParameterError(f"hazard: cannot read {p.name} as text ({e})") from None
-    try:
-        if first.lstrip().startswith("#") and "investigation_time" in first:
-            if unit is not None:
-                raise ParameterError(f"hazard-unit does not apply to the OpenQuake export "
-                                     f"{p.name} (its SA levels are in g)")
-            if investigation_time is not None:
-                raise ParameterError(f"investigation-time does not apply to the OpenQuake "
-                                     f"export {p.name} (its metadata line states it)")
-            dmax = MAX_SITE_DISTANCE_KM if max_distance_km is None else max_distance_km
-            return HazardCurve.from_openquake(p, site=_site_arg(site), max_distance_km=dmax)
-        if max_distance_km is not None:
-            raise ParameterError(f"max-distance-km applies to OpenQuake exports only "
-                                 f"({p.name} is a CSV of one curve)")
-        return HazardCurve.from_csv(p, unit=unit, investigation_time=investigation_time)
-    except ParameterError as e:
-        msg = one_line(e).replace("give unit='g'", "give --hazard-unit g")
-        for key, opt in (("investigation_time", "investigation-time"),
-                         ("max_distance_km", "max-distance-km")):
-            msg = msg.replace(f"{key}=", f"--{opt} ").replace(key, opt)
-        msg = msg.replace("(site=", "(--site ")
-        msg = re.sub(r"^(unit|path|site)\b", lambda m: {"unit": "hazard-unit",
-                                                        "path": "hazard"}.get(m[1], m[1]),
-                     msg)
-        raise ParameterError(msg if p.name in msg else f"hazard {p.name}: {msg}") from None
+    """A ``--hazard`` file (:func:`rocking.cli.common.read_hazard_option`)."""
+    return read_hazard_option(path, site=site, unit=unit,
+                              investigation_time=investigation_time,
+                              max_distance_km=max_distance_km, file_name="hazard",
+                              unit_name="--hazard-unit")
 
 
 _TABLE_T = re.compile(r"^\s*(?:t|period|periods|tn)\s*(?:[_\s]\s*|[(\[]\s*)?([a-z]*)\s*[)\]]?\s*$",
@@ -1091,8 +1022,8 @@ def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, 
                           or investigation_time is not None or max_distance_km is not None):
         raise ParameterError("hazard, return-period, site, hazard-unit, investigation-time "
                              "and max-distance-km apply to --target uhs only")
-    inv_t = None if investigation_time is None else _years(investigation_time)
-    dmax = None if max_distance_km is None else _km(max_distance_km)
+    inv_t = years_option(investigation_time)
+    dmax = km_option(max_distance_km)
     if kind in ("ec8", "uhs") and target_unit is not None:
         raise ParameterError("target-unit applies to a target table (--target FILE.csv) "
                              "only")
