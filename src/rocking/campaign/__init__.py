@@ -16,7 +16,7 @@ and Dask executors) and :mod:`~.report` (fragility and P(overturn) from a store)
 
 from .execute import EXECUTORS, estimate, local_cluster, run
 from .plan import STREAM, Campaign
-from .spec import CampaignSpec, parse_spec, read_spec
+from .spec import EXAMPLE_SPEC, CampaignSpec, parse_spec, read_spec
 from .store import Store, load
 
 
@@ -27,16 +27,8 @@ def status(store) -> dict:
     --------
     >>> from pathlib import Path
     >>> from rocking import campaign
-    >>> _ = Path("pulses.toml").write_text('''
-    ... campaign = {name = "pulses", seed = 1, model = "housner"}
-    ... blocks = [{specimen = 2}]
-    ... run = {chunk_size = 2}
-    ... [motions]
-    ... kind = "one_sine"
-    ... period = 0.5
-    ... amplitude = 1.0
-    ... load_factors = [1.0, 1.5, 2.0, 3.0]
-    ... ''')
+    >>> from rocking.campaign import EXAMPLE_SPEC
+    >>> _ = Path("pulses.toml").write_text(EXAMPLE_SPEC)
     >>> _ = campaign.run("pulses.toml", "pulses_store", progress=False)
     >>> s = campaign.status("pulses_store")
     >>> s["n_sims"], s["sims_remaining"], s["chunks_done"], s["complete"]
@@ -45,5 +37,5 @@ def status(store) -> dict:
     return Store(store).status()
 
 
-__all__ = ["CampaignSpec", "Campaign", "Store", "read_spec", "parse_spec", "run", "load",
-           "status", "estimate", "local_cluster", "EXECUTORS", "STREAM"]
+__all__ = ["EXAMPLE_SPEC", "CampaignSpec", "Campaign", "Store", "read_spec", "parse_spec",
+           "run", "load", "status", "estimate", "local_cluster", "EXECUTORS", "STREAM"]

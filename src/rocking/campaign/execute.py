@@ -231,16 +231,8 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
 
     >>> from pathlib import Path
     >>> from rocking import campaign
-    >>> _ = Path("pulses.toml").write_text('''
-    ... campaign = {name = "pulses", seed = 1, model = "housner"}
-    ... blocks = [{specimen = 2}]
-    ... run = {chunk_size = 2}
-    ... [motions]
-    ... kind = "one_sine"
-    ... period = 0.5
-    ... amplitude = 1.0
-    ... load_factors = [1.0, 1.5, 2.0, 3.0]
-    ... ''')
+    >>> from rocking.campaign import EXAMPLE_SPEC
+    >>> _ = Path("pulses.toml").write_text(EXAMPLE_SPEC)
     >>> status = campaign.run("pulses.toml", "pulses_store", progress=False)
     >>> status["sims_done"], status["chunks_done"], status["complete"]
     (4, 2, True)
@@ -321,16 +313,8 @@ def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:
     --------
     >>> from pathlib import Path
     >>> from rocking import campaign
-    >>> _ = Path("pulses.toml").write_text('''
-    ... campaign = {name = "pulses", seed = 1, model = "housner"}
-    ... blocks = [{specimen = 2}]
-    ... run = {chunk_size = 2}
-    ... [motions]
-    ... kind = "one_sine"
-    ... period = 0.5
-    ... amplitude = 1.0
-    ... load_factors = [1.0, 1.5, 2.0, 3.0]
-    ... ''')
+    >>> from rocking.campaign import EXAMPLE_SPEC
+    >>> _ = Path("pulses.toml").write_text(EXAMPLE_SPEC)
     >>> est = campaign.estimate(campaign.read_spec("pulses.toml"), n_sample=4)
     >>> est["n_sims"], est["n_chunks"], est["shape"]["levels"]
     (4, 2, 4)

@@ -224,16 +224,8 @@ class Campaign:
 
     >>> import math
     >>> import rocking
-    >>> from rocking.campaign import Campaign, parse_spec
-    >>> spec = parse_spec('''
-    ... campaign = {name = "pulses", seed = 1, model = "housner"}
-    ... blocks = [{specimen = 2}]
-    ... [motions]
-    ... kind = "one_sine"
-    ... period = 0.5
-    ... amplitude = 1.0
-    ... load_factors = [1.0, 1.5, 2.0, 3.0]
-    ... ''')
+    >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+    >>> spec = parse_spec(EXAMPLE_SPEC)
     >>> rows = Campaign(spec).run_ids(range(spec.n_sims))
     >>> up = rocking.G * math.tan(spec.blocks[0].alpha)
     >>> ((rows.max_abs_theta > 0) == (rows.pga > up)).tolist()

@@ -794,6 +794,19 @@ def _quantity(key: str, v) -> float:
     return a
 
 
+EXAMPLE_SPEC = """\
+campaign = {name = "pulses", seed = 1, model = "housner"}
+blocks = [{specimen = 2}]
+run = {chunk_size = 2}
+[motions]
+kind = "one_sine"          # one-sine pulses of 1 m/s^2 ...
+period = 0.5
+amplitude = 1.0
+load_factors = [1.0, 1.5, 2.0, 3.0]   # ... scaled: PGA 1 to 3 m/s^2
+"""
+"""A minimal campaign spec (TOML): four one-sine pulses on specimen 2, in two chunks. The
+docstrings' examples run it; a starting point for a spec of your own."""
+
 # ------------------------------------------------------------------------------ the spec
 @dataclass(frozen=True)
 class CampaignSpec:
@@ -802,21 +815,23 @@ class CampaignSpec:
 
     Examples
     --------
-    Four one-sine pulses on specimen 2 (a TOML inline table such as ``campaign = {...}``
-    is the same as a ``[campaign]`` table):
+    Four one-sine pulses on specimen 2, in chunks of two runs (:data:`EXAMPLE_SPEC`; a
+    TOML inline table such as ``campaign = {...}`` is the same as a ``[campaign]`` table):
 
-    >>> from rocking.campaign import parse_spec
-    >>> spec = parse_spec('''
-    ... campaign = {name = "pulses", seed = 1, model = "housner"}
-    ... blocks = [{specimen = 2}]
-    ... [motions]
-    ... kind = "one_sine"
-    ... period = 0.5
-    ... amplitude = 1.0
-    ... load_factors = [1.0, 1.5, 2.0, 3.0]
-    ... ''')
+    >>> from rocking.campaign import EXAMPLE_SPEC, parse_spec
+    >>> print(EXAMPLE_SPEC)
+    campaign = {name = "pulses", seed = 1, model = "housner"}
+    blocks = [{specimen = 2}]
+    run = {chunk_size = 2}
+    [motions]
+    kind = "one_sine"          # one-sine pulses of 1 m/s^2 ...
+    period = 0.5
+    amplitude = 1.0
+    load_factors = [1.0, 1.5, 2.0, 3.0]   # ... scaled: PGA 1 to 3 m/s^2
+    <BLANKLINE>
+    >>> spec = parse_spec(EXAMPLE_SPEC)
     >>> spec.name, spec.models, spec.n_sims, spec.n_chunks
-    ('pulses', ('housner',), 4, 1)
+    ('pulses', ('housner',), 4, 2)
     >>> spec.blocks[0].name
     'specimen 2 (theoretical)'
     """
@@ -1182,21 +1197,8 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
 
     Examples
     --------
-    >>> spec_text = '''
-    ... [campaign]
-    ... name = "pulses"
-    ... seed = 1
-    ... model = "housner"
-    ... [[blocks]]
-    ... specimen = 2
-    ... [motions]
-    ... kind = "one_sine"            # one-sine pulses of 1 m/s^2 ...
-    ... period = 0.5
-    ... amplitude = 1.0
-    ... load_factors = [1.0, 1.5, 2.0, 3.0]   # ... scaled: PGA 1 to 3 m/s^2
-    ... '''
-    >>> from rocking.campaign import parse_spec
-    >>> spec = parse_spec(spec_text)
+    >>> from rocking.campaign import EXAMPLE_SPEC, parse_spec
+    >>> spec = parse_spec(EXAMPLE_SPEC)
     >>> spec.n_sims, spec.motions["load_factors"]
     (4, [1.0, 1.5, 2.0, 3.0])
     """
@@ -1235,22 +1237,9 @@ def read_spec(path) -> CampaignSpec:
 
     Examples
     --------
-    >>> spec_text = '''
-    ... [campaign]
-    ... name = "pulses"
-    ... seed = 1
-    ... model = "housner"
-    ... [[blocks]]
-    ... specimen = 2
-    ... [motions]
-    ... kind = "one_sine"            # one-sine pulses of 1 m/s^2 ...
-    ... period = 0.5
-    ... amplitude = 1.0
-    ... load_factors = [1.0, 1.5, 2.0, 3.0]   # ... scaled: PGA 1 to 3 m/s^2
-    ... '''
     >>> from pathlib import Path
-    >>> from rocking.campaign import read_spec
-    >>> _ = Path("pulses.toml").write_text(spec_text)
+    >>> from rocking.campaign import EXAMPLE_SPEC, read_spec
+    >>> _ = Path("pulses.toml").write_text(EXAMPLE_SPEC)
     >>> spec = read_spec("pulses.toml")
     >>> spec.name, spec.n_sims
     ('pulses', 4)

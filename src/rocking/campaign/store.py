@@ -245,16 +245,8 @@ class Store:
     --------
     >>> from pathlib import Path
     >>> from rocking import campaign
-    >>> _ = Path("pulses.toml").write_text('''
-    ... campaign = {name = "pulses", seed = 1, model = "housner"}
-    ... blocks = [{specimen = 2}]
-    ... run = {chunk_size = 2}
-    ... [motions]
-    ... kind = "one_sine"
-    ... period = 0.5
-    ... amplitude = 1.0
-    ... load_factors = [1.0, 1.5, 2.0, 3.0]
-    ... ''')
+    >>> from rocking.campaign import EXAMPLE_SPEC
+    >>> _ = Path("pulses.toml").write_text(EXAMPLE_SPEC)
     >>> from rocking.campaign import Store
     >>> store = Store("pulses_store")
     >>> store.exists()
@@ -792,16 +784,8 @@ def load(store, lazy: bool | None = None):
     --------
     >>> from pathlib import Path
     >>> from rocking import campaign
-    >>> _ = Path("pulses.toml").write_text('''
-    ... campaign = {name = "pulses", seed = 1, model = "housner"}
-    ... blocks = [{specimen = 2}]
-    ... run = {chunk_size = 2}
-    ... [motions]
-    ... kind = "one_sine"
-    ... period = 0.5
-    ... amplitude = 1.0
-    ... load_factors = [1.0, 1.5, 2.0, 3.0]
-    ... ''')
+    >>> from rocking.campaign import EXAMPLE_SPEC
+    >>> _ = Path("pulses.toml").write_text(EXAMPLE_SPEC)
     >>> _ = campaign.run("pulses.toml", "pulses_store", progress=False)
     >>> rows = campaign.load("pulses_store")
     >>> rows[["sim_id", "pga", "overturned"]]

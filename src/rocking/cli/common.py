@@ -759,33 +759,29 @@ def error_report(e: BaseException) -> tuple[str, int] | None:
 
 
 # ------------------------------------------------------------------------- hazard curves
-def years_option(text, name: str = "investigation-time") -> float | None:
-    """``--investigation-time``: years > 0, as ``50``, ``50y``, ``50yr`` or ``50 years``."""
+def _positive_with_suffix(text, suffix: str, name: str, what: str) -> float | None:
+    """A number > 0, optionally followed by one of the words of the regex ``suffix``."""
     if text is None:
         return None
-    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(?:y|yr|yrs|year|years)?\s*", str(text))
+    m = re.fullmatch(rf"\s*([0-9.eE+-]+)\s*(?:{suffix})?\s*", str(text))
     try:
         v = float(m.group(1)) if m else math.nan
     except ValueError:
         v = math.nan
     if not (math.isfinite(v) and v > 0):
-        raise ParameterError(f"{name} must be a number of years > 0 (e.g. 50 or 50yr), "
-                             f"got {text!r}")
+        raise ParameterError(f"{name} must be {what}, got {text!r}")
     return v
+
+
+def years_option(text, name: str = "investigation-time") -> float | None:
+    """``--investigation-time``: years > 0, as ``50``, ``50y``, ``50yr`` or ``50 years``."""
+    return _positive_with_suffix(text, "y|yr|yrs|year|years", name,
+                                 "a number of years > 0 (e.g. 50 or 50yr)")
 
 
 def km_option(text, name: str = "max-distance-km") -> float | None:
     """``--max-distance-km``: km > 0 (a number, or with ``km``)."""
-    if text is None:
-        return None
-    m = re.fullmatch(r"\s*([0-9.eE+-]+)\s*(?:km)?\s*", str(text))
-    try:
-        v = float(m.group(1)) if m else math.nan
-    except ValueError:
-        v = math.nan
-    if not (math.isfinite(v) and v > 0):
-        raise ParameterError(f"{name} must be a distance in km > 0, got {text!r}")
-    return v
+    return _positive_with_suffix(text, "km", name, "a distance in km > 0")
 
 
 def hazard_option_words(msg: str) -> str:
