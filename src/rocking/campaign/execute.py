@@ -134,15 +134,16 @@ def local_cluster(n_workers: int):
 
     Examples
     --------
-    :func:`run` starts one with ``executor="dask", dask_local=2``; by hand (starting the
-    worker processes takes seconds, so this example is not run as a test):
+    :func:`run` starts one with ``executor="dask", dask_local=2``; by hand (starting a
+    worker process takes about two seconds):
 
     >>> from distributed import Client
     >>> from rocking.campaign import local_cluster
-    >>> cluster = local_cluster(2)  # doctest: +SKIP
-    >>> client = Client(cluster)  # doctest: +SKIP
-    >>> len(client.scheduler_info()["workers"])  # doctest: +SKIP
-    2
+    >>> cluster = local_cluster(1)
+    >>> client = Client(cluster)
+    >>> [w["nthreads"] for w in client.scheduler_info()["workers"].values()]
+    [1]
+    >>> client.close(); cluster.close()
     """
     import logging
 
