@@ -140,7 +140,22 @@ class FragilityCurves:
         return np.array([f.beta for f in self.fits])
 
     def probability(self, im):
-        """``P(DS >= k | im)``: a DataFrame with ``im`` and one column per state label."""
+        """``P(DS >= k | im)``: a DataFrame with ``im`` and one column per state label.
+
+        Examples
+        --------
+        >>> from scipy.stats import norm
+        >>> from rocking.analysis import fragility_curves
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 20)  # PGA (m/s^2)
+        >>> j = np.tile(np.arange(20), 5)  # planted medians 1 and 4 m/s^2, beta 0.4:
+        >>> state = sum(j < np.round(20 * norm.cdf(np.log(im / m) / 0.4)) for m in (1, 4))
+        >>> curves = fragility_curves(im, state, n_boot=0, im_name="pga", im_unit="m/s^2")
+        >>> p = curves.probability(curves.medians)  # each state is 50 % at its median
+        >>> np.round(np.diag(p[["DS1", "DS2"]].to_numpy()), 3).tolist()
+        [0.5, 0.5]
+        >>> bool(np.all(p["DS2"] <= p["DS1"]))  # DS2 or worse is rarer than DS1 or worse
+        True
+        """
 
         x = np.atleast_1d(np.asarray(im, dtype=float))
         d = {"im": x}
@@ -149,7 +164,23 @@ class FragilityCurves:
         return pd.DataFrame(d)
 
     def state_probability(self, im):
-        """``P(DS = k | im)`` for k = 0..n (columns ``DS0``..``DSn``), summing to 1."""
+        """``P(DS = k | im)`` for k = 0..n (columns ``DS0``..``DSn``), summing to 1.
+
+        Examples
+        --------
+        >>> from scipy.stats import norm
+        >>> from rocking.analysis import fragility_curves
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 20)  # PGA (m/s^2)
+        >>> j = np.tile(np.arange(20), 5)  # planted medians 1 and 4 m/s^2, beta 0.4:
+        >>> state = sum(j < np.round(20 * norm.cdf(np.log(im / m) / 0.4)) for m in (1, 4))
+        >>> curves = fragility_curves(im, state, n_boot=0, im_name="pga", im_unit="m/s^2")
+        >>> p = curves.state_probability([1.0, 2.0, 4.0])
+        >>> np.allclose(p[["DS0", "DS1", "DS2"]].sum(axis=1), 1.0)
+        True
+        >>> pe = curves.probability([1.0, 2.0, 4.0])  # P(DS = 1) = P(DS >= 1) - P(DS >= 2)
+        >>> np.allclose(p["DS1"], pe["DS1"] - pe["DS2"])
+        True
+        """
 
         x = np.atleast_1d(np.asarray(im, dtype=float))
         pe = np.column_stack([np.ones_like(x)] + [f.probability(x) for f in self.fits]
@@ -162,17 +193,64 @@ class FragilityCurves:
                    im_unit: str | None = None, directional: bool = True, path=None):
         """One pelicun fragility row with a limit state per damage state (``LS1-Family``,
         ``LS1-Theta_0`` (median in ``Demand-Unit``), ``LS1-Theta_1`` (beta), ``LS2-...``);
-        see :meth:`FragilityFit.to_pelicun`."""
+        see :meth:`FragilityFit.to_pelicun`.
+
+        Examples
+        --------
+        >>> from scipy.stats import norm
+        >>> from rocking.analysis import fragility_curves
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 20)  # PGA (m/s^2)
+        >>> j = np.tile(np.arange(20), 5)  # planted medians 1 and 4 m/s^2, beta 0.4:
+        >>> state = sum(j < np.round(20 * norm.cdf(np.log(im / m) / 0.4)) for m in (1, 4))
+        >>> curves = fragility_curves(im, state, n_boot=0, im_name="pga", im_unit="m/s^2")
+        >>> row = curves.to_pelicun(path="block.csv")  # medians converted to g
+        >>> np.allclose(row[["LS1-Theta_0", "LS2-Theta_0"]].iloc[0] * 9.80665, curves.medians)
+        True
+        >>> import pandas as pd
+        >>> pd.read_csv("block.csv").columns.tolist()[:3]
+        ['ID', 'Incomplete', 'Demand-Type']
+        """
         return pelicun_table(self.fits, id=id, demand_type=demand_type,
                              demand_unit=demand_unit, im_unit=im_unit,
                              directional=directional, path=path)
 
     def summary(self) -> dict:
-        """JSON-ready: the method, thresholds and each state's fit summary."""
+        """JSON-ready: the method, thresholds and each state's fit summary.
+
+        Examples
+        --------
+        >>> from scipy.stats import norm
+        >>> from rocking.analysis import fragility_curves
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 20)  # PGA (m/s^2)
+        >>> j = np.tile(np.arange(20), 5)  # planted medians 1 and 4 m/s^2, beta 0.4:
+        >>> state = sum(j < np.round(20 * norm.cdf(np.log(im / m) / 0.4)) for m in (1, 4))
+        >>> curves = fragility_curves(im, state, n_boot=0, im_name="pga", im_unit="m/s^2")
+        >>> s = curves.summary()
+        >>> s["method"], [st["label"] for st in s["states"]]
+        ('common_beta', ['DS1', 'DS2'])
+        >>> [round(st["median"]) for st in s["states"]]  # the planted medians (m/s^2)
+        [1, 4]
+        """
         return jsonable({"method": self.method, "thresholds": self.thresholds,
                          "states": [f.summary() for f in self.fits]})
 
     def to_dict(self) -> dict:
+        """Everything, JSON-ready: :meth:`summary` with each state's full
+        :meth:`FragilityFit.to_dict` (coefficients, data, bootstrap sample).
+
+        Examples
+        --------
+        >>> from scipy.stats import norm
+        >>> from rocking.analysis import fragility_curves
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 20)  # PGA (m/s^2)
+        >>> j = np.tile(np.arange(20), 5)  # planted medians 1 and 4 m/s^2, beta 0.4:
+        >>> state = sum(j < np.round(20 * norm.cdf(np.log(im / m) / 0.4)) for m in (1, 4))
+        >>> curves = fragility_curves(im, state, n_boot=0, im_name="pga", im_unit="m/s^2")
+        >>> import json
+        >>> d = json.loads(json.dumps(curves.to_dict()))  # plain JSON
+        >>> d["states"][1]["data"]["n_failed"]  # overturned records per stripe
+        [0, 0, 1, 10, 19]
+        """
         d = self.summary()
         d["states"] = [f.to_dict() for f in self.fits]
         return d
@@ -181,7 +259,23 @@ class FragilityCurves:
         """Every state's curve (with its band and data); returns the Axes.
 
         One legend entry per state (its median, in the IM's unit, and beta) and one for
-        the bands, outside the axes on the right so that it covers no curve."""
+        the bands, outside the axes on the right so that it covers no curve.
+
+        Examples
+        --------
+        >>> from scipy.stats import norm
+        >>> from rocking.analysis import fragility_curves
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 20)  # PGA (m/s^2)
+        >>> j = np.tile(np.arange(20), 5)  # planted medians 1 and 4 m/s^2, beta 0.4:
+        >>> state = sum(j < np.round(20 * norm.cdf(np.log(im / m) / 0.4)) for m in (1, 4))
+        >>> curves = fragility_curves(im, state, n_boot=0, im_name="pga", im_unit="m/s^2")
+        >>> ax = curves.plot()
+        >>> ax.get_xlabel(), ax.get_ylabel()
+        ('PGA (m/s$^2$)', 'probability of exceedance')
+        >>> [t.get_text().split("\\n")[0] for t in ax.get_legend().get_texts()]
+        ['DS1', 'DS2']
+        >>> import matplotlib.pyplot as plt; plt.close("all")
+        """
 
         if ax is None:
             _, ax = figure(figsize=(8.0, 3.6))
