@@ -288,6 +288,26 @@ class Block:
         specimens' 5 mm and 40 mm cuts): the block is then the hexagon of
         :meth:`polygon` (its rocking corners are the ends of the narrowed base face) with
         ``mass`` its actual mass; ``width``/``height`` keep the bounding box.
+
+        Examples
+        --------
+        A 0.4 m x 1.2 m block of 100 kg: ``alpha = atan(b/h)`` (Eq 2) and ``I_O = (4/3) M
+        R^2``.
+
+        >>> import math
+        >>> from rocking import Block
+        >>> block = Block.rectangular(0.4, 1.2, mass=100.0)
+        >>> round(block.alpha, 4), round(math.atan(0.2 / 0.6), 4)
+        (0.3218, 0.3218)
+        >>> round(block.I_O, 4), round(4 / 3 * 100.0 * (0.2**2 + 0.6**2), 4)
+        (53.3333, 53.3333)
+
+        Cutting the corners by 40 mm moves the pivots 40 mm inwards: ``alpha`` is then
+        ``atan(0.16 / y_c)`` with ``y_c`` the hexagon's centroid height.
+
+        >>> cut = Block.rectangular(0.4, 1.2, corner_cut=0.04)
+        >>> round(cut.alpha, 4), round(math.atan(0.16 / cut.centroid[1]), 4)
+        (0.2598, 0.2598)
         """
         width = positive("width", width, "m")
         height = positive("height", height, "m")
@@ -355,6 +375,24 @@ class Block:
         that corner to the centroid, ``I_O = I_c + M R^2``, ``p^2 = M g R / I_O``, and
         ``mu`` the generalised Housner restitution of the module docstring (geometric mean
         of the two directions if the block is asymmetric) unless ``mu`` is given.
+
+        Examples
+        --------
+        A rectangle given as a polygon is :meth:`rectangular`'s block:
+
+        >>> import math
+        >>> from rocking import Block
+        >>> poly = Block.polygon([(0, 0), (0.4, 0), (0.4, 1.2), (0, 1.2)])
+        >>> rect = Block.rectangular(0.4, 1.2)
+        >>> round(poly.alpha, 4), round(rect.alpha, 4), round(poly.mu, 4), round(rect.mu, 4)
+        (0.3218, 0.3218, 0.85, 0.85)
+
+        A trapezoid 0.6 m wide at its base, 0.2 m at its top and 1 m tall has its centroid
+        at ``y_c = (h/3) (B + 2T) / (B + T) = 5/12`` m, so ``alpha = atan(0.3 / y_c)``:
+
+        >>> trap = Block.polygon([(-0.3, 0), (0.3, 0), (0.1, 1.0), (-0.1, 1.0)])
+        >>> round(trap.centroid[1], 4), round(trap.alpha, 4), round(math.atan(0.3 * 12 / 5), 4)
+        (0.4167, 0.624, 0.624)
         """
         verts = _check_polygon(vertices)
         props = polygon_properties(verts)
@@ -395,7 +433,28 @@ class Block:
         (``I_G = m r_g^2``). Per side: ``alpha_s = atan(b_s/h)``, ``R_s``, ``p_s^2 = g R_s /
         (r_g^2 + R_s^2)`` and the restitution ``mu_s`` of the module docstring (angular
         momentum about the new pivot), unless ``mu`` (both sides) is given. Equal sides
-        give a symmetric block. ``mass`` (kg) sets ``I_O`` of the weaker side."""
+        give a symmetric block. ``mass`` (kg) sets ``I_O`` of the weaker side.
+
+        Examples
+        --------
+        A rectangle (``r_g^2 = (b^2 + h^2) / 3``) gives Eqs 2-4, the block of
+        :meth:`rectangular`:
+
+        >>> import math
+        >>> from rocking import Block
+        >>> rect = Block.from_geometry(0.6, 0.2, 0.2, math.sqrt((0.2**2 + 0.6**2) / 3))
+        >>> rect.symmetric, round(rect.p, 4), round(Block.rectangular(0.4, 1.2).p, 4)
+        (True, 3.4102, 3.4102)
+
+        The centre of mass 0.1 m from the + pivot and 0.2 m from the - pivot: the +
+        side, ``alpha_plus = atan(0.1 / 0.5)``, is the weaker one.
+
+        >>> body = Block.from_geometry(0.5, 0.1, 0.2, 0.3)
+        >>> body.symmetric, round(body.alpha, 4), round(math.atan(0.2), 4)
+        (False, 0.1974, 0.1974)
+        >>> round(body.alpha_minus, 4), round(math.atan(0.4), 4)
+        (0.3805, 0.3805)
+        """
         h = positive("h", h, "m")
         bp = positive("b_plus", b_plus, "m")
         bm = positive("b_minus", b_minus, "m")
@@ -438,7 +497,24 @@ class Block:
         shaking (:meth:`rocking.shapes.Shape.polygon`) as its :attr:`vertices`, so that the
         DEM rocks that outline with the body's true mass and inertia (geometry
         ``"body"``). A body that touches the ground beyond a pivot before its overturning
-        angle (an overhang) is warned about: the planar block ignores that contact."""
+        angle (an overhang) is warned about: the planar block ignores that contact.
+
+        Examples
+        --------
+        A 0.4 m x 0.6 m x 2 m box shaken along x is the 0.4 m x 2 m rectangle (Eqs 2-4),
+        with the box's mass; along y (``phi = pi/2``) it is 0.6 m wide:
+
+        >>> import math, trimesh
+        >>> from rocking import Block
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)),
+        ...                          density=2000.0)
+        >>> block = Block.from_shape(box)
+        >>> round(block.p, 4), round(Block.rectangular(0.4, 2.0).p, 4), round(block.mass, 6)
+        (2.6855, 2.6855, 960.0)
+        >>> round(Block.from_shape(box, math.pi / 2).alpha, 4), round(math.atan(0.3), 4)
+        (0.2915, 0.2915)
+        """
         q = shape.parameters(phi)
         if q["overhang"]:
             tilt = math.degrees(min(q["contact_plus"], q["contact_minus"]))
@@ -471,10 +547,20 @@ class Block:
         (:func:`rocking.shapes.parse_direction`); ``phi`` is the same angle in rad in
         :meth:`from_shape` and :func:`rocking.shapes.directional_parameters`.
 
-        >>> from rocking.shapes import example_mesh_path
+        Examples
+        --------
+        The example statue, shaken along its weakest direction: the block's ``alpha`` is
+        the critical angle of :meth:`rocking.shapes.Shape.weakest`.
+
+        >>> import math
+        >>> from rocking import Block
+        >>> from rocking.shapes import example_mesh_path, load_shape
         >>> b = Block.from_mesh(example_mesh_path(), density=2600, direction="weakest")
         >>> round(math.degrees(b.alpha), 2)
         13.91
+        >>> weak = load_shape(example_mesh_path(), density=2600).weakest()
+        >>> round(weak.alpha, 6) == round(b.alpha, 6), b.name
+        (True, 'statue @ 254.4 deg')
         """
         from ..shapes import load_shape, parse_direction, resolve_direction  # trimesh: lazy
 
@@ -485,7 +571,21 @@ class Block:
 
     @classmethod
     def from_params(cls, alpha: float, p: float, mu: float, *, name: str = "", **geometry) -> Block:
-        """A block given by its classical parameters ``alpha`` (rad), ``p`` (1/s), ``mu``."""
+        """A block given by its classical parameters ``alpha`` (rad), ``p`` (1/s), ``mu``.
+
+        Examples
+        --------
+        Only the three parameters are known (``R`` is None); the block uplifts from rest
+        at ``g tan(alpha)``:
+
+        >>> import math
+        >>> import rocking
+        >>> block = rocking.Block.from_params(0.25, 2.0, 0.9)
+        >>> block
+        Block(alpha=0.2500 rad, p=2.0000 1/s, mu=0.9000)
+        >>> round(block.uplift_acceleration, 4), round(rocking.G * math.tan(0.25), 4)
+        (2.504, 2.504)
+        """
         return cls(alpha=alpha, p=p, mu=mu, name=name, **geometry)
 
     def with_params(self, **changes) -> Block:
@@ -493,7 +593,23 @@ class Block:
 
         An asymmetric block's sides change with ``alpha_plus``, ``p_minus``, ``mu_plus``,
         ... (``mu`` sets both sides' restitution); its ``alpha``, ``p`` and ``R`` follow
-        from the sides."""
+        from the sides.
+
+        Examples
+        --------
+        >>> from rocking import Block
+        >>> block = Block.rectangular(0.4, 1.2)
+        >>> lossy = block.with_params(mu=0.7)
+        >>> lossy.mu, lossy.alpha == block.alpha, block.mu == 0.85  # the original is kept
+        (0.7, True, True)
+
+        Changing one side's angle makes the block asymmetric; ``alpha`` is the weaker
+        side's:
+
+        >>> tilted = block.with_params(alpha_minus=0.2)
+        >>> tilted.symmetric, tilted.alpha, round(tilted.alpha_plus, 4)
+        (False, 0.2, 0.3218)
+        """
         side_keys = {k for k in changes if k in _SIDE_KEYS}
         if self.sides is None and not side_keys:
             return dataclasses.replace(self, **changes)
@@ -520,7 +636,18 @@ class Block:
     def mirrored(self) -> Block:
         """The block with its sides swapped (the same body seen from behind): under the
         ground acceleration ``-a`` it rocks as this block under ``a``, with ``theta``
-        negated. The polygon, if any, is mirrored too."""
+        negated. The polygon, if any, is mirrored too.
+
+        Examples
+        --------
+        >>> from rocking import Block
+        >>> body = Block.from_geometry(0.5, 0.1, 0.2, 0.3)  # b_plus = 0.1, b_minus = 0.2 m
+        >>> back = body.mirrored()
+        >>> back.alpha_plus == body.alpha_minus, back.alpha_minus == body.alpha_plus
+        (True, True)
+        >>> back.mirrored() == body
+        True
+        """
         verts = None if self.vertices is None else tuple((-x, y) for x, y in self.vertices)
         sides = None if self.sides is None else (self.sides[1], self.sides[0])
         if sides is None:
@@ -596,7 +723,18 @@ class Block:
 
     def params(self) -> dict:
         """The classical parameters as a plain dict (``alpha``, ``p``, ``mu``, ``R``; an
-        asymmetric block adds ``alpha_plus``, ..., ``R_minus``)."""
+        asymmetric block adds ``alpha_plus``, ..., ``R_minus``).
+
+        Examples
+        --------
+        >>> from rocking import Block
+        >>> params = Block.rectangular(0.4, 1.2).params()
+        >>> {k: round(v, 4) for k, v in params.items()}  # R = sqrt(0.2^2 + 0.6^2)
+        {'alpha': 0.3218, 'p': 3.4102, 'mu': 0.85, 'R': 0.6325}
+        >>> list(Block.from_geometry(0.5, 0.1, 0.2, 0.3).params())  # asymmetric
+        ['alpha', 'p', 'mu', 'R', 'alpha_plus', 'p_plus', 'mu_plus', 'R_plus',
+         'alpha_minus', 'p_minus', 'mu_minus', 'R_minus']
+        """
         d = {"alpha": self.alpha, "p": self.p, "mu": self.mu, "R": self.R}
         if self.sides is not None:
             d.update({k: getattr(self, k) for k in _SIDE_KEYS})
