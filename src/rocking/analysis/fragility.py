@@ -350,7 +350,22 @@ class FragilityFit:
         return float(v.min()), float(v.max())
 
     def probability(self, im):
-        """P(failure | im) (an array like ``im``; scalar in, float out)."""
+        """P(failure | im) (an array like ``im``; scalar in, float out).
+
+        ``Phi(ln(im / median) / beta)``: 1/2 at the median, symmetric in ``ln im`` about it.
+
+        Examples
+        --------
+        >>> from rocking.analysis import fragility
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10)  # PGA (m/s^2)
+        >>> failed = np.tile(np.arange(10), 5) < np.repeat([1, 3, 5, 7, 9], 10)
+        >>> fit = fragility(im, failed, n_boot=0, im_name="pga", im_unit="m/s^2")
+        >>> fit.median, fit.probability(fit.median)
+        (2.0, 0.5)
+        >>> p = fit.probability([1.0, 4.0])  # a factor 2 below and above the median
+        >>> round(float(p[0] + p[1]), 12)
+        1.0
+        """
 
         x = _as_im("im", im)
         p = norm.cdf(np.log(x / self.median) / self.beta)
@@ -358,7 +373,20 @@ class FragilityFit:
 
     def band(self, im, level: float = 0.95):
         """The pointwise bootstrap band at ``im``: a DataFrame with ``im``,
-        ``probability``, ``lower``, ``upper`` (equal-tailed percentiles at ``level``)."""
+        ``probability``, ``lower``, ``upper`` (equal-tailed percentiles at ``level``).
+
+        Examples
+        --------
+        >>> from rocking.analysis import fragility
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10)  # PGA (m/s^2)
+        >>> failed = np.tile(np.arange(10), 5) < np.repeat([1, 3, 5, 7, 9], 10)
+        >>> fit = fragility(im, failed, n_boot=200, seed=0, im_name="pga", im_unit="m/s^2")
+        >>> b = fit.band([1.0, 2.0, 4.0], level=0.9)
+        >>> b.columns.tolist()
+        ['im', 'probability', 'lower', 'upper']
+        >>> bool(np.all((b["lower"] < b["probability"]) & (b["probability"] < b["upper"])))
+        True
+        """
 
         x = _as_im("im", im)
         level = in_range("level", level, 0.0, 1.0)
@@ -374,7 +402,21 @@ class FragilityFit:
 
     def ci(self, level: float = 0.95) -> dict:
         """Bootstrap percentile intervals of ``median`` and ``beta`` (draws with
-        ``b1 <= 0`` count as an infinite median and beta)."""
+        ``b1 <= 0`` count as an infinite median and beta).
+
+        Examples
+        --------
+        >>> from rocking.analysis import fragility
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10)  # PGA (m/s^2)
+        >>> failed = np.tile(np.arange(10), 5) < np.repeat([1, 3, 5, 7, 9], 10)
+        >>> fit = fragility(im, failed, n_boot=200, seed=0, im_name="pga", im_unit="m/s^2")
+        >>> ci = fit.ci(0.95)
+        >>> lo, hi = ci["median"]
+        >>> bool(lo < fit.median < hi), bool(ci["beta"][0] < fit.beta < ci["beta"][1])
+        (True, True)
+        >>> ci == fit.ci(0.95)  # the same bootstrap sample: reproducible
+        True
+        """
         level = in_range("level", level, 0.0, 1.0)
         if self.n_boot == 0:
             raise ParameterError("n_boot: this fit has no bootstrap sample (n_boot=0)")
@@ -388,7 +430,20 @@ class FragilityFit:
 
     def summary(self) -> dict:
         """JSON-ready summary: the parameters, their standard errors and 95% bootstrap
-        intervals, the data counts."""
+        intervals, the data counts.
+
+        Examples
+        --------
+        >>> from rocking.analysis import fragility
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10)  # PGA (m/s^2)
+        >>> failed = np.tile(np.arange(10), 5) < np.repeat([1, 3, 5, 7, 9], 10)
+        >>> fit = fragility(im, failed, n_boot=0, im_name="pga", im_unit="m/s^2")
+        >>> s = fit.summary()
+        >>> s["median"], s["im_unit"], s["n"], s["n_failed"], s["n_stripes"]
+        (2.0, 'm/s^2', 50, 25, 5)
+        >>> bool(np.isclose(s["beta_se"] ** 2, s["cov"][1][1]))  # delta-method covariance
+        True
+        """
         d = {"label": self.label, "im_name": self.im_name, "im_unit": self.im_unit,
              "method": self.method, "median": self.median,
              "beta": self.beta, "median_se": self.median_se, "beta_se": self.beta_se,
@@ -403,7 +458,21 @@ class FragilityFit:
 
     def to_dict(self) -> dict:
         """Everything, JSON-ready: the summary, the coefficients, the data and the
-        bootstrap sample."""
+        bootstrap sample.
+
+        Examples
+        --------
+        >>> from rocking.analysis import fragility
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10)  # PGA (m/s^2)
+        >>> failed = np.tile(np.arange(10), 5) < np.repeat([1, 3, 5, 7, 9], 10)
+        >>> fit = fragility(im, failed, n_boot=0, im_name="pga", im_unit="m/s^2")
+        >>> d = fit.to_dict()
+        >>> d["data"]["n_failed"]  # the failures of each stripe
+        [1, 3, 5, 7, 9]
+        >>> b0, b1 = d["coef"]  # probit coefficients: median = exp(-b0 / b1)
+        >>> round(float(np.exp(-b0 / b1)), 6), round(1 / b1, 6) == round(d["beta"], 6)
+        (2.0, True)
+        """
         d = self.summary()
         d["coef"] = jsonable(self.coef)
         d["coef_cov"] = jsonable(self.coef_cov)
@@ -422,6 +491,21 @@ class FragilityFit:
         unit of the fitted IM: by default the fit's own ``im_unit``, else the SI unit of
         ``demand_unit``'s kind (m/s^2 for ``g``); one that contradicts the fit's is refused.
         ``path`` also writes the CSV.
+
+        Examples
+        --------
+        >>> from rocking.analysis import fragility
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10)  # PGA (m/s^2)
+        >>> failed = np.tile(np.arange(10), 5) < np.repeat([1, 3, 5, 7, 9], 10)
+        >>> fit = fragility(im, failed, n_boot=0, im_name="pga", im_unit="m/s^2")
+        >>> row = fit.to_pelicun(path="fragility.csv")  # the median in g
+        >>> row.loc["rocking.overturning", ["Demand-Unit", "LS1-Family"]].tolist()
+        ['g', 'lognormal']
+        >>> round(float(row["LS1-Theta_0"].iloc[0]), 5), round(2.0 / 9.80665, 5)
+        (0.20394, 0.20394)
+        >>> import pandas as pd
+        >>> pd.read_csv("fragility.csv", index_col="ID").columns.tolist()[-2:]
+        ['LS1-Theta_0', 'LS1-Theta_1']
         """
         return pelicun_table([self], id=id, demand_type=demand_type,
                              demand_unit=demand_unit, im_unit=im_unit,
@@ -430,7 +514,22 @@ class FragilityFit:
     def plot(self, ax=None, *, level: float = 0.95, band: bool = True, data: bool = True,
              im=None, label: str | None = None, color=None):
         """The curve, its bootstrap band and the data (the failed fraction of each stripe,
-        or the Kaplan-Meier estimate of the IDA capacities); returns the Axes."""
+        or the Kaplan-Meier estimate of the IDA capacities); returns the Axes.
+
+        Examples
+        --------
+        >>> from rocking.analysis import fragility
+        >>> im = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10)  # PGA (m/s^2)
+        >>> failed = np.tile(np.arange(10), 5) < np.repeat([1, 3, 5, 7, 9], 10)
+        >>> fit = fragility(im, failed, n_boot=200, seed=0, im_name="pga", im_unit="m/s^2")
+        >>> ax = fit.plot()
+        >>> ax.get_xlabel()
+        'PGA (m/s$^2$)'
+        >>> [t.get_text() for t in ax.get_legend().get_texts()]
+        ['failure: median 2 m/s$^2$, beta 1.14',
+         '95% band (parametric bootstrap, asymptotic normal)']
+        >>> import matplotlib.pyplot as plt; plt.close("all")
+        """
 
         if ax is None:
             _, ax = figure()
