@@ -140,7 +140,33 @@ class ModelOptions(Options):
 
     @classmethod
     def build(cls, model_name: str, **values) -> ModelOptions:
-        """The options from keyword values, refusing unknown names."""
+        """The options from keyword values, refusing unknown names.
+
+        Parameters
+        ----------
+        model_name : str
+            The model's registry name, for the message.
+        **values
+            The options by name (quantities with units accepted: ``"2.5s"``, ``"15cm"``).
+
+        Raises
+        ------
+        ParameterError
+            An unknown name (listing the allowed ones), or a value out of its range.
+
+        Examples
+        --------
+        The same options as the constructor's, with unknown names refused:
+
+        >>> import rocking
+        >>> Options = rocking.MODELS["isolated"].Options
+        >>> Options.build("isolated", clearance="15cm") == Options(clearance=0.15)
+        True
+        >>> Options.build("isolated", clearence=0.15)
+        Traceback (most recent call last):
+        ...
+        rocking.errors.ParameterError: unknown option(s) for model 'isolated': clearence ...
+        """
         names = {f.name for f in dataclasses.fields(cls)}
         unknown = [k for k in values if k not in names]
         if unknown:
@@ -194,11 +220,36 @@ class Model:
 
     @classmethod
     def from_kwargs(cls, block, **options) -> Model:
-        """The model for ``block`` with options given as keywords (validated)."""
+        """The model for ``block`` with options given as keywords (validated by
+        :meth:`ModelOptions.build`): what :func:`rocking.simulate` builds from its
+        ``**options``.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> block = rocking.Block.rectangular(0.2, 1.0)
+        >>> m = rocking.MODELS["isolated"].from_kwargs(block, isolation_period="2.5s")
+        >>> m.block is block, m.options.isolation_period, m.options.isolation_damping
+        (True, 2.5, 0.05)
+        """
         return cls(block, cls.Options.build(cls.name, **options))
 
     @classmethod
     def check_block(cls, block):
+        """``block`` if the model simulates it (a :class:`~rocking.Block`; a
+        :class:`~rocking.Stack` too when :attr:`accepts_stack`), else ParameterError.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> block = rocking.Block.rectangular(0.2, 1.0)
+        >>> rocking.MODELS["housner"].check_block(block) is block
+        True
+        >>> rocking.MODELS["housner"].check_block("0.2 x 1.0")
+        Traceback (most recent call last):
+        ...
+        rocking.errors.ParameterError: block must be a rocking.Block, got str
+        """
         allowed = (Block, Stack) if cls.accepts_stack else (Block,)
         if isinstance(block, Stack) and not cls.accepts_stack:
             raise ParameterError(f"model {cls.name!r} simulates a single rocking.Block; "
@@ -210,14 +261,41 @@ class Model:
 
     # ---- to be provided by subclasses
     def kernel_params(self, dt_out: float, theta0: float, omega0: float) -> tuple:
-        """The parameter tuple ``mp`` handed to the kernels."""
+        """The parameter tuple ``mp`` handed to the kernels (for a run with output interval
+        ``dt_out``, s, from ``theta0``, rad, and ``omega0``, rad/s); each model defines its
+        own layout.
+
+        Examples
+        --------
+        The classical model's tuple starts with the block's ``alpha``, ``p`` and ``mu``
+        (Eq 1 and Eq 4):
+
+        >>> import rocking
+        >>> block = rocking.Block.rectangular(0.2, 1.0)
+        >>> mp = rocking.MODELS["housner"](block).kernel_params(0.01, 0.0, 0.0)
+        >>> mp[:3] == (block.alpha, block.p, block.mu)
+        True
+        """
         raise NotImplementedError
 
     # ---- optional hooks
     @classmethod
     def block_row(cls, block) -> tuple:
         """The block parameters a batch row may change (``with_block`` puts them into ``mp``);
-        empty: one block per batch."""
+        empty: one block per batch.
+
+        Examples
+        --------
+        The anchored model's rows take ``(alpha, p, mu)``; the base class, none:
+
+        >>> import rocking
+        >>> from rocking.models import Model
+        >>> block = rocking.Block.rectangular(0.2, 1.0)
+        >>> rocking.MODELS["anchored"].block_row(block) == (block.alpha, block.p, block.mu)
+        True
+        >>> Model.block_row(block)
+        ()
+        """
         return ()
 
     @property
@@ -227,34 +305,103 @@ class Model:
 
     def extra_buffers(self, n_out: int) -> tuple:
         """Extra output arrays of the kernel for ``n_out`` samples (default: the buffer of
-        the :attr:`row_outputs`, if any)."""
+        the :attr:`row_outputs`, if any).
+
+        Examples
+        --------
+        One NaN per row output (NaN: not reached) for the isolated model, none for the
+        classical one:
+
+        >>> import rocking
+        >>> block = rocking.Block.rectangular(0.2, 1.0)
+        >>> rocking.MODELS["isolated"](block).extra_buffers(100)
+        (array([nan, nan, nan, nan]),)
+        >>> rocking.MODELS["housner"](block).extra_buffers(100)
+        ()
+        """
         return (np.full(len(self.row_outputs), np.nan),) if self.row_outputs else ()
 
     def extra_bytes(self, n_out: int) -> int:
-        """Memory of :meth:`extra_buffers` for ``n_out`` samples (bytes)."""
+        """Memory of :meth:`extra_buffers` for ``n_out`` samples (bytes).
+
+        Examples
+        --------
+        It agrees with the buffers themselves (four float64 row outputs, 32 bytes):
+
+        >>> import rocking
+        >>> m = rocking.MODELS["isolated"](rocking.Block.rectangular(0.2, 1.0))
+        >>> m.extra_bytes(100), sum(a.nbytes for a in m.extra_buffers(100))
+        (32, 32)
+        """
         return 8 * len(self.row_outputs)
 
     def extra_fields(self, n_out: int, extra: tuple, dt_out: float) -> dict:
         """Fields of :attr:`response_class` beyond those of :class:`Response` (an ``"info"``
         entry is merged into ``Response.info``), from ``n_out`` samples at ``dt_out`` (s).
-        Default: the :attr:`row_outputs` in ``info``."""
+        Default: the :attr:`row_outputs` in ``info``.
+
+        Examples
+        --------
+        The isolated model's buffer becomes named values, the flag as a bool:
+
+        >>> import rocking
+        >>> m = rocking.MODELS["isolated"](rocking.Block.rectangular(0.2, 1.0))
+        >>> buf = np.array([0.12, 3.5, 0.0, np.nan])
+        >>> info = m.extra_fields(0, (buf,), 0.01)["info"]
+        >>> info["max_base_displacement"], info["clearance_exceeded"], info["clearance_time"]
+        (0.12, False, nan)
+        """
         if not self.row_outputs:
             return {}
         return {"info": row_output_values(self.row_outputs, extra[0])}
 
     def check_batch(self) -> None:
-        """Refuse options that a batch cannot honour (raise ParameterError); default: none."""
+        """Refuse options that a batch cannot honour (raise ParameterError); default: none.
+
+        Examples
+        --------
+        The DEM's contact forces are histories of single runs only:
+
+        >>> import rocking
+        >>> block = rocking.Block.rectangular(0.2, 1.0)
+        >>> rocking.MODELS["housner"](block).check_batch() is None
+        True
+        >>> dem = rocking.MODELS["dem"].from_kwargs(block, damping=1e-3, return_forces=True)
+        >>> dem.check_batch()
+        Traceback (most recent call last):
+        ...
+        rocking.errors.ParameterError: return_forces=True is for single runs ...
+        """
 
     def info(self, dt_out: float | None = None) -> dict:
         """Options and derived settings recorded in ``Response.info`` (of a run at the
         output interval ``dt_out``, s, when given). No hook may change the model: the
-        same model runs any number of times (:func:`rocking.testing.check_model`)."""
+        same model runs any number of times (:func:`rocking.testing.check_model`).
+
+        Examples
+        --------
+        The default is the options' scalars:
+
+        >>> import rocking
+        >>> m = rocking.MODELS["housner"].from_kwargs(rocking.Block.rectangular(0.2, 1.0),
+        ...                                           linear=True)
+        >>> m.info()
+        {'rtol': 1e-08, 'rest_tol': 1e-12, 'free_rest_tol': 0.001, 'linear': True}
+        """
         return {k: v for k, v in self.options.to_dict().items()
                 if isinstance(v, int | float | str | bool) or v is None}
 
     def failure(self, status: int, t: float, dt_out: float | None = None) -> str:
         """Message of a numerical failure with code ``status`` near time ``t`` (s), in a
-        run at the output interval ``dt_out`` (s)."""
+        run at the output interval ``dt_out`` (s).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> m = rocking.MODELS["housner"](rocking.Block.rectangular(0.2, 1.0))
+        >>> m.failure(3, 1.23456)
+        "model 'housner' failed (status 3) near t = 1.235 s"
+        """
         return f"model {self.name!r} failed (status {status}) near t = {t:.4g} s"
 
 
