@@ -103,7 +103,20 @@ class Shape:
     @classmethod
     def from_arrays(cls, vertices, faces, *, density=None, mass=None, up="z", repair=None,
                     tol=None, weld=None, name="", source=None) -> Shape:
-        """A shape from vertices (n, 3) in m and triangles (m, 3) (module docstring)."""
+        """A shape from vertices (n, 3) in m and triangles (m, 3) (module docstring).
+
+        Examples
+        --------
+        The 8 corners and 12 triangles of a 0.4 m x 0.6 m x 2 m box of 960 kg: its
+        density is the mass over the volume, 960 / 0.48.
+
+        >>> import trimesh
+        >>> from rocking.shapes import Shape
+        >>> mesh = trimesh.creation.box(extents=(0.4, 0.6, 2.0))
+        >>> box = Shape.from_arrays(mesh.vertices, mesh.faces, mass=960.0)
+        >>> round(box.volume, 6), round(box.density, 6), round(box.h, 6)
+        (0.48, 2000.0, 1.0)
+        """
         notes = []
         v, f = validated(vertices, faces, repair=repair, weld_tol=weld, warn=notes.append)
         for note in notes:
@@ -142,7 +155,20 @@ class Shape:
     @classmethod
     def from_trimesh(cls, mesh, **kwargs) -> Shape:
         """A shape from a :class:`trimesh.Trimesh` (its vertices and faces; keyword
-        arguments as :func:`load_shape`)."""
+        arguments as :func:`load_shape`).
+
+        Examples
+        --------
+        The same box standing on its 0.4 m x 2 m face (``up="y"``): 0.6 m tall, its centre
+        of mass at mid-height.
+
+        >>> import trimesh
+        >>> from rocking.shapes import Shape
+        >>> mesh = trimesh.creation.box(extents=(0.4, 0.6, 2.0))
+        >>> lying = Shape.from_trimesh(mesh, density=2000.0, up="y")
+        >>> round(lying.height, 6), round(lying.h, 6), round(lying.support_area, 6)
+        (0.6, 0.3, 0.8)
+        """
         return cls.from_arrays(np.asarray(mesh.vertices), np.asarray(mesh.faces), **kwargs)
 
     def __post_init__(self):
@@ -163,7 +189,20 @@ class Shape:
         return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
 
     def describe(self) -> dict:
-        """The mass properties and the support as a dict of plain values (SI)."""
+        """The mass properties and the support as a dict of plain values (SI).
+
+        Examples
+        --------
+        A box's support is its 0.4 m x 0.6 m base, with its 4 corners:
+
+        >>> import trimesh
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)),
+        ...                          density=2000.0)
+        >>> d = box.describe()
+        >>> round(d["mass"], 6), round(d["support_area"], 6), d["contact_points"], d["up"]
+        (960.0, 0.24, 4, [0.0, 0.0, 1.0])
+        """
         return {"name": self.name, "source": self.source, "vertices": int(len(self.vertices)),
                 "triangles": int(len(self.faces)), "volume": self.volume, "mass": self.mass,
                 "density": self.density, "com": self.com.tolist(),
@@ -175,7 +214,23 @@ class Shape:
     # ------------------------------------------------------------------ per direction
     def parameters(self, direction: float = 0.0) -> dict:
         """The directional parameters of one direction (rad) as a dict of floats (the
-        columns of :func:`rocking.shapes.directional_parameters`)."""
+        columns of :func:`rocking.shapes.directional_parameters`).
+
+        Examples
+        --------
+        Along x a 0.4 m x 0.6 m x 2 m box is the 0.4 m x 2 m rectangle: ``alpha =
+        atan(0.2 / 1.0)`` and ``r_g^2 = (0.4^2 + 2^2) / 12``.
+
+        >>> import math, trimesh
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)),
+        ...                          density=2000.0)
+        >>> q = box.parameters(0.0)
+        >>> round(q["alpha_plus"], 4), round(math.atan(0.2), 4), q["weak_side"]
+        (0.1974, 0.1974, '+')
+        >>> round(q["radius_of_gyration"], 4), round(math.sqrt((0.4**2 + 2**2) / 12), 4)
+        (0.5888, 0.5888)
+        """
         phi = as_float("direction", direction)
         cols = side_arrays(self.support, self.h, self.inertia_local, self.mass,
                            np.array([phi]), self.hull_points())
@@ -184,13 +239,42 @@ class Shape:
     def inertia_about(self, direction: float = 0.0) -> float:
         """The moment of inertia (kg m^2) about the horizontal axis through the centre of
         mass normal to the plane of shaking of ``direction`` (rad): ``u . I . u``, ``u =
-        (-sin phi, cos phi, 0)`` in the frame (the DEM's body inertia)."""
+        (-sin phi, cos phi, 0)`` in the frame (the DEM's body inertia).
+
+        Examples
+        --------
+        A box of mass ``m`` about its centroidal axis along y: ``m (a^2 + c^2) / 12`` with
+        ``a`` = 0.4 m (x) and ``c`` = 2 m (height); shaken along y, ``a`` = 0.6 m.
+
+        >>> import math, trimesh
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)),
+        ...                          density=2000.0)
+        >>> round(box.inertia_about(0.0), 4), round(960 * (0.4**2 + 2**2) / 12, 4)
+        (332.8, 332.8)
+        >>> round(box.inertia_about(math.pi / 2), 4), round(960 * (0.6**2 + 2**2) / 12, 4)
+        (348.8, 348.8)
+        """
         phi = as_float("direction", direction)
         u = np.array([-math.sin(phi), math.cos(phi), 0.0])
         return float(u @ self.inertia_local @ u)
 
     def hull_points(self) -> np.ndarray:
-        """The vertices of the body's 3-D convex hull in the local frame (cached)."""
+        """The vertices of the body's 3-D convex hull in the local frame (cached).
+
+        Examples
+        --------
+        A box's hull is its 8 corners, centred on the centre of mass's vertical, from the
+        base (z = 0) to the top:
+
+        >>> import trimesh
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)),
+        ...                          density=2000.0)
+        >>> pts = box.hull_points()
+        >>> pts.shape, np.abs(pts).max(axis=0).round(6).tolist()
+        ((8, 3), [0.2, 0.3, 2.0])
+        """
         if not self._hull:
             from scipy.spatial import ConvexHull
 
@@ -204,7 +288,20 @@ class Shape:
         vertical, ``z`` up from the base (the contact patch, within ``tol``, is flattened
         onto z = 0). The centre of mass is at ``(0, h)``; the DEM must use the mesh's
         ``mass`` and ``parameters(direction)["radius_of_gyration"]``, not the polygon's
-        area and inertia."""
+        area and inertia.
+
+        Examples
+        --------
+        A box's outline along x is its 0.4 m x 2 m side, counter-clockwise from the left
+        end of the base:
+
+        >>> import trimesh
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.from_trimesh(trimesh.creation.box(extents=(0.4, 0.6, 2.0)),
+        ...                          density=2000.0)
+        >>> box.polygon(0.0).round(6).tolist()
+        [[-0.2, 0.0], [0.2, 0.0], [0.2, 2.0], [-0.2, 2.0]]
+        """
         from scipy.spatial import ConvexHull
 
         phi = as_float("direction", direction)
@@ -229,7 +326,22 @@ class Shape:
     def weakest(self) -> Direction:
         """The exact weakest direction: the normal of the support hull's edge nearest to
         the centre of mass's vertical (where the support function is smallest), as the
-        direction whose "+" side tips over that edge."""
+        direction whose "+" side tips over that edge.
+
+        Examples
+        --------
+        A 2 m tall prism on the right triangle (0, 0), (1, 0), (0, 1): the centroid's
+        vertical, at (1/3, 1/3), is nearest to the hypotenuse, at ``b = 1 / (3 sqrt 2)``,
+        so the weakest direction is normal to it and ``tan(alpha) = b / h`` (``h`` = 1 m).
+
+        >>> import math, trimesh
+        >>> from rocking.shapes import Shape
+        >>> corners = [(x, y, z) for x, y in ((0, 0), (1, 0), (0, 1)) for z in (0, 2)]
+        >>> prism = Shape.from_trimesh(trimesh.Trimesh(corners).convex_hull, density=1000.0)
+        >>> d = prism.weakest()
+        >>> d.phi_deg % 180, d.side, round(d.uplift_g, 6), round(1 / (3 * math.sqrt(2)), 6)
+        (45.0, '+', 0.235702, 0.235702)
+        """
         a = self.support
         b = np.roll(a, -1, axis=0)
         edge = b - a
