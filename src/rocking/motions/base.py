@@ -62,14 +62,39 @@ class Motion:
 
     # ---- shared behaviour
     def spec(self) -> tuple[int, np.ndarray, np.ndarray]:
-        """``(kind, prm, samples)`` for the compiled kernels."""
+        """``(kind, prm, samples)`` for the compiled kernels.
+
+        ``prm`` holds ``scale`` then the kind-specific parameters, zero-padded to a
+        fixed length; ``samples`` is empty for an analytic motion.
+
+        Examples
+        --------
+        >>> from rocking.motions import Sine
+        >>> s = Sine(freq=2.0, amplitude=0.01, duration=5.0, scale=3.0)
+        >>> kind, prm, samples = s.spec()
+        >>> kind == s.kind, prm[:5].tolist(), samples.size  # scale, freq, X, duration, phase
+        (True, [3.0, 2.0, 0.01, 5.0, 0.0], 0)
+        """
         prm = np.zeros(K.NPRM)
         vals = (self.scale, *self._params())
         prm[: len(vals)] = vals
         return self.kind, prm, np.ascontiguousarray(self._samples(), dtype=np.float64)
 
     def acceleration(self, t) -> np.ndarray:
-        """Ground acceleration (m/s^2) at times ``t`` (s); scalar in, scalar out."""
+        """Ground acceleration (m/s^2) at times ``t`` (s); scalar in, scalar out.
+
+        Calling the motion, ``motion(t)``, is the same.
+
+        Examples
+        --------
+        >>> from rocking.motions import Sine
+        >>> s = Sine(freq=2.0, amplitude=0.01, duration=5.0)
+        >>> a = s.acceleration(np.array([0.125, 0.375]))  # u = +X, -X: a = -u (2 pi f)^2
+        >>> np.round(a, 4).tolist(), round(0.01 * (2 * np.pi * 2.0) ** 2, 4)
+        ([-1.5791, 1.5791], 1.5791)
+        >>> type(s.acceleration(0.125)).__name__, s.acceleration(0.3) == s(0.3)
+        ('float', True)
+        """
         kind, prm, samples = self.spec()
         arr = np.asarray(t, dtype=np.float64)
         out = K.acc_many(kind, prm, samples, np.atleast_1d(arr).ravel())
@@ -78,7 +103,21 @@ class Motion:
     __call__ = acceleration
 
     def scaled(self, factor: float):
-        """A copy with the acceleration multiplied by ``factor`` (a load factor)."""
+        """A copy with the acceleration multiplied by ``factor`` (a load factor).
+
+        The factors multiply: ``m.scaled(a).scaled(b).scale == m.scale * a * b``; the
+        original is unchanged (motions are immutable).
+
+        Examples
+        --------
+        >>> from rocking.motions import Sine
+        >>> s = Sine(freq=2.0, amplitude=0.01, duration=5.0)
+        >>> s2 = s.scaled(2.0)
+        >>> s2.scale, s.scale, bool(s2(0.3) == 2.0 * s(0.3))
+        (2.0, 1.0, True)
+        >>> s2.scaled(-0.5).scale, bool((-s)(0.3) == -s(0.3))  # -m is m.scaled(-1)
+        (-1.0, True)
+        """
         f = as_float("factor", factor)
         # a copy of the validated fields with a new scale: no need to validate them again
         # (a record's check scans every sample; campaigns scale thousands of motions)
@@ -91,7 +130,15 @@ class Motion:
         return self.scaled(-1.0)
 
     def time(self, dt: float) -> np.ndarray:
-        """A uniform time grid ``0, dt, ..., duration`` (s)."""
+        """A uniform time grid ``0, dt, ..., duration`` (s).
+
+        Examples
+        --------
+        >>> from rocking.motions import Sine
+        >>> t = Sine(freq=2.0, amplitude=0.01, duration=5.0).time(0.01)
+        >>> len(t), float(t[0]), round(float(t[-1]), 10)  # duration / dt + 1 points
+        (501, 0.0, 5.0)
+        """
         dt = positive("dt", dt, "s")
         return np.arange(int(round(self.duration / dt)) + 1) * dt
 
