@@ -191,7 +191,18 @@ class DesignSpectrum:
     @classmethod
     def ec8(cls, ag, ground: str = "A", spectrum_type: int = 1,
             damping: float = 0.05) -> DesignSpectrum:
-        """The EN 1998-1 elastic spectrum as a :class:`DesignSpectrum` (:func:`ec8_spectrum`)."""
+        """The EN 1998-1 elastic spectrum as a :class:`DesignSpectrum` (:func:`ec8_spectrum`).
+
+        Examples
+        --------
+        >>> from rocking.motions import DesignSpectrum, ec8_spectrum
+        >>> s = DesignSpectrum.ec8(ag=2.0, ground="C")  # Table 3.2: S = 1.15, TB-TD 0.2-2 s
+        >>> round(s.pga, 4), round(s.plateau, 4), s.tb, s.tc, s.td  # ag S, 2.5 ag S
+        (2.3, 5.75, 0.2, 0.6, 2.0)
+        >>> T = [0.1, 0.4, 1.0, 3.0]
+        >>> bool(np.allclose(s(T), ec8_spectrum(T, ag=2.0, ground="C")))
+        True
+        """
         ag = non_negative("ag", ag, "m/s^2")
         prm = ec8_parameters(ground, spectrum_type)
         S = ag * prm["S"]
@@ -212,19 +223,48 @@ class DesignSpectrum:
         return self.plateau / self.pga if self.pga > 0 else math.inf
 
     def scaled(self, factor) -> DesignSpectrum:
-        """The spectrum with every ordinate multiplied by ``factor`` (> 0)."""
+        """The spectrum with every ordinate multiplied by ``factor`` (> 0).
+
+        Examples
+        --------
+        >>> from rocking.motions import paper_target
+        >>> t = paper_target()
+        >>> half = t.scaled(0.5)  # the corner periods do not change
+        >>> half.pga, half.plateau, half.tb, half.tc, half.td
+        (1.4, 3.5, 0.1, 0.3, 1.2)
+        >>> round(half(2.0) / t(2.0), 12)  # every ordinate, the 1/T^2 branch too
+        0.5
+        """
         f = positive("factor", factor)
         return replace(self, pga=self.pga * f, plateau=self.plateau * f)
 
     def with_damping(self, damping) -> DesignSpectrum:
         """The spectrum for another damping ratio: the plateau and the decaying branches
-        scale by ``eta(damping) / eta(self.damping)``; the PGA does not change (as in EC8)."""
+        scale by ``eta(damping) / eta(self.damping)``; the PGA does not change (as in EC8).
+
+        Examples
+        --------
+        >>> from rocking.motions import paper_target
+        >>> t10 = paper_target().with_damping(0.10)  # eta = sqrt(10 / (5 + 10))
+        >>> t10.pga, round(t10.plateau, 4), round(7.0 * (10 / 15) ** 0.5, 4)
+        (2.8, 5.7155, 5.7155)
+        >>> round(t10.with_damping(0.05).plateau, 12)  # back to 5 %: eta = 1
+        7.0
+        """
         d = _damping(damping)
         r = eta(d) / eta(self.damping)
         return replace(self, plateau=self.plateau * r, damping=d)
 
     def describe(self) -> str:
-        """One line: the values and corner periods."""
+        """One line: the values and corner periods.
+
+        Examples
+        --------
+        >>> from rocking.motions import DesignSpectrum
+        >>> print(DesignSpectrum.ec8(ag=2.0, ground="C").describe())
+        EC8 Type 1, ground C, ag = 2 m/s^2, 5 % damping: PGA 2.3 m/s^2,
+        plateau 5.75 m/s^2 from TB = 0.2 s to TC = 0.6 s, TD = 2 s, 5 % damping
+        """
         return (f"{self.name}: PGA {self.pga:.3g} m/s^2, plateau {self.plateau:.3g} m/s^2 "
                 f"from TB = {self.tb:g} s to TC = {self.tc:g} s, TD = {self.td:g} s, "
                 f"{100 * self.damping:g} % damping")

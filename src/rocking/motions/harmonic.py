@@ -63,7 +63,19 @@ class Sine(Motion):
 
     @classmethod
     def from_acceleration(cls, freq: float, acc_amplitude: float, duration: float, **kw) -> Sine:
-        """A sine given by its acceleration amplitude (m/s^2) instead of its displacement."""
+        """A sine given by its acceleration amplitude (m/s^2) instead of its displacement.
+
+        The displacement amplitude is ``X = acc_amplitude / (2 pi freq)^2``.
+
+        Examples
+        --------
+        >>> from rocking.motions import Sine
+        >>> s = Sine.from_acceleration(freq=5.0, acc_amplitude=4.93, duration=2.0)
+        >>> round(s.amplitude * 1000, 2), round(s.acc_amplitude, 4)  # 5 mm at 5 Hz: 4.93
+        (5.0, 4.93)
+        >>> round(abs(s.acceleration(0.05)), 4)  # the peak, at u = X (t = 1 / (4 freq))
+        4.93
+        """
         freq = positive("freq", freq, "Hz")
         acc = non_negative("acc_amplitude", acc_amplitude, "m/s^2")
         return cls(freq, acc / (2 * math.pi * freq) ** 2, duration, **kw)
