@@ -63,7 +63,19 @@ class GroundMotion(Motion):
     def from_files(cls, h_path, v_path=None, units: str = "g", dt: float | None = None,
                    **kw) -> GroundMotion:
         """Read a horizontal record and, optionally, the vertical one (same ``units``:
-        ``g``, ``m/s^2``, ``cm/s^2``)."""
+        ``g``, ``m/s^2``, ``cm/s^2``; see :meth:`Record.from_file`).
+
+        Examples
+        --------
+        >>> from rocking.motions import GroundMotion, Sine, sample, write_csv
+        >>> h = write_csv(sample(Sine(2.5, 0.01, 1.0), 0.01), "h.csv")
+        >>> v = write_csv(sample(Sine(5.0, 0.001, 1.0), 0.01), "v.csv")
+        >>> gm = GroundMotion.from_files(h, v, units="m/s^2")
+        >>> gm.name, gm.duration
+        ('h + v', 1.0)
+        >>> round(gm.acceleration(0.1), 4), round(-0.01 * (2 * np.pi * 2.5) ** 2, 4)  # u = X
+        (-2.4674, -2.4674)
+        """
         h = Record.from_file(h_path, units=units, dt=dt)
         v = Record.from_file(v_path, units=units, dt=dt) if v_path is not None else None
         return cls(h, v, **kw)
@@ -72,7 +84,17 @@ class GroundMotion(Motion):
     def builtin(cls, name: str, horizontal: int = 1) -> GroundMotion:
         """A three-component set shipped with the package (``"rinaldi"``, ``"duzce"``; see
         :func:`rocking.motions.builtin_sets`), with its horizontal component 1 or 2 and its
-        vertical component."""
+        vertical component.
+
+        Examples
+        --------
+        >>> from rocking.motions import GroundMotion, builtin_sets, load_builtin
+        >>> gm = GroundMotion.builtin("rinaldi", horizontal=2)
+        >>> gm.name, builtin_sets()["rinaldi"]
+        ('Rinaldi318 + RinaldiUP', ('Rinaldi228', 'Rinaldi318', 'RinaldiUP'))
+        >>> gm.pga == load_builtin("Rinaldi318").pga  # the record itself
+        True
+        """
         from .io import builtin_sets
         from .records import load_builtin
         sets = builtin_sets()
@@ -104,8 +126,19 @@ class GroundMotion(Motion):
         return h if self.vertical is None else min(h, self.vertical.scan_step)
 
     def spec(self) -> tuple[int, np.ndarray, np.ndarray]:
-        """The horizontal spec carrying the vertical one (:func:`rocking.motions._kernel.
-        with_vertical`)."""
+        """The horizontal spec carrying the vertical one (``with_vertical`` of the kernel
+        module); without a vertical component, the horizontal motion's spec exactly.
+
+        Examples
+        --------
+        >>> from rocking.motions import GroundMotion, Sine
+        >>> h = Sine(freq=2.0, amplitude=0.01, duration=5.0)
+        >>> (k1, p1, s1), (k2, p2, s2) = GroundMotion(h).spec(), h.spec()
+        >>> k1 == k2, bool(np.array_equal(p1, p2)), s1.size == s2.size  # bit-identical
+        (True, True, True)
+        >>> GroundMotion(h, Sine(4.0, 0.001, 5.0)).spec()[0] == h.kind  # horizontal kind
+        True
+        """
         h = self.horizontal if self.scale == 1.0 else self.horizontal.scaled(self.scale)
         kind, prm, samples = h.spec()
         if self.vertical is None:
@@ -115,11 +148,30 @@ class GroundMotion(Motion):
         return kind, prm, samples
 
     def acceleration(self, t):
-        """Horizontal acceleration (m/s^2) at ``t`` (s)."""
+        """Horizontal acceleration (m/s^2) at ``t`` (s).
+
+        Examples
+        --------
+        >>> from rocking.motions import GroundMotion, Sine
+        >>> h = Sine(freq=2.0, amplitude=0.01, duration=5.0)
+        >>> gm = GroundMotion(h, Sine(4.0, 0.001, 5.0), scale=2.0)
+        >>> round(gm.acceleration(0.125), 4), round(2.0 * h(0.125), 4)  # scale applied
+        (-3.1583, -3.1583)
+        """
         return self.horizontal.scaled(self.scale).acceleration(t)
 
     def vertical_acceleration(self, t):
-        """Vertical acceleration (m/s^2, positive upwards) at ``t`` (s); 0 without one."""
+        """Vertical acceleration (m/s^2, positive upwards) at ``t`` (s); 0 without one.
+
+        Examples
+        --------
+        >>> from rocking.motions import GroundMotion, Sine
+        >>> gm = GroundMotion(Sine(2.0, 0.01, 5.0), Sine(4.0, 0.001, 5.0))
+        >>> round(gm.vertical_acceleration(0.0625), 4), round(-0.001 * (8 * np.pi) ** 2, 4)
+        (-0.6317, -0.6317)
+        >>> GroundMotion(Sine(2.0, 0.01, 5.0)).vertical_acceleration([0.0, 1.0]).tolist()
+        [0.0, 0.0]
+        """
         arr = np.asarray(t, dtype=np.float64)
         if self.vertical is None:
             return np.zeros(arr.shape) if arr.ndim else 0.0
@@ -130,7 +182,19 @@ class GroundMotion(Motion):
         """Both components times ``factor``; with ``vertical``, the horizontal component
         times ``factor`` and the vertical one times ``vertical``. The factors go to the
         components themselves, so ``GroundMotion(h).scaled(a).scaled(b)`` is
-        ``GroundMotion(h.scaled(a).scaled(b))`` exactly."""
+        ``GroundMotion(h.scaled(a).scaled(b))`` exactly.
+
+        Examples
+        --------
+        >>> from rocking.motions import GroundMotion, Sine
+        >>> gm = GroundMotion(Sine(2.0, 0.01, 5.0), Sine(4.0, 0.001, 5.0))
+        >>> g2 = gm.scaled(2.0, vertical=0.5)
+        >>> g2.scale, g2.horizontal.scale, g2.vertical.scale
+        (1.0, 2.0, 0.5)
+        >>> av, av2 = gm.vertical_acceleration(0.1), g2.vertical_acceleration(0.1)
+        >>> round(g2(0.1) / gm(0.1), 12), round(av2 / av, 12)
+        (2.0, 0.5)
+        """
         f = as_float("factor", factor)
         if vertical is not None and self.vertical is None:
             raise ParameterError("vertical: this GroundMotion has no vertical component to "
