@@ -252,7 +252,17 @@ class HazardCurve:
 
     def rate_at(self, x):
         """Annual rate of exceeding ``x`` (in the curve's unit); power law beyond the
-        curve's ends."""
+        curve's ends.
+
+        Examples
+        --------
+        >>> from rocking.analysis import HazardCurve
+        >>> curve = HazardCurve.from_code_value(0.25)  # (1/475) (a / 0.25 g)^-3
+        >>> float(curve.im[-1])  # the last point (g); beyond it the power law goes on
+        2.5
+        >>> np.round(curve.rate_at([0.25, 5.0]) * 475, 9).tolist()  # 1 and (5 / 0.25)^-3
+        [1.0, 0.000125]
+        """
         xa = np.asarray(x, dtype=float)
         if np.any(~np.isfinite(xa)) or np.any(xa <= 0):
             raise ParameterError(f"x must be finite and > 0, got {x!r}")
@@ -261,7 +271,18 @@ class HazardCurve:
 
     def im_at_return_period(self, T):
         """The IM exceeded once in ``T`` years on average (rate ``1/T``), log-log
-        interpolated; power law beyond the curve's ends (flat parts are refused)."""
+        interpolated; power law beyond the curve's ends (flat parts are refused).
+
+        Examples
+        --------
+        >>> from rocking.analysis import HazardCurve
+        >>> curve = HazardCurve.from_code_value(0.25)  # (1/475) (a / 0.25 g)^-3
+        >>> a = curve.im_at_return_period([475, 2475])  # 0.25 (2475 / 475)^(1/3) g
+        >>> np.round(a, 4).tolist(), round(0.25 * (2475 / 475) ** (1 / 3), 4)
+        ([0.25, 0.4334], 0.4334)
+        >>> round(curve.rate_at(a[1]) * 2475, 6)  # the inverse of rate_at
+        1.0
+        """
         Ta = np.asarray(T, dtype=float)
         if np.any(~np.isfinite(Ta)) or np.any(Ta <= 0):
             raise ParameterError(f"T must be a return period > 0 (years), got {T!r}")
@@ -282,7 +303,18 @@ class HazardCurve:
         return float(r) if r.ndim == 0 else r
 
     def to_unit(self, unit: str) -> HazardCurve:
-        """The same curve with its IM in ``unit`` (same kind of quantity)."""
+        """The same curve with its IM in ``unit`` (same kind of quantity).
+
+        Examples
+        --------
+        >>> from rocking.analysis import HazardCurve
+        >>> curve = HazardCurve.from_code_value(0.25)  # (1/475) (a / 0.25 g)^-3
+        >>> si = curve.to_unit("m/s^2")
+        >>> si.unit, round(si.im_at_return_period(475), 4), round(0.25 * 9.80665, 4)
+        ('m/s^2', 2.4517, 2.4517)
+        >>> bool(np.allclose(si.rate, curve.rate))  # the same rates, the IM rescaled
+        True
+        """
         a, b = _unit_factor(self.unit), _unit_factor(str(unit).strip())
         if b is None or a[0] != b[0]:
             raise ParameterError(f"unit must be a {a[0]} unit like {self.unit!r}, got "
@@ -299,7 +331,18 @@ class HazardCurve:
                         label: str = ""):
         """EN 1998-1 2.1(4) note: ``lambda(a) = (1/475) (a / a_475)^-k``, k of the order of
         3; with ``pga_2475`` the slope is that of the two return periods,
-        ``k = ln(2475/475) / ln(a_2475 / a_475)``. Flagged ``approximate``."""
+        ``k = ln(2475/475) / ln(a_2475 / a_475)``. Flagged ``approximate``.
+
+        Examples
+        --------
+        >>> import math
+        >>> from rocking.analysis import HazardCurve
+        >>> curve = HazardCurve.from_code_value(0.25, pga_2475=0.45)  # PGA in g
+        >>> round(curve.tail_slopes[0], 4), round(math.log(2475 / 475) / math.log(0.45 / 0.25), 4)
+        (2.8083, 2.8083)
+        >>> round(curve.im_at_return_period(2475), 6), curve.approximate
+        (0.45, True)
+        """
         a = _positive("pga_475", pga_475)
         if pga_2475 is not None:
             a2 = _positive("pga_2475", pga_2475)
@@ -323,7 +366,19 @@ class HazardCurve:
         (``poe``, ``probability``) is read only with ``investigation_time`` T (years):
         ``rate = -ln(1 - poe) / T`` (Poisson, as for OpenQuake); any other header is
         refused. The IM unit is taken from the first header (``pga_g``, ``PGA (g)``,
-        ``PGA [m/s^2]``) unless given as ``unit``; lines starting with ``#`` are skipped."""
+        ``PGA [m/s^2]``) unless given as ``unit``; lines starting with ``#`` are skipped.
+
+        Examples
+        --------
+        >>> from rocking.analysis import HazardCurve
+        >>> with open("hazard.csv", "w") as f:
+        ...     _ = f.write("PGA (g),return period (years)\\n0.1,100\\n0.2,1000\\n0.4,10000\\n")
+        >>> curve = HazardCurve.from_csv("hazard.csv")
+        >>> curve
+        HazardCurve('hazard.csv', PGA in g, 3 points 0.1..0.4)
+        >>> curve.rate.tolist(), round(curve.im_at_return_period(1000), 6)  # rate = 1 / T
+        ([0.01, 0.001, 0.0001], 0.2)
+        """
         p = Path(path)
         if not p.is_file():
             raise ParameterError(f"path: no such hazard-curve file {str(path)!r}")
@@ -401,7 +456,22 @@ class HazardCurve:
         ``site``: a row index, or ``(lon, lat)`` in degrees (lon in [-180, 360), lat in
         [-90, 90]) for the nearest site on a sphere of radius 6371.0 km (haversine); its
         distance is ``metadata["site_distance_km"]`` and a nearest site farther than
-        ``max_distance_km`` is refused. PGA and SA(T) levels are in g."""
+        ``max_distance_km`` is refused. PGA and SA(T) levels are in g.
+
+        Examples
+        --------
+        The ILLUSTRATIVE example file shipped with the report (made-up power laws in the
+        engine's layout): site (0.1, 0) is ``1e-3 (PGA / 0.05 g)^-2.5``.
+
+        >>> from importlib.resources import files
+        >>> from rocking.analysis import HazardCurve
+        >>> path = files("rocking.report") / "data" / "hazard_curve-mean-PGA_illustrative.csv"
+        >>> curve = HazardCurve.from_openquake(path, site=(0.1, 0.0))  # the nearest site
+        >>> curve.im_name, curve.unit, curve.metadata["site_index"]
+        ('PGA', 'g', 1)
+        >>> round(curve.rate_at(0.05), 8), np.round(curve.tail_slopes, 6).tolist()
+        (0.001, [2.5, 2.5])
+        """
         p = Path(path)
         if not p.is_file():
             raise ParameterError(f"path: no such OpenQuake file {str(path)!r}")
@@ -519,7 +589,18 @@ class Risk:
     label: str = ""
 
     def probability_in(self, t_years):
-        """Probability in ``t_years`` (``1 - exp(-lambda t)``)."""
+        """Probability in ``t_years`` (``1 - exp(-lambda t)``), :func:`probability_in` of
+        this risk's ``annual_frequency``.
+
+        Examples
+        --------
+        >>> from rocking.analysis import Risk, probability_in
+        >>> r = Risk(annual_frequency=1 / 475, tail_share=0.0, probability_50=0.0999)
+        >>> r.probability_in(50) == probability_in(50, 1 / 475)
+        True
+        >>> np.round(r.probability_in([50, 475]), 4).tolist()  # 1 - exp(-t / 475)
+        [0.0999, 0.6321]
+        """
         return probability_in(t_years, self.annual_frequency)
 
 
