@@ -413,7 +413,19 @@ class Building:
     @classmethod
     def sdof(cls, period: float, damping: float = 0.05, name: str = "") -> Building:
         """One oscillator of period ``period`` (s) and damping ratio ``damping``: floor 1 is
-        its mass (``Gamma phi = 1``)."""
+        its mass (``Gamma phi = 1``).
+
+        Examples
+        --------
+        >>> import math
+        >>> from rocking.buildings import Building
+        >>> b = Building.sdof(0.5, damping=0.05)
+        >>> omega, zeta, gamma_phi = b.modal_factors(floor=1)
+        >>> round(float(omega[0]), 4), round(2 * math.pi / 0.5, 4)  # omega = 2 pi / T
+        (12.5664, 12.5664)
+        >>> zeta.tolist(), gamma_phi.tolist()
+        ([0.05], [1.0])
+        """
         T = positive("period", period, "s")
         return cls([T], damping, [1.0], shapes=[[0.0], [1.0]], heights=[0.0, 1.0],
                    name=name or f"SDOF building, T = {T:g} s", kind="sdof")
@@ -425,7 +437,24 @@ class Building:
         ``damping`` (one ratio or one per mode), ``shapes`` ``(n_floors, n_modes)`` at
         floors 1..N (the ground row is added) and ``participation`` ``Gamma_j`` (with the
         same normalisation of the shapes); ``heights``, optional, the height ratios ``z/H``
-        of floors 1..N (increasing, in (0, 1]) for ``modal_factors(height_ratio=...)``."""
+        of floors 1..N (increasing, in (0, 1]) for ``modal_factors(height_ratio=...)``.
+
+        Examples
+        --------
+        The modes of a two-storey model solved by hand (unit masses and storey
+        stiffnesses: ``K = [[2, -1], [-1, 1]]``, ``M = I``) give the floor factors of
+        :meth:`shear` for the same building:
+
+        >>> import numpy as np
+        >>> from scipy.linalg import eigh
+        >>> from rocking.buildings import Building
+        >>> lam, phi = eigh([[2.0, -1.0], [-1.0, 1.0]])
+        >>> gamma = phi.sum(axis=0) / (phi**2).sum(axis=0)  # (S2) with M = I
+        >>> b = Building.modal(2 * np.pi / np.sqrt(lam), 0.05, phi, gamma)
+        >>> ref = Building.shear(2, period=b.periods[0])
+        >>> b.modal_factors(floor=2)[2].round(6), ref.modal_factors(floor=2)[2].round(6)
+        (array([ 1.17082, -0.17082]), array([ 1.17082, -0.17082]))
+        """
         return cls(periods, damping, participation, shapes=shapes, heights=heights,
                    name=name or "modal building", kind="modal")
 
@@ -457,6 +486,20 @@ class Building:
         exact; ``phi_j`` has a largest ``|phi_j|`` of 1 over the floors and is positive at
         the roof, and ``Gamma_j`` is (S2). ``mass_matrix`` is ``diag(masses)`` and
         ``stiffness_matrix`` is ``K`` scaled so that ``T_1 = period``.
+
+        Examples
+        --------
+        Two uniform storeys: (S3) gives ``T_1 / T_2 = sin(3 pi/10) / sin(pi/10)``, the
+        golden ratio squared, and a first mode with ``phi_1 / phi_2`` its inverse:
+
+        >>> import math
+        >>> from rocking.buildings import Building
+        >>> b = Building.shear(2, period=0.5)
+        >>> golden = (1 + math.sqrt(5)) / 2
+        >>> round(float(b.periods[0] / b.periods[1]), 6), round(golden**2, 6)
+        (2.618034, 2.618034)
+        >>> round(float(b.shapes[1, 0] / b.shapes[2, 0]), 6), round(1 / golden, 6)
+        (0.618034, 0.618034)
         """
         n = as_int("n_storeys", n_storeys, 1, MAX_STOREYS)
         T1 = positive("period", period, "s")
@@ -515,6 +558,23 @@ class Building:
         nothing (their relative acceleration is small); the first 6 modes carry 96.6 % of
         the mass of the shear beam and 93.3 % of the flexural one (``sum Gamma_j^2 int
         phi_j^2``), and their periods reach ``T_1/11`` and ``T_1/85``.
+
+        Examples
+        --------
+        The two limits of the module docstring: the flexural cantilever (``alpha = 0``,
+        ``T_1/T_j = (gamma_j/gamma_1)^2 = 1, 6.267, 17.55``) and the shear cantilever
+        (``T_1/T_j = 2j - 1``, ``Gamma_1 phi_1(1) = 4/pi``).
+
+        >>> import math
+        >>> from rocking.buildings import Building
+        >>> wall = Building.continuous(1.0, alpha=0.0, n_modes=3)
+        >>> (1 / wall.periods).round(2)
+        array([ 1.  ,  6.27, 17.55])
+        >>> frame = Building.continuous(1.0, alpha=math.inf, n_modes=3)
+        >>> (1 / frame.periods).round(6), round(4 / math.pi, 6)
+        (array([1., 3., 5.]), 1.27324)
+        >>> round(float(frame.modal_factors(height_ratio=1.0)[2][0]), 6)
+        1.27324
         """
         T1 = positive("period", period, "s")
         a = _alpha(alpha)
@@ -557,7 +617,22 @@ class Building:
     def modal_factors(self, floor: int | None = None, height_ratio: float | None = None
                       ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``(omega_j, zeta_j, Gamma_j phi_j)`` at ``floor`` (0 is the ground) or at the
-        height ratio ``z/H`` (continuous models, or a discrete model's floor heights)."""
+        height ratio ``z/H`` (continuous models, or a discrete model's floor heights).
+
+        Examples
+        --------
+        With every mode the rigid-body vector is expanded exactly: ``sum_j Gamma_j phi_j =
+        1`` at each floor, 0 at the ground. A continuous building's floor 2 of 4 is its
+        height ratio 0.5:
+
+        >>> from rocking.buildings import Building
+        >>> b = Building.shear(4, period=0.8)
+        >>> [round(float(b.modal_factors(floor=k)[2].sum()), 6) for k in range(5)]
+        [0.0, 1.0, 1.0, 1.0, 1.0]
+        >>> c = Building.continuous(1.0, alpha=5.0, n_floors=4)
+        >>> bool(np.allclose(c.modal_factors(floor=2)[2], c.modal_factors(height_ratio=0.5)[2]))
+        True
+        """
         if (floor is None) == (height_ratio is None):
             raise ParameterError("floor or height_ratio: give exactly one")
         if floor is not None:

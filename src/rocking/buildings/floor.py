@@ -432,7 +432,23 @@ class FloorMotion(Motion):
 
     def spec(self) -> tuple[int, np.ndarray, np.ndarray]:
         """The floor record's spec carrying the vertical component, if any (the ground's
-        own spec at floor 0)."""
+        own spec at floor 0).
+
+        Examples
+        --------
+        Above the ground the spec is a record (``prm``: scale, step, number of samples)
+        of the floor samples; at floor 0 it is the ground's own spec, bit for bit.
+
+        >>> from rocking.buildings import Building, FloorMotion
+        >>> from rocking.motions import Sine
+        >>> ground = Sine(freq=2.0, amplitude=0.01, duration=1.0)
+        >>> kind, prm, samples = FloorMotion(ground, Building.sdof(0.5, 0.1), floor=1).spec()
+        >>> prm[:3].tolist() == [1.0, 0.5 / 256, samples.size], samples.size
+        (True, 6136)
+        >>> at_ground = FloorMotion(ground, Building.sdof(0.5, 0.1), floor=0).spec()
+        >>> all(np.array_equal(a, b) for a, b in zip(at_ground, ground.spec()))
+        True
+        """
         if self.identity:
             g = self.ground if self.scale == 1.0 else self.ground.scaled(self.scale)
             return g.spec()
@@ -461,7 +477,25 @@ class FloorMotion(Motion):
 
     def vertical_acceleration(self, t):
         """Vertical acceleration (m/s^2, positive upwards) at ``t`` (s): the ground's, or
-        its floor motion through ``vertical_building``; 0 without one."""
+        its floor motion through ``vertical_building``; 0 without one.
+
+        Examples
+        --------
+        Without a vertical building the ground's vertical component passes through
+        unchanged (times the load factor):
+
+        >>> from rocking.buildings import Building, FloorMotion
+        >>> from rocking.motions import GroundMotion, Sine
+        >>> ground = GroundMotion(Sine(2.0, 0.01, 1.0), Sine(4.0, 0.002, 1.0))
+        >>> floor = FloorMotion(ground, Building.sdof(0.5, 0.1), floor=1, scale=2.0)
+        >>> t = np.array([0.1, 0.3, 0.6])
+        >>> bool(np.allclose(floor.vertical_acceleration(t),
+        ...                  2.0 * ground.vertical.acceleration(t)))
+        True
+        >>> level = FloorMotion(Sine(2.0, 0.01, 1.0), Building.sdof(0.5, 0.1), floor=1)
+        >>> level.vertical_acceleration(0.3)  # no vertical component
+        0.0
+        """
         arr = np.asarray(t, dtype=np.float64)
         if self.vertical is None:
             return np.zeros(arr.shape) if arr.ndim else 0.0
