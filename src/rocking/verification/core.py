@@ -122,7 +122,23 @@ class Case:
     def passes(self, reference: float, computed: float, tolerance: float | None = None
                ) -> bool:
         """Whether ``computed`` agrees with ``reference`` within the tolerance (or the
-        given one; NaN fails)."""
+        given one; NaN fails), by the rule of ``tolerance_kind`` (:data:`TOLERANCE_KINDS`).
+
+        Examples
+        --------
+        Table II's alpha of specimen 1 is printed to 3 decimals (abs 0.0005 rad); Eq 2 on
+        Table I's 0.25 m x 1.0 m gives atan(0.25) = 0.2450 rad, within the documented
+        ``known_tolerance`` only:
+
+        >>> import math
+        >>> from rocking.verification import get_cases
+        >>> c = get_cases(["pena-table2-specimen1-alpha"])[0]
+        >>> eq2 = math.atan(0.125 / 0.5)
+        >>> c.passes(0.242, 0.2424), c.passes(0.242, eq2), c.passes(0.242, eq2, c.known_tolerance)
+        (True, False, True)
+        >>> c.passes(0.242, math.nan)
+        False
+        """
         tol = self.tolerance if tolerance is None else tolerance
         if not (math.isfinite(reference) and math.isfinite(computed)):
             return False
@@ -133,7 +149,17 @@ class Case:
 
     def status(self, reference: float, computed: float) -> str:
         """``PASS`` (within the tolerance), ``KNOWN`` (outside it, inside the documented
-        ``known_tolerance``) or ``FAIL``."""
+        ``known_tolerance``) or ``FAIL``.
+
+        Examples
+        --------
+        Table II's alpha of specimen 1 (0.242 rad, abs 0.0005 rad; documented bound 0.004):
+
+        >>> from rocking.verification import get_cases
+        >>> c = get_cases(["pena-table2-specimen1-alpha"])[0]
+        >>> [c.status(0.242, x) for x in (0.2424, 0.245, 0.25)]
+        ['PASS', 'KNOWN', 'FAIL']
+        """
         if self.passes(reference, computed):
             return "PASS"
         if self.known_tolerance is not None and self.passes(reference, computed,
@@ -143,7 +169,20 @@ class Case:
 
     def run(self) -> Row:
         """Evaluate the case: an error while computing is a failing row with its message,
-        never an exception."""
+        never an exception.
+
+        Examples
+        --------
+        >>> import dataclasses
+        >>> from rocking.verification import get_cases
+        >>> c = get_cases(["pena-table2-specimen2-alpha"])[0]
+        >>> row = c.run()
+        >>> row.status, row.reference, round(row.computed, 4)
+        ('PASS', 0.168, 0.1684)
+        >>> broken = dataclasses.replace(c, compute=lambda: 1 / 0).run()
+        >>> broken.status, broken.note
+        ('FAIL', 'computation failed: ZeroDivisionError: division by zero')
+        """
         t0 = time.perf_counter()
         note = ""
         try:
@@ -206,7 +245,21 @@ class Row:
         return d
 
     def to_dict(self) -> dict:
-        """JSON-ready (NaN as None)."""
+        """JSON-ready (NaN as None): the case's description, both values, the tolerance,
+        the status and the note.
+
+        Examples
+        --------
+        >>> import dataclasses, json
+        >>> from rocking.verification import get_cases
+        >>> row = get_cases(["pena-table2-specimen1-alpha"])[0].run()
+        >>> d = row.to_dict()
+        >>> d["case"], d["status"], d["reference"], round(d["difference"], 4)
+        ('pena-table2-specimen1-alpha', 'KNOWN', 0.242, 0.003)
+        >>> d = dataclasses.replace(row, computed=float("nan")).to_dict()
+        >>> d["computed"], json.loads(json.dumps(d, allow_nan=False))["difference"]
+        (None, None)
+        """
         def num(x):
             return None if not math.isfinite(x) else x
 
@@ -280,10 +333,32 @@ class VerificationTable:
         return [r for r in self.rows if not r.passed]
 
     def to_dicts(self) -> list[dict]:
+        """One :meth:`Row.to_dict` per case, in order (JSON-ready: ``rocking verify --json``).
+
+        Examples
+        --------
+        >>> from rocking.verification import run_cases
+        >>> table = run_cases(["pena-table2-specimen1-alpha", "pena-table2-specimen2-alpha"])
+        >>> [(d["case"], d["status"]) for d in table.to_dicts()]
+        [('pena-table2-specimen1-alpha', 'KNOWN'), ('pena-table2-specimen2-alpha', 'PASS')]
+        """
         return [r.to_dict() for r in self.rows]
 
     def to_dataframe(self):
-        """A :class:`pandas.DataFrame`, one row per case (the keys of :meth:`Row.to_dict`)."""
+        """A :class:`pandas.DataFrame`, one row per case (the keys of :meth:`Row.to_dict`).
+
+        Examples
+        --------
+        >>> from rocking.verification import run_cases
+        >>> table = run_cases(["pena-table2-specimen1-alpha", "pena-table2-specimen2-alpha"])
+        >>> df = table.to_dataframe()
+        >>> df[["case", "status", "reference"]]
+                                  case status  reference
+        0  pena-table2-specimen1-alpha  KNOWN      0.242
+        1  pena-table2-specimen2-alpha   PASS      0.168
+        >>> list(df.columns) == list(table.rows[0].to_dict())
+        True
+        """
         import pandas as pd
 
         return pd.DataFrame(self.to_dicts())
@@ -291,7 +366,18 @@ class VerificationTable:
     def to_text(self) -> str:
         """The plain-text table of ``rocking verify``: case, source, reference, computed,
         unit, tolerance, pass (PASS, KNOWN: a documented disagreement, or FAIL); the notes
-        of the failing and the known-difference cases below it."""
+        of the failing and the known-difference cases below it.
+
+        Examples
+        --------
+        >>> from rocking.verification import run_cases
+        >>> table = run_cases(["pena-table2-specimen1-alpha", "pena-table2-specimen2-alpha"])
+        >>> lines = table.to_text().splitlines()
+        >>> print(lines[0])
+        case                         source              reference  computed      unit  ...
+        >>> print(lines[5])
+        1 of 2 cases pass; 1 KNOWN (documented disagreements).
+        """
         head = ("case", "source", "reference", "computed", "unit", "tolerance", "pass")
         body = [(r.case.name, short_source(r.case.source), _fmt(r.reference),
                  _fmt(r.computed), r.case.unit, r.case.tolerance_text, r.status)
@@ -317,7 +403,18 @@ class VerificationTable:
     def to_markdown(self, details: bool = True) -> str:
         """A Markdown table (case, source, what, reference, computed, unit, tolerance,
         pass), followed, with ``details``, by one paragraph per case: its full source and
-        how the reference was obtained. Used for the documentation's verification page."""
+        how the reference was obtained. Used for the documentation's verification page.
+
+        Examples
+        --------
+        >>> from rocking.verification import run_cases
+        >>> table = run_cases(["pena-table2-specimen1-alpha", "pena-table2-specimen2-alpha"])
+        >>> lines = table.to_markdown(details=False).splitlines()
+        >>> print(lines[0])
+        | case | source | what | reference | computed | unit | tolerance | pass |
+        >>> len(lines), lines[2].endswith("| KNOWN |"), lines[3].endswith("| PASS |")
+        (4, True, True)
+        """
         lines = ["| case | source | what | reference | computed | unit | tolerance | pass |",
                  "|---|---|---|---|---|---|---|---|"]
         for r in self.rows:
@@ -344,7 +441,18 @@ class VerificationTable:
 
     def to_rst(self, details: bool = True) -> str:
         """The same as :meth:`to_markdown` in reStructuredText: a ``list-table``, then, with
-        ``details``, one definition per case (source, reference, known difference)."""
+        ``details``, one definition per case (source, reference, known difference).
+
+        Examples
+        --------
+        >>> from rocking.verification import run_cases
+        >>> table = run_cases(["pena-table2-specimen1-alpha", "pena-table2-specimen2-alpha"])
+        >>> lines = table.to_rst(details=False).splitlines()
+        >>> lines[:2], lines[4:6]
+        (['.. list-table::', '   :header-rows: 1'], ['   * - case', '     - source'])
+        >>> ".. _verify-pena-table2-specimen2-alpha:" in table.to_rst()
+        True
+        """
         cols = ("case", "source", "reference", "computed", "unit", "tolerance", "pass")
         lines = [".. list-table::", "   :header-rows: 1", "   :widths: auto", ""]
         lines.append("   * - " + "\n     - ".join(cols))
