@@ -116,7 +116,20 @@ class FourierSpectrum:
 
     @property
     def spectrum(self):
-        """The spectrum as a DataFrame with columns ``freq`` (Hz) and ``amplitude``."""
+        """The spectrum as a DataFrame with columns ``freq`` (Hz) and ``amplitude``
+        (also the method ``to_dataframe()``).
+
+        Examples
+        --------
+        >>> from rocking.analysis import fourier_spectrum
+        >>> t = np.arange(1000) * 0.01  # s: 10 s at 100 Hz
+        >>> fs = fourier_spectrum((t, 0.3 * np.sin(2 * np.pi * 2.0 * t)), fmax=10.0)
+        >>> df = fs.to_dataframe()
+        >>> df.columns.tolist(), df.equals(fs.spectrum)
+        (['freq', 'amplitude'], True)
+        >>> round(float(df.loc[df["amplitude"].idxmax(), "freq"]), 2)  # the sine's 2 Hz
+        2.0
+        """
 
         return pd.DataFrame({"freq": self.freq, "amplitude": self.amplitude})
 
@@ -133,7 +146,21 @@ class FourierSpectrum:
         return float(self.peaks["amplitude"].iloc[0]) if len(self.peaks) else math.nan
 
     def summary(self) -> dict:
-        """JSON-ready: the grid, the resolution ``1/T`` and the peaks."""
+        """JSON-ready: the grid, the resolution ``1/T`` and the peaks.
+
+        Examples
+        --------
+        >>> from rocking.analysis import fourier_spectrum
+        >>> t = np.arange(1000) * 0.01  # s: 10 s at 100 Hz
+        >>> fs = fourier_spectrum((t, 0.3 * np.sin(2 * np.pi * 2.0 * t)), fmax=10.0)
+        >>> s = fs.summary()
+        >>> [round(s[k], 6) for k in ("dt", "duration", "resolution")]  # 1/T = 0.1 Hz
+        [0.01, 10.0, 0.1]
+        >>> s["window"], s["resampled"]
+        ('hann', False)
+        >>> [{k: round(v, 4) for k, v in pk.items()} for pk in s["peaks"]]
+        [{'freq': 2.0, 'amplitude': 0.3}]
+        """
 
         return jsonable({
             "dt": self.dt, "duration": self.duration, "resolution": 1.0 / self.duration,
@@ -144,7 +171,20 @@ class FourierSpectrum:
         })
 
     def to_dict(self) -> dict:
-        """The summary plus the spectrum arrays, JSON-ready."""
+        """The summary plus the spectrum arrays, JSON-ready.
+
+        Examples
+        --------
+        >>> from rocking.analysis import fourier_spectrum
+        >>> t = np.arange(1000) * 0.01  # s: 10 s at 100 Hz
+        >>> fs = fourier_spectrum((t, 0.3 * np.sin(2 * np.pi * 2.0 * t)), fmax=10.0)
+        >>> import json
+        >>> d = json.loads(json.dumps(fs.to_dict()))
+        >>> len(d["freq"]) == len(d["amplitude"]) == fs.freq.size, d["freq"][0]
+        (True, 0.0)
+        >>> round(max(d["amplitude"]), 4)  # the sine's amplitude
+        0.3
+        """
 
         d = self.summary()
         d["freq"] = jsonable(self.freq)
@@ -153,7 +193,20 @@ class FourierSpectrum:
 
     def plot(self, ax=None, *, fmax: float | None = None, label: str | None = None,
              annotate: bool = True, **kw):
-        """Plot the amplitude against frequency, the peaks marked. Returns the Axes."""
+        """Plot the amplitude against frequency, the peaks marked. Returns the Axes.
+
+        Examples
+        --------
+        >>> from rocking.analysis import fourier_spectrum
+        >>> t = np.arange(1000) * 0.01  # s: 10 s at 100 Hz
+        >>> fs = fourier_spectrum((t, 0.3 * np.sin(2 * np.pi * 2.0 * t)), fmax=10.0)
+        >>> ax = fs.plot(fmax=5.0)
+        >>> ax.get_xlabel(), [float(v) for v in ax.get_xlim()]
+        ('frequency f (Hz)', [0.0, 5.0])
+        >>> [a.get_text() for a in ax.texts]  # the peaks, annotated
+        ['2 Hz']
+        >>> import matplotlib.pyplot as plt; plt.close("all")
+        """
 
         if ax is None:
             _, ax = new_axes()
