@@ -182,7 +182,19 @@ class HorizontalPair:
                    dt: float | None = None, azimuths="auto", name: str = "") -> HorizontalPair:
         """Read the two horizontal components (and the vertical one) from files (as
         :meth:`Record.from_file`, the same ``units``). ``azimuths="auto"``: from the
-        files' headers when both state a number (the NGA component angle), else None."""
+        files' headers when both state a number (the NGA component angle), else None.
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair, Record, write_csv
+        >>> ns = write_csv(Record(np.array([0.0, 1.0, -1.0, 0.0]), 0.01), "ns.csv")
+        >>> ew = write_csv(Record(np.array([0.0, 0.5, 0.5, 0.0]), 0.01), "ew.csv")
+        >>> pair = HorizontalPair.from_files(ns, ew, units="m/s^2")
+        >>> pair.azimuths, pair.handedness  # no angles in the files: second 90 deg ccw
+        (None, -1)
+        >>> pair.along(np.pi / 2).values.tolist()  # phi = 90 deg: the second component
+        [0.0, 0.5, 0.5, 0.0]
+        """
         r1 = Record.from_file(first, units=units, dt=dt)
         r2 = Record.from_file(second, units=units, dt=dt)
         v = Record.from_file(vertical, units=units, dt=dt) if vertical is not None else None
@@ -194,7 +206,17 @@ class HorizontalPair:
         ``"duzce"``; :func:`rocking.motions.builtin_sets`) with its vertical component
         unless ``vertical=False``, or two built-in record names (``"Rinaldi228"``,
         ``"Rinaldi318"``; ``vertical``: a record name or False). The azimuths come from
-        the records' headers."""
+        the records' headers.
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair
+        >>> pair = HorizontalPair.builtin("Rinaldi228", "Rinaldi318")  # no vertical
+        >>> [round(a, 6) for a in pair.azimuths_deg], pair.handedness, pair.vertical
+        ([228.0, 318.0], 1, None)
+        >>> HorizontalPair.builtin("rinaldi").vertical.name  # a set: with its vertical
+        'RinaldiUP'
+        """
         from .io import builtin_sets
 
         sets = builtin_sets()
@@ -239,7 +261,18 @@ class HorizontalPair:
 
     # ---------------------------------------------------------------- projection
     def weights(self, phi, orientation=None) -> tuple[float, float]:
-        """``(w1, w2)`` with ``along(phi) = w1 a1 + w2 a2`` (module docstring)."""
+        """``(w1, w2)`` with ``along(phi) = w1 a1 + w2 a2`` (module docstring).
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair, Record
+        >>> ns, ew = Record(np.array([0.0, 1.0]), 0.01), Record(np.array([0.0, 2.0]), 0.01)
+        >>> pair = HorizontalPair(ns, ew, azimuths=("0deg", "90deg"))  # N, E: clockwise
+        >>> pair.weights(0.0), pair.weights("-90deg")  # bearings 0 and 90 deg
+        ((1.0, 0.0), (0.0, 1.0))
+        >>> [round(w, 4) for w in pair.weights("30deg")]  # bearing -30 deg: cos 30, cos 120
+        [0.866, -0.5]
+        """
         p = angle("phi", phi)
         az1 = 0.0 if self.azimuths is None else self.azimuths[0]
         o = az1 if orientation is None else angle("orientation", orientation)
@@ -251,7 +284,19 @@ class HorizontalPair:
     def along(self, phi, orientation=None) -> Record:
         """The horizontal acceleration along the object's direction ``phi`` (rad) as a
         :class:`Record` (m/s^2, the pair's time step; module docstring for
-        ``orientation``)."""
+        ``orientation``).
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair
+        >>> pair = HorizontalPair.builtin("rinaldi")  # Rinaldi228 / Rinaldi318
+        >>> r = pair.along("45deg")
+        >>> w1, w2 = pair.weights("45deg")
+        >>> r.name, bool(np.allclose(r.values, w1 * pair.a1 + w2 * pair.a2))
+        ('rinaldi @ 45.0 deg', True)
+        >>> bool(np.allclose(pair.along("225deg").values, -r.values))  # phi + 180 deg: -a
+        True
+        """
         w1, w2 = self.weights(phi, orientation)
         if w2 == 0.0:
             acc = w1 * self.a1
@@ -265,7 +310,18 @@ class HorizontalPair:
 
     def motion(self, phi, orientation=None, *, vertical: bool = True) -> Motion:
         """:meth:`along` with the vertical component (a :class:`GroundMotion`) when the
-        pair has one and ``vertical`` is True; else the :class:`Record`."""
+        pair has one and ``vertical`` is True; else the :class:`Record`.
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair
+        >>> pair = HorizontalPair.builtin("rinaldi")
+        >>> m = pair.motion(0.0)  # phi = 0: the first component, with the vertical one
+        >>> type(m).__name__, m.vertical.name, bool(np.array_equal(m.horizontal.values, pair.a1))
+        ('GroundMotion', 'RinaldiUP', True)
+        >>> type(pair.motion(0.0, vertical=False)).__name__
+        'Record'
+        """
         h = self.along(phi, orientation)
         return GroundMotion(h, self.vertical) if vertical and self.vertical is not None \
             else h
@@ -276,7 +332,23 @@ class HorizontalPair:
         bearing ``A1 + angle_``. Turning a clockwise pair by 90 deg makes the second
         component the first (and minus the first the second). A pair without azimuths
         gets those of its ground frame (``A1 = 0``, ``A2 = -90`` deg) turned by
-        ``angle_``."""
+        ``angle_``.
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair
+        >>> pair = HorizontalPair.builtin("rinaldi")  # 228 / 318 deg, clockwise
+        >>> r = pair.rotated("90deg")
+        >>> [round(a) for a in r.azimuths_deg]
+        [318, 48]
+        >>> bool(np.array_equal(r.a1, pair.a2)), bool(np.array_equal(r.a2, -pair.a1))
+        (True, True)
+        >>> r30 = pair.rotated("30deg")  # the first: the projection on bearing 228 + 30 deg
+        >>> bool(np.allclose(r30.a1, pair.along("-30deg").values))
+        True
+        >>> round(r30.peak_resultant, 10) == round(pair.peak_resultant, 10)  # same vector
+        True
+        """
         d = angle("angle", angle_)
         az = self.azimuths if self.azimuths is not None else (0.0, -0.5 * math.pi)
         h = self.handedness
@@ -293,7 +365,18 @@ class HorizontalPair:
                               name=f"{self.name} rotated {math.degrees(d):g} deg")
 
     def scaled(self, factor: float) -> HorizontalPair:
-        """Every component (the vertical one too) times ``factor``."""
+        """Every component (the vertical one too) times ``factor``.
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair
+        >>> pair = HorizontalPair.builtin("rinaldi")
+        >>> half = pair.scaled(0.5)
+        >>> [round(b / a, 12) for a, b in zip(pair.pga_components, half.pga_components)]
+        [0.5, 0.5]
+        >>> round(half.vertical.pga / pair.vertical.pga, 12)
+        0.5
+        """
         from .._validate import as_float
 
         f = as_float("factor", factor)
