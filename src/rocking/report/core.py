@@ -211,14 +211,41 @@ class Context:
         return 70 if self.quick else 120
 
     def path(self, name: str) -> Path:
-        """Absolute path of this section's file ``name`` (prefixed with the section id)."""
+        """Path of this section's file ``name`` in ``out``, prefixed with the section id;
+        the name is added to :attr:`files` (once), whether or not the file is written.
+
+        Examples
+        --------
+        >>> from pathlib import Path
+        >>> from rocking.report import Context
+        >>> ctx = Context(out=Path("report"), quick=True, section_id="table2")
+        >>> ctx.path("notes.txt").as_posix(), ctx.files
+        ('report/table2_notes.txt', ['table2_notes.txt'])
+        """
         fname = f"{self.section_id}_{name}"
         if fname not in self.files:
             self.files.append(fname)
         return self.out / fname
 
     def save_csv(self, df, name: str, **kw) -> str:
-        """Write a pandas DataFrame as ``<id>_<name>.csv``; returns the relative name."""
+        """Write a pandas DataFrame as ``<id>_<name>.csv`` (atomically; ``**kw`` go to
+        :meth:`pandas.DataFrame.to_csv`, ``index=False`` by default); returns the relative
+        name.
+
+        Examples
+        --------
+        Specimen 2's alpha = atan(0.085/0.5) (Eq 2), written and read back:
+
+        >>> import math
+        >>> from pathlib import Path
+        >>> import pandas as pd
+        >>> from rocking.report import Context
+        >>> ctx = Context(out=Path("."), quick=True, section_id="table2")
+        >>> df = pd.DataFrame({"specimen": [2], "alpha": [round(math.atan(0.085 / 0.5), 4)]})
+        >>> name = ctx.save_csv(df, "alpha")
+        >>> name, pd.read_csv(name).to_dict("records")
+        ('table2_alpha.csv', [{'specimen': 2, 'alpha': 0.1684}])
+        """
         kw.setdefault("index", False)
         p = self.path(f"{name}.csv")
         with atomic_path(p) as tmp:
@@ -226,14 +253,48 @@ class Context:
         return p.name
 
     def save_figure(self, fig, name: str, caption: str, alt: str = "") -> str:
-        """Save a matplotlib Figure as ``<id>_<name>.png``; returns the ``<figure>`` HTML."""
+        """Save a matplotlib Figure as ``<id>_<name>.png`` at :attr:`dpi` (atomically);
+        returns the ``<figure>`` HTML (the caption doubles as the image's alt text unless
+        ``alt`` is given).
+
+        Examples
+        --------
+        A 3 in x 2 in figure in quick mode (70 dpi) is a 210 x 140 pixel PNG:
+
+        >>> from pathlib import Path
+        >>> import matplotlib.image
+        >>> from matplotlib.figure import Figure
+        >>> from rocking.report import Context
+        >>> ctx = Context(out=Path("."), quick=True, section_id="demo")
+        >>> fig = Figure(figsize=(3, 2))
+        >>> _ = fig.subplots().plot([0.0, 1.0], [0.0, 0.1])
+        >>> html = ctx.save_figure(fig, "theta", caption="Rocking angle")
+        >>> html.startswith('<figure><a href="demo_theta.png">'), "Rocking angle" in html
+        (True, True)
+        >>> matplotlib.image.imread("demo_theta.png").shape
+        (140, 210, 4)
+        """
         p = self.path(f"{name}.png")
         with atomic_path(p) as tmp:
             fig.savefig(tmp, dpi=self.dpi)
         return H.figure(p.name, caption, alt)
 
     def files_html(self) -> str:
-        """Links to every file this section wrote so far."""
+        """Links to every file this section wrote so far (an empty string if none).
+
+        Examples
+        --------
+        >>> from pathlib import Path
+        >>> import pandas as pd
+        >>> from rocking.report import Context
+        >>> ctx = Context(out=Path("."), quick=True, section_id="demo")
+        >>> ctx.files_html()
+        ''
+        >>> ctx.save_csv(pd.DataFrame({"specimen": [2]}), "ids")
+        'demo_ids.csv'
+        >>> ctx.files_html()
+        '<p class="small files">Files: <a href="demo_ids.csv">demo_ids.csv</a></p>'
+        """
         return H.files_line(self.files) if self.files else ""
 
 
