@@ -201,11 +201,46 @@ class MonteCarloResult:
         return wilson_interval(self.n_overturned, self.n, self.level)
 
     def quantiles(self, q=(0.05, 0.5, 0.95)) -> pd.Series:
-        """Quantiles of max ``|theta|`` / alpha over the samples that did not overturn."""
+        """Quantiles of max ``|theta|`` / alpha over the samples that did not overturn.
+
+        Examples
+        --------
+        Free rocking from a random initial tilt: the largest angle is the initial one, so
+        the quantiles are those of ``theta0 / alpha``.
+
+        >>> import rocking
+        >>> from rocking.analysis import monte_carlo
+        >>> from rocking.motions import OneSine
+        >>> block, still = rocking.specimen(2), OneSine(0.0, length=0.5)  # no ground motion
+        >>> res = monte_carlo(block, still, {"theta0": {"dist": "uniform", "low": 0.0,
+        ...                   "high": 0.5 * block.alpha}}, n=20, duration=1.0)
+        >>> q = res.quantiles([0.05, 0.5, 0.95])
+        >>> bool(np.allclose(q, (res.samples["theta0"] / block.alpha).quantile([0.05, 0.5, 0.95])))
+        True
+        >>> bool(q.max() < 0.5)  # theta0 < alpha / 2
+        True
+        """
         s = self.samples.loc[~self.samples["overturned"], "max_abs_theta_over_alpha"]
         return s.quantile(list(q))
 
     def summary(self) -> dict:
+        """JSON-ready: the counts, P(overturn) and its Wilson interval, the quantiles of max
+        ``|theta|`` / alpha (:meth:`quantiles`) and the run's ``info``.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.analysis import monte_carlo
+        >>> from rocking.motions import OneSine
+        >>> block, still = rocking.specimen(2), OneSine(0.0, length=0.5)  # no ground motion
+        >>> res = monte_carlo(block, still, {"theta0": {"dist": "uniform", "low": 0.0,
+        ...                   "high": 0.5 * block.alpha}}, n=20, duration=1.0)
+        >>> s = res.summary()  # free rocking from theta0 < alpha / 2: none overturns
+        >>> s["n"], s["n_overturned"], s["p_overturn"], round(s["ci_high"], 3)
+        (20, 0, 0.0, 0.161)
+        >>> s["max_abs_theta_over_alpha_median"] == float(res.quantiles().iloc[1])
+        True
+        """
         lo, hi = self.ci
         q = self.quantiles()
         return jsonable({"n": self.n, "n_overturned": self.n_overturned,
@@ -219,12 +254,46 @@ class MonteCarloResult:
                          **self.info})
 
     def to_dict(self) -> dict:
+        """Everything, JSON-ready: :meth:`summary` and the ``samples`` table (a list per
+        column).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.analysis import monte_carlo
+        >>> from rocking.motions import OneSine
+        >>> block, still = rocking.specimen(2), OneSine(0.0, length=0.5)  # no ground motion
+        >>> res = monte_carlo(block, still, {"theta0": {"dist": "uniform", "low": 0.0,
+        ...                   "high": 0.5 * block.alpha}}, n=20, duration=1.0)
+        >>> import json
+        >>> d = json.loads(json.dumps(res.to_dict()))
+        >>> len(d["samples"]["theta0"]), d["n"]
+        (20, 20)
+        >>> any(d["samples"]["overturned"])
+        False
+        """
         d = self.summary()
         d["samples"] = jsonable(self.samples.to_dict(orient="list"))
         return d
 
     def plot(self, ax=None):
-        """Histogram of max ``|theta|`` / alpha of the surviving samples, with P(overturn)."""
+        """Histogram of max ``|theta|`` / alpha of the surviving samples, with P(overturn).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.analysis import monte_carlo
+        >>> from rocking.motions import OneSine
+        >>> block, still = rocking.specimen(2), OneSine(0.0, length=0.5)  # no ground motion
+        >>> res = monte_carlo(block, still, {"theta0": {"dist": "uniform", "low": 0.0,
+        ...                   "high": 0.5 * block.alpha}}, n=20, duration=1.0)
+        >>> ax = res.plot()
+        >>> ax.get_title()  # P(overturn) and its Wilson interval
+        'P(overturn) = 0.000 [0.000, 0.161] (95% Wilson), n = 20'
+        >>> int(sum(p.get_height() for p in ax.patches))  # every surviving sample counted
+        20
+        >>> import matplotlib.pyplot as plt; plt.close("all")
+        """
 
         if ax is None:
             _, ax = figure()
