@@ -108,7 +108,23 @@ class DirectionSweep:
     def plot(self, ax=None, *, label: str | None = None, mirror: bool = True):
         """max ``|theta|`` / alpha against ``phi`` on polar axes (overturned directions at
         the rim, marked x); ``mirror`` also draws ``phi + 180`` deg (the same response).
-        Returns the figure."""
+        Returns the figure.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.analysis import direction_sweep
+        >>> from rocking.motions import HorizontalPair, Record
+        >>> pulse = np.sin(2 * np.pi * np.arange(0.0, 1.0, 0.005))  # a 1 Hz one-sine, m/s^2
+        >>> pair = HorizontalPair(Record(3.0 * pulse, 0.005), Record(pulse, 0.005))
+        >>> sw = direction_sweep(rocking.specimen(2), pair, 4, duration=5.0)
+        >>> fig = sw.plot()  # 4 directions and their mirrors phi + 180 deg, closed
+        >>> ax = fig.axes[0]
+        >>> ax.name, len(ax.lines[0].get_xdata())
+        ('polar', 9)
+        >>> int(sw.table["overturned"].sum()), len(ax.lines[1].get_xdata())  # x at the rim
+        (2, 4)
+        """
         if ax is None:
             from matplotlib.figure import Figure
 
