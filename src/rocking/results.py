@@ -129,6 +129,22 @@ class Response:
 
         Half-cycles are delimited by the impacts; each peak is refined by a parabola
         through the three output samples around it (accuracy ~ (omega dt_out)^2).
+
+        Examples
+        --------
+        Free rocking released at ``theta0 = alpha/2`` (linearised Eq 1): the impact
+        multiplies ``omega`` by ``mu``, so the next peak is ``alpha (1 - sqrt(1 - (3/4)
+        mu^2))``, on the other side.
+
+        >>> import math
+        >>> import rocking
+        >>> block = rocking.specimen(2)
+        >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=1.0, linear=True)
+        >>> times, peaks = r.half_cycle_peaks()
+        >>> round(float(peaks[0] / block.alpha), 4), round(float(peaks[1] / block.alpha), 4)
+        (0.5, -0.4417)
+        >>> round(1 - math.sqrt(1 - 0.75 * block.mu**2), 4)
+        0.4417
         """
         edges = np.concatenate(([self.t[0] if self.t.size else 0.0], self.impact_times,
                                 [self.t[-1] if self.t.size else 0.0]))
@@ -156,7 +172,23 @@ class Response:
 
     def summary(self) -> dict:
         """JSON-ready summary (SI units; ``max_abs_theta_deg`` for convenience; NaN times
-        as None)."""
+        as None).
+
+        Examples
+        --------
+        Released at ``alpha/2``, free rocking never exceeds it; the block did not
+        overturn, so its ``overturn_time`` (NaN) is written as None:
+
+        >>> import math
+        >>> import rocking
+        >>> block = rocking.specimen(2)
+        >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=1.0, linear=True)
+        >>> s = r.summary()
+        >>> round(s["max_abs_theta_deg"], 4), round(math.degrees(0.5 * block.alpha), 4)
+        (4.8128, 4.8128)
+        >>> s["overturned"], s["overturn_time"], s["n_impacts"], s["block"]["mu"]
+        (False, None, 2, 0.958)
+        """
         d = {
             "model": self.model,
             "max_abs_theta": float(self.max_abs_theta),
@@ -179,7 +211,20 @@ class Response:
         return jsonable(d)
 
     def to_dict(self) -> dict:
-        """Everything, JSON-ready: the summary, ``info`` and the time histories."""
+        """Everything, JSON-ready: the summary, ``info`` and the time histories.
+
+        Examples
+        --------
+        >>> import json
+        >>> import rocking
+        >>> block = rocking.specimen(2)
+        >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=1.0, linear=True)
+        >>> d = json.loads(json.dumps(r.to_dict()))  # plain JSON, round trip
+        >>> len(d["t"]) == len(d["theta"]) == r.t.size, d["t"][-1]
+        (True, 1.0)
+        >>> d["theta"] == r.theta.tolist(), d["overturn_time"]  # NaN -> None
+        (True, None)
+        """
         d = self.summary()
         d["info"] = jsonable({k: v for k, v in self.info.items()})
         d["impact_times"] = jsonable(self.impact_times)
@@ -189,26 +234,82 @@ class Response:
         return d
 
     def to_dataframe(self):
-        """``pandas.DataFrame`` with columns ``t``, ``theta``, ``omega``."""
+        """``pandas.DataFrame`` with columns ``t``, ``theta``, ``omega``.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> block = rocking.specimen(2)
+        >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=1.0, linear=True)
+        >>> df = r.to_dataframe()
+        >>> df.columns.tolist(), len(df)  # 1 s at the default 2 ms
+        (['t', 'theta', 'omega'], 501)
+        >>> round(float(df["theta"].abs().max() / block.alpha), 4)  # released at alpha/2
+        0.5
+        """
         import pandas as pd  # lazy: keeps `import rocking` at 0.2 s (pandas: 0.45 s)
 
         return pd.DataFrame({"t": self.t, "theta": self.theta, "omega": self.omega})
 
     def to_csv(self, path) -> Path:
-        """Write ``t, theta, omega`` (s, rad, rad/s) to ``path`` as CSV."""
+        """Write ``t, theta, omega`` (s, rad, rad/s) to ``path`` as CSV.
+
+        Examples
+        --------
+        >>> import pandas as pd
+        >>> import rocking
+        >>> block = rocking.specimen(2)
+        >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=1.0, linear=True)
+        >>> r.to_csv("free_rocking.csv").name  # the path written
+        'free_rocking.csv'
+        >>> back = pd.read_csv("free_rocking.csv")
+        >>> back.columns.tolist(), bool(np.allclose(back["theta"], r.theta, rtol=1e-9))
+        (['t', 'theta', 'omega'], True)
+        """
         path = Path(path)
         with atomic_path(path) as tmp:
             self.to_dataframe().to_csv(tmp, index=False, float_format="%.10g")
         return path
 
     def to_json(self, path) -> Path:
-        """Write :meth:`summary` to ``path``."""
+        """Write :meth:`summary` to ``path``.
+
+        Examples
+        --------
+        >>> import json
+        >>> import rocking
+        >>> block = rocking.specimen(2)
+        >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=1.0, linear=True)
+        >>> path = r.to_json("free_rocking.json")
+        >>> with open(path) as f:
+        ...     saved = json.load(f)
+        >>> saved == r.summary(), saved["overturned"], saved["n_impacts"]
+        (True, False, 2)
+        """
         path = Path(path)
         atomic_write(path, json.dumps(self.summary(), indent=2))
         return path
 
     def plot(self, ax=None, **kw):
-        """Plot theta(t) in degrees; returns the matplotlib Axes."""
+        """Plot theta(t) in degrees; returns the matplotlib Axes.
+
+        Keyword arguments go to :func:`rocking.plot.plot_response` (``deg``, ``label``,
+        ``show_alpha``, ``title``, and ``Axes.plot``'s).
+
+        Examples
+        --------
+        >>> import math
+        >>> import matplotlib.pyplot as plt
+        >>> import rocking
+        >>> block = rocking.specimen(2)
+        >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=1.0, linear=True)
+        >>> ax = r.plot()
+        >>> ax.get_xlabel(), round(float(max(ax.lines[0].get_ydata())), 3)  # alpha/2 in degrees
+        ('time t (s)', 4.813)
+        >>> round(math.degrees(0.5 * block.alpha), 3)
+        4.813
+        >>> plt.close("all")
+        """
         from .plot import plot_response  # lazy: plot imports the motions (numba)
 
         return plot_response(self, ax=ax, **kw)
@@ -248,13 +349,49 @@ class DEMResponse(Response):
     :mod:`rocking.models.dem`."""
 
     def to_dataframe(self):
-        """``t``, ``theta``, ``omega``, ``x``, ``y`` (top block)."""
+        """``t``, ``theta``, ``omega``, ``x``, ``y`` (top block).
+
+        Examples
+        --------
+        Released at ``theta0 = alpha/2`` about its corner, the centroid starts at ``x =
+        R (sin(alpha - theta0) - sin(alpha))``, ``y = R (cos(alpha - theta0) -
+        cos(alpha))`` (up to the contact springs' settlement, ~1e-7 m):
+
+        >>> import math
+        >>> import rocking
+        >>> block = rocking.specimen(2)
+        >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=0.5, model="dem")
+        >>> df = r.to_dataframe()
+        >>> df.columns.tolist()
+        ['t', 'theta', 'omega', 'x', 'y']
+        >>> a, R = block.alpha, block.R
+        >>> round(float(df["x"][0]), 4), round(R * (math.sin(a / 2) - math.sin(a)), 4)
+        (-0.0423, -0.0423)
+        >>> round(float(df["y"][0]), 4), round(R * (math.cos(a / 2) - math.cos(a)), 4)
+        (0.0054, 0.0054)
+        """
         df = super().to_dataframe()
         df["x"] = self.x
         df["y"] = self.y
         return df
 
     def to_dict(self) -> dict:
+        """Everything of :meth:`Response.to_dict`, JSON-ready, with ``x``, ``y`` and the
+        histories of every block of a stack (``theta_all``, ``x_all``, ``y_all``; the
+        ``contact_forces`` if recorded).
+
+        Examples
+        --------
+        >>> import json
+        >>> import rocking
+        >>> block = rocking.specimen(2)
+        >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=0.5, model="dem")
+        >>> d = json.loads(json.dumps(r.to_dict()))  # plain JSON, round trip
+        >>> len(d["theta_all"]), len(d["theta_all"][0]) == len(d["t"]) == len(d["x"])
+        (1, True)
+        >>> d["theta_all"][0] == d["theta"]  # one block: the stack is the block
+        True
+        """
         d = super().to_dict()
         for k in ("x", "y", "theta_all", "x_all", "y_all"):
             d[k] = jsonable(getattr(self, k))
@@ -339,7 +476,24 @@ class BatchResponse:
         return ~np.isnan(self.uplift_time) | (self.max_abs_theta > 0.0)
 
     def to_dataframe(self):
-        """One row per motion with the summary quantities."""
+        """One row per motion with the summary quantities (and the model's own
+        :attr:`outputs`).
+
+        Examples
+        --------
+        Two one-sine pulses, below and above the uplift acceleration ``g tan(alpha)``:
+
+        >>> import math
+        >>> import rocking
+        >>> from rocking.motions import OneSine
+        >>> block = rocking.specimen(2)
+        >>> a_up = rocking.G * math.tan(block.alpha)  # uplift acceleration
+        >>> res = rocking.simulate_many(block, [OneSine(0.9 * a_up, 0.5),
+        ...                                     OneSine(1.5 * a_up, 0.5)], duration=3.0)
+        >>> df = res.to_dataframe()
+        >>> len(df), df["overturned"].tolist(), df["uplift_time"].isna().tolist()
+        (2, [False, True], [True, False])
+        """
         import pandas as pd  # lazy: keeps `import rocking` at 0.2 s (pandas: 0.45 s)
 
         return pd.DataFrame({
@@ -356,7 +510,26 @@ class BatchResponse:
 
     def summary(self) -> dict:
         """JSON-ready statistics over the batch: counts, the overturned fraction, and the
-        median and largest ``max_abs_theta`` of the runs that did not overturn."""
+        median and largest ``max_abs_theta`` of the runs that did not overturn.
+
+        Examples
+        --------
+        The pulse below ``g tan(alpha)`` does not rock the block, the one above overturns
+        it:
+
+        >>> import math
+        >>> import rocking
+        >>> from rocking.motions import OneSine
+        >>> block = rocking.specimen(2)
+        >>> a_up = rocking.G * math.tan(block.alpha)  # uplift acceleration
+        >>> res = rocking.simulate_many(block, [OneSine(0.9 * a_up, 0.5),
+        ...                                     OneSine(1.5 * a_up, 0.5)], duration=3.0)
+        >>> s = res.summary()
+        >>> s["n"], s["n_overturned"], s["overturned_fraction"], s["n_rocked"]
+        (2, 1, 0.5, 1)
+        >>> s["max_max_abs_theta_survived"]  # the survivor never left its rest position
+        0.0
+        """
         n = len(self)
         ok = ~self.overturned & np.isfinite(self.max_abs_theta)
         surv = self.max_abs_theta[ok]
@@ -380,7 +553,25 @@ class BatchResponse:
         return jsonable(d)
 
     def to_dict(self) -> dict:
-        """Everything, JSON-ready: the summary, the per-motion arrays and the histories."""
+        """Everything, JSON-ready: the summary, the per-motion arrays and the histories.
+
+        Examples
+        --------
+        Events that did not happen (NaN times) are None, and histories not requested too:
+
+        >>> import math
+        >>> import rocking
+        >>> from rocking.motions import OneSine
+        >>> block = rocking.specimen(2)
+        >>> a_up = rocking.G * math.tan(block.alpha)  # uplift acceleration
+        >>> res = rocking.simulate_many(block, [OneSine(0.9 * a_up, 0.5),
+        ...                                     OneSine(1.5 * a_up, 0.5)], duration=3.0)
+        >>> d = res.to_dict()
+        >>> d["overturned"], d["uplift_time"][0], d["overturn_time"][0], d["theta"]
+        ([False, True], None, None, None)
+        >>> round(d["uplift_time"][1], 4) == round(float(res.uplift_time[1]), 4)
+        True
+        """
         d = self.summary()
         for k in ("max_abs_theta", "overturned", "overturn_time", "uplift_time", "n_impacts",
                   "lifted_off", "lift_off_time", "settled", "n_steps", "status", "t", "theta",
