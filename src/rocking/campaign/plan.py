@@ -247,7 +247,22 @@ class Campaign:
         return self.spec.n_sims
 
     def chunk_range(self, k: int) -> tuple[int, int]:
-        """``(start, stop)`` sim ids of chunk ``k``."""
+        """``(start, stop)`` sim ids of chunk ``k`` (the last chunk may be shorter);
+        ParameterError outside ``[0, n_chunks - 1]``.
+
+        Examples
+        --------
+        :data:`~rocking.campaign.EXAMPLE_SPEC`: four runs in chunks of two:
+
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+        >>> c = Campaign(parse_spec(EXAMPLE_SPEC))
+        >>> c.chunk_range(0), c.chunk_range(1)
+        ((0, 2), (2, 4))
+        >>> c.chunk_range(2)
+        Traceback (most recent call last):
+        ...
+        rocking.errors.ParameterError: chunk must be in [0, 1], got 2
+        """
         if not 0 <= k < self.spec.n_chunks:
             raise ParameterError(f"chunk must be in [0, {self.spec.n_chunks - 1}], got {k}")
         cs = self.spec.chunk_size
@@ -268,7 +283,22 @@ class Campaign:
         :func:`rocking.simulate_many` (the table holds the inputs, see :meth:`run_ids`; a
         stack's ``alpha``, ``p`` and ``mu`` are its top block's: :func:`.spec.nominal`).
         With a building: ``floor`` (and ``height_ratio``) after ``block_name`` and
-        ``floor_pga`` after ``pga`` (see the module docstring)."""
+        ``floor_pga`` after ``pga`` (see the module docstring).
+
+        Examples
+        --------
+        The pulses of load factors 1.5 and 3 (PGA 1.5 and 3 m/s^2), run directly: the
+        same outcome as :meth:`run_ids`:
+
+        >>> import rocking
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+        >>> c = Campaign(parse_spec(EXAMPLE_SPEC))
+        >>> table, blocks, motions = c.inputs([1, 3])
+        >>> table.pga.tolist(), [m.pga for m in motions]
+        ([1.5, 3.0], [1.5, 3.0])
+        >>> rocking.simulate_many(blocks, motions).overturned.tolist()
+        [False, True]
+        """
         s = self.spec
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         if ids.size and not (ids.min() >= 0 and ids.max() < self.n_sims):
@@ -332,7 +362,20 @@ class Campaign:
         """The ids of the random streams of simulations ``ids``: the flat index over the
         axes without the mitigation axis (``ids`` themselves without ``[[mitigation]]``):
         every mitigation of a (model, block, floor, motion, level, sample) draws the same
-        uncertain parameters (common random numbers)."""
+        uncertain parameters (common random numbers).
+
+        Examples
+        --------
+        Two mitigations (none, anchors) of the four pulses: rows ``j`` and ``4 + j`` share
+        their random stream:
+
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+        >>> Campaign(parse_spec(EXAMPLE_SPEC)).draw_ids([0, 3]).tolist()
+        [0, 3]
+        >>> mit = 'mitigation = [{name = "none"}, {name = "anchors", model = "anchored"}]\\n'
+        >>> Campaign(parse_spec(mit + EXAMPLE_SPEC)).draw_ids(range(8)).tolist()
+        [0, 1, 2, 3, 0, 1, 2, 3]
+        """
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         a = self.spec.axes
         if a["mitigation"] == 1:
@@ -369,6 +412,18 @@ class Campaign:
         ``settled``: ``lift_off_time`` (s, NaN if none: the run stops when the block leaves
         the ground) and ``lifted_off``. Then the row outputs of the models run
         (:func:`row_output_columns`; none if no model has any).
+
+        Examples
+        --------
+        Specimen 2 uplifts at ``g tan(alpha)`` = 1.66 m/s^2 (Housner 1963): the 1.5 m/s^2 pulse
+        leaves it at rest, the 3 m/s^2 one overturns it (``|theta|`` = pi/2):
+
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+        >>> rows = Campaign(parse_spec(EXAMPLE_SPEC)).run_ids([1, 3])
+        >>> rows[["sim_id", "pga", "max_abs_theta", "overturned", "damage_state"]]
+           sim_id  pga  max_abs_theta  overturned  damage_state
+        0       1  1.5       0.000000       False             0
+        1       3  3.0       1.570796        True             3
         """
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         table, blocks, motions = self.inputs(ids)
@@ -414,9 +469,33 @@ class Campaign:
         return table.assign(**rows_out) if rows_out else table
 
     def run_chunk(self, k: int) -> pd.DataFrame:
-        """Simulate chunk ``k`` (:meth:`run_ids` over its range)."""
+        """Simulate chunk ``k`` (:meth:`run_ids` over its range).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+        >>> c = Campaign(parse_spec(EXAMPLE_SPEC))
+        >>> rows = c.run_chunk(1)
+        >>> rows.sim_id.tolist(), rows.equals(c.run_ids(np.arange(*c.chunk_range(1))))
+        ([2, 3], True)
+        """
         return self.run_ids(np.arange(*self.chunk_range(k)))
 
     def table(self) -> pd.DataFrame:
-        """The inputs of every simulation (no run): for inspection of small campaigns."""
+        """The inputs of every simulation (no run): for inspection of small campaigns.
+
+        Examples
+        --------
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+        >>> table = Campaign(parse_spec(EXAMPLE_SPEC)).table()
+        >>> table[["sim_id", "motion_id", "load_factor", "pga"]]
+           sim_id      motion_id  load_factor  pga
+        0       0  one_sine:0.5s          1.0  1.0
+        1       1  one_sine:0.5s          1.5  1.5
+        2       2  one_sine:0.5s          2.0  2.0
+        3       3  one_sine:0.5s          3.0  3.0
+        >>> "overturned" in table
+        False
+        """
         return self.inputs(np.arange(self.n_sims))[0]
