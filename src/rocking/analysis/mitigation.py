@@ -317,16 +317,74 @@ class MitigationComparison:
 
     def key(self, mitigation: str, group=()) -> object:
         """The key of :attr:`fits` for ``mitigation`` in ``group`` (a tuple of the ``by``
-        values)."""
+        values).
+
+        Examples
+        --------
+        >>> import pandas as pd
+        >>> from rocking.analysis import compare_mitigations
+        >>> im, j = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10), np.tile(np.arange(10), 5)
+        >>> runs = pd.concat([pd.DataFrame({"mitigation": name, "pga": im,  # m/s^2
+        ...                                 "overturned": j < np.repeat(k, 10)})
+        ...                   for name, k in (("none", [1, 3, 5, 7, 9]),
+        ...                                   ("isolated", [0, 1, 3, 5, 7]))])
+        >>> cmp = compare_mitigations(runs, n_boot=0)  # no grouping: the name is the key
+        >>> cmp.key("isolated"), cmp.fits[cmp.key("isolated")].label
+        ('isolated', 'isolated')
+        >>> two = pd.concat([runs.assign(block_name=b) for b in ("B2", "B3")])
+        >>> compare_mitigations(two, n_boot=0).key("isolated", "B3")  # grouped by block_name
+        ('B3', 'isolated')
+        """
         group = group if isinstance(group, tuple) else (group,)
         return tuple(group) + (mitigation,) if self.by else mitigation
 
     def to_frame(self) -> pd.DataFrame:
-        """A copy of :attr:`table`."""
+        """A copy of :attr:`table`.
+
+        Examples
+        --------
+        >>> import pandas as pd
+        >>> from rocking.analysis import compare_mitigations
+        >>> im, j = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10), np.tile(np.arange(10), 5)
+        >>> runs = pd.concat([pd.DataFrame({"mitigation": name, "pga": im,  # m/s^2
+        ...                                 "overturned": j < np.repeat(k, 10)})
+        ...                   for name, k in (("none", [1, 3, 5, 7, 9]),
+        ...                                   ("isolated", [0, 1, 3, 5, 7]))])
+        >>> cmp = compare_mitigations(runs, n_boot=0)
+        >>> df = cmp.to_frame()
+        >>> df is not cmp.table and df.equals(cmp.table)
+        True
+        >>> r = df.set_index("mitigation")  # the isolated block's median over the reference's
+        >>> bool(np.isclose(r.loc["isolated", "median_ratio"],
+        ...                 r.loc["isolated", "median"] / r.loc["none", "median"]))
+        True
+        """
         return self.table.copy()
 
     def plot(self, **kw):
-        """:func:`plot_mitigations` of this comparison; returns the Figure."""
+        """:func:`plot_mitigations` of this comparison; returns the Figure.
+
+        Examples
+        --------
+        >>> import pandas as pd
+        >>> from rocking.analysis import compare_mitigations
+        >>> im, j = np.repeat([0.5, 1.0, 2.0, 4.0, 8.0], 10), np.tile(np.arange(10), 5)
+        >>> runs = pd.concat([pd.DataFrame({"mitigation": name, "pga": im,  # m/s^2
+        ...                                 "overturned": j < np.repeat(k, 10)})
+        ...                   for name, k in (("none", [1, 3, 5, 7, 9]),
+        ...                                   ("isolated", [0, 1, 3, 5, 7]))])
+        >>> cmp = compare_mitigations(runs, n_boot=0)
+        >>> ax = cmp.plot().axes[0]
+        >>> ax.get_xlabel(), ax.get_ylabel()
+        ('PGA (m/s$^2$)', 'P(overturned)')
+        >>> legend = [t.get_text() for t in ax.get_legend().get_texts()]
+        >>> legend
+        ['none: median 2 m/s$^2$, beta 1.14', 'isolated: median 4.11 m/s$^2$, beta 1.06']
+        >>> from rocking.analysis import plot_mitigations  # the same figure
+        >>> ax2 = plot_mitigations(cmp).axes[0]
+        >>> [t.get_text() for t in ax2.get_legend().get_texts()] == legend
+        True
+        """
         return plot_mitigations(self, **kw)
 
 
