@@ -90,6 +90,14 @@ class Record(Motion):
         (``gal``) and applies to the acceleration column; a unit the file states must
         agree with it (``units=None``: the file's own, g if it states none; see
         :mod:`rocking.motions.io`). The record is stored in m/s^2.
+
+        Examples
+        --------
+        >>> from rocking.motions import Record
+        >>> np.savetxt("acc.txt", [0.0, 0.1, -0.2, 0.05])  # one column, in g
+        >>> rec = Record.from_file("acc.txt", units="g", dt=0.01)
+        >>> rec.name, rec.dt, len(rec), round(rec.pga, 5)  # 0.2 g in m/s^2
+        ('acc', 0.01, 4, 1.96133)
         """
         return cls._from_read(*read_record(path, units=units, dt=dt), **kw)
 
@@ -137,34 +145,117 @@ class Record(Motion):
 
     # ---- processing (see rocking.motions.processing)
     def resampled(self, dt: float, method: str = "auto") -> Record:
-        """A copy resampled to time step ``dt`` (s); see :func:`~.processing.resample`."""
+        """A copy resampled to time step ``dt`` (s); see :func:`~.processing.resample`.
+
+        Examples
+        --------
+        >>> from rocking.motions import load_builtin, resample
+        >>> rec = load_builtin("RSN126_GAZLI_GAZ000")  # dt = 0.0066 s
+        >>> r = rec.resampled(0.01)
+        >>> r.dt, r.meta["processing"]
+        (0.01, ['resample 0.0066 s -> 0.01 s (polyphase, up 33 / down 50)'])
+        >>> bool(np.array_equal(r.values, resample(rec, 0.01).values))  # the same
+        True
+        >>> T = [0.5, 1.0, 2.0]  # the spectrum well below the new Nyquist frequency is kept
+        >>> np.round(r.response_spectrum(T) / rec.response_spectrum(T), 3).tolist()
+        [1.0, 1.0, 1.0]
+        """
         return resample(self, dt, method=method)
 
     def filtered(self, low: float | None = 0.1, high: float | None = None, order: int = 4,
                  keep_pads: bool = False) -> Record:
-        """Zero-phase Butterworth filtered copy; see :func:`~.processing.bandpass`."""
+        """Zero-phase Butterworth filtered copy; see :func:`~.processing.bandpass`.
+
+        Examples
+        --------
+        >>> from rocking.motions import bandpass, load_builtin
+        >>> rec = load_builtin("RSN126_GAZLI_GAZ000")
+        >>> f = rec.filtered(low=0.1)  # 0.1 Hz high-pass
+        >>> bool(np.array_equal(f.values, bandpass(rec, low=0.1).values)), len(f) == len(rec)
+        (True, True)
+        >>> T = [0.2, 1.0]  # periods well below 1 / 0.1 Hz hardly change
+        >>> np.round(f.response_spectrum(T) / rec.response_spectrum(T), 2).tolist()
+        [1.0, 1.0]
+        """
         return bandpass(self, low=low, high=high, order=order, keep_pads=keep_pads)
 
     def baseline_corrected(self) -> Record:
         """Copy with zero final velocity and displacement; see
-        :func:`~.processing.baseline_correct`."""
+        :func:`~.processing.baseline_correct`.
+
+        Examples
+        --------
+        >>> from rocking.motions import baseline_correct, load_builtin
+        >>> rec = load_builtin("RSN126_GAZLI_GAZ000")
+        >>> b = rec.baseline_corrected()
+        >>> bool(abs(b.velocity()[-1]) < 1e-12 and abs(b.displacement()[-1]) < 1e-12)
+        True
+        >>> bool(np.array_equal(b.values, baseline_correct(rec).values))
+        True
+        """
         return baseline_correct(self)
 
     def velocity(self) -> np.ndarray:
-        """Ground velocity (m/s) at the samples, from rest, load factor applied."""
+        """Ground velocity (m/s) at the samples, from rest, load factor applied.
+
+        Examples
+        --------
+        >>> from rocking.motions import Record
+        >>> rec = Record(np.full(101, 2.0), dt=0.01, scale=0.5)  # 1 m/s^2 for 1 s
+        >>> v = rec.velocity()
+        >>> round(float(v[50]), 10), round(float(v[-1]), 10)  # v = a t
+        (0.5, 1.0)
+        """
         return integrate(self.values, self.dt)[0]
 
     def displacement(self) -> np.ndarray:
-        """Ground displacement (m) at the samples, from rest, load factor applied."""
+        """Ground displacement (m) at the samples, from rest, load factor applied.
+
+        Examples
+        --------
+        >>> from rocking.motions import Record
+        >>> rec = Record(np.full(101, 2.0), dt=0.01, scale=0.5)  # 1 m/s^2 for 1 s
+        >>> d = rec.displacement()
+        >>> round(float(d[50]), 10), round(float(d[-1]), 10)  # d = a t^2 / 2
+        (0.125, 0.5)
+        """
         return integrate(self.values, self.dt)[1]
 
     def intensity_measures(self, block=None) -> dict:
         """PGA, PGV, PGD, Arias intensity, D5-95... (with a ``block``, also ``pga_ratio``
-        and ``pgv_ratio``); see :func:`~.processing.intensity_measures`."""
+        and ``pgv_ratio``); see :func:`~.processing.intensity_measures`.
+
+        Examples
+        --------
+        >>> import math
+        >>> import rocking
+        >>> from rocking.motions import load_builtin
+        >>> rec = load_builtin("RSN126_GAZLI_GAZ000")
+        >>> block = rocking.Block.rectangular(0.2, 1.0)
+        >>> im = rec.intensity_measures(block=block)
+        >>> im["pga"] == rec.pga, im["npts"], bool(im["t5"] < im["t95"] <= im["duration"])
+        (True, 2048, True)
+        >>> round(im["pga_ratio"], 4), round(rec.pga / (rocking.G * math.tan(block.alpha)), 4)
+        (3.5085, 3.5085)
+        """
         return intensity_measures_acc(self.values, self.dt, block=block)
 
     def response_spectrum(self, periods, damping: float = 0.05, kind: str = "psa"):
-        """Elastic response spectrum; see :func:`~.spectra.response_spectrum`."""
+        """Elastic response spectrum; see :func:`~.spectra.response_spectrum`.
+
+        Examples
+        --------
+        >>> from rocking.motions import load_builtin, response_spectrum
+        >>> rec = load_builtin("RSN126_GAZLI_GAZ000")
+        >>> T = [0.0, 0.5, 1.0]
+        >>> bool(np.array_equal(rec.response_spectrum(T), response_spectrum(rec, T)))
+        True
+        >>> round(rec.response_spectrum(0.0), 6) == round(rec.pga, 6)  # T = 0: the PGA
+        True
+        >>> sa, sd = rec.response_spectrum(1.0), rec.response_spectrum(1.0, kind="sd")
+        >>> round(sa / sd, 6) == round((2 * np.pi) ** 2, 6)  # psa = omega^2 sd
+        True
+        """
         return response_spectrum(self, periods, damping=damping, kind=kind)
 
     def __len__(self) -> int:
