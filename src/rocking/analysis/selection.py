@@ -301,11 +301,44 @@ class SelectionResult:
     notes: list = field(default_factory=list)
 
     def records(self, candidates) -> list:
-        """The selected candidates, each scaled (``Record.scaled``) by its factor."""
+        """The selected candidates, each scaled (``Record.scaled``) by its factor.
+
+        Examples
+        --------
+        The target is the spectrum of the second record, doubled:
+
+        >>> from rocking.analysis import select_records
+        >>> from rocking.analysis.selection import candidate_spectra
+        >>> from rocking.motions import Record
+        >>> t, T = np.arange(0.0, 4.0, 0.01), [0.2, 0.5, 1.0]  # s
+        >>> recs = [Record(np.sin(2 * np.pi * f * t) * np.exp(-t), 0.01) for f in (1, 2, 4)]
+        >>> sel = select_records(recs, 2.0 * candidate_spectra(recs, T)[1], T, n=1)
+        >>> sel.indices.tolist(), sel.scales.tolist()
+        ([1], [2.0])
+        >>> chosen = sel.records(recs)
+        >>> chosen[0].scale, bool(np.allclose(chosen[0].values, 2.0 * recs[1].values))
+        (2.0, True)
+        """
         return [candidates[i].scaled(s) for i, s in zip(self.indices, self.scales, strict=True)]
 
     def plot(self, ax=None):
-        """Target, 90 % of it, the scaled spectra and their mean; returns the Axes."""
+        """Target, 90 % of it, the scaled spectra and their mean; returns the Axes.
+
+        Examples
+        --------
+        >>> from rocking.analysis import select_records
+        >>> from rocking.analysis.selection import candidate_spectra
+        >>> from rocking.motions import Record
+        >>> t, T = np.arange(0.0, 4.0, 0.01), [0.2, 0.5, 1.0]  # s
+        >>> recs = [Record(np.sin(2 * np.pi * f * t) * np.exp(-t), 0.01) for f in (1, 2, 4)]
+        >>> sel = select_records(recs, 2.0 * candidate_spectra(recs, T)[1], T, n=1)
+        >>> ax = sel.plot()
+        >>> ax.get_xlabel(), ax.get_title()
+        ('period T (s)', 'record selection (EN 1998-1 3.2.3.1.2)')
+        >>> [t.get_text() for t in ax.get_legend().get_texts()]  # the target met exactly
+        ['target', '90 % target', 'mean of 1 (misfit 0.000)']
+        >>> import matplotlib.pyplot as plt; plt.close("all")
+        """
         import matplotlib.pyplot as plt
 
         if ax is None:
