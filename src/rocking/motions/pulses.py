@@ -294,7 +294,18 @@ class MavroeidisPapageorgiou(Motion):
         return self.amplitude / (math.pi * self.fp * _mp_peak(self.gamma, self.nu))
 
     def velocity(self, t) -> np.ndarray:
-        """Ground velocity (m/s) at times ``t`` (s): the formula above, times ``scale``."""
+        """Ground velocity (m/s) at times ``t`` (s): the formula above, times ``scale``.
+
+        Examples
+        --------
+        >>> from rocking.motions import MavroeidisPapageorgiou, sample, velocity
+        >>> mp = MavroeidisPapageorgiou(amplitude=5.0, fp=1.0, gamma=2.0, nu=0.0)
+        >>> r = sample(mp, 0.002, duration=3.0)  # the acceleration, integrated back:
+        >>> bool(np.allclose(velocity(r), mp.velocity(r.t), atol=1e-4))
+        True
+        >>> mp.velocity([0.0, 2.0, 2.5]).tolist()  # zero at both ends and after the pulse
+        [0.0, 0.0, 0.0]
+        """
         arr = np.asarray(t, dtype=np.float64)
         tau = arr - self.t0
         w = 2.0 * math.pi * self.fp

@@ -165,6 +165,15 @@ class Envelope:
         return out
 
     def describe(self) -> str:
+        """One line: the shape of the envelope and its times (s).
+
+        Examples
+        --------
+        >>> from rocking.motions import Envelope
+        >>> print(Envelope(kind="trapezoidal", rise=1.0, stationary=8.0, duration=12.0).describe())
+        trapezoidal envelope: linear rise over 1 s, stationary 1-9 s (8 s),
+        linear decay to zero at 12 s
+        """
         rise = "quadratic" if self.kind == "jennings" else "linear"
         fall = (f"exponential decay ({self.decay:g} 1/s) to zero" if self.kind == "jennings"
                 else "linear decay to zero")
@@ -634,7 +643,18 @@ class Compatibility:
         return self.spectra.std(axis=0, ddof=1 if len(self.spectra) > 1 else 0)
 
     def record_deviation(self) -> np.ndarray:
-        """Largest ``|Sa / target - 1|`` of each record over the period range."""
+        """Largest ``|Sa / target - 1|`` of each record over the period range.
+
+        Examples
+        --------
+        >>> from rocking.motions import check_compatibility, seed_earthquakes
+        >>> c = check_compatibility(seed_earthquakes()[:3])
+        >>> dev = c.record_deviation()  # one per record
+        >>> dev.shape, bool(np.all(dev >= 0))
+        ((3,), True)
+        >>> bool(dev.max() >= max(1 - c.min_ratio, c.max_ratio - 1))  # the mean is closer
+        True
+        """
         m = self._in_range()
         return np.max(np.abs(self.spectra[:, m] / self.target[m] - 1.0), axis=1)
 
@@ -643,6 +663,18 @@ class Compatibility:
         return (self.periods >= lo * (1 - 1e-9)) & (self.periods <= hi * (1 + 1e-9))
 
     def summary(self) -> str:
+        """A few lines: the verdict, then each check of EN 1998-1 §3.2.3.1.2 with its
+        figures.
+
+        Examples
+        --------
+        >>> from rocking.motions import check_compatibility, seed_earthquakes
+        >>> print(check_compatibility(seed_earthquakes()[:3]).summary())  # mean PGA too low
+        EC8 §3.2.3.1.2 compatibility of 3 record(s): FAIL
+          stationary part >= 10 s: shortest 10.0 s [ok]
+          mean PGA ... m/s^2 >= target 2.800 m/s^2 [FAIL]
+          mean spectrum / target over 0.05-3 s: min ... (>= 0.90), max ... [ok]
+        """
         lo, hi = self.period_range
         stat = ("unknown" if self.min_stationary is None
                 else f"{self.min_stationary:.1f} s")
