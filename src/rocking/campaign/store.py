@@ -270,6 +270,19 @@ class Store:
         return self.path / MANIFEST
 
     def exists(self) -> bool:
+        """Whether the store's ``manifest.json`` exists (written when a run starts).
+
+        Examples
+        --------
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> store = Store("pulses_store")
+        >>> store.exists()
+        False
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store.exists(), store.manifest_path.name
+        (True, 'manifest.json')
+        """
         return self.manifest_path.is_file()
 
     def _read_manifest(self) -> dict:
@@ -316,13 +329,36 @@ class Store:
         return self._manifest
 
     def spec(self) -> CampaignSpec:
-        """The store's spec, checked again (``files`` paths as resolved when created)."""
+        """The store's spec, checked again (``files`` paths as resolved when created).
+
+        Examples
+        --------
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> store.spec().hash == parse_spec(EXAMPLE_SPEC).hash, store.spec().n_sims
+        (True, 4)
+        """
         return parse_spec((self.path / SPEC).read_text(encoding="utf-8"),
                           base_dir=self.manifest.get("spec_dir", "."))
 
     def prepare(self) -> Store:
         """Make the store's directory (refusing a path that is a file, or a directory that
-        holds anything else than a store), ready for :meth:`lock`."""
+        holds anything else than a store), ready for :meth:`lock`.
+
+        Examples
+        --------
+        >>> from pathlib import Path
+        >>> from rocking.campaign import Store
+        >>> Store("new_store").prepare().path.is_dir()
+        True
+        >>> _ = Path("notes.txt").write_text("not a store")
+        >>> Store("notes.txt").prepare()
+        Traceback (most recent call last):
+        ...
+        rocking.errors.StoreError: --out notes.txt: exists and is a file, not a store directory
+        """
         p = self.path
         if p.exists() and not p.is_dir():
             raise StoreError(f"--out {p}: exists and is a file, not a store directory")
@@ -341,7 +377,23 @@ class Store:
         """Create the store for ``spec``, or check that the existing one was made by the
         same spec and package version (else :class:`~rocking.errors.StoreError`); a damaged
         manifest is rewritten if the store's ``spec.toml`` or records show it holds
-        ``spec``. Call it with the lock held (:meth:`prepare`, :meth:`lock`)."""
+        ``spec``. Call it with the lock held (:meth:`prepare`, :meth:`lock`).
+
+        Examples
+        --------
+        What ``run`` does first; another spec on the same store is refused:
+
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> store = Store("pulses_store").prepare()
+        >>> store.lock()
+        >>> sorted(p.name for p in store.open_for(parse_spec(EXAMPLE_SPEC)).path.iterdir())
+        ['.lock', 'chunks', 'manifest.json', 'spec.toml']
+        >>> store.open_for(parse_spec(EXAMPLE_SPEC.replace("seed = 1", "seed = 2")))
+        Traceback (most recent call last):
+        ...
+        rocking.errors.StoreError: pulses_store holds a different campaign (spec hash ...
+        >>> store.unlock()
+        """
         self.path.mkdir(parents=True, exist_ok=True)
         self._manifest = None
         if self.exists():
@@ -417,7 +469,21 @@ class Store:
             f"the old one moved to {q.relative_to(self.path)}/")
 
     def lock(self) -> None:
-        """Take the store's write lock (one writing run at a time)."""
+        """Take the store's write lock (one writing run at a time); StoreError if another
+        run (or another :class:`Store` object) holds it. Also removes the temporary files
+        of a killed run.
+
+        Examples
+        --------
+        >>> from rocking.campaign import Store
+        >>> store = Store("pulses_store").prepare()
+        >>> store.lock()
+        >>> Store("pulses_store").lock()
+        Traceback (most recent call last):
+        ...
+        rocking.errors.StoreError: another run is writing to pulses_store
+        >>> store.unlock()
+        """
         f = open(self.path / ".lock", "w")  # noqa: SIM115 - held until unlock / exit
         try:
             fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
@@ -433,13 +499,38 @@ class Store:
                     tmp.unlink(missing_ok=True)
 
     def unlock(self) -> None:
+        """Release the write lock taken by :meth:`lock` (nothing if not held).
+
+        Examples
+        --------
+        >>> from rocking.campaign import Store
+        >>> store = Store("pulses_store").prepare()
+        >>> store.lock()
+        >>> Store("pulses_store").running()
+        True
+        >>> store.unlock()
+        >>> Store("pulses_store").running()
+        False
+        """
         if self._lock is not None:
             self._lock.close()
             self._lock = None
 
     def running(self) -> bool:
         """Whether another run (process, or open handle) holds the write lock; False
-        when this object holds it (it is the run)."""
+        when this object holds it (it is the run).
+
+        Examples
+        --------
+        >>> from rocking.campaign import Store
+        >>> store = Store("pulses_store").prepare()
+        >>> store.running()
+        False
+        >>> store.lock()
+        >>> store.running(), Store("pulses_store").running()
+        (False, True)
+        >>> store.unlock()
+        """
         if self._lock is not None:
             return False
         try:
@@ -456,13 +547,59 @@ class Store:
 
     # ------------------------------------------------------------------ chunks
     def chunk_path(self, k: int) -> Path:
+        """The Parquet file of chunk ``k`` (whether or not it exists).
+
+        Examples
+        --------
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> store.chunk_path(1).as_posix()
+        'pulses_store/chunks/chunk-000001.parquet'
+        >>> import pandas as pd
+        >>> pd.read_parquet(store.chunk_path(1)).sim_id.tolist()
+        [2, 3]
+        """
         return self.path / CHUNKS / chunk_name(k)
 
     def record_path(self, k: int) -> Path:
+        """The record (JSON) of chunk ``k``: its rows, ``sim_id`` range, bytes and sha256.
+
+        Examples
+        --------
+        The record's checksum is that of the chunk's file:
+
+        >>> import hashlib, json
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> rec = json.loads(store.record_path(1).read_text())
+        >>> rec["rows"], rec["sim_id_first"], rec["sim_id_last"]
+        (2, 2, 3)
+        >>> rec["sha256"] == hashlib.sha256(store.chunk_path(1).read_bytes()).hexdigest()
+        True
+        """
         return self.path / CHUNKS / record_name(k)
 
     def chunk_range(self, k: int) -> tuple[int, int]:
-        """``(start, stop)`` sim ids of chunk ``k`` in the manifest's layout."""
+        """``(start, stop)`` sim ids of chunk ``k`` in the manifest's layout.
+
+        Examples
+        --------
+        The same layout as the campaign's (:meth:`Campaign.chunk_range`):
+
+        >>> from rocking.campaign import Campaign
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> [store.chunk_range(k) for k in range(2)]
+        [(0, 2), (2, 4)]
+        >>> store.chunk_range(1) == Campaign(store.spec()).chunk_range(1)
+        True
+        """
         m = self.manifest
         cs = m["chunk_size"]
         return k * cs, min((k + 1) * cs, m["n_sims"])
@@ -549,7 +686,21 @@ class Store:
 
     def check(self, deep: bool = False) -> Check:
         """Verify every chunk against its record (size and sha256; with ``deep`` also
-        read it: Parquet, rows, ``sim_id`` range). Read-only."""
+        read it: Parquet, rows, ``sim_id`` range). Read-only.
+
+        Examples
+        --------
+        A chunk file cut short is found (and named):
+
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> _ = store.chunk_path(1).write_bytes(store.chunk_path(1).read_bytes()[:100])
+        >>> c = store.check()
+        >>> sorted(c.ok), [(p.name, p.kind) for p in c.problems]
+        ([0], [('chunks/chunk-000001.parquet', 'truncated')])
+        """
         nc = self.manifest["n_chunks"]
         running = self.running()
         files, records, problems = self._scan(nc)
@@ -612,7 +763,21 @@ class Store:
 
     def read_chunk(self, k: int) -> pd.DataFrame:
         """The rows of chunk ``k``, checked against its record (rows, ``sim_id`` range);
-        :class:`~rocking.errors.StoreError` naming the file otherwise."""
+        :class:`~rocking.errors.StoreError` naming the file otherwise.
+
+        Examples
+        --------
+        The stored rows are those of the campaign's run of the chunk, bit for bit:
+
+        >>> from rocking.campaign import Campaign
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> rows = store.read_chunk(1)
+        >>> rows.sim_id.tolist(), rows.equals(Campaign(store.spec()).run_chunk(1))
+        ([2, 3], True)
+        """
         r = self._record(k)
         name = f"{self.path / CHUNKS / chunk_name(k)}"
         if not isinstance(r, dict):
@@ -624,12 +789,39 @@ class Store:
 
     def done(self) -> set[int]:
         """Indices of the finished chunks (verified against their records); none before
-        the manifest is written."""
+        the manifest is written.
+
+        Examples
+        --------
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> store.done()
+        {0, 1}
+        >>> store.chunk_path(0).unlink()
+        >>> store.done()
+        {1}
+        """
         return set(self.check().ok) if self.exists() else set()
 
     def write_chunk(self, k: int, table: pd.DataFrame) -> None:
         """Write chunk ``k`` (its rows, in ``sim_id`` order): the Parquet file, synced and
-        renamed into place, then its record (see the module docstring)."""
+        renamed into place, then its record (see the module docstring).
+
+        Examples
+        --------
+        A run's steps by hand: lock, open for the spec, write chunk 0, unlock:
+
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, Store, parse_spec
+        >>> spec = parse_spec(EXAMPLE_SPEC)
+        >>> store = Store("pulses_store").prepare()
+        >>> store.lock()
+        >>> store.open_for(spec).write_chunk(0, Campaign(spec).run_chunk(0))
+        >>> store.unlock()
+        >>> store.done(), store.status()["sims_done"]
+        ({0}, 2)
+        """
         a, b = self.chunk_range(k)
         ids = table["sim_id"].to_numpy() if "sim_id" in table.columns else None
         if ids is None or ids.shape != (b - a,) or not np.array_equal(ids, np.arange(a, b)):
@@ -648,7 +840,20 @@ class Store:
         atomic_write(self.record_path(k), json.dumps(rec, indent=1))
 
     def files(self) -> list[Path]:
-        """The files of the finished chunks, in order."""
+        """The files of the finished chunks, in order.
+
+        Examples
+        --------
+        >>> import pandas as pd
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> [f.name for f in store.files()]
+        ['chunk-000000.parquet', 'chunk-000001.parquet']
+        >>> sum(len(pd.read_parquet(f)) for f in store.files()) == store.spec().n_sims
+        True
+        """
         return [self.chunk_path(k) for k in sorted(self.done())]
 
     # ------------------------------------------------------------------ repair
@@ -682,7 +887,26 @@ class Store:
     def repair(self, log: Callable = print) -> list[Problem]:
         """Move every problem file into ``quarantine/`` (never deleted), saying so with
         ``log``; the chunks concerned are then not done, for ``run`` to recompute. Call it
-        with the lock held."""
+        with the lock held.
+
+        Examples
+        --------
+        A damaged chunk is moved aside (with its record), then recomputed by the next run:
+
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> _ = store.chunk_path(1).write_bytes(b"damaged")
+        >>> store.lock()
+        >>> [(p.name, p.kind) for p in store.repair(log=lambda msg: None)]
+        [('chunks/chunk-000001.parquet', 'truncated')]
+        >>> store.unlock()
+        >>> sorted(p.name for p in store.path.glob("quarantine/*/*")), store.done()
+        (['chunk-000001.json', 'chunk-000001.parquet'], {0})
+        >>> campaign.run(store.spec(), "pulses_store", progress=False)["complete"]
+        True
+        """
         problems = list(self.check().problems)
         if not problems:
             return []
@@ -700,7 +924,30 @@ class Store:
         """Upgrade a store of format 1 (no chunk records): record every chunk that reads
         as Parquet with the rows and ``sim_id`` range of its place in the layout (a
         checksum taken now: earlier changes cannot be detected), move the others into
-        ``quarantine/``, and write the manifest as format 2."""
+        ``quarantine/``, and write the manifest as format 2.
+
+        Examples
+        --------
+        A store made format 1 (no records), refused, then upgraded:
+
+        >>> import json
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> m = json.loads(store.manifest_path.read_text())
+        >>> _ = store.manifest_path.write_text(json.dumps(dict(m, format=1)))
+        >>> for k in (0, 1):
+        ...     store.record_path(k).unlink()
+        >>> Store("pulses_store").done()
+        Traceback (most recent call last):
+        ...
+        rocking.errors.StoreError: pulses_store is a store of format 1, written before ...
+        >>> Store("pulses_store").upgrade(log=print)
+        {'adopted': 2, 'quarantined': []}
+        >>> Store("pulses_store").check().adopted
+        2
+        """
         m = self._read_manifest()
         if m.get("format") != 1:
             raise StoreError(f"{self.path}: format {m.get('format')!r}: only a store of "
@@ -751,7 +998,21 @@ class Store:
     # ------------------------------------------------------------------ summaries
     def status(self, check: Check | None = None) -> dict:
         """Counts of done (verified) and remaining simulations and chunks, and the
-        problems found (as text)."""
+        problems found (as text).
+
+        Examples
+        --------
+        >>> from rocking import campaign
+        >>> from rocking.campaign import EXAMPLE_SPEC, Store, parse_spec
+        >>> _ = campaign.run(parse_spec(EXAMPLE_SPEC), "pulses_store", progress=False)
+        >>> store = Store("pulses_store")
+        >>> store.chunk_path(1).unlink()
+        >>> s = store.status()
+        >>> s["sims_done"], s["sims_remaining"], s["complete"]
+        (2, 2, False)
+        >>> s["problems"]
+        ['chunks/chunk-000001.parquet: missing (its record says 2 rows, sim_ids 2-3)']
+        """
         m = self.manifest
         c = check if check is not None else self.check()
         sims = sum(b - a for a, b in map(self.chunk_range, c.ok))
