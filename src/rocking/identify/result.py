@@ -121,7 +121,22 @@ class FreeRockingFit:
         return float(self.cov[0, 1] / math.sqrt(self.cov[0, 0] * self.cov[1, 1]))
 
     def to_block(self, name: str = "identified", **geometry):
-        """A :class:`~rocking.Block` with the identified ``alpha``, ``p``, ``mu``."""
+        """A :class:`~rocking.Block` with the identified ``alpha``, ``p``, ``mu``.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.identify import free_rocking
+        >>> block = rocking.specimen(2)  # a simulated free-rocking record of it:
+        >>> r = rocking.simulate(block, theta0=0.6 * block.alpha, duration=6.0, dt_out=0.002)
+        >>> fit = free_rocking(r.t, r.theta)
+        >>> identified = fit.to_block("specimen 2, identified")
+        >>> identified.name, round(identified.alpha, 4), round(identified.p, 3)
+        ('specimen 2, identified', 0.168, 3.81)
+        >>> bool(np.allclose([identified.alpha, identified.p, identified.mu],
+        ...                  [block.alpha, block.p, block.mu], rtol=1e-4))
+        True
+        """
         if not 0.0 < self.mu <= 1.0:
             raise IdentificationError(
                 f"the identified mu = {self.mu:.4f} is outside (0, 1]: the amplitudes do not "
@@ -130,7 +145,22 @@ class FreeRockingFit:
 
     def error_surface(self, alphas=None, ps=None, n: int = 121, span: float | None = None):
         """``(alphas, ps, Sigma)`` on a grid around the fit; ``Sigma[i, j]`` at
-        ``(alphas[i], ps[j])`` (weighted Eq 13, dimensionless)."""
+        ``(alphas[i], ps[j])`` (weighted Eq 13, dimensionless).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.identify import free_rocking
+        >>> block = rocking.specimen(2)  # a simulated free-rocking record of it:
+        >>> r = rocking.simulate(block, theta0=0.6 * block.alpha, duration=6.0, dt_out=0.002)
+        >>> fit = free_rocking(r.t, r.theta)
+        >>> alphas, ps, S = fit.error_surface(n=41)
+        >>> S.shape
+        (41, 41)
+        >>> i, j = np.unravel_index(S.argmin(), S.shape)  # the grid's minimum is the fit
+        >>> bool(np.isclose(alphas[i], fit.alpha)), bool(np.isclose(ps[j], fit.p))
+        (True, True)
+        """
         if span is None:
             rel_a = self.alpha_std / self.alpha if np.isfinite(self.alpha_std) else 0.0
             rel_p = self.p_std / self.p if np.isfinite(self.p_std) else 0.0
@@ -152,7 +182,22 @@ class FreeRockingFit:
         return flatten_intervals(self.amplitudes, self.rise_times, self.fall_times, self.weights)
 
     def summary(self) -> dict:
-        """JSON-ready summary (SI units; NaN as None)."""
+        """JSON-ready summary (SI units; NaN as None).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.identify import free_rocking
+        >>> block = rocking.specimen(2)  # a simulated free-rocking record of it:
+        >>> r = rocking.simulate(block, theta0=0.6 * block.alpha, duration=6.0, dt_out=0.002)
+        >>> fit = free_rocking(r.t, r.theta)
+        >>> s = fit.summary()
+        >>> s["n_half_cycles"], s["release"], s["uncertainty"]
+        (12, True, 'jacobian')
+        >>> import math
+        >>> round(s["alpha_deg"], 3) == round(math.degrees(block.alpha), 3)
+        True
+        """
         res = self.residuals
         return jsonable({
             "alpha": self.alpha, "alpha_std": self.alpha_std,
@@ -177,7 +222,20 @@ class FreeRockingFit:
         })
 
     def to_dict(self) -> dict:
-        """All fields, JSON-ready (arrays as nested lists; NaN and inf as None)."""
+        """All fields, JSON-ready (arrays as nested lists; NaN and inf as None).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.identify import free_rocking
+        >>> block = rocking.specimen(2)  # a simulated free-rocking record of it:
+        >>> r = rocking.simulate(block, theta0=0.6 * block.alpha, duration=6.0, dt_out=0.002)
+        >>> fit = free_rocking(r.t, r.theta)
+        >>> import json
+        >>> d = json.loads(json.dumps(fit.to_dict()))  # plain JSON
+        >>> len(d["theta"]) == r.t.size, d["release"], d["crossing_times"][0][0]
+        (True, True, None)
+        """
         return jsonable({f.name: _plain(getattr(self, f.name)) for f in fields(self)})
 
     def compare(self, theoretical):
@@ -185,6 +243,19 @@ class FreeRockingFit:
 
         ``theoretical`` is a :class:`~rocking.Block` (or anything with ``alpha``, ``p``,
         ``mu``, or a mapping with those keys).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.identify import free_rocking
+        >>> block = rocking.specimen(2)  # a simulated free-rocking record of it:
+        >>> r = rocking.simulate(block, theta0=0.6 * block.alpha, duration=6.0, dt_out=0.002)
+        >>> fit = free_rocking(r.t, r.theta)
+        >>> table = fit.compare(block)  # the record's own block: differences ~ 0
+        >>> table["parameter"].tolist(), table["T"].tolist()
+        (['alpha', 'mu', 'p'], [0.168, 0.958, 3.81])
+        >>> bool((table["diff_pct"].abs() < 0.01).all())
+        True
         """
         import pandas as pd
 
@@ -197,7 +268,24 @@ class FreeRockingFit:
         return pd.DataFrame(rows)
 
     def table(self):
-        """Per-half-cycle ``pandas.DataFrame``: times, amplitude, model time, residuals, mu_n."""
+        """Per-half-cycle ``pandas.DataFrame``: times, amplitude, model time, residuals, mu_n.
+
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.identify import free_rocking
+        >>> block = rocking.specimen(2)  # a simulated free-rocking record of it:
+        >>> r = rocking.simulate(block, theta0=0.6 * block.alpha, duration=6.0, dt_out=0.002)
+        >>> fit = free_rocking(r.t, r.theta)
+        >>> tab = fit.table()
+        >>> len(tab), tab["impact"].tolist()[:4]
+        (12, [0, 1, 2, 3])
+        >>> bool(np.allclose(tab["fall"], tab["T_model"], rtol=1e-4))  # Housner's T(r)
+        True
+        >>> tab["mu_n"].iloc[1:].round(3).unique().tolist()  # the block's restitution
+        [0.958]
+        """
         import pandas as pd
 
         mu_n = np.concatenate(([np.nan], self.mu_n))
@@ -216,6 +304,20 @@ class FreeRockingFit:
 
         ``theoretical`` (a Block or mapping) adds its point when it lies in the window (the
         window is widened to include it). Returns the Axes.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.identify import free_rocking
+        >>> block = rocking.specimen(2)  # a simulated free-rocking record of it:
+        >>> r = rocking.simulate(block, theta0=0.6 * block.alpha, duration=6.0, dt_out=0.002)
+        >>> fit = free_rocking(r.t, r.theta)
+        >>> ax = fit.plot_error_surface(theoretical=block, n=41)
+        >>> ax.get_ylabel(), ax.get_title()
+        ('$p$ (1/s)', 'Error surface Σ(α, p), Eq 13 (12 half-cycles)')
+        >>> [t.get_text() for t in ax.get_legend().get_texts()][1:]  # the two points agree
+        ['theoretical α=0.1680, p=3.810', 'identified α=0.1680, p=3.810']
+        >>> import matplotlib.pyplot as plt; plt.close("all")
         """
         if ax is None:
             _, ax = figure(figsize=(5.6, 4.4))
@@ -268,6 +370,21 @@ class FreeRockingFit:
         ``theoretical`` (a Block or mapping) is given, with those too. With ``ax=None`` a
         new figure is made with two panels (theoretical, identified) or one; ``ax`` may be
         one Axes (all curves on it) or two. Returns the Axes (a list of two for panels).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.identify import free_rocking
+        >>> block = rocking.specimen(2)  # a simulated free-rocking record of it:
+        >>> r = rocking.simulate(block, theta0=0.6 * block.alpha, duration=6.0, dt_out=0.002)
+        >>> fit = free_rocking(r.t, r.theta)
+        >>> ax = fit.plot_fit()  # one panel: the record and the identified model
+        >>> ax.get_xlabel(), [t.get_text() for t in ax.get_legend().get_texts()][1]
+        ('time (s)', 'classical, identified: α=0.1680, p=3.810, μ=0.9580')
+        >>> axs = fit.plot_fit(theoretical=block)  # two panels
+        >>> [a.get_title(loc="left") for a in axs]
+        ['(a) theoretical parameters', '(b) identified parameters']
+        >>> import matplotlib.pyplot as plt; plt.close("all")
         """
         panels = theoretical is not None
         if ax is None:
