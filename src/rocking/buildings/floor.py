@@ -442,9 +442,12 @@ class FloorMotion(Motion):
         >>> from rocking.buildings import Building, FloorMotion
         >>> from rocking.motions import Sine
         >>> ground = Sine(freq=2.0, amplitude=0.01, duration=1.0)
-        >>> kind, prm, samples = FloorMotion(ground, Building.sdof(0.5, 0.1), floor=1).spec()
-        >>> prm[:3].tolist() == [1.0, 0.5 / 256, samples.size], samples.size
-        (True, 6136)
+        >>> level = FloorMotion(ground, Building.sdof(0.5, 0.1), floor=1)
+        >>> kind, prm, samples = level.spec()
+        >>> prm[:3].tolist() == [1.0, level.step, samples.size]
+        True
+        >>> bool(np.array_equal(samples, level.samples)), samples.size * level.step > 1.0
+        (True, True)
         >>> at_ground = FloorMotion(ground, Building.sdof(0.5, 0.1), floor=0).spec()
         >>> all(np.array_equal(a, b) for a, b in zip(at_ground, ground.spec()))
         True

@@ -339,8 +339,10 @@ class Shape:
         >>> corners = [(x, y, z) for x, y in ((0, 0), (1, 0), (0, 1)) for z in (0, 2)]
         >>> prism = Shape.from_trimesh(trimesh.Trimesh(corners).convex_hull, density=1000.0)
         >>> d = prism.weakest()
-        >>> d.phi_deg % 180, d.side, round(d.uplift_g, 6), round(1 / (3 * math.sqrt(2)), 6)
-        (45.0, '+', 0.235702, 0.235702)
+        >>> round(d.phi_deg % 180, 6), d.side  # normal to the hypotenuse
+        (45.0, '+')
+        >>> round(d.uplift_g, 6), round(1 / (3 * math.sqrt(2)), 6)  # tan(alpha) = b / h
+        (0.235702, 0.235702)
         """
         a = self.support
         b = np.roll(a, -1, axis=0)
