@@ -270,7 +270,6 @@ class FreeRockingFit:
     def table(self):
         """Per-half-cycle ``pandas.DataFrame``: times, amplitude, model time, residuals, mu_n.
 
-
         Examples
         --------
         >>> import rocking
