@@ -201,6 +201,9 @@ exclude_patterns = ["_build", "**/.ipynb_checkpoints",
 source_suffix = {".rst": "restructuredtext"}
 root_doc = "index"
 default_role = "literal"            # `x` is code, as in the Markdown files
+# smart quotes and ellipses, but no dashes: the CLI's help texts (sphinx-click) name options
+# as --amp, which "D" would print as an en dash
+smartquotes_action = "qe"
 
 html_theme = "pydata_sphinx_theme"
 html_title = f"rocking {release}"
