@@ -18,11 +18,13 @@ and downloads go to ``docs/auto_examples/`` (git-ignored, like ``docs/sg_executi
 
 from __future__ import annotations
 
+import functools
 import importlib
 import importlib.util
 import inspect
 import os
 import pkgutil
+import re
 import sys
 from pathlib import Path
 
@@ -153,7 +155,98 @@ def _package_page(name: str, summary: str) -> str:
     if again:
         lines += ["", "Also exported here: " + ", ".join(
             f":obj:`{n} <{first}>`" for n, first in again) + "."]
+    notes = sorted(m for m in _module_notes() if _home(m) == name)
+    if notes:
+        lines += ["", "Module notes", "------------", "",
+                  "The derivations and conventions that the docstrings above cite as "
+                  "their *module docstring*, one page per module.", "",
+                  ".. toctree::", "   :maxdepth: 1", ""]
+        lines += [f"   modules/{m}" for m in notes]
     return "\n".join(lines) + "\n"
+
+
+# -- "see the module docstring": the cited module docstrings get a page, and the words a link
+_MODULE_DOC = re.compile(r"\b(?:the )?module doc(?:string)?\b(?! of )")
+
+
+def _doc_module(obj) -> str | None:
+    """The module an object (function, class, method, property) is defined in."""
+    return getattr(obj, "__module__", None) or getattr(getattr(obj, "fget", None),
+                                                      "__module__", None)
+
+
+@functools.cache
+def _module_notes() -> frozenset[str]:
+    """The modules whose docstring an exported object (or its public member) cites."""
+    found = set()
+    for package in PACKAGES:
+        for n in getattr(importlib.import_module(package), "__all__", ()):
+            obj = getattr(importlib.import_module(package), n)
+            objs = [obj] + ([m for k, m in vars(obj).items() if not k.startswith("_")]
+                            if inspect.isclass(obj) else [])
+            for o in objs:
+                o = getattr(o, "__func__", o)
+                doc = inspect.getdoc(o) if callable(o) or isinstance(o, property) else None
+                mod = _doc_module(o)
+                if doc and mod and mod.startswith("rocking.") and _MODULE_DOC.search(
+                        " ".join(doc.split())):
+                    found.add(mod)
+    return frozenset(found)
+
+
+def _home(module: str) -> str:
+    """The package of ``PACKAGES`` a module belongs to (the longest prefix)."""
+    return max((p for p in PACKAGES if module == p or module.startswith(p + ".")), key=len)
+
+
+def _resolve(dotted: str):
+    """The object named ``dotted`` (``rocking.models.Model``): a module, then attributes."""
+    parts = dotted.split(".")
+    for k in range(len(parts), 0, -1):
+        try:
+            obj = importlib.import_module(".".join(parts[:k]))
+        except ImportError:
+            continue
+        for attr in parts[k:]:
+            obj = getattr(obj, attr)
+        return obj
+    raise ValueError(dotted)
+
+
+def _link_module_docstring(app, what, name, obj, options, lines) -> None:
+    """autodoc: "(see the module docstring)" links to the module's page (a page, not a
+    ``py:module`` target: ``rocking.motions.synthetic`` is a module and a function)."""
+    target = _doc_module(obj)
+    if target not in _module_notes():     # an attribute: the module of its class
+        parent, _, _ = name.rpartition(".")
+        try:
+            target = _doc_module(_resolve(parent))
+        except (ImportError, AttributeError, ValueError):
+            return
+        if target not in _module_notes():
+            return
+    for i in range(len(lines) - 1):       # "module" at the end of a line: join the words
+        if re.search(r"\bmodule$", lines[i]) and re.match(r"\s*doc", lines[i + 1]):
+            lines[i] = lines[i][:-len("module")].rstrip()
+            stripped = lines[i + 1].lstrip()
+            lines[i + 1] = lines[i + 1][:len(lines[i + 1]) - len(stripped)] + "module " \
+                + stripped
+    for i, line in enumerate(lines):
+        lines[i] = _MODULE_DOC.sub(
+            lambda m: f":doc:`{m.group(0)} </api/generated/modules/{target}>`", line)
+
+
+def setup(app) -> None:
+    app.connect("autodoc-process-docstring", _link_module_docstring)
+
+
+for _mod in _module_notes():
+    _title = f"``{_mod}``"
+    _write_if_changed(GENERATED / "modules" / f"{_mod}.rst",
+                      "\n".join([_title, "=" * len(_title), "",
+                                 f".. automodule:: {_mod}", "   :no-members:",
+                                 "   :no-index:", ""]))   # a module and a function may
+                                                          # share a name (motions.synthetic)
 
 
 for _name, _summary in PACKAGES.items():
