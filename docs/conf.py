@@ -213,6 +213,17 @@ def _resolve(dotted: str):
     raise ValueError(dotted)
 
 
+_BUILTIN_DOCS = tuple(" ".join(t.__doc__.split())[:60]
+                      for t in (int, float, str, bool, tuple, list, dict, object))
+
+
+def _drop_builtin_docstring(app, what, name, obj, options, lines) -> None:
+    """autodoc: an undocumented member that overrides a class attribute (``Motion.kind``,
+    an ``int``) inherits the docstring of ``int``; show nothing rather than that."""
+    if lines and " ".join(" ".join(lines).split()).startswith(_BUILTIN_DOCS):
+        lines.clear()
+
+
 def _link_module_docstring(app, what, name, obj, options, lines) -> None:
     """autodoc: "(see the module docstring)" links to the module's page (a page, not a
     ``py:module`` target: ``rocking.motions.synthetic`` is a module and a function)."""
@@ -237,6 +248,7 @@ def _link_module_docstring(app, what, name, obj, options, lines) -> None:
 
 
 def setup(app) -> None:
+    app.connect("autodoc-process-docstring", _drop_builtin_docstring)
     app.connect("autodoc-process-docstring", _link_module_docstring)
 
 
