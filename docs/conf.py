@@ -321,5 +321,8 @@ html_theme_options = {
 html_sidebars = {"verification": [], "changelog": [], "cli": []}
 html_static_path: list[str] = []
 html_show_sourcelink = False
+# "On this page" lists a class's members as from_code_value(), not
+# HazardCurve.from_code_value() (long names ran out of the right-hand column)
+toc_object_entries_show_parents = "hide"
 
 os.environ.setdefault("MPLBACKEND", "Agg")
