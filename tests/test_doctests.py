@@ -1,5 +1,6 @@
-"""Every public function and class (what each package's ``__all__`` exports) has an
-``Examples`` section, and its examples run as doctests (issue 22)."""
+"""Every public function and class (what each package's ``__all__`` exports), and every
+public method of those classes, has an ``Examples`` section, and its examples run as
+doctests (issue 22). Properties are attributes, documented in their class's docstring."""
 
 from __future__ import annotations
 
@@ -30,7 +31,25 @@ def public_objects() -> list[tuple[str, object]]:
     return out
 
 
+def public_methods(objects) -> list[tuple[str, object]]:
+    """``(qualified name, function)`` of every public method (plain, class or static) that
+    a public class of ``objects`` defines in ``rocking`` itself (inherited ones once, under
+    the class that defines them)."""
+    out = []
+    for qual, cls in objects:
+        if not inspect.isclass(cls):
+            continue
+        for name, attr in vars(cls).items():
+            func = attr.__func__ if isinstance(attr, (classmethod, staticmethod)) else attr
+            if (name.startswith("_") or not inspect.isfunction(func)
+                    or not func.__module__.startswith("rocking")):
+                continue
+            out.append((f"{qual}.{name}", func))
+    return out
+
+
 OBJECTS = public_objects()
+OBJECTS += public_methods(OBJECTS)
 
 
 @pytest.mark.parametrize("name, obj", OBJECTS, ids=[n for n, _ in OBJECTS])
