@@ -319,7 +319,8 @@ html_theme_options = {
 }
 # pages without siblings: no empty "Section Navigation" column
 html_sidebars = {"verification": [], "changelog": [], "cli": []}
-html_static_path: list[str] = []
+html_static_path = ["_static"]
+html_css_files = ["rocking.css"]      # long "On this page" entries wrap
 html_show_sourcelink = False
 # "On this page" lists a class's members as from_code_value(), not
 # HazardCurve.from_code_value() (long names ran out of the right-hand column)
