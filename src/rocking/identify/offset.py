@@ -2,7 +2,8 @@
 
 The offset is the level where the record ends at rest or, if it does not, the centre of
 the oscillation from a binomial (1, 3, 3, 1)/8 filter of successive signed peaks (which
-cancels the decay of the amplitudes to third order).
+cancels the decay of the amplitudes to third order). If neither can be found, the record
+is refused: the caller gives the offset.
 """
 
 from __future__ import annotations
@@ -49,9 +50,26 @@ def _choose_offset(rec: Record, offset) -> tuple[float, str]:
     if c is not None:
         return c, "symmetric"
     if mode == "symmetric":
-        raise IdentificationError("too few half-cycles to find the centre of the "
-                                  "oscillation (offset='symmetric')")
-    return c0, "median"
+        raise IdentificationError(f"{TOO_FEW_PEAKS} (offset='symmetric')")
+    return c0, "median"  # a stand-in for finding the events: refused by offset_found
+
+
+TOO_FEW_PEAKS = ("too few half-cycles to find the centre of the oscillation from its "
+                 "peaks (five successive ones above 10 % of the largest, besides the first "
+                 "and last)")
+
+
+def offset_found(rec: Record, method: str) -> None:
+    """Refuse an offset that is only the median of the samples (``method == "median"``):
+    a short record spends most of its time on one side, so it is no rest level (3 s of
+    specimen 2 released from 0.6 alpha gave alpha 70 % off). Called once the record is
+    known to hold enough impacts, so that a record without them is refused for that."""
+    if method == "median":
+        raise IdentificationError(
+            f"the record's rest level (offset) cannot be found: the record does not end "
+            f"at rest and has {TOO_FEW_PEAKS}; give it: offset=<the angle at rest, in "
+            f"{rec.units}> (offset=0 if the record is zeroed at rest), or record until "
+            f"the block is at rest")
 
 
 def _rest_level(t, y, thr: float):

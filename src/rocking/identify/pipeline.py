@@ -20,7 +20,7 @@ import numpy as np
 from ..errors import IdentificationError, ParameterError
 from .events import Events, amplitude_threshold, find_events, usable_run
 from .fits import coarse_alpha_p, covariance, fit_times, restitution, uncertainties
-from .offset import remove_offset
+from .offset import offset_found, remove_offset
 from .record import Record, check_record
 from .release import Release, find_release
 from .result import FreeRockingFit
@@ -101,6 +101,7 @@ def free_rocking(t, theta, *, units: str = "rad", offset="auto", min_amplitude=N
     ev = find_events(rec, z, c)
     r_min = amplitude_threshold(rec, ev, min_amplitude)
     k0, k1 = usable_run(rec, ev, r_min)
+    offset_found(rec, method)
     alpha, p = coarse_alpha_p(ev.amp[k0:k1], ev.tpk[k0:k1], ev.cross[k0 - 1:k1])
     release = find_release(rec, rec.ym - c, ev, k0, p) if use_release else None
     times, alpha, p = _refine(rec, z, ev, range(k0, k1), release, r_min, alpha, p, loss)
