@@ -24,6 +24,8 @@ def public_objects() -> list[tuple[str, object]]:
         mod = importlib.import_module(pkg)
         for name in getattr(mod, "__all__", ()):
             obj = getattr(mod, name)
+            # compiled (numba) and cached functions: the function they wrap
+            obj = getattr(obj, "py_func", None) or getattr(obj, "__wrapped__", None) or obj
             if not (inspect.isfunction(obj) or inspect.isclass(obj)) or id(obj) in seen:
                 continue
             seen.add(id(obj))

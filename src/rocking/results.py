@@ -95,8 +95,8 @@ class Response:
     uplift_time: float
     """First time (s) the block left its rest position; NaN if it never did."""
     n_impacts: int
-    """Number of impacts (passages through theta = 0) over the whole run (see the module
-    docstring for the DEM)."""
+    """Number of impacts (passages through theta = 0) over the whole run (for the DEM,
+    see :mod:`rocking.models.dem`)."""
     model: str = "housner"
     block: object = None
     motion: object = None

@@ -164,7 +164,7 @@ class FragilityCurves:
         return pd.DataFrame(d)
 
     def state_probability(self, im):
-        """``P(DS = k | im)`` for k = 0..n (columns ``DS0``..``DSn``), summing to 1.
+        """``P(DS = k | im)`` for k = 0..n (columns ``DS0`` to ``DSn``), summing to 1.
 
         Examples
         --------

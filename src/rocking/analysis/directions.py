@@ -20,7 +20,7 @@ says (:func:`rocking.shapes.directional_parameters`' ``uplift_3d_*`` columns).
 
 **Directions.** ``phi`` (rad) is counter-clockwise from the body's x axis (the frame of
 :mod:`rocking.shapes`); ``orientation`` is the compass bearing of that axis (None: along
-the pair's first component; see :mod:`rocking.motions.pair`). The direction ``phi + pi``
+the pair's first component; see :class:`rocking.motions.HorizontalPair`). The direction ``phi + pi``
 is the mirror image of ``phi``: the same planar block with its sides swapped under the
 negated acceleration, so theta is negated and max ``|theta|``, overturning and the times are
 the same. The default directions therefore cover [0, 180) deg every 15 deg for a
@@ -401,7 +401,7 @@ def direction_fragility(body, pairs, levels, directions=None, *, im: str = "larg
 
     ``levels``: one sequence of levels (m/s^2) for every pair, or an array ``(pairs,
     levels)``, one row per pair (a design whose pairs cover distinct levels). The
-    orientation (module docstring of :mod:`rocking.motions.pair`) is the same for every
+    orientation (as in :class:`rocking.motions.HorizontalPair`) is the same for every
     pair (None: the body's x axis along each pair's first component). The same caveats
     as :func:`direction_sweep`: planar analysis per direction.
 

@@ -33,7 +33,21 @@ SHAPES = ("rectangle", "cut")
 
 @cache
 def paper_data() -> dict:
-    """The paper's tables (I-V) as a dict, read from ``rocking/blocks/data/pena2007.json``."""
+    """The paper's tables (I-V) as a dict, read from ``rocking/blocks/data/pena2007.json``.
+
+    Examples
+    --------
+    Table I's geometry of specimen 2 and its Table II theoretical alpha, which is Eq 2,
+    ``atan(b/h)``, of that geometry to the printed three decimals:
+
+    >>> import math
+    >>> from rocking.blocks import paper_data
+    >>> s2 = paper_data()["specimens"]["2"]
+    >>> s2["width"], s2["height"], s2["theoretical"]["alpha"]
+    (0.17, 1.0, 0.168)
+    >>> round(math.atan(s2["width"] / s2["height"]), 3)
+    0.168
+    """
     with resources.files("rocking.blocks").joinpath("data/pena2007.json").open() as f:
         return json.load(f)
 

@@ -395,6 +395,8 @@ class FloorMotion(Motion):
     # ---- Motion interface
     @property
     def kind(self) -> int:
+        """The motion kind of the kernel's spec: the ground's own at the ground floor,
+        else a sampled record."""
         return self.ground.kind if self.identity else K.RECORD
 
     @property

@@ -239,6 +239,8 @@ def plot_floor_spectrum(ax, periods, floor, ground=None, *, references=None,
     label, title : str
         Legend label of the floor curve; Axes title.
 
+    Notes
+    -----
     The style is :func:`rocking.plot.style_axes` with the colour palette
     :data:`rocking.plot.PALETTE`.
 

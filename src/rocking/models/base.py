@@ -27,9 +27,10 @@ A subclass of :class:`Model` provides
     (:data:`KernelResult`, a named tuple that numba compiles).
 
     * ``mp`` is the model's own parameter tuple (:meth:`Model.kernel_params`);
-    * ``(kind, prm, samples)`` is the motion spec (:mod:`rocking.motions._kernel`; evaluate
-      it with ``ground_acc`` and step onto ``next_breakpoint``), ``h_scan`` a time step
-      that resolves it (s), ``t_end`` the simulated time (s);
+    * ``(kind, prm, samples)`` is the motion spec (of the compiled motion kernels of
+      :mod:`rocking.motions`; evaluate it with ``ground_acc`` and step onto
+      ``next_breakpoint``), ``h_scan`` a time step that resolves it (s), ``t_end`` the
+      simulated time (s);
     * ``t_quiet`` (s): from this time on the ground is still (the motion has ended), and
       the kernel stops as soon as the block is *settled*, at rest or overturned (``inf``:
       run to ``t_end`` whatever the state, as for an explicit ``duration``);
@@ -49,7 +50,7 @@ A subclass of :class:`Model` provides
       as the classical model does by energy, see :mod:`rocking.models.housner`).
       Times with no event are NaN, the one convention of the package.
     * a vertical component, if any, travels in ``prm`` and ``samples``
-      (:mod:`rocking.motions._kernel`: ``has_vertical``, ``vertical_acc``); it is positive
+      (the motion kernels ``has_vertical`` and ``vertical_acc``); it is positive
       upwards and replaces ``g`` by ``g + a_v`` in the gravity terms.
 ``batch_kernel`` : a compiled parallel function over many motions
     ``batch_kernel(mp, extra0, rows, blocks)``: always the same two lines, a ``prange`` loop
@@ -467,7 +468,30 @@ Examples
 
 @njit(cache=True)
 def row_args(i, rows, extra0):
-    """The kernel arguments (after ``mp``) of row ``i`` of the :data:`Batch` ``rows``."""
+    """The kernel arguments (after ``mp``) of row ``i`` of the :data:`Batch` ``rows``.
+
+    A model's ``batch_kernel`` calls it for each row (module docstring); called from
+    Python it shows what a row hands the kernel.
+
+    Examples
+    --------
+    A batch of one row (one-sine pulse, 1 s window, 100 output samples), as
+    :func:`rocking.simulate_many` builds it:
+
+    >>> import numpy as np
+    >>> from rocking.models import Batch, pack_motions, row_args
+    >>> from rocking.motions import OneSine
+    >>> kinds, prms, samples, nsamp, t_ends, h_scans, t_quiets = pack_motions(
+    ...     [OneSine(2.0, 0.5)], duration=1.0)
+    >>> f = [np.zeros(1) for _ in range(5)]
+    >>> i, b = np.zeros((3, 1), np.int64), np.zeros((2, 1), bool)
+    >>> rows = Batch(kinds, prms, samples, nsamp, t_ends, t_quiets, h_scans, f[0], f[0],
+    ...              0.01, np.zeros((1, 100)), np.zeros((1, 100)), f[1], b[0], f[2],
+    ...              f[3], i[0], i[1], i[2], f[4], b[1], np.zeros((1, 0)))
+    >>> args = row_args(0, rows, ())
+    >>> len(args), float(args[3]), args[9].shape  # 13 arguments; t_end; theta's history
+    (13, 1.0, (100,))
+    """
     return (rows.kinds[i], rows.prms[i], rows.samples[i, : rows.nsamp[i]], rows.t_ends[i],
             rows.t_quiets[i], rows.theta0[i], rows.omega0[i], rows.h_scans[i], rows.dt_out,
             rows.theta[i], rows.omega[i], np.empty(0), extra0)
@@ -484,14 +508,45 @@ def row_args_out(i, rows):
 
 @njit(cache=True)
 def same_block(mp, b):
-    """``with_block`` of a model whose batches take one block: ``mp`` unchanged."""
+    """``with_block`` of a model whose batches take one block: ``mp`` unchanged.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from rocking.models import same_block
+    >>> same_block((0.2, 2.0), np.zeros(3))  # the kernel parameters, whatever the block row
+    (0.2, 2.0)
+    """
     return mp
 
 
 @njit(cache=True)
 def store_row(i, res, rows):
     """Store the :data:`KernelResult` ``res`` of row ``i`` in the :data:`Batch` ``rows``;
-    the history past the written samples is NaN."""
+    the history past the written samples is NaN.
+
+    Examples
+    --------
+    A batch of one row, as in :func:`row_args`, and a result that wrote 40 of its 100
+    output samples (a run that settled after 0.4 s):
+
+    >>> import numpy as np
+    >>> from rocking.models import Batch, pack_motions, KernelResult, store_row
+    >>> from rocking.motions import OneSine
+    >>> kinds, prms, samples, nsamp, t_ends, h_scans, t_quiets = pack_motions(
+    ...     [OneSine(2.0, 0.5)], duration=1.0)
+    >>> f = [np.zeros(1) for _ in range(5)]
+    >>> i, b = np.zeros((3, 1), np.int64), np.zeros((2, 1), bool)
+    >>> rows = Batch(kinds, prms, samples, nsamp, t_ends, t_quiets, h_scans, f[0], f[0],
+    ...              0.01, np.zeros((1, 100)), np.zeros((1, 100)), f[1], b[0], f[2],
+    ...              f[3], i[0], i[1], i[2], f[4], b[1], np.zeros((1, 0)))
+    >>> res = KernelResult(n_out=40, n_impacts=3, max_abs_theta=0.05, overturned=False,
+    ...                    overturn_time=np.nan, uplift_time=0.12, n_steps=400, status=0,
+    ...                    lift_off_time=0.12, settled=True)
+    >>> store_row(0, res, rows)
+    >>> int(rows.n_impacts[0]), bool(rows.settled[0]), bool(np.isnan(rows.theta[0, 40:]).all())
+    (3, True, True)
+    """
     rows.theta[i, res.n_out:] = math.nan
     rows.omega[i, res.n_out:] = math.nan
     rows.max_abs_theta[i] = res.max_abs_theta

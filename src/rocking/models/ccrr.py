@@ -33,7 +33,7 @@ times ``mu``, the classical restitution of Eq 4); Eq 9's coefficient would give
 ``sqrt(mu)`` per passage. The tests check the ratio ``mu`` through one passage, and that
 the model tends to the classical one as ``l -> 0``.
 
-**The regularising angular momentum ``l``.** ``l > 0`` keeps the trajectory away from the
+**The regularising angular momentum** ``l``. ``l > 0`` keeps the trajectory away from the
 singular origin: it passes at ``chi_min ~ l / v``. As ``l -> 0`` the model tends to the
 classical one, and the cost of a passage grows like ``log(1/l)``. The default
 ``l = 1e-8`` comes from two convergence studies kept as tests (``tests/test_ccrr.py``):

@@ -184,8 +184,9 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
         when the record ends is not reported as a survivor.
     theta0, omega0 : float
         Initial angle (rad, in (-pi/2, pi/2)) and angular velocity (rad/s).
-    linear : bool
-        The small-angle form of Eq 1 (models with a ``linear`` option); a bool.
+    linear : bool, optional
+        The small-angle form of Eq 1 (models with a ``linear`` option); True or False
+        (None, the default: False).
 
         ``theta0``, ``omega0`` and ``linear`` are keywords, as in :func:`simulate_many`
         (both take ``block, motion(s), model, duration`` by position, the rest by

@@ -7,8 +7,8 @@ so a positive ``a`` drives the rocking angle ``theta`` positive (see
 :mod:`rocking.models.housner`). ``-motion`` or ``motion.scaled(-1)`` flips the motion.
 
 Internally a motion is handed to compiled kernels as a *spec* ``(kind, prm, samples)``
-(see :mod:`rocking.motions._kernel`); the numpy evaluation uses the same compiled code,
-so the Python and the kernel views of a motion can never disagree.
+that this package's compiled motion kernels evaluate; the numpy evaluation uses the same
+compiled code, so the Python and the kernel views of a motion can never disagree.
 """
 
 from __future__ import annotations

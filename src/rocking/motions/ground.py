@@ -117,7 +117,8 @@ class GroundMotion(Motion):
         return q if self.vertical is None else max(q, self.vertical.quiet_time)
 
     @property
-    def kind(self) -> int:  # the horizontal motion's kind
+    def kind(self) -> int:
+        """The motion kind of the kernel's spec: that of the horizontal motion."""
         return self.horizontal.kind
 
     @property

@@ -55,7 +55,7 @@ linear between samples): ``alpha_1`` is multiplied by the factor
 (``meta["alpha1_factor"]``, 1.03 for the defaults) that makes the exact expectation
 ``pi / (2 g) sum_i int a_i^2 dt`` equal ``Ia``, ``a_i`` being the final record made by the
 unit pulse ``i`` alone. With the paper's ``alpha_1`` the defaults' records would average
-6 % below ``Ia``: the high-pass removes the content below ~``omega_c`` and the linear
+6 % below ``Ia``: the high-pass removes the content below about ``omega_c`` and the linear
 interpolation loses ``(1 - rho) / 3`` of the energy (``rho`` the correlation of successive
 samples).
 
