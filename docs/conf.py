@@ -191,6 +191,8 @@ def _module_notes() -> frozenset[str]:
                 if doc and mod and mod.startswith("rocking.") and _MODULE_DOC.search(
                         " ".join(doc.split())):
                     found.add(mod)
+    # the verification page cites the derivations of the catalog's closed forms
+    found.add("rocking.verification.catalog")
     return frozenset(found)
 
 

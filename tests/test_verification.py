@@ -23,6 +23,7 @@ from rocking.models.housner import Housner
 from rocking.verification import (
     CASES,
     IMPACT_CASES,
+    REFERENCE_KINDS,
     Case,
     VerificationTable,
     get_cases,
@@ -182,7 +183,15 @@ def test_rocking_verify_exits_0_and_prints_the_table(capsys):
     code, out, err = run_main(capsys, "verify")
     assert code == 0, out + err
     head = out.splitlines()[0].split()
-    assert head == ["case", "source", "reference", "computed", "unit", "tolerance", "pass"]
+    assert head == ["case", "source", "reference", "is", "reference", "computed", "unit",
+                    "tolerance", "pass"]
+    # what each reference is: a value printed in a paper only where the paper was read
+    for c in CASES:
+        assert c.reference_kind in REFERENCE_KINDS
+        if c.reference_kind == "printed":
+            assert c.source.startswith("Peña"), c.name
+        if c.reference_kind == "derived":
+            assert "could not be read" in c.how, c.name
     n_known = sum(c.known_tolerance is not None for c in CASES)
     for c in CASES:
         status = "KNOWN" if c.known_tolerance is not None else "PASS"
@@ -224,7 +233,7 @@ def test_list_and_markdown(capsys, tmp_path):
     code, out, _ = run_main(capsys, "verify", *CHEAP, "--markdown", md)
     assert code == 0
     text = md.read_text()
-    assert text.startswith("| case | source | what | reference | computed |")
+    assert text.startswith("| case | source | what | reference is | reference | computed |")
     for name in CHEAP:
         assert f"| `{name}` |" in text and f"**`{name}`**" in text
     assert "*Source*: Housner, G. W. (1963)" in text

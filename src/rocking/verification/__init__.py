@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from ..errors import ParameterError
 from .catalog import CASES, IMPACT_CASES, case_names, clear_caches
-from .core import TOLERANCE_KINDS, Case, Row, VerificationTable
+from .core import REFERENCE_KINDS, TOLERANCE_KINDS, Case, Row, VerificationTable
 
 
 def get_cases(names=None, quick: bool = False) -> list[Case]:
@@ -72,7 +72,7 @@ def verification_markdown(names=None, quick: bool = False, details: bool = True)
     >>> from rocking.verification import verification_markdown
     >>> md = verification_markdown(["housner-free-period"], details=False)
     >>> print(md.splitlines()[0])
-    | case | source | what | reference | computed | unit | tolerance | pass |
+    | case | source | what | reference is | reference | computed | unit | tolerance | pass |
     >>> md.splitlines()[2].endswith("| PASS |")
     True
     """
@@ -95,6 +95,6 @@ def verification_rst(names=None, quick: bool = False, details: bool = True) -> s
     return run_cases(names, quick).to_rst(details=details)
 
 
-__all__ = ["CASES", "IMPACT_CASES", "TOLERANCE_KINDS", "Case", "Row", "VerificationTable",
-           "case_names", "get_cases", "run_cases", "verification_markdown",
+__all__ = ["CASES", "IMPACT_CASES", "REFERENCE_KINDS", "TOLERANCE_KINDS", "Case", "Row",
+           "VerificationTable", "case_names", "get_cases", "run_cases", "verification_markdown",
            "verification_rst"]

@@ -466,7 +466,7 @@ def _table2_case(n: int, name: str, printed: float, known: str = "",
                  known_tolerance: float | None = None) -> Case:
     unit, tol = TABLE2_UNITS[name]
     return Case(
-        name=f"pena-table2-specimen{n}-{name}", source=PENA_2007,
+        name=f"pena-table2-specimen{n}-{name}", source=PENA_2007, reference_kind="printed",
         what=f"{name} of specimen {n} from its Table I geometry (Eq "
              f"{ {'alpha': 2, 'p': 3, 'mu': 4}[name] }) against the printed theoretical value",
         how=TABLE2_HOW.format(n=n), reference=lambda: printed,
@@ -509,11 +509,11 @@ CASES: tuple[Case, ...] = (
              "(mu = 1)",
         how="T = (4/p) arccosh(1/(1 - theta0/alpha)), the period of the linearised free "
             "motion (Housner 1963): theta = alpha - (alpha - theta0) cosh(p t) reaches 0 "
-            "at a quarter period.",
+            "at a quarter period. " + UNREAD,
         reference=lambda: 4.0 / FREE["p"] * math.acosh(1.0 / (1.0 - FREE["frac"])),
         compute=_free_period, unit="s", tolerance=1e-7, group="classical"),
     Case(
-        name="housner-eq1-acceleration",
+        name="housner-eq1-acceleration", reference_kind="equation",
         source=HOUSNER_1963,
         what="angular acceleration of a rectangular block (width 0.4 m, height 1.6 m) "
              "released from rest at theta = alpha/2 (nonlinear model)",
@@ -528,7 +528,7 @@ CASES: tuple[Case, ...] = (
         reference=_eq1_acceleration_ref, compute=_eq1_acceleration, unit="rad/s^2",
         tolerance=1e-6, group="classical"),
     Case(
-        name="housner-restitution",
+        name="housner-restitution", reference_kind="equation",
         source=HOUSNER_1963,
         what="ratio of angular velocities after and before an impact of a rectangular "
              "block (width 0.4 m, height 1.6 m), from its free-rocking amplitudes",
@@ -543,7 +543,7 @@ CASES: tuple[Case, ...] = (
                                                          / RECT_BLOCK["height"])) ** 2,
         compute=lambda: _velocity_ratio(_rect_block()), tolerance=1e-5, group="classical"),
     Case(
-        name="housner-uplift",
+        name="housner-uplift", reference_kind="equation",
         source=HOUSNER_1963,
         what="least constant ground acceleration a/(g tan alpha) that uplifts the block "
              "(nonlinear model)",
@@ -656,7 +656,7 @@ CASES: tuple[Case, ...] = (
         how="Self-similarity of the rocking response (Makris and Konstantinidis 2003; "
             "dimensional analysis): theta/alpha as a function of p t depends only on "
             "omega_p/p, a_p/(g tan alpha), alpha and mu, so the difference is zero "
-            "(exactly; the tolerance is the integration's).",
+            "(exactly; the tolerance is the integration's). " + UNREAD,
         reference=lambda: 0.0, compute=_similarity_difference, tolerance=1e-8,
         tolerance_kind="abs", group="similarity"),
     Case(
@@ -668,7 +668,7 @@ CASES: tuple[Case, ...] = (
             "spectrum drawn on omega_p/p and a_p/(g tan alpha) is the same for blocks of "
             "any size with the same alpha and mu, so the ratio is 1. Computed with "
             "rocking.analysis.overturning.overturning_spectrum (nonlinear model), whose "
-            "bisection resolves a threshold to 1e-4: the tolerance.",
+            "bisection resolves a threshold to 1e-4: the tolerance. " + UNREAD,
         reference=lambda: 1.0,
         compute=lambda: _dd_threshold(SIMILAR["p"][0]) / _dd_threshold(SIMILAR["p"][1]),
         tolerance=1e-4, group="similarity"),
@@ -700,7 +700,7 @@ CASES: tuple[Case, ...] = (
               "would need R = 0.276 m. As for its alpha, the paper does not say how the "
               "40 mm cut of specimen 4 enters its theoretical values."),
     Case(
-        name="pena-table3-specimen2-K",
+        name="pena-table3-specimen2-K", reference_kind="printed",
         source=PENA_2007,
         what="normal stiffness K of the DEM contact for specimen 2 (T parameters), Eq 17 "
              "against the printed Table III value",
@@ -713,7 +713,7 @@ CASES: tuple[Case, ...] = (
         reference=lambda: 3302.0, compute=lambda: _table3_K(2), unit="N/m",
         tolerance=13.0, tolerance_kind="abs", group="paper"),
     Case(
-        name="pena-table3-specimen3-K",
+        name="pena-table3-specimen3-K", reference_kind="printed",
         source=PENA_2007,
         what="the same stiffness K for specimen 3 (T parameters)",
         how="Quoted from Table III of Pena et al. (2007), column T: K = 1174 N/m. Computed: "
@@ -728,7 +728,7 @@ CASES: tuple[Case, ...] = (
                          "tests/test_dem.py). The paper does not say how it was obtained.",
         known_tolerance=600.0),
     Case(
-        name="ccrr-vs-classical",
+        name="ccrr-vs-classical", reference_kind="cross-check",
         source=PENA_2007,
         what="amplitude after the third impact of free rocking from alpha/2 (alpha = 0.2, "
              "p = 2, mu = 0.9): the CCRR model (Eqs 5-10) against the classical model",
@@ -740,7 +740,7 @@ CASES: tuple[Case, ...] = (
         compute=lambda: float(_free_amplitudes("ccrr", _ccrr_block())[3]),
         unit="rad", tolerance=5e-3, group="cross-model"),
     Case(
-        name="dem-vs-classical",
+        name="dem-vs-classical", reference_kind="cross-check",
         source=PENA_2007,
         what="amplitude after the second impact of free rocking of specimen 2 "
              "(experimental parameters) from alpha/2: the DEM against the classical model",
@@ -754,7 +754,7 @@ CASES: tuple[Case, ...] = (
                                                dt_out=5e-4)[2]),
         unit="rad", tolerance=3e-2, group="cross-model", slow=True),
     Case(
-        name="sdof-floor-transmissibility",
+        name="sdof-floor-transmissibility", reference_kind="textbook",
         source=CHOPRA,
         what="steady-state floor acceleration over ground acceleration of an SDOF building "
              "(T = 0.5 s, zeta = 5 %) under a sine at 1.5 times its frequency",
@@ -765,7 +765,7 @@ CASES: tuple[Case, ...] = (
         reference=_transmissibility_ref, compute=_transmissibility, tolerance=1e-3,
         group="buildings"),
     Case(
-        name="cantilever-period-ratio",
+        name="cantilever-period-ratio", reference_kind="textbook",
         source=MIRANDA_TAGHAVI_2005,
         what="T1/T2 of the continuous building with alpha = 0 (a flexural cantilever)",
         how="alpha = 0 is the flexural limit of Miranda and Taghavi's shear-flexural "
@@ -776,7 +776,7 @@ CASES: tuple[Case, ...] = (
         reference=lambda: (_cantilever_roots(2)[1] / _cantilever_roots(2)[0]) ** 2,
         compute=_cantilever_ratio, tolerance=1e-9, group="buildings"),
     Case(
-        name="shear-building-frequencies",
+        name="shear-building-frequencies", reference_kind="textbook",
         source=CHOPRA,
         what="omega2/omega1 of a uniform 5-storey shear building",
         how="omega_j = 2 sqrt(k/m) sin((2j - 1) pi/(2(2N + 1))) for equal storey "
@@ -786,7 +786,7 @@ CASES: tuple[Case, ...] = (
         reference=lambda: math.sin(3 * math.pi / 22) / math.sin(math.pi / 22),
         compute=_shear_ratio, tolerance=1e-10, group="buildings"),
     Case(
-        name="isolated-no-uplift-sd",
+        name="isolated-no-uplift-sd", reference_kind="cross-check",
         source=VASSILIOU_MAKRIS_2012,
         what="largest isolator displacement of specimen 2 on a linear isolation "
              "(T_b = 2 s, zeta_b = 10 %) under Rinaldi 228 x 0.1, where it never uplifts",
@@ -799,7 +799,7 @@ CASES: tuple[Case, ...] = (
         compute=lambda: float(_isolated_run()[1].info["max_base_displacement"]),
         unit="m", tolerance=2e-3, group="isolation"),
     Case(
-        name="isolated-no-uplift-sa",
+        name="isolated-no-uplift-sa", reference_kind="cross-check",
         source=VASSILIOU_MAKRIS_2012,
         what="largest absolute acceleration of the isolated base in the same run",
         how="The same linear oscillator: the base's largest absolute acceleration is the "
@@ -809,7 +809,7 @@ CASES: tuple[Case, ...] = (
         compute=lambda: float(_isolated_run()[1].info["max_plate_acceleration"]),
         unit="m/s^2", tolerance=2e-3, group="isolation"),
     Case(
-        name="shape-box-alpha",
+        name="shape-box-alpha", reference_kind="equation",
         source=PENA_2007,
         what="alpha of a 0.5 x 0.25 x 1.25 m box mesh shaken along its long side, from "
              "rocking.shapes",
@@ -819,7 +819,7 @@ CASES: tuple[Case, ...] = (
         compute=lambda: float(_box_parameters()["alpha_plus"]), unit="rad",
         tolerance=1e-9, group="shapes"),
     Case(
-        name="shape-box-p",
+        name="shape-box-p", reference_kind="equation",
         source=PENA_2007,
         what="frequency parameter p of the same box mesh, from rocking.shapes",
         how="p = sqrt(3 g/(4 R)), R = sqrt(b^2 + h^2) (Eq 3 of Pena et al. 2007; the "
@@ -828,7 +828,7 @@ CASES: tuple[Case, ...] = (
         compute=lambda: float(_box_parameters()["p_plus"]), unit="1/s",
         tolerance=1e-9, group="shapes"),
     Case(
-        name="shape-box-restitution",
+        name="shape-box-restitution", reference_kind="equation",
         source=HOUSNER_1963,
         what="coefficient of restitution of the same box mesh, from rocking.shapes",
         how="mu = 1 - (3/2) sin^2(alpha) (Housner 1963; Eq 4 of Pena et al. 2007), the "

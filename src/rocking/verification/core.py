@@ -22,6 +22,18 @@ TOLERANCE_KINDS = ("rel", "abs", "below")
 ``|computed - reference| <= tolerance``; ``below``: a bound, not a value: pass iff
 ``reference - tolerance <= computed < reference``."""
 
+REFERENCE_KINDS = {
+    "printed": "a value printed in the source, quoted as printed",
+    "equation": ("an equation as printed in a source read for this project (the case's "
+                 "own, or Pena et al. 2007 where it quotes it), evaluated here"),
+    "textbook": "a textbook closed form, evaluated here",
+    "derived": ("a closed form derived here from the source's model; the source's own "
+                "printed numbers could not be read, so they are not compared"),
+    "cross-check": ("another computation of the package, independent of the one checked "
+                    "(another model, or the response spectrum)"),
+}
+"""What a case's reference value is (:attr:`Case.reference_kind`), as the tables say."""
+
 
 @dataclass(frozen=True)
 class Case:
@@ -62,6 +74,9 @@ class Case:
         table; outside it, it fails.
     slow : bool
         Left out by ``quick=True``.
+    reference_kind : str
+        What the reference is (:data:`REFERENCE_KINDS`): ``printed``, ``equation``,
+        ``textbook``, ``derived`` (the default) or ``cross-check``.
 
     Examples
     --------
@@ -93,10 +108,13 @@ class Case:
     known_difference: str = ""
     known_tolerance: float | None = None
     slow: bool = False
+    reference_kind: str = "derived"
 
     def __post_init__(self):
         if self.tolerance_kind not in TOLERANCE_KINDS:
             raise ValueError(f"tolerance_kind must be one of {TOLERANCE_KINDS}")
+        if self.reference_kind not in REFERENCE_KINDS:
+            raise ValueError(f"reference_kind must be one of {tuple(REFERENCE_KINDS)}")
         if self.known_tolerance is not None and not (
                 self.known_difference and self.tolerance_kind != "below"
                 and self.known_tolerance > self.tolerance):
@@ -265,7 +283,8 @@ class Row:
 
         c = self.case
         return {"case": c.name, "group": c.group, "source": c.source, "what": c.what,
-                "how": c.how, "reference": num(self.reference), "computed": num(self.computed),
+                "how": c.how, "reference_kind": c.reference_kind,
+                "reference": num(self.reference), "computed": num(self.computed),
                 "unit": c.unit, "tolerance": c.tolerance, "tolerance_kind": c.tolerance_kind,
                 "difference": num(self.difference), "status": self.status,
                 "passed": self.passed, "note": self.note,
@@ -374,12 +393,16 @@ class VerificationTable:
         >>> table = run_cases(["pena-table2-specimen1-alpha", "pena-table2-specimen2-alpha"])
         >>> lines = table.to_text().splitlines()
         >>> print(lines[0])
-        case                         source              reference  computed      unit  ...
-        >>> print(lines[5])
+        case                         source              reference is  reference  computed  ...
+        >>> print(lines[lines.index("Reference is:") + 1])  # what the references are
+          printed: a value printed in the source, quoted as printed.
+        >>> print(next(x for x in lines if "cases pass" in x))
         1 of 2 cases pass; 1 KNOWN (documented disagreements).
         """
-        head = ("case", "source", "reference", "computed", "unit", "tolerance", "pass")
-        body = [(r.case.name, short_source(r.case.source), _fmt(r.reference),
+        head = ("case", "source", "reference is", "reference", "computed", "unit",
+                "tolerance", "pass")
+        body = [(r.case.name, short_source(r.case.source), r.case.reference_kind,
+                 _fmt(r.reference),
                  _fmt(r.computed), r.case.unit, r.case.tolerance_text, r.status)
                 for r in self.rows]
         widths = [max(len(h), *(len(b[i]) for b in body)) if body else len(h)
@@ -388,6 +411,12 @@ class VerificationTable:
                  "  ".join("-" * w for w in widths)]
         lines += ["  ".join(c.ljust(w) for c, w in zip(b, widths, strict=True)).rstrip()
                   for b in body]
+        kinds = dict.fromkeys(r.case.reference_kind for r in self.rows)
+        if kinds:
+            lines += ["", "Reference is:"]
+            for k in kinds:
+                lines.extend(textwrap.wrap(f"{k}: {REFERENCE_KINDS[k]}.", width=100,
+                                           initial_indent="  ", subsequent_indent="      "))
         n_fail = len(self.failed)
         n_known = sum(r.status == "KNOWN" for r in self.rows)
         lines.append("")
@@ -411,16 +440,17 @@ class VerificationTable:
         >>> table = run_cases(["pena-table2-specimen1-alpha", "pena-table2-specimen2-alpha"])
         >>> lines = table.to_markdown(details=False).splitlines()
         >>> print(lines[0])
-        | case | source | what | reference | computed | unit | tolerance | pass |
+        | case | source | what | reference is | reference | computed | unit | tolerance | pass |
         >>> len(lines), lines[2].endswith("| KNOWN |"), lines[3].endswith("| PASS |")
         (4, True, True)
         """
-        lines = ["| case | source | what | reference | computed | unit | tolerance | pass |",
-                 "|---|---|---|---|---|---|---|---|"]
+        lines = ["| case | source | what | reference is | reference | computed | unit | "
+                 "tolerance | pass |", "|---|---|---|---|---|---|---|---|---|"]
         for r in self.rows:
             c = r.case
             lines.append(f"| `{c.name}` | {_md(short_source(c.source))} | {_md(c.what)} | "
-                         f"{_fmt(r.reference)} | {_fmt(r.computed)} | {c.unit} | "
+                         f"{c.reference_kind} | {_fmt(r.reference)} | {_fmt(r.computed)} | "
+                         f"{c.unit} | "
                          f"{c.tolerance_text} | "
                          f"{'**FAIL**' if r.status == 'FAIL' else r.status} |")
         if details:
@@ -429,7 +459,8 @@ class VerificationTable:
                 c = r.case
                 lines.append(f"**`{c.name}`** ({c.group}). {_md(_sentence(c.what))}  ")
                 lines.append(f"*Source*: {_md(c.source)}  ")
-                lines.append(f"*Reference*: {_md(c.how)}"
+                lines.append(f"*Reference* ({c.reference_kind}: "
+                             f"{_md(REFERENCE_KINDS[c.reference_kind])}): {_md(c.how)}"
                              + (f"  \n*Known difference*: {_md(c.known_difference)}"
                                 + (f" (documented bound: {c.known_tolerance_text})"
                                    if c.known_tolerance is not None else "")
@@ -448,19 +479,22 @@ class VerificationTable:
         >>> from rocking.verification import run_cases
         >>> table = run_cases(["pena-table2-specimen1-alpha", "pena-table2-specimen2-alpha"])
         >>> lines = table.to_rst(details=False).splitlines()
-        >>> lines[:2], lines[4:6]
+        >>> lines[:2], lines[5:7]
         (['.. list-table::', '   :header-rows: 1'], ['   * - case', '     - source'])
         >>> ".. _verify-pena-table2-specimen2-alpha:" in table.to_rst()
         True
         """
-        cols = ("case", "source", "reference", "computed", "unit", "tolerance", "pass")
-        lines = [".. list-table::", "   :header-rows: 1", "   :widths: auto", ""]
+        cols = ("case", "source", "reference is", "reference", "computed", "unit",
+                "tolerance", "pass")
+        lines = [".. list-table::", "   :header-rows: 1", "   :widths: auto",
+                 "   :class: verification-table", ""]
         lines.append("   * - " + "\n     - ".join(cols))
         for r in self.rows:
             c = r.case
             name = f"`{c.name} <verify-{c.name}_>`_" if details else f"``{c.name}``"
             cells = [name] + [_rst(x) for x in (
-                short_source(c.source), _fmt(r.reference), _fmt(r.computed),
+                short_source(c.source), c.reference_kind, _fmt(r.reference),
+                _fmt(r.computed),
                 c.unit if c.unit.strip() not in ("", "-") else "\u2014",
                 c.tolerance_text)] + [f"**{r.status}**" if r.status == "FAIL" else r.status]
             lines.append("   * - " + "\n     - ".join(cells))
@@ -477,7 +511,9 @@ class VerificationTable:
                     u = "" if c.unit.strip() in ("", "-") else " " + _rst(c.unit)
                     lines += ["", f".. _verify-{c.name}:", "", head, "~" * len(head), ""]
                     body = [f"**{r.status}**. {_rst(_sentence(c.what))}",
-                            f"*Source*: {_rst(c.source)}", f"*Reference*: {_rst(c.how)}",
+                            f"*Source*: {_rst(c.source)}",
+                            f"*Reference* ({c.reference_kind}: "
+                            f"{_rst(REFERENCE_KINDS[c.reference_kind])}): {_rst(c.how)}",
                             f"*Reference value*: {_rst(_fmt(r.reference))}{u}; "
                             f"*computed*: {_rst(_fmt(r.computed))}{u}; "
                             f"*tolerance*: {_rst(c.tolerance_text)}"]
@@ -513,4 +549,4 @@ def _rst(text: str) -> str:
     return text
 
 
-__all__ = ["TOLERANCE_KINDS", "Case", "Row", "VerificationTable", "short_source"]
+__all__ = ["REFERENCE_KINDS", "TOLERANCE_KINDS", "Case", "Row", "VerificationTable", "short_source"]
