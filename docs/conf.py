@@ -317,7 +317,7 @@ html_title = f"rocking {release}"
 html_theme_options = {
     "navigation_with_keys": False,
     "show_toc_level": 2,
-    "header_links_before_dropdown": 8,
+    "header_links_before_dropdown": 7,
 }
 # pages without siblings: no empty "Section Navigation" column
 html_sidebars = {"verification": [], "changelog": [], "cli": []}
