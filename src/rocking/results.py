@@ -128,7 +128,10 @@ class Response:
         """Times (s) and values (rad, signed) of the largest ``|theta|`` in each half-cycle.
 
         Half-cycles are delimited by the impacts; each peak is refined by a parabola
-        through the three output samples around it (accuracy ~ (omega dt_out)^2).
+        through the three output samples around it (accuracy ~ (omega dt_out)^2). The
+        last half-cycle has no peak when its largest ``|theta|`` is the run's last sample
+        (the run ended, or the block overturned, while ``|theta|`` still grew): that value
+        is no amplitude, and is left out.
 
         Examples
         --------
@@ -155,7 +158,8 @@ class Response:
             if idx.size == 0:
                 continue
             i = idx[np.argmax(a[idx])]
-            if a[i] == 0.0:
+            if a[i] == 0.0 or (i == a.size - 1 and hi == edges[-1] and i > 0
+                               and a[i] > a[i - 1]):
                 continue
             t_i, v_i = self.t[i], self.theta[i]
             if 0 < i < a.size - 1 and idx[0] < i < idx[-1]:
