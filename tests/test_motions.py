@@ -297,3 +297,23 @@ class TestShared:
         tm = rec.t[:-1] + 0.5 * dt
         np.testing.assert_allclose(rec.acceleration(tm), 0.5 * (rec.acc[:-1] + rec.acc[1:]),
                                    atol=1e-12)
+
+
+@pytest.mark.parametrize("cls", [Sine, HanningSine])
+def test_an_acceleration_given_as_displacement_warns(cls):
+    """``amplitude`` of a harmonic motion is the table displacement (m): one whose
+    acceleration amplitude X (2 pi f)^2 passes 5 g warns (an acceleration typed in its
+    place), one just below does not."""
+    import warnings
+
+    from rocking.errors import PlausibilityWarning
+    from rocking.units import G
+
+    f = 5.0
+    x5g = 5.0 * G / (2.0 * math.pi * f) ** 2     # 0.0497 m at 5 Hz
+    with pytest.warns(PlausibilityWarning, match="table displacement in m"):
+        cls(f, 1.01 * x5g, 2.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        cls(f, 0.99 * x5g, 2.0)
+        cls(5.0, 0.005, 25.0)                    # the paper's 5 mm at 5 Hz (0.5 g)

@@ -18,6 +18,7 @@ import math
 from dataclasses import dataclass
 
 from .._validate import as_float, non_negative, positive, warn_implausible
+from ..units import G
 from . import _kernel as K
 from .base import Motion
 
@@ -25,10 +26,23 @@ PLAUSIBLE_AMPLITUDE = 1.0
 """A displacement amplitude (m) above this gets a warning (a table stroke is centimetres)."""
 
 
-def _check_amplitude(cls: str, x: float) -> None:
+PLAUSIBLE_ACCELERATION = 5.0 * G
+"""An acceleration amplitude ``X (2 pi f)^2`` (m/s^2) above this (5 g, as a record's PGA in
+:mod:`rocking.motions.records`) gets a warning: an acceleration given as ``amplitude``."""
+
+
+def _check_amplitude(cls: str, x: float, freq: float) -> None:
     if x > PLAUSIBLE_AMPLITUDE:
         warn_implausible(f"{cls}: displacement amplitude {x:g} m is above 1 m; check the "
                          "units (amplitude is in m: 5 mm is 0.005)")
+        return
+    acc = x * (2.0 * math.pi * freq) ** 2
+    if acc > PLAUSIBLE_ACCELERATION:
+        warn_implausible(f"{cls}: displacement amplitude {x:g} m at {freq:g} Hz is an "
+                         f"acceleration amplitude of {acc:.3g} m/s^2 ({acc / G:.3g} g), above "
+                         f"5 g; amplitude is the table displacement in m (for an "
+                         f"acceleration: Sine.from_acceleration, or the catalog's "
+                         f"amplitude=)")
 
 
 @dataclass(frozen=True)
@@ -58,7 +72,7 @@ class Sine(Motion):
         object.__setattr__(self, "amplitude", non_negative("amplitude", self.amplitude, "m"))
         object.__setattr__(self, "duration", positive("duration", self.duration, "s"))
         object.__setattr__(self, "phase", as_float("phase", self.phase))
-        _check_amplitude("Sine", self.amplitude)
+        _check_amplitude("Sine", self.amplitude, self.freq)
         object.__setattr__(self, "scale", as_float("scale", self.scale))
 
     @classmethod
@@ -124,7 +138,7 @@ class HanningSine(Motion):
         object.__setattr__(self, "amplitude", non_negative("amplitude", self.amplitude, "m"))
         object.__setattr__(self, "duration", positive("duration", self.duration, "s"))
         object.__setattr__(self, "scale", as_float("scale", self.scale))
-        _check_amplitude("HanningSine", self.amplitude)
+        _check_amplitude("HanningSine", self.amplitude, self.freq)
 
     def _params(self):
         return (self.freq, self.amplitude, self.duration)
