@@ -128,10 +128,12 @@ class Response:
         """Times (s) and values (rad, signed) of the largest ``|theta|`` in each half-cycle.
 
         Half-cycles are delimited by the impacts; each peak is refined by a parabola
-        through the three output samples around it (accuracy ~ (omega dt_out)^2). The
-        last half-cycle has no peak when its largest ``|theta|`` is the run's last sample
-        (the run ended, or the block overturned, while ``|theta|`` still grew): that value
-        is no amplitude, and is left out.
+        through the three output samples around it (accuracy ~ (omega dt_out)^2). Only
+        reached peaks count: none when the block never uplifted (``uplift_time`` NaN; a
+        DEM block's contact springs still move it by a micro-radian); none in the first
+        half-cycle of a run that starts moving towards ``theta = 0``; none in the last
+        half-cycle when the run ends (or the block overturns) while ``|theta|`` still
+        grows.
 
         Examples
         --------
@@ -149,26 +151,30 @@ class Response:
         >>> round(1 - math.sqrt(1 - 0.75 * block.mu**2), 4)
         0.4417
         """
-        edges = np.concatenate(([self.t[0] if self.t.size else 0.0], self.impact_times,
-                                [self.t[-1] if self.t.size else 0.0]))
+        if math.isnan(self.uplift_time) or self.t.size < 2:
+            return np.empty(0), np.empty(0)
+        edges = np.concatenate(([self.t[0]], self.impact_times, [self.t[-1]]))
         a = np.abs(self.theta)
+        growing = self.theta * self.omega  # > 0: |theta| grows
+        last = a.size - 1
         tp, vp = [], []
         for lo, hi in zip(edges[:-1], edges[1:], strict=True):
             idx = np.flatnonzero((self.t >= lo) & (self.t <= hi))
             if idx.size == 0:
                 continue
             i = idx[np.argmax(a[idx])]
-            if a[i] == 0.0 or (i == a.size - 1 and hi == edges[-1] and i > 0
-                               and a[i] > a[i - 1]):
+            if (a[i] == 0.0 or (i == 0 and growing[0] < 0.0)
+                    or (i == last and hi == edges[-1] and growing[last] > 0.0)):
                 continue
             t_i, v_i = self.t[i], self.theta[i]
-            if 0 < i < a.size - 1 and idx[0] < i < idx[-1]:
-                y0, y1, y2 = a[i - 1], a[i], a[i + 1]
+            c = i if 0 < i < last and idx[0] < i < idx[-1] else (
+                i - 1 if i == last and i >= 2 and idx[0] < i - 1 else -1)
+            if c > 0:  # the parabola through samples c - 1, c, c + 1
+                y0, y1, y2 = a[c - 1], a[c], a[c + 1]
                 den = y0 - 2 * y1 + y2
-                if den < 0:
-                    d = 0.5 * (y0 - y2) / den
-                    dt = self.t[i + 1] - self.t[i]
-                    t_i = t_i + d * dt
+                d = 0.5 * (y0 - y2) / den if den < 0 else math.nan
+                if -1.0 <= d <= 1.0:
+                    t_i = self.t[c] + d * (self.t[c + 1] - self.t[c])
                     v_i = np.sign(v_i) * (y1 - 0.25 * (y0 - y2) * d)
             tp.append(t_i)
             vp.append(v_i)
