@@ -248,7 +248,7 @@ class FragilityCurves:
         >>> curves = fragility_curves(im, state, n_boot=0, im_name="pga", im_unit="m/s^2")
         >>> import json
         >>> d = json.loads(json.dumps(curves.to_dict()))  # plain JSON
-        >>> d["states"][1]["data"]["n_failed"]  # overturned records per stripe
+        >>> d["states"][1]["data"]["n_failed"]  # records in DS2 or worse, per stripe
         [0, 0, 1, 10, 19]
         """
         d = self.summary()

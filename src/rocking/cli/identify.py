@@ -93,7 +93,8 @@ def table_lines(fit, theo: dict | None) -> list[str]:
                    "second).")
 @click.option("--offset", metavar="X",
               help="Offset of the record: auto (default), rest, symmetric, or a number in "
-                   "the record's units.")
+                   "the record's units (needed when the record does not end at rest and "
+                   "has too few peaks for the centre of its oscillation).")
 @click.option("--out", default="identify_out", show_default=True,
               type=click.Path(file_okay=False), help="Folder for the plots and the JSON.")
 @click.option("--json", "as_json", is_flag=True, help="Print the fit as JSON (SI units).")

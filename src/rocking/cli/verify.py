@@ -9,12 +9,13 @@
     rocking verify --markdown FILE      # the table and each case's source and derivation
     rocking verify --list               # the case names, their group and what they check
 
-Prints one row per case: case, source, reference value, computed value, unit, tolerance,
-and PASS, KNOWN (the case disagrees with its source for a documented reason, within a
-documented bound) or FAIL, then the notes (why a case fails, or its documented
-difference). Exit code 0 when no case fails, 1 when one does (a failing verification is
-not bad input), 2 for an unknown case name (one line ``error: ...`` listing the known
-names).
+Prints one row per case: case, source, what the reference is (printed, equation,
+textbook, derived, cross-check: ``rocking.verification.REFERENCE_KINDS``), reference
+value, computed value, unit, tolerance, and PASS, KNOWN (the case disagrees with its
+source for a documented reason, within a documented bound) or FAIL, then the notes (why
+a case fails, or its documented difference). Exit code 0 when no case fails, 1 when one
+does (a failing verification is not bad input), 2 for an unknown case name (one line
+``error: ...`` listing the known names).
 """
 
 from __future__ import annotations
@@ -39,8 +40,9 @@ from .common import CONTEXT, json_default
 @click.option("--list", "list_only", is_flag=True,
               help="List the cases (name, group, what) without running them.")
 def verify_cmd(cases, quick, as_json, markdown, list_only):
-    """Run the verification cases and print the table: case, source, reference value,
-    computed value, tolerance, pass (PASS; KNOWN: a disagreement with a documented reason
+    """Run the verification cases and print the table: case, source, what the reference
+    is (printed, equation, textbook, derived, cross-check), reference value, computed
+    value, tolerance, pass (PASS; KNOWN: a disagreement with a documented reason
     and bound, not a failure; FAIL). Exit code 1 if any case fails.
 
     CASES: names of cases to run (all by default; see --list).

@@ -55,8 +55,8 @@ def _choose_offset(rec: Record, offset) -> tuple[float, str]:
 
 
 TOO_FEW_PEAKS = ("too few half-cycles to find the centre of the oscillation from its "
-                 "peaks (five successive ones above 10 % of the largest, besides the first "
-                 "and last)")
+                 "peaks (two windows of four successive peaks above 10 % of the largest, "
+                 "besides the first and last)")
 
 
 def offset_found(rec: Record, method: str) -> None:
@@ -68,8 +68,8 @@ def offset_found(rec: Record, method: str) -> None:
         raise IdentificationError(
             f"the record's rest level (offset) cannot be found: the record does not end "
             f"at rest and has {TOO_FEW_PEAKS}; give it: offset=<the angle at rest, in "
-            f"{rec.units}> (offset=0 if the record is zeroed at rest), or record until "
-            f"the block is at rest")
+            f"{rec.units}> (--offset on the command line; 0 if the record is zeroed at "
+            f"rest), or record until the block is at rest")
 
 
 def _rest_level(t, y, thr: float):

@@ -43,14 +43,18 @@ def free_rocking(t, theta, *, units: str = "rad", offset="auto", min_amplitude=N
         Sample times (s, strictly increasing; any rate, e.g. 50-1000 Hz) and rocking angle
         (in ``units``). The record may start anywhere: at rest or during a hold before the
         release, or mid-swing (an incomplete first half-cycle is used only if its peak is
-        recorded); it may end at rest or while the block still rocks.
+        recorded); it may end at rest or while the block still rocks (then with enough
+        peaks for the centre of the oscillation, or with ``offset`` given).
     units : {"rad", "deg"}
         Units of ``theta``. Results are always in rad.
     offset : "auto", "rest", "symmetric" or float
         Constant offset of the record: the level where the record ends at rest
         (``"rest"``), the centre of the oscillation from successive signed peaks
         (``"symmetric"``), ``"auto"`` (rest if the record ends at rest, else symmetric),
-        or a known value in ``units`` (``FreeRockingFit.offset`` is in rad).
+        or a known value in ``units`` (``FreeRockingFit.offset`` is in rad). A record that
+        neither ends at rest nor has peaks enough for the centre (two windows of four
+        successive peaks above 10 % of the largest, besides the first and last) is
+        refused: give the offset.
     use_release : bool
         Also use the first, incomplete half-cycle when its peak is in the record (a
         release from rest, possibly after a hold): its fall time ``T(r_0)``, at the largest
@@ -77,7 +81,8 @@ def free_rocking(t, theta, *, units: str = "rad", offset="auto", min_amplitude=N
     ------
     IdentificationError
         No rocking, fewer than three usable half-cycles (e.g. no impact or one impact),
-        or an error surface without an interior minimum (alpha not identifiable).
+        a rest level (offset) that cannot be found (give ``offset``), or an error surface
+        without an interior minimum (alpha not identifiable).
     ParameterError
         Malformed input: NaN or inf samples, non-increasing times, mismatched lengths.
 

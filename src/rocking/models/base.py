@@ -269,7 +269,7 @@ class Model:
         Examples
         --------
         The classical model's tuple starts with the block's ``alpha``, ``p`` and ``mu``
-        (Eq 1 and Eq 4):
+        (Eqs 2-4):
 
         >>> import rocking
         >>> block = rocking.Block.rectangular(0.2, 1.0)
@@ -475,8 +475,8 @@ def row_args(i, rows, extra0):
 
     Examples
     --------
-    A batch of one row (one-sine pulse, 1 s window, 100 output samples), as
-    :func:`rocking.simulate_many` builds it:
+    A hand-built batch of one row (one-sine pulse, 1 s window, 100 output samples; the
+    outputs are zero placeholders) with the inputs :func:`rocking.simulate_many` gives:
 
     >>> import numpy as np
     >>> from rocking.models import Batch, pack_motions, row_args

@@ -532,7 +532,9 @@ CASES: tuple[Case, ...] = (
         source=HOUSNER_1963,
         what="ratio of angular velocities after and before an impact of a rectangular "
              "block (width 0.4 m, height 1.6 m), from its free-rocking amplitudes",
-        how="mu = 1 - (3/2) sin^2(alpha), Housner's coefficient of restitution of a "
+        how="Eq 4 of Pena et al. (2007) as printed there (Housner's 1963 result; Housner's "
+            "own page could not be read): "
+            "mu = 1 - (3/2) sin^2(alpha), Housner's coefficient of restitution of a "
             "rectangular block from the conservation of angular momentum about the new "
             "corner (Housner 1963; Eq 4 of Pena et al. 2007). Computed: the amplitudes "
             "theta0 and r1 before and after the first impact of the nonlinear model give "
@@ -547,7 +549,9 @@ CASES: tuple[Case, ...] = (
         source=HOUSNER_1963,
         what="least constant ground acceleration a/(g tan alpha) that uplifts the block "
              "(nonlinear model)",
-        how="At rest the block uplifts when the overturning moment of the inertial force, "
+        how="Eq 1 of Pena et al. (2007) as printed there, at theta = 0 (Housner's 1963 "
+            "statement; Housner's own Eq 1, on page 404, has no ground acceleration). "
+            "At rest the block uplifts when the overturning moment of the inertial force, "
             "m a h, exceeds the restoring moment of gravity, m g b: a = g b/h = g tan "
             "alpha (Housner 1963; Eq 1 of Pena et al. 2007 at theta = 0), so the ratio is "
             "1. Computed by bisection on the uplift of rocking.simulate to 1e-9.",
@@ -831,7 +835,8 @@ CASES: tuple[Case, ...] = (
         name="shape-box-restitution", reference_kind="equation",
         source=HOUSNER_1963,
         what="coefficient of restitution of the same box mesh, from rocking.shapes",
-        how="mu = 1 - (3/2) sin^2(alpha) (Housner 1963; Eq 4 of Pena et al. 2007), the "
+        how="Eq 4 of Pena et al. (2007) as printed there (Housner 1963): "
+            "mu = 1 - (3/2) sin^2(alpha) (Housner 1963; Eq 4 of Pena et al. 2007), the "
             "restitution of a rectangular block from angular momentum about the new corner.",
         reference=lambda: _box_closed_form()[2],
         compute=lambda: float(_box_parameters()["mu_plus"]),
