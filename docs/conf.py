@@ -201,20 +201,6 @@ def _home(module: str) -> str:
     return max((p for p in PACKAGES if module == p or module.startswith(p + ".")), key=len)
 
 
-def _resolve(dotted: str):
-    """The object named ``dotted`` (``rocking.models.Model``): a module, then attributes."""
-    parts = dotted.split(".")
-    for k in range(len(parts), 0, -1):
-        try:
-            obj = importlib.import_module(".".join(parts[:k]))
-        except ImportError:
-            continue
-        for attr in parts[k:]:
-            obj = getattr(obj, attr)
-        return obj
-    raise ValueError(dotted)
-
-
 _BUILTIN_DOCS = tuple(" ".join(t.__doc__.split())[:60]
                       for t in (int, float, str, bool, tuple, list, dict, object))
 
@@ -233,7 +219,7 @@ def _link_module_docstring(app, what, name, obj, options, lines) -> None:
     if target not in _module_notes():     # an attribute: the module of its class
         parent, _, _ = name.rpartition(".")
         try:
-            target = _doc_module(_resolve(parent))
+            target = _doc_module(pkgutil.resolve_name(parent))
         except (ImportError, AttributeError, ValueError):
             return
         if target not in _module_notes():
