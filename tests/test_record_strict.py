@@ -373,7 +373,7 @@ class TestPlausibility:
             Sine(5.0, 5.0, 2.0)
         with pytest.warns(PlausibilityWarning, match=r"amplitude 2 m is above 1 m"):
             HanningSine(1.0, 2.0, 2.0)
-        no_warning(Sine, 5.0, 1.0, 2.0)
+        no_warning(Sine, 0.2, 1.0, 2.0)     # 1 m at 0.2 Hz: 1.58 m/s^2
         no_warning(Sine, 5.0, 0.005, 2.0)
 
     def test_scaled_records_do_not_warn(self):
