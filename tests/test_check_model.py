@@ -44,10 +44,11 @@ def test_check_model_runs_every_check_and_takes_names():
 @njit(cache=True, parallel=True)
 def _batch_with_other_restitution(mp, extra0, rows, blocks):
     """Broken on purpose: the batch loses more energy at impacts than the single run."""
-    for i in prange(rows[0].shape[0]):
+    for i in prange(rows.kinds.shape[0]):
         m = same_block(mp, blocks[i])
-        store_row(i, _linear_kernel((m[0], m[1], 0.9 * m[2], m[3]),
-                                    *row_args(i, rows, extra0)), rows)
+        _linear_kernel((m[0], m[1], 0.9 * m[2], m[3]), *row_args(i, rows), rows.res[i],
+                       extra0)
+        store_row(i, rows)
 
 
 class BatchDiffers(LinearHousner):
@@ -58,18 +59,21 @@ class BatchDiffers(LinearHousner):
 
 
 @njit(cache=True)
-def _kernel_lopsided(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out,
-                     out_th, out_om, imp, extra):
+def _kernel_lopsided(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp,
+                     res, extra):
     """Broken on purpose: a negative initial angle is released from 0.9 of itself."""
-    return _linear_kernel(mp, kind, prm, samples, t_end, t_quiet, th0 if th0 > 0 else 0.9 * th0,
-                          om0, h_scan, dt_out, out_th, out_om, imp, extra)
+    y = y0.copy()
+    if y[0] <= 0:
+        y[0] *= 0.9
+    _linear_kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y, dt_out, hist, imp, res,
+                   extra)
 
 
 @njit(cache=True, parallel=True)
 def _batch_lopsided(mp, extra0, rows, blocks):
-    for i in prange(rows[0].shape[0]):
-        store_row(i, _kernel_lopsided(same_block(mp, blocks[i]), *row_args(i, rows, extra0)),
-                  rows)
+    for i in prange(rows.kinds.shape[0]):
+        _kernel_lopsided(same_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+        store_row(i, rows)
 
 
 class Lopsided(LinearHousner):

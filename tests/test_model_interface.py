@@ -15,12 +15,12 @@ from rocking import G, ParameterError, SimulationError
 from rocking.errors import OutputTooLargeError
 from rocking.models import (
     MODELS,
-    KernelResult,
     Model,
     ModelOptions,
     option,
     row_args,
     same_block,
+    set_planar_result,
     store_row,
 )
 from rocking.models._numerics.events import rest_advance
@@ -50,13 +50,14 @@ def _lin_rk4(th, om, t, h, s, alpha, p2, kind, prm, samples):
 
 
 @njit(cache=True)
-def _linear_kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th,
-                   out_om, imp, extra):
+def _linear_kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp,
+                   res, extra):
     """The linearised classical model with ground motion, written independently of
     rocking.models.housner: constant-step RK4 that steps onto the kinks of the motion,
     impacts by bisection on a cubic Hermite interpolant, Eq 4 at impacts, rest and uplift
     with the shared helper ``rest_advance`` (uplift when |a| > g alpha)."""
     alpha, p, mu, rest_tol = mp
+    th0, om0, out_th, out_om = y0[0], y0[1], hist[:, 0], hist[:, 1]
     p2 = p * p
     thr = G * alpha
     h0 = min(2e-3 / p, 0.25 * h_scan)
@@ -115,15 +116,15 @@ def _linear_kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_
             over, peak = True, 0.5 * math.pi
             t_over = t - h * (abs(th) - 0.5 * math.pi) / max(abs(th) - abs(th_prev), 1e-300)
             break
-    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0, math.nan,
-                        over or resting)
+    set_planar_result(res, k, n_imp, peak, over, t_over, t_up, n_steps, 0, math.nan,
+                      over or resting)
 
 
 @njit(cache=True, parallel=True)
 def _linear_batch(mp, extra0, rows, blocks):
-    for i in prange(rows[0].shape[0]):
-        store_row(i, _linear_kernel(same_block(mp, blocks[i]), *row_args(i, rows, extra0)),
-                  rows)
+    for i in prange(rows.kinds.shape[0]):
+        _linear_kernel(same_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+        store_row(i, rows)
 
 
 @dataclass(frozen=True)
@@ -282,8 +283,13 @@ def test_dem_batches_of_several_blocks():
     for i, m in enumerate(ms):
         r = rocking.simulate(blocks[i], m, model="dem")
         assert batch.max_abs_theta[i] == r.max_abs_theta
-    with pytest.raises(ParameterError, match="theta0 and omega0 must be 0"):
-        rocking.simulate_many(b2, ms, model="dem", theta0=0.01)
+    # per-row initial states (issue 29; refused before): one batch per distinct state
+    th0 = [0.0, 0.02, -0.02, 0.02]
+    batch = rocking.simulate_many(blocks, ms, model="dem", theta0=th0, return_histories=True)
+    for i, m in enumerate(ms):
+        r = rocking.simulate(blocks[i], m, model="dem", theta0=th0[i])
+        assert batch.max_abs_theta[i] == r.max_abs_theta
+        np.testing.assert_array_equal(batch.states[i, : r.t.size], r.states)
 
 
 # ------------------------------------------------------------------------- options, errors

@@ -108,6 +108,35 @@ class Response:
     """True if the block was at rest or had overturned when the run ended (the classical
     model also settles a block whose outcome the energy decides exactly; see
     :mod:`rocking.models.housner`). False: it was still moving (extend the duration)."""
+    states: np.ndarray | None = None
+    """The state history, samples x states (``state_names``; for the planar models
+    ``theta`` and ``omega``, the DEM its bodies' positions and velocities)."""
+    state_names: tuple = ()
+    """The names of the columns of ``states`` (``Model.state_names``)."""
+    outputs: dict = field(default_factory=dict)
+    """Every declared output of the run (``Model.outputs``) by name; those that are not
+    fields are attributes too (``r.max_base_displacement``)."""
+
+    def __getattr__(self, name):
+        outputs = self.__dict__.get("outputs") or {}
+        if name in outputs:
+            return outputs[name]
+        raise AttributeError(f"{type(self).__name__!s} has no attribute {name!r}")
+
+    def state(self, name: str) -> np.ndarray:
+        """The history of the state variable ``name`` (one of :attr:`state_names`).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> block = rocking.specimen(2)
+        >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=1.0)
+        >>> r.state_names, bool((r.state("theta") == r.theta).all())
+        (('theta', 'omega'), True)
+        """
+        if name not in self.state_names:
+            raise KeyError(f"no state {name!r}; the states are {', '.join(self.state_names)}")
+        return self.states[:, self.state_names.index(name)]
 
     @property
     def lifted_off(self) -> bool:
@@ -199,10 +228,11 @@ class Response:
         >>> s["overturned"], s["overturn_time"], s["n_impacts"], s["block"]["mu"]
         (False, None, 2, 0.958)
         """
+        planar = self.max_abs_theta is not None
         d = {
             "model": self.model,
-            "max_abs_theta": float(self.max_abs_theta),
-            "max_abs_theta_deg": math.degrees(self.max_abs_theta),
+            **({"max_abs_theta": float(self.max_abs_theta),
+                "max_abs_theta_deg": math.degrees(self.max_abs_theta)} if planar else {}),
             "overturned": bool(self.overturned),
             "overturn_time": self.overturn_time,
             "uplift_time": self.uplift_time,
@@ -212,6 +242,8 @@ class Response:
             "settled": bool(self.settled),
             "duration": self.duration,
         }
+        for k, v in self.outputs.items():  # the model's declared outputs
+            d.setdefault(k, v)
         blk = _block_dict(self.block)
         if blk is not None:
             d["block"] = blk
@@ -241,10 +273,14 @@ class Response:
         d["t"] = jsonable(self.t)
         d["theta"] = jsonable(self.theta)
         d["omega"] = jsonable(self.omega)
+        if self.states is not None and tuple(self.state_names) != ("theta", "omega"):
+            d["state_names"] = list(self.state_names)
+            d["states"] = jsonable(self.states)
         return d
 
     def to_dataframe(self):
-        """``pandas.DataFrame`` with columns ``t``, ``theta``, ``omega``.
+        """``pandas.DataFrame`` with columns ``t``, ``theta``, ``omega`` (planar models) and
+        every state variable (:attr:`state_names`) not among them.
 
         Examples
         --------
@@ -259,7 +295,13 @@ class Response:
         """
         import pandas as pd  # lazy: keeps `import rocking` at 0.2 s (pandas: 0.45 s)
 
-        return pd.DataFrame({"t": self.t, "theta": self.theta, "omega": self.omega})
+        cols = {"t": self.t}
+        if self.theta is not None:
+            cols |= {"theta": self.theta, "omega": self.omega}
+        if self.states is not None:
+            for j, name in enumerate(self.state_names):
+                cols.setdefault(name, self.states[:, j])
+        return pd.DataFrame(cols)
 
     def to_csv(self, path) -> Path:
         """Write ``t, theta, omega`` (s, rad, rad/s) to ``path`` as CSV.
@@ -439,11 +481,11 @@ class BatchResponse:
     (array([ True, False]), array([False,  True]))
     """
 
-    max_abs_theta: np.ndarray
+    max_abs_theta: np.ndarray | None
     overturned: np.ndarray
     overturn_time: np.ndarray
     uplift_time: np.ndarray
-    n_impacts: np.ndarray
+    n_impacts: np.ndarray | None
     n_steps: np.ndarray | None = None
     status: np.ndarray | None = None
     t: np.ndarray | None = None
@@ -457,6 +499,11 @@ class BatchResponse:
     outputs: dict = field(default_factory=dict)
     """The model's own scalar outputs per run (``Model.row_outputs``), by name; each is
     also an attribute (``res.max_base_displacement``)."""
+    states: np.ndarray | None = None
+    """The state histories, runs x samples x states (``state_names``), with
+    ``return_histories=True``; NaN past the end of each run."""
+    state_names: tuple = ()
+    """The names of the last axis of ``states`` (``Model.state_names``)."""
 
     def __getattr__(self, name):
         outputs = self.__dict__.get("outputs") or {}
@@ -468,9 +515,9 @@ class BatchResponse:
 
     def __post_init__(self):
         if self.lift_off_time is None:
-            self.lift_off_time = np.full(np.shape(self.max_abs_theta), np.nan)
+            self.lift_off_time = np.full(np.shape(self.overturned), np.nan)
         if self.settled is None:
-            self.settled = np.ones(np.shape(self.max_abs_theta), dtype=bool)
+            self.settled = np.ones(np.shape(self.overturned), dtype=bool)
 
     @property
     def lifted_off(self) -> np.ndarray:
@@ -478,11 +525,13 @@ class BatchResponse:
         return ~np.isnan(self.lift_off_time)
 
     def __len__(self) -> int:
-        return int(self.max_abs_theta.size)
+        return int(np.size(self.overturned))
 
     @property
     def rocked(self) -> np.ndarray:
         """True where the block left its rest position."""
+        if self.max_abs_theta is None:
+            return ~np.isnan(self.uplift_time)
         return ~np.isnan(self.uplift_time) | (self.max_abs_theta > 0.0)
 
     def to_dataframe(self):
@@ -506,7 +555,7 @@ class BatchResponse:
         """
         import pandas as pd  # lazy: keeps `import rocking` at 0.2 s (pandas: 0.45 s)
 
-        return pd.DataFrame({
+        cols = {
             "max_abs_theta": self.max_abs_theta,
             "overturned": self.overturned,
             "overturn_time": self.overturn_time,
@@ -516,7 +565,8 @@ class BatchResponse:
             "lift_off_time": self.lift_off_time,
             "settled": self.settled,
             **self.outputs,
-        })
+        }
+        return pd.DataFrame({k: v for k, v in cols.items() if v is not None})
 
     def summary(self) -> dict:
         """JSON-ready statistics over the batch: counts, the overturned fraction, and the
@@ -541,8 +591,10 @@ class BatchResponse:
         0.0
         """
         n = len(self)
-        ok = ~self.overturned & np.isfinite(self.max_abs_theta)
-        surv = self.max_abs_theta[ok]
+        peak = (self.max_abs_theta if self.max_abs_theta is not None
+                else np.full(n, np.nan))
+        ok = ~self.overturned & np.isfinite(peak)
+        surv = peak[ok]
         d = {
             "model": self.model,
             "n": n,
@@ -551,7 +603,7 @@ class BatchResponse:
             "n_rocked": int(np.count_nonzero(self.rocked)),
             "median_max_abs_theta_survived": float(np.median(surv)) if surv.size else None,
             "max_max_abs_theta_survived": float(np.max(surv)) if surv.size else None,
-            "n_impacts_sum": int(np.sum(self.n_impacts)),
+            "n_impacts_sum": int(np.sum(self.n_impacts)) if self.n_impacts is not None else 0,
             "n_lifted_off": int(np.count_nonzero(self.lifted_off)),
             "n_unsettled": int(np.count_nonzero(~self.settled)),
             "n_failed": int(np.count_nonzero(self.status)) if self.status is not None else 0,

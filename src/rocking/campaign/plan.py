@@ -63,8 +63,16 @@ KEEP = 2000
 """Motions a worker keeps built between chunks (beyond: only the current chunk's)."""
 RESULT_COLUMNS = ("max_abs_theta", "max_abs_theta_over_alpha", "overturned", "overturn_time",
                   "uplift_time", "n_impacts", "settled", "damage_state", "status")
-"""The result columns of every campaign; after them, the row outputs of the models run
-(:func:`row_output_columns`)."""
+"""The result columns of every campaign (the shared outputs of the models,
+:data:`rocking.models.base.GENERIC_OUTPUTS` and ``PLANAR_OUTPUTS``, and two derived
+columns); after them, the models' own outputs (:func:`row_output_columns`). A model
+without a planar angle leaves ``max_abs_theta`` and its ratio NaN, ``n_impacts`` 0 when
+it declares none, and ``damage_state`` -1."""
+INPUT_UNITS = {"alpha": "rad", "p": "1/s", "mu": "", "theta0": "rad", "pga": "m/s^2",
+               "floor_pga": "m/s^2", "load_factor": "", "amplitude": "", "noise": "",
+               "max_abs_theta_over_alpha": "", "damage_state": "", "lifted_off": ""}
+"""The units of the campaign's input and derived columns (SI; ``""``: none), written with
+the models' declared output units into the Parquet schema (:func:`column_units`)."""
 VERTICAL_COLUMNS = ("lift_off_time", "lifted_off")
 """Result columns of motions with a vertical component (``vertical`` kinds of the catalog),
 after ``settled``: ``lift_off_time`` (s, NaN if none) and ``lifted_off``."""
@@ -80,6 +88,26 @@ def row_output_columns(models) -> dict:
         for o in MODELS[m].row_outputs:
             out.setdefault(o.name, o)
     return out
+
+
+def column_units(models) -> dict:
+    """``{column: unit}`` of a campaign's table with ``models`` (registry names): the
+    inputs (:data:`INPUT_UNITS`) and every output the models declare
+    (:attr:`rocking.models.Model.outputs`).
+
+    Examples
+    --------
+    >>> from rocking.campaign.plan import column_units
+    >>> u = column_units(["isolated"])
+    >>> u["max_abs_theta"], u["max_base_displacement"], u["pga"], u["overturned"]
+    ('rad', 'm', 'm/s^2', '')
+    """
+    units = dict(INPUT_UNITS)
+    for m in models:
+        cls = MODELS.get(m)
+        for o in () if cls is None else cls.outputs:
+            units.setdefault(o.name, o.unit)
+    return units
 
 
 def _pga(mo: Motion) -> float | None:
@@ -449,12 +477,14 @@ class Campaign:
                                 theta0=theta0[idx] if theta0[idx].any() else 0.0,
                                 errors="nan", **options)
             for k in out:
-                out[k][idx] = getattr(res, k)
+                v = getattr(res, k)
+                if v is not None:  # None: an output the model does not declare
+                    out[k][idx] = v
             for k, v in res.outputs.items():
                 rows_out[k][idx] = v
         table = table.assign(**out)
         table["max_abs_theta_over_alpha"] = table["max_abs_theta"] / table["alpha"]
-        ok = table["status"].to_numpy() == 0
+        ok = (table["status"].to_numpy() == 0) & np.isfinite(out["max_abs_theta"])
         ds = np.full(n, -1, dtype=np.int64)
         if ok.any():
             ds[ok] = damage_state(table["max_abs_theta"].to_numpy()[ok],

@@ -69,6 +69,7 @@ import pandas as pd
 from .. import __version__
 from .._atomic import atomic_write, fsync_dir, is_temporary, replace
 from ..errors import ParameterError, StoreError
+from .plan import column_units
 from .spec import CampaignSpec, nominal, parse_spec
 
 MANIFEST = "manifest.json"
@@ -826,8 +827,10 @@ class Store:
         ids = table["sim_id"].to_numpy() if "sim_id" in table.columns else None
         if ids is None or ids.shape != (b - a,) or not np.array_equal(ids, np.arange(a, b)):
             raise StoreError(f"chunk {k}: the table is not sim_ids {a}-{b - 1} in order")
+        import pyarrow.parquet as pq
+
         buf = io.BytesIO()
-        table.to_parquet(buf, index=False, engine="pyarrow")
+        pq.write_table(arrow_table(table), buf)
         data = buf.getvalue()
         self.record_path(k).unlink(missing_ok=True)  # a previous record of this chunk
         atomic_write(self.chunk_path(k), data)
@@ -1077,3 +1080,47 @@ def load(store, lazy: bool | None = None):
         return pd.DataFrame()
     table = pd.concat([s.read_chunk(k) for k in done], ignore_index=True)
     return table.sort_values("sim_id", kind="stable").reset_index(drop=True)
+
+
+def result_schema(table: pd.DataFrame, models=None):
+    """The Parquet schema of a chunk's ``table``, written explicitly: each column's type,
+    and its unit (``b"unit"``, SI; ``b""``: none) in the field's metadata, from the
+    models' declared outputs and the campaign's inputs (:func:`.plan.column_units`).
+    ``models``: the registry names (default: the table's ``model`` column).
+
+    Examples
+    --------
+    >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+    >>> from rocking.campaign.store import result_schema
+    >>> rows = Campaign(parse_spec(EXAMPLE_SPEC)).run_chunk(0)
+    >>> schema = result_schema(rows)
+    >>> schema.field("max_abs_theta").metadata[b"unit"], schema.field("pga").metadata[b"unit"]
+    (b'rad', b'm/s^2')
+    >>> str(schema.field("overturned").type)
+    'bool'
+    """
+    import pyarrow as pa
+
+    if models is None:
+        models = table["model"].unique().tolist() if "model" in table.columns else []
+    units = column_units(models)
+    base = pa.Schema.from_pandas(table, preserve_index=False)
+    fields = [f.with_metadata({"unit": units[f.name]}) if f.name in units else f
+              for f in base]
+    return pa.schema(fields, metadata=base.metadata)
+
+
+def arrow_table(table: pd.DataFrame):
+    """``table`` as a pyarrow Table with its explicit :func:`result_schema`.
+
+    Examples
+    --------
+    >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+    >>> from rocking.campaign.store import arrow_table
+    >>> t = arrow_table(Campaign(parse_spec(EXAMPLE_SPEC)).run_chunk(1))
+    >>> t.num_rows, t.schema.field("overturn_time").metadata[b"unit"]
+    (2, b's')
+    """
+    import pyarrow as pa
+
+    return pa.Table.from_pandas(table, schema=result_schema(table), preserve_index=False)

@@ -14,18 +14,22 @@ element model of Section 2.3: rigid polygons on contact springs, also for stacks
 from __future__ import annotations
 
 from .base import (
+    GENERIC_OUTPUTS,
+    PLANAR_OUTPUTS,
     Batch,
-    KernelResult,
     Model,
     ModelOptions,
+    Output,
     option,
     row_args,
     same_block,
+    set_planar_result,
     store_row,
 )
-from .registry import MODELS, available
-from .run import get_model, pack_motions, simulate, simulate_many
+from .registry import MODELS, available, register
+from .run import PackedMotions, get_model, pack_motions, simulate, simulate_many
 
 __all__ = ["Model", "ModelOptions", "option", "row_args", "same_block", "store_row",
-           "KernelResult", "Batch", "MODELS",
-           "available", "get_model", "pack_motions", "simulate", "simulate_many"]
+           "set_planar_result", "Output", "GENERIC_OUTPUTS", "PLANAR_OUTPUTS", "Batch",
+           "MODELS", "available", "register", "get_model", "pack_motions", "PackedMotions",
+           "simulate", "simulate_many"]

@@ -38,8 +38,10 @@ campaigns.
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 from dataclasses import dataclass
 
+import numpy as np
 from numba import njit, prange
 
 from ..blocks.block import require_symmetric
@@ -54,12 +56,13 @@ from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
 from .base import (
-    KernelResult,
+    GENERIC_OUTPUTS,
+    PLANAR_OUTPUTS,
     Model,
-    RowOutput,
+    Output,
     option,
-    row_args_out,
-    row_output_values,
+    row_args,
+    set_planar_result,
     store_row,
 )
 from .housner import ClassicalTolerances, amplitude_from_energy, free_cap
@@ -311,32 +314,45 @@ def integrate(alpha, p, mu, q, kappa, rigid, kind, prm, samples, t_end, t_quiet,
     return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
 
 
+AnchoredParams = namedtuple("AnchoredParams", [
+    "alpha", "p", "mu", "strength", "stiffness", "rigid", "rtol", "rest_tol", "free_rest_tol"])
+"""The kernel parameters ``mp`` of the anchored block: its ``alpha`` (rad), ``p`` (1/s),
+``mu``, the anchors (``q``, ``kappa``, rigid or elastic) and the tolerances."""
+
+
 @njit(cache=True)
-def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th, out_om,
-           imp, extra):
+def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp, res, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
-    alpha, p, mu, q, kappa, rigid, rtol, rest_tol, free_rest_tol = mp
+    p, kappa, rigid = mp.p, mp.stiffness, mp.rigid
     h_max = min(0.05 / p, 8.0 * h_scan)
     if not rigid:
         h_max = min(h_max, 0.05 / (p * math.sqrt(1.0 + kappa)))
+    anch = np.full(5, np.nan)
     k, n_imp, peak, over, t_over, t_up, n_steps, t_lift, settled = integrate(
-        alpha, p, mu, q, kappa, rigid, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,
-        rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th, out_om, imp, extra[0])
-    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled)
+        mp.alpha, p, mp.mu, mp.strength, kappa, rigid, kind, prm, samples, t_end, t_quiet,
+        y0[0], y0[1], mp.rtol, mp.rest_tol, mp.free_rest_tol, h_max, h_scan, dt_out,
+        hist[:, 0], hist[:, 1], imp, anch)
+    set_planar_result(res, k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled)
+    res.max_anchor_force = anch[0]
+    res.anchor_break_time_plus = anch[1]
+    res.anchor_break_time_minus = anch[2]
+    res.anchor_broken_plus = anch[3] == 1.0
+    res.anchor_broken_minus = anch[4] == 1.0
 
 
 @njit(cache=True)
 def with_block(mp, b):
     """``mp`` with the block parameters ``b = (alpha, p, mu)`` of a batch row."""
-    return (b[0], b[1], b[2], mp[3], mp[4], mp[5], mp[6], mp[7], mp[8])
+    return AnchoredParams(b[0], b[1], b[2], mp.strength, mp.stiffness, mp.rigid, mp.rtol,
+                          mp.rest_tol, mp.free_rest_tol)
 
 
 @njit(cache=True, parallel=True)
 def batch_kernel(mp, extra0, rows, blocks):
-    """The batch kernel: the kernel over the rows of
-    :func:`rocking.models.base.row_args_out` (each row writes its own row outputs)."""
-    for i in prange(rows[0].shape[0]):
-        store_row(i, kernel(with_block(mp, blocks[i]), *row_args_out(i, rows)), rows)
+    """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
+    for i in prange(rows.kinds.shape[0]):
+        kernel(with_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+        store_row(i, rows)
 
 
 # ------------------------------------------------------------------------------- the model
@@ -366,15 +382,15 @@ class Anchored(Model):
     Options = AnchoredOptions
     kernel = kernel
     batch_kernel = batch_kernel
-    row_outputs = (
-        RowOutput("max_anchor_force", "", False,
-                  "largest anchor force, as a fraction of the block's weight m g"),
-        RowOutput("anchor_break_time_plus", "s", False,
-                  "when the + anchor (stretched by theta > 0) broke (NaN: intact)"),
-        RowOutput("anchor_break_time_minus", "s", False,
-                  "when the - anchor broke (NaN: intact)"),
-        RowOutput("anchor_broken_plus", "", True, "the + anchor broke"),
-        RowOutput("anchor_broken_minus", "", True, "the - anchor broke"),
+    outputs = GENERIC_OUTPUTS + PLANAR_OUTPUTS + (
+        Output("max_anchor_force", "", False,
+               "largest anchor force, as a fraction of the block's weight m g"),
+        Output("anchor_break_time_plus", "s", False,
+               "when the + anchor (stretched by theta > 0) broke (NaN: intact)"),
+        Output("anchor_break_time_minus", "s", False,
+               "when the - anchor broke (NaN: intact)"),
+        Output("anchor_broken_plus", "", True, "the + anchor broke"),
+        Output("anchor_broken_minus", "", True, "the - anchor broke"),
     )
 
     @classmethod
@@ -387,14 +403,16 @@ class Anchored(Model):
 
     def kernel_params(self, dt_out, theta0, omega0) -> tuple:
         b, o = self.block, self.options
-        return (b.alpha, b.p, b.mu, o.anchor_strength, o.anchor_stiffness,
-                o.anchors == "rigid", o.rtol, o.rest_tol, o.free_rest_tol)
+        return AnchoredParams(b.alpha, b.p, b.mu, o.anchor_strength, o.anchor_stiffness,
+                              o.anchors == "rigid", o.rtol, o.rest_tol, o.free_rest_tol)
 
-    def extra_fields(self, n_out: int, extra: tuple, dt_out: float) -> dict:
-        a = extra[0]
+    def result_info(self, values: dict) -> dict:
+        """The row outputs, and the anchor force in N (with the block's mass), the broken
+        flags and break times as ``[+, -]`` pairs."""
         mass = getattr(self.block, "mass", None)
-        return {"info": {
-            **row_output_values(self.row_outputs, a),
-            "max_anchor_force_n": math.nan if mass is None else float(a[0] * mass * G),
-            "anchor_broken": [bool(a[3]), bool(a[4])],
-            "anchor_break_time": [float(a[1]), float(a[2])]}}
+        return {**super().result_info(values),
+                "max_anchor_force_n": (math.nan if mass is None
+                                       else float(values["max_anchor_force"] * mass * G)),
+                "anchor_broken": [values["anchor_broken_plus"], values["anchor_broken_minus"]],
+                "anchor_break_time": [values["anchor_break_time_plus"],
+                                      values["anchor_break_time_minus"]]}

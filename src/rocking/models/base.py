@@ -20,54 +20,71 @@ A subclass of :class:`Model` provides
     with :func:`option`). They are validated at the edge, when the dataclass is built:
     bad values raise :class:`~rocking.errors.ParameterError` naming the option and the
     allowed range; unknown options are rejected too.
+``state_names`` (and ``state_units``)
+    The state variables, in the order of the state vector: ``("theta", "omega")`` for
+    the planar models (the default), the DEM its bodies' positions, rotations and
+    velocities. A run starts from a state vector ``y0`` (``state0=`` of
+    :func:`rocking.simulate`; the planar models keep ``theta0``/``omega0`` as their
+    named shorthand, :meth:`Model.initial_state`); a single run returns the history as
+    ``Response.states`` (samples x states), a batch as ``BatchResponse.states`` (runs x
+    samples x states), as scipy's ``OdeSolver`` returns ``y``.
+``outputs`` : a tuple of :data:`Output`
+    The per-run outputs, declared once: :data:`GENERIC_OUTPUTS` (``n_out``, ``n_steps``,
+    ``status``, ``settled``, ``overturned``, ``overturn_time``, ``uplift_time``,
+    ``lift_off_time``), then the model's own (the planar models:
+    :data:`PLANAR_OUTPUTS`, ``max_abs_theta`` and ``n_impacts``; the isolated base:
+    ``max_base_displacement``, ...). From this declaration come the kernel's result
+    record (:meth:`Model.result_dtype`), the batch arrays, the attributes of
+    :class:`~rocking.results.BatchResponse`, ``summary()``, the campaign's columns and
+    their units in the Parquet schema, and the docs: a new output is one line.
 ``kernel`` : a compiled (numba) function, the single-run kernel
-    ``kernel(mp, kind, prm, samples, t_end, t_quiet, theta0, omega0, h_scan, dt_out,
-    out_th, out_om, imp, extra) -> KernelResult(n_out, n_impacts, max_abs_theta,
-    overturned, overturn_time, uplift_time, n_steps, status, lift_off_time, settled)``
-    (:data:`KernelResult`, a named tuple that numba compiles).
+    ``kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp, res,
+    extra)``, returning nothing:
 
-    * ``mp`` is the model's own parameter tuple (:meth:`Model.kernel_params`);
+    * ``mp`` is the model's own parameter tuple (:meth:`Model.kernel_params`; a named
+      tuple: no index arithmetic);
     * ``(kind, prm, samples)`` is the motion spec (of the compiled motion kernels of
       :mod:`rocking.motions`; evaluate it with ``ground_acc`` and step onto
       ``next_breakpoint``), ``h_scan`` a time step that resolves it (s), ``t_end`` the
       simulated time (s);
     * ``t_quiet`` (s): from this time on the ground is still (the motion has ended), and
-      the kernel stops as soon as the block is *settled*, at rest or overturned (``inf``:
+      the kernel stops as soon as the body is *settled*, at rest or overturned (``inf``:
       run to ``t_end`` whatever the state, as for an explicit ``duration``);
-    * ``theta0``, ``omega0``: the initial state (rad, rad/s; both 0: at rest);
-    * the kernel writes ``theta`` and ``omega`` at ``k * dt_out`` into ``out_th``,
-      ``out_om`` (length 0: no history), impact times into ``imp`` up to its length
-      (counting the impacts beyond it), and the model's extra outputs into the tuple
+    * ``y0``: the initial state (:attr:`state_names`; all 0: at rest);
+    * the kernel writes the state at ``k * dt_out`` into the rows of ``hist`` (samples x
+      states; 0 rows: no history), impact times into ``imp`` up to its length (counting
+      the impacts beyond it), and the model's extra single-run outputs into the tuple
       ``extra`` (:meth:`Model.extra_buffers`);
-    * it returns the number of samples written, the number of impacts (zero crossings of
-      ``theta``), ``max |theta|`` (rad), whether the block overturned (``|theta|`` reached
-      pi/2), the overturning and uplift times (s, NaN if none), the number of steps, a
-      ``status`` (0: success; otherwise a code that :meth:`Model.failure` explains) and
-      the lift-off time (s): when a vertical motion makes ``g + a_v <= 0`` and the model
-      cannot represent flight, it stops there and returns that time (NaN otherwise);
-      and ``settled``: whether the block was at rest or had overturned when the run
-      ended (a model may also call a block settled whose outcome it has decided exactly,
-      as the classical model does by energy, see :mod:`rocking.models.housner`).
-      Times with no event are NaN, the one convention of the package.
+    * ``res`` is the run's result record (dtype :meth:`Model.result_dtype`, every field
+      at its "not reached" value: NaN, 0 or False): the kernel sets its fields by name
+      (``res.n_out = k``, ``res.overturned = True``, ...). ``status`` is 0 for success,
+      otherwise a code that :meth:`Model.failure` explains; ``lift_off_time``: when a
+      vertical motion makes ``g + a_v <= 0`` and the model cannot represent flight, it
+      stops there; ``settled``: whether the body was at rest or had overturned when
+      the run ended (a model may also call a body settled whose outcome it has decided
+      exactly, as the classical model does by energy, see
+      :mod:`rocking.models.housner`). Times with no event are NaN, the one convention
+      of the package.
     * a vertical component, if any, travels in ``prm`` and ``samples``
       (the motion kernels ``has_vertical`` and ``vertical_acc``); it is positive
       upwards and replaces ``g`` by ``g + a_v`` in the gravity terms.
 ``batch_kernel`` : a compiled parallel function over many motions
-    ``batch_kernel(mp, extra0, rows, blocks)``: always the same two lines, a ``prange`` loop
-    that calls the model's kernel on :func:`row_args` and stores the result with
+    ``batch_kernel(mp, extra0, rows, blocks)``: always the same lines, a ``prange`` loop
+    that calls the model's kernel on :func:`row_args` and finishes the row with
     :func:`store_row`::
 
         @njit(cache=True, parallel=True)
         def batch_kernel(mp, extra0, rows, blocks):
-            for i in prange(rows[0].shape[0]):
-                store_row(i, kernel(with_block(mp, blocks[i]), *row_args(i, rows, extra0)),
-                          rows)
+            for i in prange(rows.kinds.shape[0]):
+                kernel(with_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+                store_row(i, rows)
 
     ``blocks[i]`` holds the block parameters of row ``i`` (:meth:`Model.block_row`) and
     ``with_block(mp, b)`` (compiled) returns ``mp`` with them: one batch may then hold a
     different block per row (Monte Carlo, campaigns). A model whose parameters cannot
     change per row uses :func:`same_block` and an empty :meth:`Model.block_row`; the
-    driver then runs one batch per distinct block.
+    driver then runs one batch per distinct block (and, without
+    :attr:`Model.batch_initial_state`, per distinct initial state).
 
     Each model file keeps its own copy (rather than passing the kernel to a shared
     function) so that numba can cache it and invalidates that cache with the model's file.
@@ -75,26 +92,11 @@ A subclass of :class:`Model` provides
     Builds ``mp`` from the block and the validated options.
 
 And optionally: ``accepts_stack`` (the model simulates :class:`~rocking.Stack` objects),
-``response_class`` with :meth:`Model.extra_buffers` and :meth:`Model.extra_fields` for
-outputs beyond ``theta`` and ``omega`` (the DEM's histories), :meth:`Model.info` and
+``tags`` (what :func:`rocking.testing.check_model` checks: mirror symmetry of planar
+models, rotation equivariance of 3-D ones), ``response_class`` with
+:meth:`Model.extra_buffers` and :meth:`Model.extra_fields` for single-run outputs beyond
+the states (the DEM's energies and contact forces), :meth:`Model.info` and
 :meth:`Model.failure`.
-
-**Row outputs** (scalars beyond :data:`KernelResult`, one value per run, such as the
-isolated base's largest displacement): declare them in ``row_outputs`` (a tuple of
-:data:`RowOutput`). The kernel writes them, in that order, into ``extra[0]`` when its
-length is ``len(row_outputs)`` (NaN: not reached); the default :meth:`Model.extra_buffers`
-gives a single run that buffer and puts the values in ``Response.info``, and the batch
-kernel passes each row its own row of the batch's ``row_out`` array with
-:func:`row_args_out` instead of :func:`row_args`::
-
-    @njit(cache=True, parallel=True)
-    def batch_kernel(mp, extra0, rows, blocks):
-        for i in prange(rows[0].shape[0]):
-            store_row(i, kernel(with_block(mp, blocks[i]), *row_args_out(i, rows)), rows)
-
-:func:`rocking.simulate_many` returns them in ``BatchResponse.outputs`` (by name; also
-``res.<name>``), campaigns store them as columns and
-:func:`rocking.testing.check_model` checks that each batch row equals its single run.
 
 Sign convention (all models): Eq (1) of Peña et al. (2007): a positive ground acceleration
 drives ``theta`` positive (see :mod:`rocking.models.housner`).
@@ -177,6 +179,121 @@ class ModelOptions(Options):
         return cls(**values)
 
 
+# ================================================================================ outputs
+Output = namedtuple("Output", ["name", "unit", "flag", "help", "integer"], defaults=(False,))
+"""A per-run output of a model (:attr:`Model.outputs`): its name (a result field, a batch
+array and a campaign column), its SI unit (``""`` if none), whether it is a flag (a bool),
+a one-line meaning, and whether it is an integer count (int64; otherwise float64, NaN
+where not reached). The kernel writes it as a field of its result record.
+
+Examples
+--------
+>>> from rocking.models.base import Output, PLANAR_OUTPUTS
+>>> Output("max_slide", "m", False, "largest slide").integer
+False
+>>> [o.name for o in PLANAR_OUTPUTS]
+['max_abs_theta', 'n_impacts']
+"""
+
+RowOutput = Output
+"""The former name of :data:`Output` (the outputs a model adds to the shared ones)."""
+
+GENERIC_OUTPUTS = (
+    Output("n_out", "", False, "history samples written", True),
+    Output("n_steps", "", False, "time steps taken", True),
+    Output("status", "", False, "0: success; else the model's failure code "
+                                "(Model.failure explains it)", True),
+    Output("settled", "", True, "at rest or overturned when the run ended"),
+    Output("overturned", "", True, "the body overturned"),
+    Output("overturn_time", "s", False, "when it overturned (NaN: never)"),
+    Output("uplift_time", "s", False, "when it first left its rest position (NaN: never)"),
+    Output("lift_off_time", "s", False, "when the base fell away (g + a_v <= 0) and a model "
+                                        "that cannot represent flight stopped (NaN: never)"),
+)
+"""The outputs every model has (:attr:`Model.outputs` starts with them)."""
+
+PLANAR_OUTPUTS = (
+    Output("max_abs_theta", "rad", False, "largest |theta| (pi/2 if it overturned)"),
+    Output("n_impacts", "", False, "impacts: passages of theta through 0", True),
+)
+"""The outputs of the planar rocking models, after :data:`GENERIC_OUTPUTS`."""
+
+SHARED_OUTPUTS = frozenset(o.name for o in GENERIC_OUTPUTS + PLANAR_OUTPUTS)
+"""Names of the shared outputs; a model's others are its :attr:`Model.row_outputs`."""
+
+
+def output_dtype(outputs: tuple) -> np.dtype:
+    """The structured dtype of a result record with ``outputs`` (flags bool, counts
+    int64, the rest float64).
+
+    Examples
+    --------
+    >>> from rocking.models.base import output_dtype, GENERIC_OUTPUTS
+    >>> dt = output_dtype(GENERIC_OUTPUTS)
+    >>> dt["n_out"], dt["settled"], dt["overturn_time"]
+    (dtype('int64'), dtype('bool'), dtype('float64'))
+    """
+    return np.dtype([(o.name, np.bool_ if o.flag else np.int64 if o.integer else np.float64)
+                     for o in outputs])
+
+
+def empty_results(outputs: tuple, n: int) -> np.ndarray:
+    """``n`` result records, each field at its "not reached" value: NaN (floats), 0
+    (counts), False (flags).
+
+    Examples
+    --------
+    >>> from rocking.models.base import empty_results, GENERIC_OUTPUTS
+    >>> r = empty_results(GENERIC_OUTPUTS, 2)
+    >>> r["overturn_time"], r["settled"], r["n_steps"]
+    (array([nan, nan]), array([False, False]), array([0, 0]))
+    """
+    res = np.zeros(n, output_dtype(outputs))
+    for o in outputs:
+        if not (o.flag or o.integer):
+            res[o.name] = np.nan
+    return res
+
+
+def result_values(outputs: tuple, rec) -> dict:
+    """``{name: value}`` of one result record: flags as bools, counts as ints, the rest
+    as floats.
+
+    Examples
+    --------
+    >>> from rocking.models.base import empty_results, result_values, GENERIC_OUTPUTS
+    >>> result_values(GENERIC_OUTPUTS, empty_results(GENERIC_OUTPUTS, 1)[0])["settled"]
+    False
+    """
+    return {o.name: (bool(rec[o.name]) if o.flag else int(rec[o.name]) if o.integer
+                     else float(rec[o.name])) for o in outputs}
+
+
+def result_arrays(outputs: tuple, res: np.ndarray) -> dict:
+    """``{name: array}`` of a batch's result records (copies: plain numpy arrays).
+
+    Examples
+    --------
+    >>> from rocking.models.base import empty_results, result_arrays, GENERIC_OUTPUTS
+    >>> result_arrays(GENERIC_OUTPUTS, empty_results(GENERIC_OUTPUTS, 3))["status"]
+    array([0, 0, 0])
+    """
+    return {o.name: np.ascontiguousarray(res[o.name]) for o in outputs}
+
+
+def row_output_values(outputs: tuple, values) -> dict:
+    """``{name: value}`` of row outputs given as a float buffer (flags: 1.0 is True).
+
+    Examples
+    --------
+    >>> from rocking.models.base import Output, row_output_values
+    >>> row_output_values((Output("hit", "", True, "x"),), [1.0])
+    {'hit': True}
+    """
+    return {o.name: (bool(v == 1.0) if o.flag else float(v))
+            for o, v in zip(outputs, values, strict=True)}
+
+
 # =================================================================================== model
 class Model:
     """Base class of the rocking models (see the module docstring for the contract).
@@ -200,7 +317,23 @@ class Model:
     batch_kernel: ClassVar[Any] = None
     accepts_stack: ClassVar[bool] = False
     batch_initial_state: ClassVar[bool] = True
-    """Batches may start each row from its own ``theta0``, ``omega0``."""
+    """Batches may start each row from its own initial state (a model whose parameters
+    depend on it, like the DEM's contact forces, gets one batch per distinct state)."""
+    state_names: ClassVar[tuple] = ("theta", "omega")
+    """The names of the state variables, in the order of the state vector (``y0``, the
+    columns of ``Response.states``); units in :attr:`state_units`."""
+    state_units: ClassVar[tuple] = ("rad", "rad/s")
+    outputs: ClassVar[tuple] = GENERIC_OUTPUTS + PLANAR_OUTPUTS
+    """The per-run outputs (:data:`Output`), declared once: :data:`GENERIC_OUTPUTS`, then
+    the model's own. The kernel's result record, the batch arrays, the attributes of
+    :class:`~rocking.results.BatchResponse`, ``summary()``, the campaign columns (and
+    their units in the Parquet schema) and the docs all come from it."""
+    tags: ClassVar[dict] = {"planar": True, "symmetry": "mirror"}
+    """What :func:`rocking.testing.check_model` may assume (as scikit-learn's estimator
+    tags): ``planar`` (the state starts with ``theta``, ``omega``; a run has
+    ``Response.theta``) and ``symmetry``: ``"mirror"`` (the mirrored motion or initial
+    state gives the mirrored response), ``"rotation"`` (3-D: rotating body and motion
+    together changes nothing) or ``None``."""
     slow: ClassVar[bool] = False
     """A simulation costs seconds, not milliseconds: reports run the model's large batches
     only on request (``rocking reproduce --full``)."""
@@ -212,8 +345,24 @@ class Model:
     """End the history of a single run on the exact overturning point (pi/2)."""
     response_class: ClassVar[type] = Response
     row_outputs: ClassVar[tuple] = ()
-    """Scalar outputs per run beyond :data:`KernelResult` (:data:`RowOutput` entries; see
-    the module docstring)."""
+    """The model's own outputs, beyond the shared ones (derived from :attr:`outputs`)."""
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        cls.row_outputs = tuple(o for o in cls.outputs if o.name not in SHARED_OUTPUTS)
+        cls._dtype = output_dtype(cls.outputs)
+
+    @classmethod
+    def result_dtype(cls) -> np.dtype:
+        """The structured dtype of the kernel's result record (one field per output).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> rocking.MODELS["isolated"].result_dtype().names[-2:]
+        ('clearance_exceeded', 'clearance_time')
+        """
+        return cls._dtype
 
     def __init__(self, block, options: ModelOptions | None = None):
         self.block = self.check_block(block)
@@ -279,6 +428,68 @@ class Model:
         """
         raise NotImplementedError
 
+    def initial_state(self, theta0: float = 0.0, omega0: float = 0.0) -> np.ndarray:
+        """The state vector ``y0`` (:attr:`state_names`) of a run released from
+        ``theta0`` (rad) with ``omega0`` (rad/s): the planar shorthand; a model whose
+        state is not planar maps it to its own (the DEM: its bodies rotated about the
+        pivot).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> m = rocking.MODELS["housner"](rocking.Block.rectangular(0.2, 1.0))
+        >>> m.initial_state(0.1, -0.5)
+        array([ 0.1, -0.5])
+        """
+        if not self.tags.get("planar"):
+            if theta0 or omega0:
+                raise ParameterError(f"model {self.name!r} has no planar angle: give its "
+                                     f"initial state as state0 ({', '.join(self.state_names)})")
+            return np.zeros(len(self.state_names))
+        return np.array([theta0, omega0], dtype=np.float64)
+
+    def check_state(self, y0) -> np.ndarray:
+        """``y0`` as a float array of the model's state, checked (ParameterError naming
+        ``state0``); the planar models require ``|theta| < pi/2``.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> m = rocking.MODELS["housner"](rocking.Block.rectangular(0.2, 1.0))
+        >>> m.check_state([0.1, 0.0])
+        array([0.1, 0. ])
+        >>> m.check_state([2.0, 0.0])
+        Traceback (most recent call last):
+        ...
+        rocking.errors.ParameterError: state0: theta must be in (-pi/2, pi/2) rad, got 2
+        """
+        names = self.state_names
+        try:
+            y = np.array(y0, dtype=np.float64).reshape(-1)
+        except (TypeError, ValueError):
+            raise ParameterError(f"state0 must be {len(names)} numbers "
+                                 f"({', '.join(names)}), got {y0!r}") from None
+        if y.size != len(names):
+            raise ParameterError(f"state0 must have {len(names)} values ({', '.join(names)}) "
+                                 f"for model {self.name!r}, got {y.size}")
+        if not np.all(np.isfinite(y)):
+            raise ParameterError(f"state0 must be finite, got {y.tolist()}")
+        if self.tags.get("planar") and not abs(y[0]) < 0.5 * math.pi:
+            raise ParameterError(f"state0: theta must be in (-pi/2, pi/2) rad, got {y[0]:g}")
+        return y
+
+    def planar_shorthand(self) -> tuple[int, int] | None:
+        """The columns of ``theta`` and ``omega`` in the state (``Response.theta``,
+        ``omega``), or None for a model whose state has no planar angle.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> rocking.MODELS["housner"](rocking.Block.rectangular(0.2, 1.0)).planar_shorthand()
+        (0, 1)
+        """
+        return (0, 1) if self.tags.get("planar") else None
+
     # ---- optional hooks
     @classmethod
     def block_row(cls, block) -> tuple:
@@ -305,56 +516,56 @@ class Model:
         return self.name
 
     def extra_buffers(self, n_out: int) -> tuple:
-        """Extra output arrays of the kernel for ``n_out`` samples (default: the buffer of
-        the :attr:`row_outputs`, if any).
+        """Extra output arrays of the kernel of a single run with ``n_out`` samples (the
+        DEM's energies and contact forces); default none.
 
         Examples
         --------
-        One NaN per row output (NaN: not reached) for the isolated model, none for the
-        classical one:
-
         >>> import rocking
-        >>> block = rocking.Block.rectangular(0.2, 1.0)
-        >>> rocking.MODELS["isolated"](block).extra_buffers(100)
-        (array([nan, nan, nan, nan]),)
-        >>> rocking.MODELS["housner"](block).extra_buffers(100)
+        >>> rocking.MODELS["housner"](rocking.Block.rectangular(0.2, 1.0)).extra_buffers(100)
         ()
         """
-        return (np.full(len(self.row_outputs), np.nan),) if self.row_outputs else ()
+        return ()
 
     def extra_bytes(self, n_out: int) -> int:
         """Memory of :meth:`extra_buffers` for ``n_out`` samples (bytes).
 
         Examples
         --------
-        It agrees with the buffers themselves (four float64 row outputs, 32 bytes):
-
         >>> import rocking
-        >>> m = rocking.MODELS["isolated"](rocking.Block.rectangular(0.2, 1.0))
-        >>> m.extra_bytes(100), sum(a.nbytes for a in m.extra_buffers(100))
-        (32, 32)
+        >>> rocking.MODELS["housner"](rocking.Block.rectangular(0.2, 1.0)).extra_bytes(100)
+        0
         """
-        return 8 * len(self.row_outputs)
+        return 0
 
-    def extra_fields(self, n_out: int, extra: tuple, dt_out: float) -> dict:
+    def extra_fields(self, n_out: int, states: np.ndarray, extra: tuple, dt_out: float) -> dict:
         """Fields of :attr:`response_class` beyond those of :class:`Response` (an ``"info"``
-        entry is merged into ``Response.info``), from ``n_out`` samples at ``dt_out`` (s).
-        Default: the :attr:`row_outputs` in ``info``.
+        entry is merged into ``Response.info``), from the ``n_out`` samples of the state
+        history ``states`` at ``dt_out`` (s) and the :meth:`extra_buffers`; default none.
 
         Examples
         --------
-        The isolated model's buffer becomes named values, the flag as a bool:
+        >>> import numpy as np
+        >>> import rocking
+        >>> m = rocking.MODELS["housner"](rocking.Block.rectangular(0.2, 1.0))
+        >>> m.extra_fields(0, np.empty((0, 2)), (), 0.01)
+        {}
+        """
+        return {}
 
+    def result_info(self, values: dict) -> dict:
+        """What a single run adds to ``Response.info`` from its outputs ``values`` (by
+        name): default, the model's own outputs (:attr:`row_outputs`).
+
+        Examples
+        --------
         >>> import rocking
         >>> m = rocking.MODELS["isolated"](rocking.Block.rectangular(0.2, 1.0))
-        >>> buf = np.array([0.12, 3.5, 0.0, np.nan])
-        >>> info = m.extra_fields(0, (buf,), 0.01)["info"]
-        >>> info["max_base_displacement"], info["clearance_exceeded"], info["clearance_time"]
-        (0.12, False, nan)
+        >>> values = {o.name: 0.0 for o in m.outputs}
+        >>> list(m.result_info(values))[:2]
+        ['max_base_displacement', 'max_plate_acceleration']
         """
-        if not self.row_outputs:
-            return {}
-        return {"info": row_output_values(self.row_outputs, extra[0])}
+        return {o.name: values[o.name] for o in self.row_outputs}
 
     def check_batch(self) -> None:
         """Refuse options that a batch cannot honour (raise ParameterError); default: none.
@@ -406,53 +617,14 @@ class Model:
         return f"model {self.name!r} failed (status {status}) near t = {t:.4g} s"
 
 
-# ============================================================================ row outputs
-RowOutput = namedtuple("RowOutput", ["name", "unit", "flag", "help"])
-"""A scalar output of each run (:attr:`Model.row_outputs`): its name (a result field and a
-campaign column), its unit (SI, ``""`` if none), whether it is a flag (stored as 0/1 by
-the kernel, returned as a bool) and a one-line description."""
-
-
-def row_output_values(outputs: tuple, values) -> dict:
-    """``{name: value}`` of the row outputs ``values`` (a kernel's buffer, or one row of a
-    batch's ``row_out``): flags as bools (True where the value is 1), the rest as floats."""
-    return {o.name: (bool(v == 1.0) if o.flag else float(v))
-            for o, v in zip(outputs, values, strict=True)}
-
-
-def row_output_arrays(outputs: tuple, row_out: np.ndarray) -> dict:
-    """``{name: array}`` of a batch's ``row_out`` (rows x outputs): flags as bool arrays."""
-    return {o.name: (row_out[:, j] == 1.0) if o.flag else row_out[:, j].copy()
-            for j, o in enumerate(outputs)}
-
-
 # ====================================================================== shared batch rows
-KernelResult = namedtuple("KernelResult", [
-    "n_out", "n_impacts", "max_abs_theta", "overturned", "overturn_time", "uplift_time",
-    "n_steps", "status", "lift_off_time", "settled"])
-KernelResult.__doc__ = """What a kernel returns (compiled by numba as a named tuple): the
-number of history samples written, the impacts, ``max |theta|`` (rad), whether and when
-(s) it overturned, the first uplift (s), the steps taken, the status (0: success), the
-lift-off time (s) and whether the block had settled. A new output is one field here, one
-array in :data:`Batch` and one line in :func:`store_row`.
-
-Examples
---------
->>> from rocking.models import KernelResult
->>> KernelResult._fields[:4]
-('n_out', 'n_impacts', 'max_abs_theta', 'overturned')
-"""
-
-BATCH_INPUTS = ("kinds", "prms", "samples", "nsamp", "t_ends", "t_quiets", "h_scans",
-                "theta0", "omega0", "dt_out")
-"""The inputs of a batch: the packed motions (:func:`rocking.models.run.pack_motions`),
-each row's window and initial state, and the output interval."""
-BATCH_OUTPUTS = ("theta", "omega", "max_abs_theta", "overturned", "overturn_time",
-                 "uplift_time", "n_impacts", "n_steps", "status", "lift_off_time", "settled",
-                 "row_out")
-"""The outputs of a batch, one array per row (``theta``, ``omega``: the histories;
-``row_out``: the model's :attr:`Model.row_outputs`, rows x outputs, NaN where not
-written)."""
+BATCH_INPUTS = ("kinds", "prms", "samples", "nsamp", "t_ends", "t_quiets", "h_scans", "y0",
+                "dt_out")
+"""The inputs of a batch: the packed motions (:class:`rocking.models.run.PackedMotions`),
+each row's window and initial state (rows x states), and the output interval."""
+BATCH_OUTPUTS = ("states", "res")
+"""The outputs of a batch: the state histories (rows x samples x states; NaN past the
+samples a run wrote) and the result records (:meth:`Model.result_dtype`, one per row)."""
 Batch = namedtuple("Batch", BATCH_INPUTS + BATCH_OUTPUTS)
 Batch.__doc__ = """A batch as the compiled batch kernels see it: named arrays, one entry per
 row (the inputs :data:`BATCH_INPUTS`, then the outputs :data:`BATCH_OUTPUTS`).
@@ -461,49 +633,40 @@ Examples
 --------
 >>> from rocking.models import Batch
 >>> from rocking.models.base import BATCH_INPUTS
->>> Batch._fields[:len(BATCH_INPUTS)] == BATCH_INPUTS, Batch._fields[-1]
-(True, 'row_out')
+>>> Batch._fields[:len(BATCH_INPUTS)] == BATCH_INPUTS, Batch._fields[-2:]
+(True, ('states', 'res'))
 """
 
 
 @njit(cache=True)
-def row_args(i, rows, extra0):
-    """The kernel arguments (after ``mp``) of row ``i`` of the :data:`Batch` ``rows``.
+def row_args(i, rows):
+    """The kernel arguments of row ``i`` of the :data:`Batch` ``rows`` between ``mp`` and
+    the result record (``rows.res[i]``, which a compiled function cannot return).
 
     A model's ``batch_kernel`` calls it for each row (module docstring); called from
     Python it shows what a row hands the kernel.
 
     Examples
     --------
-    A hand-built batch of one row (one-sine pulse, 1 s window, 100 output samples; the
-    outputs are zero placeholders) with the inputs :func:`rocking.simulate_many` gives:
+    A batch of one row (one-sine pulse, 1 s window, 100 output samples of the two states
+    of the classical model), as :func:`rocking.simulate_many` builds it:
 
     >>> import numpy as np
+    >>> import rocking
     >>> from rocking.models import Batch, pack_motions, row_args
+    >>> from rocking.models.base import empty_results
     >>> from rocking.motions import OneSine
-    >>> kinds, prms, samples, nsamp, t_ends, h_scans, t_quiets = pack_motions(
-    ...     [OneSine(2.0, 0.5)], duration=1.0)
-    >>> f = [np.zeros(1) for _ in range(5)]
-    >>> i, b = np.zeros((3, 1), np.int64), np.zeros((2, 1), bool)
-    >>> rows = Batch(kinds, prms, samples, nsamp, t_ends, t_quiets, h_scans, f[0], f[0],
-    ...              0.01, np.zeros((1, 100)), np.zeros((1, 100)), f[1], b[0], f[2],
-    ...              f[3], i[0], i[1], i[2], f[4], b[1], np.zeros((1, 0)))
-    >>> args = row_args(0, rows, ())
-    >>> len(args), float(args[3]), args[9].shape  # 13 arguments; t_end; theta's history
-    (13, 1.0, (100,))
+    >>> pm = pack_motions([OneSine(2.0, 0.5)], duration=1.0)
+    >>> res = empty_results(rocking.MODELS["housner"].outputs, 1)
+    >>> rows = Batch(*pm[:4], pm.t_ends, pm.t_quiets, pm.h_scans, np.zeros((1, 2)), 0.01,
+    ...              np.zeros((1, 100, 2)), res)
+    >>> args = row_args(0, rows)
+    >>> len(args), float(args[3]), args[8].shape  # 10 arguments; t_end; the history
+    (10, 1.0, (100, 2))
     """
     return (rows.kinds[i], rows.prms[i], rows.samples[i, : rows.nsamp[i]], rows.t_ends[i],
-            rows.t_quiets[i], rows.theta0[i], rows.omega0[i], rows.h_scans[i], rows.dt_out,
-            rows.theta[i], rows.omega[i], np.empty(0), extra0)
-
-
-@njit(cache=True)
-def row_args_out(i, rows):
-    """:func:`row_args` with ``extra = (rows.row_out[i],)``: the kernel writes row ``i``'s
-    :attr:`Model.row_outputs` in place (models with row outputs)."""
-    return (rows.kinds[i], rows.prms[i], rows.samples[i, : rows.nsamp[i]], rows.t_ends[i],
-            rows.t_quiets[i], rows.theta0[i], rows.omega0[i], rows.h_scans[i], rows.dt_out,
-            rows.theta[i], rows.omega[i], np.empty(0), (rows.row_out[i],))
+            rows.t_quiets[i], rows.h_scans[i], rows.y0[i], rows.dt_out, rows.states[i],
+            np.empty(0))
 
 
 @njit(cache=True)
@@ -521,40 +684,55 @@ def same_block(mp, b):
 
 
 @njit(cache=True)
-def store_row(i, res, rows):
-    """Store the :data:`KernelResult` ``res`` of row ``i`` in the :data:`Batch` ``rows``;
-    the history past the written samples is NaN.
+def store_row(i, rows):
+    """Finish row ``i`` of the :data:`Batch` ``rows`` after its kernel ran: the history
+    past the samples it wrote (``res.n_out``) is NaN.
 
     Examples
     --------
-    A batch of one row, as in :func:`row_args`, and a result that wrote 40 of its 100
-    output samples (a run that settled after 0.4 s):
+    A batch of one row, as in :func:`row_args`, whose run wrote 40 of its 100 samples:
 
     >>> import numpy as np
-    >>> from rocking.models import Batch, pack_motions, KernelResult, store_row
+    >>> import rocking
+    >>> from rocking.models import Batch, pack_motions, store_row
+    >>> from rocking.models.base import empty_results
     >>> from rocking.motions import OneSine
-    >>> kinds, prms, samples, nsamp, t_ends, h_scans, t_quiets = pack_motions(
-    ...     [OneSine(2.0, 0.5)], duration=1.0)
-    >>> f = [np.zeros(1) for _ in range(5)]
-    >>> i, b = np.zeros((3, 1), np.int64), np.zeros((2, 1), bool)
-    >>> rows = Batch(kinds, prms, samples, nsamp, t_ends, t_quiets, h_scans, f[0], f[0],
-    ...              0.01, np.zeros((1, 100)), np.zeros((1, 100)), f[1], b[0], f[2],
-    ...              f[3], i[0], i[1], i[2], f[4], b[1], np.zeros((1, 0)))
-    >>> res = KernelResult(n_out=40, n_impacts=3, max_abs_theta=0.05, overturned=False,
-    ...                    overturn_time=np.nan, uplift_time=0.12, n_steps=400, status=0,
-    ...                    lift_off_time=0.12, settled=True)
-    >>> store_row(0, res, rows)
-    >>> int(rows.n_impacts[0]), bool(rows.settled[0]), bool(np.isnan(rows.theta[0, 40:]).all())
-    (3, True, True)
+    >>> pm = pack_motions([OneSine(2.0, 0.5)], duration=1.0)
+    >>> res = empty_results(rocking.MODELS["housner"].outputs, 1)
+    >>> rows = Batch(*pm[:4], pm.t_ends, pm.t_quiets, pm.h_scans, np.zeros((1, 2)), 0.01,
+    ...              np.zeros((1, 100, 2)), res)
+    >>> rows.res[0]["n_out"] = 40
+    >>> store_row(0, rows)
+    >>> bool(np.isnan(rows.states[0, 40:]).all()), bool((rows.states[0, :40] == 0).all())
+    (True, True)
     """
-    rows.theta[i, res.n_out:] = math.nan
-    rows.omega[i, res.n_out:] = math.nan
-    rows.max_abs_theta[i] = res.max_abs_theta
-    rows.overturned[i] = res.overturned
-    rows.overturn_time[i] = res.overturn_time
-    rows.uplift_time[i] = res.uplift_time
-    rows.n_impacts[i] = res.n_impacts
-    rows.n_steps[i] = res.n_steps
-    rows.status[i] = res.status
-    rows.lift_off_time[i] = res.lift_off_time
-    rows.settled[i] = res.settled
+    rows.states[i, rows.res[i].n_out:, :] = math.nan
+
+
+@njit(cache=True, inline="always")
+def set_planar_result(res, n_out, n_impacts, max_abs_theta, overturned, overturn_time,
+                      uplift_time, n_steps, status, lift_off_time, settled):
+    """Write the shared outputs of a planar model (:data:`GENERIC_OUTPUTS`,
+    :data:`PLANAR_OUTPUTS`) into its result record ``res`` (inlined into each kernel:
+    each model's record is a type of its own).
+
+    Examples
+    --------
+    >>> import math
+    >>> import rocking
+    >>> from rocking.models.base import empty_results, set_planar_result
+    >>> res = empty_results(rocking.MODELS["housner"].outputs, 1)
+    >>> set_planar_result(res[0], 40, 3, 0.05, False, math.nan, 0.12, 400, 0, math.nan, True)
+    >>> int(res["n_impacts"][0]), bool(res["settled"][0]), float(res["max_abs_theta"][0])
+    (3, True, 0.05)
+    """
+    res.n_out = n_out
+    res.n_impacts = n_impacts
+    res.max_abs_theta = max_abs_theta
+    res.overturned = overturned
+    res.overturn_time = overturn_time
+    res.uplift_time = uplift_time
+    res.n_steps = n_steps
+    res.status = status
+    res.lift_off_time = lift_off_time
+    res.settled = settled

@@ -90,6 +90,7 @@ numba; batches run in parallel.
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 from dataclasses import dataclass
 
 from numba import njit, prange
@@ -103,7 +104,7 @@ from ..motions._kernel import (
 )
 from ..units import G
 from ._numerics import events as E
-from .base import KernelResult, Model, ModelOptions, option, row_args, store_row
+from .base import Model, ModelOptions, option, row_args, set_planar_result, store_row
 from .housner import DEFAULT_FREE_REST_TOL
 
 HALF_PI = 0.5 * math.pi
@@ -423,36 +424,44 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, l, kind, prm, samples, t_e
     return k, n_imp, peak, overturned, t_over, t_up, n_steps, ok, t_lift, settled
 
 
+CCRRParams = namedtuple("CCRRParams", [
+    "alpha_p", "p_p", "mu_p", "l", "rtol", "dt_fixed", "rest_tol", "free_rest_tol", "alpha_m",
+    "p_m", "mu_m"])
+"""The kernel parameters ``mp`` of the CCRR model: both sides' ``alpha`` (rad), ``p``
+(1/s) and ``mu``, and the options (:class:`CCRROptions`; ``dt_fixed`` 0: adaptive)."""
+
+
 @njit(cache=True)
-def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th, out_om,
-           imp, extra):
+def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp, res, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
-    alpha_p, p_p, mu_p, l, rtol, dt_fixed, rest_tol, free_rest_tol, alpha_m, p_m, mu_m = mp
-    alpha = min(alpha_p, alpha_m)  # the weaker side: the scale of chi
+    l = mp.l
+    alpha = min(mp.alpha_p, mp.alpha_m)  # the weaker side: the scale of chi
     chi_c = (l * l * alpha / math.sin(alpha)) ** (1.0 / 3.0)  # orbit that l sustains
-    rest_chi = max(rest_tol, 2.0 * chi_c)
+    rest_chi = max(mp.rest_tol, 2.0 * chi_c)
     chi_start = math.sqrt(l)
-    h_max = min(0.05 / max(p_p, p_m), 8.0 * h_scan)
+    h_max = min(0.05 / max(mp.p_p, mp.p_m), 8.0 * h_scan)
     k, n_imp, peak, over, t_over, t_up, n_steps, ok, t_lift, settled = integrate(
-        alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, l, kind, prm, samples, t_end, t_quiet, th0,
-        om0, rtol, dt_fixed, rest_chi, free_rest_tol, chi_start, h_max, h_scan, dt_out, out_th,
-        out_om, imp)
-    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, t_lift,
-                        settled)
+        mp.alpha_p, mp.p_p, mp.mu_p, mp.alpha_m, mp.p_m, mp.mu_m, l, kind, prm, samples, t_end,
+        t_quiet, y0[0], y0[1], mp.rtol, mp.dt_fixed, rest_chi, mp.free_rest_tol, chi_start,
+        h_max, h_scan, dt_out, hist[:, 0], hist[:, 1], imp)
+    set_planar_result(res, k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1,
+                      t_lift, settled)
 
 
 @njit(cache=True)
 def with_block(mp, b):
     """``mp`` with the block parameters ``b = (alpha_plus, p_plus, mu_plus, alpha_minus,
     p_minus, mu_minus)`` of a batch row."""
-    return (b[0], b[1], b[2], mp[3], mp[4], mp[5], mp[6], mp[7], b[3], b[4], b[5])
+    return CCRRParams(b[0], b[1], b[2], mp.l, mp.rtol, mp.dt_fixed, mp.rest_tol,
+                      mp.free_rest_tol, b[3], b[4], b[5])
 
 
 @njit(cache=True, parallel=True)
 def batch_kernel(mp, extra0, rows, blocks):
     """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
-    for i in prange(rows[0].shape[0]):
-        store_row(i, kernel(with_block(mp, blocks[i]), *row_args(i, rows, extra0)), rows)
+    for i in prange(rows.kinds.shape[0]):
+        kernel(with_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+        store_row(i, rows)
 
 
 # ------------------------------------------------------------------------------- the model
@@ -495,8 +504,8 @@ class CCRR(Model):
 
     def kernel_params(self, dt_out, theta0, omega0) -> tuple:
         b, o = self.block, self.options
-        return (b.alpha_plus, b.p_plus, b.mu_plus, o.l, o.rtol, o.dt or 0.0, o.rest_tol,
-                o.free_rest_tol, b.alpha_minus, b.p_minus, b.mu_minus)
+        return CCRRParams(b.alpha_plus, b.p_plus, b.mu_plus, o.l, o.rtol, o.dt or 0.0,
+                          o.rest_tol, o.free_rest_tol, b.alpha_minus, b.p_minus, b.mu_minus)
 
     def failure(self, status, t, dt_out=None) -> str:
         at = f" at t = {t:.4g} s" if t == t else ""

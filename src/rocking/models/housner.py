@@ -90,6 +90,7 @@ batch in parallel with no Python per time step.
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 from dataclasses import dataclass
 
 from numba import njit, prange
@@ -104,7 +105,7 @@ from ..motions._kernel import (
 from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
-from .base import KernelResult, Model, ModelOptions, option, row_args, store_row
+from .base import Model, ModelOptions, option, row_args, set_planar_result, store_row
 
 INV_G = 1.0 / G
 
@@ -381,30 +382,38 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t
     return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
 
 
+HousnerParams = namedtuple("HousnerParams", [
+    "alpha_p", "p_p", "mu_p", "linear", "rtol", "rest_tol", "free_rest_tol", "alpha_m", "p_m",
+    "mu_m"])
+"""The kernel parameters ``mp`` of the classical model: both sides' ``alpha`` (rad), ``p``
+(1/s) and ``mu``, the ``linear`` flag and the tolerances (:class:`HousnerOptions`)."""
+
+
 @njit(cache=True)
-def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th, out_om,
-           imp, extra):
+def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp, res, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
-    alpha_p, p_p, mu_p, lin, rtol, rest_tol, free_rest_tol, alpha_m, p_m, mu_m = mp
-    h_max = min(0.05 / max(p_p, p_m), 8.0 * h_scan)
+    h_max = min(0.05 / max(mp.p_p, mp.p_m), 8.0 * h_scan)
     k, n_imp, peak, over, t_over, t_up, n_steps, t_lift, settled = integrate(
-        alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t_end, t_quiet, th0,
-        om0, rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th, out_om, imp)
-    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled)
+        mp.alpha_p, mp.p_p, mp.mu_p, mp.alpha_m, mp.p_m, mp.mu_m, mp.linear, kind, prm,
+        samples, t_end, t_quiet, y0[0], y0[1], mp.rtol, mp.rest_tol, mp.free_rest_tol, h_max,
+        h_scan, dt_out, hist[:, 0], hist[:, 1], imp)
+    set_planar_result(res, k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled)
 
 
 @njit(cache=True)
 def with_block(mp, b):
     """``mp`` with the block parameters ``b = (alpha_plus, p_plus, mu_plus, alpha_minus,
     p_minus, mu_minus)`` of a batch row."""
-    return (b[0], b[1], b[2], mp[3], mp[4], mp[5], mp[6], b[3], b[4], b[5])
+    return HousnerParams(b[0], b[1], b[2], mp.linear, mp.rtol, mp.rest_tol, mp.free_rest_tol,
+                         b[3], b[4], b[5])
 
 
 @njit(cache=True, parallel=True)
 def batch_kernel(mp, extra0, rows, blocks):
     """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
-    for i in prange(rows[0].shape[0]):
-        store_row(i, kernel(with_block(mp, blocks[i]), *row_args(i, rows, extra0)), rows)
+    for i in prange(rows.kinds.shape[0]):
+        kernel(with_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+        store_row(i, rows)
 
 
 # ------------------------------------------------------------------------------- the model
@@ -473,5 +482,5 @@ class Housner(Model):
 
     def kernel_params(self, dt_out, theta0, omega0) -> tuple:
         b, o = self.block, self.options
-        return (b.alpha_plus, b.p_plus, b.mu_plus, o.linear, o.rtol, o.rest_tol,
-                o.free_rest_tol, b.alpha_minus, b.p_minus, b.mu_minus)
+        return HousnerParams(b.alpha_plus, b.p_plus, b.mu_plus, o.linear, o.rtol, o.rest_tol,
+                             o.free_rest_tol, b.alpha_minus, b.p_minus, b.mu_minus)

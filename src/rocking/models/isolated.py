@@ -102,6 +102,7 @@ and with :func:`rocking.testing.check_model` in ``tests/test_isolated.py``. Regi
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 from dataclasses import dataclass
 
 import numpy as np
@@ -120,23 +121,43 @@ from ..motions._kernel import (
 from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
-from .base import KernelResult, Model, ModelOptions, RowOutput, option, row_args_out, store_row
+from .base import (
+    GENERIC_OUTPUTS,
+    PLANAR_OUTPUTS,
+    Model,
+    ModelOptions,
+    Output,
+    option,
+    row_args,
+    set_planar_result,
+    store_row,
+)
 
 HALF_PI = 0.5 * math.pi
 DEFAULT_RTOL = 1e-8
+
+
+IsolatedParams = namedtuple("IsolatedParams", [
+    "alpha", "p", "mu", "R", "lam", "gam", "iso", "c1", "c2", "veps", "clearance", "h_max",
+    "rest_tol", "rtol", "mu_given", "ws2"])
+"""The kernel parameters ``mp`` of the isolated model: the block (``alpha``, ``p``, ``mu``
+used, ``R``, ``lam = R p^2 / g``), ``gam = 1 / (1 + mass_ratio)``, the isolator (``iso``
+0: linear, 1: pendulum; its ``c1``, ``c2``, ``veps``), the clearance (m, inf: none), the
+largest step (s), the tolerances, the given restitution (NaN: derived) and the stop's
+``omega_s^2`` (0: none)."""
 
 
 @njit(cache=True)
 def _force(mp, u, v, gf):
     """Isolator force per unit of the isolated mass (m/s^2); ``gf = 1 + a_v / g`` scales
     the friction pendulum's (its normal force), not the linear isolator's. Beyond the
-    clearance, the stop's spring ``omega_s^2 (|u| - clearance) sgn(u)`` (``mp[15]``)."""
-    if mp[6] == 0.0:
-        f = mp[7] * u + mp[8] * v
+    clearance, the stop's spring ``omega_s^2 (|u| - clearance) sgn(u)`` (``mp.ws2``)."""
+    if mp.iso == 0.0:
+        f = mp.c1 * u + mp.c2 * v
     else:
-        f = gf * (mp[7] * u + mp[8] * math.tanh(v / mp[9]))
-    if mp[15] > 0.0 and abs(u) > mp[10]:
-        f += mp[15] * (u - mp[10]) if u > 0.0 else mp[15] * (u + mp[10])
+        f = gf * (mp.c1 * u + mp.c2 * math.tanh(v / mp.veps))
+    if mp.ws2 > 0.0 and abs(u) > mp.clearance:
+        f += mp.ws2 * (u - mp.clearance) if u > 0.0 else mp.ws2 * (u + mp.clearance)
     return f
 
 
@@ -155,7 +176,7 @@ def _acc(mp, th, om, u, v, s, rock, gf):
     f = _force(mp, u, v, gf)
     if not rock:
         return -f, 0.0
-    alpha, p, R, lam, gam = mp[0], mp[1], mp[3], mp[4], mp[5]
+    alpha, p, R, lam, gam = mp.alpha, mp.p, mp.R, mp.lam, mp.gam
     phi = alpha - s * th
     c, sn = math.cos(phi), math.sin(phi)
     p2 = p * p
@@ -312,8 +333,8 @@ def _event(mp, which, th, u, v, t, s, prm, samples, thr):
         gf = _gf(prm, samples, t)
         return abs(_force(mp, u, v, gf)) - thr * gf if gf > 0.0 else -1.0
     if which == 2:
-        return abs(u) - mp[10]
-    return mp[10] - abs(u)  # 4: the plate leaves the stop
+        return abs(u) - mp.clearance
+    return mp.clearance - abs(u)  # 4: the plate leaves the stop
 
 
 @njit(cache=True)
@@ -349,7 +370,7 @@ def _locate_impact(mp, t, y, d, hh, y1, d1, s, rock, kind, prm, samples):
             lo = sig
         else:
             hi = sig
-        if abs(thc) <= 1e-15 * mp[0] or hi - lo <= 1e-15 * (1.0 + t):
+        if abs(thc) <= 1e-15 * mp.alpha or hi - lo <= 1e-15 * (1.0 + t):
             break
         new = sig - thc / omc if omc != 0.0 else -1.0
         if not (lo < new < hi):
@@ -362,24 +383,27 @@ def _locate_impact(mp, t, y, d, hh, y1, d1, s, rock, kind, prm, samples):
 def _amp_bound(mp, y):
     """An upper bound of the plate's |A| in free motion of the resting system (infinite
     while the energy could still carry the plate onto the stop)."""
-    if mp[15] > 0.0 and (y[3] * y[3] / mp[7] + y[2] * y[2]) >= mp[10] * mp[10]:
+    if mp.ws2 > 0.0 and (y[3] * y[3] / mp.c1 + y[2] * y[2]) >= mp.clearance * mp.clearance:
         return math.inf
-    if mp[6] == 0.0:
-        w2 = mp[7]
+    if mp.iso == 0.0:
+        w2 = mp.c1
         e2 = y[3] * y[3] + w2 * y[2] * y[2]
-        return math.sqrt(w2 * e2) * math.sqrt(1.0 + mp[8] * mp[8] / w2)
-    e2 = y[3] * y[3] + mp[7] * y[2] * y[2]
-    return math.sqrt(mp[7] * e2) + mp[8]
+        return math.sqrt(w2 * e2) * math.sqrt(1.0 + mp.c2 * mp.c2 / w2)
+    e2 = y[3] * y[3] + mp.c1 * y[2] * y[2]
+    return math.sqrt(mp.c1 * e2) + mp.c2
 
 
 @njit(cache=True)
-def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th,
-           out_om, imp, extra):
-    alpha, p, mu, R, gam, rest_tol, rtol = mp[0], mp[1], mp[2], mp[3], mp[5], mp[12], mp[13]
+def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp, res, extra):
+    """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
+    th0, om0 = y0[0], y0[1]
+    out_th, out_om = hist[:, 0], hist[:, 1]
+    alpha, p, mu, R, gam, rest_tol, rtol = (mp.alpha, mp.p, mp.mu, mp.R, mp.gam, mp.rest_tol,
+                                            mp.rtol)
     hc = R * math.cos(alpha)
     thr = G * math.tan(alpha)
     hv = has_vertical(prm)
-    h_max = min(mp[11], 0.05 / p, 4.0 * h_scan)
+    h_max = min(mp.h_max, 0.05 / p, 4.0 * h_scan)
     atol_th = 1e-3 * rtol * alpha
     atol_om = atol_th * p
     atol_u = rtol * R * math.sin(alpha)  # the plate to rtol of the block's half-width b
@@ -468,15 +492,15 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
                                      thr)
         x_cl = 2.0  # clearance: at the end or at the extremum of u inside the step
         w_cl = 2  # reaching the clearance; 4: leaving the stop (stop_period)
-        if abs(y[2]) >= mp[10]:  # on the stop (only with a stop: otherwise the run ended)
+        if abs(y[2]) >= mp.clearance:  # on the stop (only with a stop: otherwise the run ended)
             w_cl = 4
-            if abs(y1[2]) < mp[10]:
+            if abs(y1[2]) < mp.clearance:
                 x_cl = 1.0
-        elif abs(y1[2]) >= mp[10]:
+        elif abs(y1[2]) >= mp.clearance:
             x_cl = 1.0
         elif y[3] * y1[3] < 0.0:
             z = D.hermite_root(y[2], y[3], d[1], y1[2], y1[3], d1[1], hh, 0.0, 1, y[3])
-            if abs(D.hermite5(y[2], y[3], d[1], y1[2], y1[3], d1[1], hh, z)[0]) >= mp[10]:
+            if abs(D.hermite5(y[2], y[3], d[1], y1[2], y1[3], d1[1], hh, z)[0]) >= mp.clearance:
                 x_cl = z
         if x_cl <= 1.0 and x_cl * hh <= sig:
             sc = _locate(mp, w_cl, t, y, d, x_cl * hh, s, rock, kind, prm, samples, thr)
@@ -542,7 +566,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
         if ev == 2 or ev == 4:
             if ev == 2 and not cleared:
                 cleared, t_clear = True, t
-            if mp[15] == 0.0:
+            if mp.ws2 == 0.0:
                 break  # no stop modelled: the run ends at the clearance
             continue
         if ev == 1:
@@ -577,12 +601,12 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out
             h = min(h_max, max(sig, 1e-6 / p))
             if y[1] * d[0] < 0.0:  # the rebound lasts 2|om/a|: do not jump over it
                 h = min(h, 0.5 * abs(y[1] / d[0]))
-    if extra[0].shape[0] > 0:
-        extra[0][0], extra[0][1], extra[0][2], extra[0][3] = (peak_u, peak_a,
-                                                              1.0 if cleared else 0.0,
-                                                              t_clear)
-    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift,
-                        (over or not rock) and t_lift != t_lift)
+    set_planar_result(res, k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift,
+                      (over or not rock) and t_lift != t_lift)
+    res.max_base_displacement = peak_u
+    res.max_plate_acceleration = peak_a
+    res.clearance_exceeded = cleared
+    res.clearance_time = t_clear
 
 
 @njit(cache=True)
@@ -602,15 +626,17 @@ def block_terms(alpha, p, R, gam, mu_given):
 def with_block(mp, b):
     """``mp`` with the block ``b = (alpha, p, R)`` of a batch row (``lambda`` and a derived
     restitution rebuilt from it)."""
-    lam, mu = block_terms(b[0], b[1], b[2], mp[5], mp[14])
-    return (b[0], b[1], mu, b[2], lam, mp[5], mp[6], mp[7], mp[8], mp[9], mp[10], mp[11],
-            mp[12], mp[13], mp[14], mp[15])
+    lam, mu = block_terms(b[0], b[1], b[2], mp.gam, mp.mu_given)
+    return IsolatedParams(b[0], b[1], mu, b[2], lam, mp.gam, mp.iso, mp.c1, mp.c2, mp.veps,
+                          mp.clearance, mp.h_max, mp.rest_tol, mp.rtol, mp.mu_given, mp.ws2)
 
 
 @njit(cache=True, parallel=True)
 def batch_kernel(mp, extra0, rows, blocks):
-    for i in prange(rows[0].shape[0]):
-        store_row(i, kernel(with_block(mp, blocks[i]), *row_args_out(i, rows)), rows)
+    """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
+    for i in prange(rows.kinds.shape[0]):
+        kernel(with_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+        store_row(i, rows)
 
 
 @dataclass(frozen=True)
@@ -659,14 +685,14 @@ class Isolated(Model):
     Options = IsolatedOptions
     kernel = kernel
     batch_kernel = batch_kernel
-    row_outputs = (
-        RowOutput("max_base_displacement", "m", False, "max |u| of the base plate"),
-        RowOutput("max_plate_acceleration", "m/s^2", False,
-                  "max absolute acceleration of the plate"),
-        RowOutput("clearance_exceeded", "", True, "|u| reached the clearance (the run "
-                                                 "stopped there, unless stop_period)"),
-        RowOutput("clearance_time", "s", False, "when |u| first reached the clearance "
-                                                "(NaN: never)"),
+    outputs = GENERIC_OUTPUTS + PLANAR_OUTPUTS + (
+        Output("max_base_displacement", "m", False, "max |u| of the base plate"),
+        Output("max_plate_acceleration", "m/s^2", False,
+               "max absolute acceleration of the plate"),
+        Output("clearance_exceeded", "", True, "|u| reached the clearance (the run "
+                                              "stopped there, unless stop_period)"),
+        Output("clearance_time", "s", False, "when |u| first reached the clearance "
+                                             "(NaN: never)"),
     )
 
     @classmethod
@@ -737,9 +763,9 @@ class Isolated(Model):
                                      "moat wall at |u| = clearance")
             ws2 = (2.0 * math.pi / o.stop_period) ** 2
             h = min(h, o.stop_period / 20.0)
-        return tuple(float(x) for x in (alpha, p, mu, R, lam, gam, iso, c1, c2, veps, clear,
-                                        min(h, o.max_step), o.rest_tol, o.rtol, mu_given,
-                                        ws2))
+        return IsolatedParams(*(float(x) for x in (
+            alpha, p, mu, R, lam, gam, iso, c1, c2, veps, clear, min(h, o.max_step),
+            o.rest_tol, o.rtol, mu_given, ws2)))
 
     def info(self, dt_out=None):
         """The options, and ``restitution``: the impact restitution used (``mu``, or the

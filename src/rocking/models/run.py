@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import warnings
+from collections import namedtuple
 
 import numba
 import numpy as np
@@ -20,7 +21,14 @@ from ..errors import OutputTooLargeError, ParameterError, SimulationError
 from ..motions import Motion
 from ..motions._kernel import NPRM
 from ..results import DEFAULT_DT_OUT, BatchResponse
-from .base import BATCH_OUTPUTS, Batch, Model, row_output_arrays
+from .base import (
+    BATCH_OUTPUTS,
+    Batch,
+    Model,
+    empty_results,
+    result_arrays,
+    result_values,
+)
 from .registry import MODELS
 
 HALF_PI = 0.5 * math.pi
@@ -163,7 +171,8 @@ def _positional(func: str, args: tuple, names: tuple, given: dict) -> dict:
 def simulate(block, motion=None, model="housner", duration: float | None = None, *args,
              theta0: float | None = None, omega0: float | None = None,
              linear: bool | None = None, max_free_time: float | None = None,
-             dt_out: float = DEFAULT_DT_OUT, max_impacts: int = MAX_IMPACTS, **options):
+             dt_out: float = DEFAULT_DT_OUT, max_impacts: int = MAX_IMPACTS, state0=None,
+             **options):
     """Simulate one block under one base motion and return a :class:`~rocking.Response`.
 
     Parameters
@@ -183,7 +192,11 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
         (``Response.settled``), at most ``max_free_time`` longer: a block still falling
         when the record ends is not reported as a survivor.
     theta0, omega0 : float
-        Initial angle (rad, in (-pi/2, pi/2)) and angular velocity (rad/s).
+        Initial angle (rad, in (-pi/2, pi/2)) and angular velocity (rad/s): the planar
+        models' shorthand for their initial state.
+    state0 : array_like, optional
+        The initial state vector (``Model.state_names``; instead of ``theta0``,
+        ``omega0``). Default: at rest.
     linear : bool, optional
         The small-angle form of Eq 1 (models with a ``linear`` option); True or False
         (None, the default: False).
@@ -223,12 +236,13 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     """
     pos = _positional("simulate", args, ("theta0", "omega0", "linear"),
                       {"theta0": theta0, "omega0": omega0, "linear": linear})
-    theta0 = pos.get("theta0", 0.0 if theta0 is None else theta0)
-    omega0 = pos.get("omega0", 0.0 if omega0 is None else omega0)
+    theta0 = pos.get("theta0", theta0)
+    omega0 = pos.get("omega0", omega0)
     linear = pos.get("linear", False if linear is None else linear)
     m = _make(model, block, linear, options)
-    duration, t_quiet, theta0, omega0 = check_run(motion, duration, theta0, omega0,
-                                                  max_free_time)
+    cls = type(m)
+    duration, t_quiet, y0, (theta0, omega0) = _initial(m, motion, duration, theta0, omega0,
+                                                       state0, max_free_time)
     dt_out = positive("dt_out", dt_out, "s")
     cap = as_int("max_impacts", max_impacts, 0, 10 ** 7)
     if motion is None:
@@ -236,41 +250,78 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     else:
         (kind, prm, samples), h_scan = motion.spec(), motion.scan_step
     n_out = _n_out(duration, dt_out)
-    _guard(2 * n_out + int(cap), m.extra_bytes(n_out), dt_out, duration)
-    out_th = np.empty(n_out)
-    out_om = np.empty(n_out)
+    ns = y0.size
+    _guard(ns * n_out + int(cap), m.extra_bytes(n_out), dt_out, duration)
+    hist = np.empty((n_out, ns))
     imp = np.empty(max(1, int(cap)))
     extra = m.extra_buffers(n_out)
+    res = empty_results(cls.outputs, 1)
     mp = m.kernel_params(dt_out, theta0, omega0)
-    r = type(m).kernel(mp, kind, prm, samples, duration, t_quiet, theta0, omega0, h_scan,
-                       dt_out, out_th, out_om, imp, extra)
-    k = int(r.n_out)
-    if r.status != 0:
-        raise SimulationError(m.failure(int(r.status), k * dt_out, dt_out))
+    cls.kernel(mp, kind, prm, samples, duration, t_quiet, h_scan, y0, dt_out, hist, imp,
+               res[0], extra)
+    values = result_values(cls.outputs, res[0])
+    k = values["n_out"]
+    if values["status"] != 0:
+        raise SimulationError(m.failure(values["status"], k * dt_out, dt_out))
     t = np.arange(k) * dt_out
-    th, om = out_th[:k], out_om[:k]
-    over, t_over = bool(r.overturned), float(r.overturn_time)
-    if over and m.append_overturn and (k == 0 or t[-1] < t_over):  # end on the overturn
+    states = hist[:k]
+    over, t_over = values["overturned"], values["overturn_time"]
+    shorthand = m.planar_shorthand()
+    if (over and m.append_overturn and shorthand is not None
+            and (k == 0 or t[-1] < t_over)):  # end on the overturn
+        i_th, i_om = shorthand
+        last = states[-1].copy() if k else np.zeros(ns)
+        last[i_th] = math.copysign(HALF_PI, states[-1, i_th] if k else 1.0)
+        last[i_om] = states[-1, i_om] if k else 0.0
         t = np.append(t, t_over)
-        th = np.append(th, math.copysign(HALF_PI, th[-1] if k else 1.0))
-        om = np.append(om, om[-1] if k else 0.0)
-    fields = m.extra_fields(k, extra, dt_out)
-    info = {**m.info(dt_out), "n_steps": int(r.n_steps), **fields.pop("info", {})}
+        states = np.vstack((states, last[None, :]))
+    fields = m.extra_fields(k, states, extra, dt_out)
+    info = {**m.info(dt_out), "n_steps": values["n_steps"], **m.result_info(values),
+            **fields.pop("info", {})}
+    th = om = None
+    if shorthand is not None:
+        th, om = states[:, shorthand[0]].copy(), states[:, shorthand[1]].copy()
+    n_imp = values.get("n_impacts", 0)
     return m.response_class(
-        t=t, theta=th.copy(), omega=om.copy(),
-        impact_times=imp[: min(int(r.n_impacts), cap)].copy(),
-        max_abs_theta=float(r.max_abs_theta), overturned=over,
-        overturn_time=t_over if over else math.nan, uplift_time=float(r.uplift_time),
-        n_impacts=int(r.n_impacts), model=m.result_name, block=block, motion=motion,
-        info=info, lift_off_time=float(r.lift_off_time), settled=bool(r.settled), **fields)
+        t=t, theta=th, omega=om, impact_times=imp[: min(n_imp, cap)].copy(),
+        max_abs_theta=values.get("max_abs_theta", math.nan), overturned=over,
+        overturn_time=t_over if over else math.nan, uplift_time=values["uplift_time"],
+        n_impacts=n_imp, model=m.result_name, block=block, motion=motion,
+        info=info, lift_off_time=values["lift_off_time"], settled=values["settled"],
+        states=states.copy(), state_names=tuple(m.state_names),
+        outputs={o.name: values[o.name] for o in cls.outputs if o.name != "n_out"}, **fields)
+
+
+def _initial(m: Model, motion, duration, theta0, omega0, state0, max_free_time):
+    """``(t_end, t_quiet, y0, (theta0, omega0))`` of a single run: the window and the
+    initial state (``state0``, or the planar shorthand)."""
+    if state0 is not None:
+        if theta0 is not None or omega0 is not None:
+            raise ParameterError("give the initial state as state0 or as theta0/omega0, "
+                                 "not both")
+        t_end, t_quiet, _, _ = check_run(motion, duration, 0.0, 0.0, max_free_time)
+        y0 = m.check_state(state0)
+        sh = m.planar_shorthand()
+        return t_end, t_quiet, y0, ((y0[sh[0]], y0[sh[1]]) if sh else (0.0, 0.0))
+    t_end, t_quiet, theta0, omega0 = check_run(
+        motion, duration, 0.0 if theta0 is None else theta0,
+        0.0 if omega0 is None else omega0, max_free_time)
+    return t_end, t_quiet, m.initial_state(theta0, omega0), (theta0, omega0)
 
 
 # ================================================================================= batch
-def pack_motions(motions, duration=None, max_free_time=None):
+PackedMotions = namedtuple("PackedMotions", ["kinds", "prms", "samples", "nsamp", "t_ends",
+                                             "h_scans", "t_quiets"])
+"""Motions packed for the batch kernels (:func:`pack_motions`): kind codes, parameters,
+padded samples and their counts, and each run's window (s) and scan step (s)."""
+
+
+def pack_motions(motions, duration=None, max_free_time=None) -> PackedMotions:
     """Pack motions into padded arrays for the batch kernels.
 
-    Returns ``kinds, prms, samples, nsamp, t_ends, h_scans, t_quiets`` (the window of each
-    run: :func:`run_window`).
+    Returns a :data:`PackedMotions` (by name, or unpacked in the order ``kinds, prms,
+    samples, nsamp, t_ends, h_scans, t_quiets``; the window of each run:
+    :func:`run_window`).
 
     Examples
     --------
@@ -280,6 +331,8 @@ def pack_motions(motions, duration=None, max_free_time=None):
     ...     [OneSine(1.0, 0.5), OneSine(2.0, 0.25)], duration=2.0)
     >>> kinds.shape, t_ends
     ((2,), array([2., 2.]))
+    >>> pack_motions([OneSine(1.0, 0.5)]).t_quiets  # the pulse's window, by name
+    array([2.5])
     """
     if isinstance(motions, Motion):
         motions = [motions]
@@ -295,8 +348,8 @@ def pack_motions(motions, duration=None, max_free_time=None):
     windows = np.array([run_window(mo, duration, max_free_time) for mo in motions],
                        dtype=np.float64).reshape(n, 2)
     h_scans = np.array([mo.scan_step for mo in motions], dtype=np.float64)
-    return (kinds, prms, samples, nsamp, windows[:, 0].copy(), h_scans,
-            windows[:, 1].copy())
+    return PackedMotions(kinds, prms, samples, nsamp, windows[:, 0].copy(), h_scans,
+                         windows[:, 1].copy())
 
 
 def _per_row(name: str, value, n: int, lo: float = -math.inf, hi: float = math.inf,
@@ -327,7 +380,8 @@ def _blocks(cls: type[Model], block, n: int) -> list:
 def simulate_many(block, motions, model="housner", duration: float | None = None, *args,
                   theta0=0.0, omega0=0.0, linear: bool | None = None,
                   max_free_time: float | None = None, return_histories: bool = False,
-                  dt_out: float = DEFAULT_DT_OUT, errors: str = "raise", **options):
+                  dt_out: float = DEFAULT_DT_OUT, errors: str = "raise", state0=None,
+                  **options):
     """Simulate blocks under many motions in one compiled, parallel call.
 
     ``block`` is one block for every motion, or one block per motion (Monte Carlo over the
@@ -380,63 +434,97 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     if not isinstance(return_histories, bool | np.bool_):
         raise ParameterError(f"return_histories must be True or False, "
                              f"got {return_histories!r}")
-    kinds, prms, samples, nsamp, t_ends, h_scans, t_quiets = pack_motions(
-        motions, duration, max_free_time)
-    n = kinds.size
+    pm = pack_motions(motions, duration, max_free_time)
+    n = pm.kinds.size
     cls = get_model(model)
     blocks = _blocks(cls, block, n)
     m = _make(model, blocks[0], linear, options)
     m.check_batch()
     dt_out = positive("dt_out", dt_out, "s")
-    th0 = _per_row("theta0", theta0, n, -HALF_PI, HALF_PI, "(-pi/2, pi/2) rad")
-    om0 = _per_row("omega0", omega0, n)
-    if (th0.any() or om0.any()) and not cls.batch_initial_state:
-        raise ParameterError(f"theta0 and omega0 must be 0 in batches of model {cls.name!r} "
-                             "(use rocking.simulate for other initial states)")
-    n_out = _n_out(float(t_ends.max()), dt_out) if return_histories else 0
+    y0, th0, om0 = _batch_states(m, n, theta0, omega0, state0)
+    ns = y0.shape[1]
+    n_out = _n_out(float(pm.t_ends.max()), dt_out) if return_histories else 0
     # the rows in flight (one per thread) may hold the model's extra buffers too
-    _guard(2 * n * n_out, numba.get_num_threads() * m.extra_bytes(n_out), dt_out,
-           float(t_ends.max()))
-    rows = Batch(kinds=kinds, prms=prms, samples=samples, nsamp=nsamp, t_ends=t_ends,
-                 t_quiets=t_quiets, h_scans=h_scans, theta0=th0, omega0=om0, dt_out=dt_out,
-                 theta=np.empty((n, n_out)), omega=np.empty((n, n_out)),
-                 max_abs_theta=np.empty(n), overturned=np.zeros(n, dtype=np.bool_),
-                 overturn_time=np.empty(n), uplift_time=np.empty(n),
-                 n_impacts=np.zeros(n, dtype=np.int64), n_steps=np.zeros(n, dtype=np.int64),
-                 status=np.zeros(n, dtype=np.int64), lift_off_time=np.empty(n),
-                 settled=np.zeros(n, dtype=np.bool_),
-                 row_out=np.full((n, len(cls.row_outputs)), np.nan))
+    _guard(ns * n * n_out, numba.get_num_threads() * m.extra_bytes(n_out), dt_out,
+           float(pm.t_ends.max()))
+    rows = Batch(kinds=pm.kinds, prms=pm.prms, samples=pm.samples, nsamp=pm.nsamp,
+                 t_ends=pm.t_ends, t_quiets=pm.t_quiets, h_scans=pm.h_scans, y0=y0,
+                 dt_out=dt_out, states=np.empty((n, n_out, ns)),
+                 res=empty_results(cls.outputs, n))
     nb = len(cls.block_row(blocks[0]))
-    if nb or len({id(b) for b in blocks}) == 1:
+    per_state = not cls.batch_initial_state and (th0.any() or om0.any())
+    if (nb or len({id(b) for b in blocks}) == 1) and not per_state:
         bp = np.array([cls.block_row(b) for b in blocks], dtype=np.float64).reshape(n, nb)
-        type(m).batch_kernel(m.kernel_params(dt_out, 0.0, 0.0), m.extra_buffers(0), rows, bp)
-    else:  # one assembly per distinct block (DEM): one batch each, results in place
-        for b in dict.fromkeys(blocks):
-            idx = np.array([i for i, x in enumerate(blocks) if x is b or x == b])
+        cls.batch_kernel(m.kernel_params(dt_out, 0.0, 0.0), m.extra_buffers(0), rows, bp)
+    else:  # one batch per distinct block (DEM) and initial state: results in place
+        first: dict = {}
+        groups: dict = {}
+        for i, b in enumerate(blocks):
+            key = (first.setdefault(b, i), float(th0[i]), float(om0[i]))
+            groups.setdefault(key, []).append(i)
+        for (j, t0, w0), members in groups.items():
+            idx = np.array(members)
             sub = Batch(*(a[idx] if isinstance(a, np.ndarray) else a for a in rows))
-            mb = m if b is blocks[0] else type(m)(b, m.options)
-            type(mb).batch_kernel(mb.kernel_params(dt_out, 0.0, 0.0), mb.extra_buffers(0), sub,
-                                  np.empty((idx.size, 0)))
+            mb = m if blocks[j] is blocks[0] else type(m)(blocks[j], m.options)
+            cls.batch_kernel(mb.kernel_params(dt_out, t0, w0), mb.extra_buffers(0), sub,
+                             np.empty((idx.size, 0)))
             for name in BATCH_OUTPUTS:
                 getattr(rows, name)[idx] = getattr(sub, name)
-    status = rows.status
+    out = result_arrays(cls.outputs, rows.res)
+    status = out["status"]
     bad = np.flatnonzero(status)
     if bad.size:
         if errors == "raise":
             i = int(bad[0])
             raise SimulationError(f"{bad.size} of {n} runs failed; motions[{i}]: "
                                   + m.failure(int(status[i]), math.nan, dt_out))
-        for name in ("max_abs_theta", "overturn_time", "uplift_time", "lift_off_time"):
-            getattr(rows, name)[bad] = math.nan  # the failed runs
-        rows.settled[bad] = False
-        rows.row_out[bad] = math.nan
+        for o in cls.outputs:  # the failed runs: NaN values, not settled
+            if o.name in ("overturned", "status", "n_out", "n_steps") or o.integer:
+                continue
+            out[o.name][bad] = False if o.flag else math.nan
+    planar = m.planar_shorthand()
+    states = rows.states if return_histories else None
+    own = {o.name: out[o.name] for o in cls.row_outputs}
     return BatchResponse(
-        max_abs_theta=rows.max_abs_theta, overturned=rows.overturned,
-        overturn_time=rows.overturn_time, uplift_time=rows.uplift_time,
-        n_impacts=rows.n_impacts, n_steps=rows.n_steps, status=status,
+        max_abs_theta=out.get("max_abs_theta"), overturned=out["overturned"],
+        overturn_time=out["overturn_time"], uplift_time=out["uplift_time"],
+        n_impacts=out.get("n_impacts"), n_steps=out["n_steps"], status=status,
         t=np.arange(n_out) * dt_out if return_histories else None,
-        theta=rows.theta if return_histories else None,
-        omega=rows.omega if return_histories else None,
-        model=m.result_name, block=block, info=m.info(dt_out), lift_off_time=rows.lift_off_time,
-        settled=rows.settled, outputs=row_output_arrays(cls.row_outputs, rows.row_out),
+        theta=states[:, :, planar[0]] if planar and return_histories else None,
+        omega=states[:, :, planar[1]] if planar and return_histories else None,
+        model=m.result_name, block=block, info=m.info(dt_out),
+        lift_off_time=out["lift_off_time"], settled=out["settled"], outputs=own,
+        states=states, state_names=tuple(m.state_names),
     )
+
+
+def _batch_states(m: Model, n: int, theta0, omega0, state0):
+    """``(y0, theta0, omega0)`` of a batch: the initial state of each row (rows x states)
+    and its planar shorthand (zeros for a model without one)."""
+    if state0 is not None:
+        if np.any(np.asarray(theta0, dtype=object) != 0) or np.any(
+                np.asarray(omega0, dtype=object) != 0):
+            raise ParameterError("give the initial state as state0 or as theta0/omega0, "
+                                 "not both")
+        arr = np.asarray(state0, dtype=object)
+        rows_in = [arr] if arr.ndim <= 1 else list(arr)
+        if len(rows_in) not in (1, n):
+            raise ParameterError(f"state0 must be one state or one state per motion ({n}), "
+                                 f"got {len(rows_in)}")
+        y = np.array([m.check_state(r) for r in rows_in], dtype=np.float64)
+        y0 = np.broadcast_to(y, (n, y.shape[1])).copy()
+        sh = m.planar_shorthand()
+        zeros = np.zeros(n)
+        return (y0, y0[:, sh[0]].copy(), y0[:, sh[1]].copy()) if sh else (y0, zeros, zeros)
+    th0 = _per_row("theta0", theta0, n, -HALF_PI, HALF_PI, "(-pi/2, pi/2) rad")
+    om0 = _per_row("omega0", omega0, n)
+    if (th0.any() or om0.any()) and m.planar_shorthand() is None:
+        m.initial_state(1.0, 0.0)  # raises: the model has no planar angle
+    if type(m).initial_state is Model.initial_state:
+        y0 = np.column_stack((th0, om0)) if m.planar_shorthand() else np.zeros(
+            (n, len(m.state_names)))
+    else:
+        made = {}
+        y0 = np.array([made.setdefault((a, b), m.initial_state(a, b))
+                       for a, b in zip(th0.tolist(), om0.tolist(), strict=True)])
+    return np.ascontiguousarray(y0, dtype=np.float64), th0, om0

@@ -92,7 +92,7 @@ import numpy as np
 
 from .. import G, ParameterError
 from ..blocks import Block, specimen
-from ..models import Model, ModelOptions, get_model, simulate, simulate_many
+from ..models import GENERIC_OUTPUTS, Model, ModelOptions, get_model, simulate, simulate_many
 from ..motions import HalfSine, OneSine, Sine
 from .records import random_record
 
@@ -201,25 +201,46 @@ def _describe(m) -> str:
 
 SCALARS = ("max_abs_theta", "n_impacts", "overturned", "overturn_time", "uplift_time",
            "lift_off_time", "settled")
+"""The shared scalar outputs of the planar models (:data:`rocking.models.base.PLANAR_OUTPUTS`
+and :data:`~rocking.models.base.GENERIC_OUTPUTS`); a model's checks compare every output
+it declares (:func:`_declared`)."""
 
 
-def _row_equals_single(b, i: int, r, label: str) -> None:
-    """Row ``i`` of the batch ``b`` is the single run ``r``, bit for bit."""
-    for key in SCALARS:
-        _expect_same(f"{label}: {key}", getattr(b, key)[i], getattr(r, key))
+def _declared(cls) -> list[str]:
+    """The names of the outputs ``cls`` declares that a result carries (not ``n_out``)."""
+    return [o.name for o in cls.outputs if o.name != "n_out"]
+
+
+def _planar(cls) -> bool:
+    return bool(cls.tags.get("planar"))
+
+
+def _row_equals_single(b, i: int, r, label: str, cls=None) -> None:
+    """Row ``i`` of the batch ``b`` is the single run ``r``, bit for bit: every declared
+    output, the row outputs in ``r.info``, and the state histories."""
+    names = _declared(cls) if cls is not None else list(SCALARS)
+    for key in names:
+        if key not in r.outputs and cls is not None:
+            raise AssertionError(f"{label}: declared output {key!r} is not in the single "
+                                 "run's outputs")
+        _expect_same(f"{label}: {key}", getattr(b, key)[i],
+                     r.outputs[key] if key in r.outputs else getattr(r, key))
     for key, values in b.outputs.items():  # the model's row outputs
         if key not in r.info:
             raise AssertionError(f"{label}: row output {key!r} is in the batch but not in "
                                  "the single run's info")
         _expect_same(f"{label}: {key}", values[i], r.info[key])
-    if b.theta is not None:
+    if b.states is not None:
         n = _grid_samples(r)
-        for key in ("theta", "omega"):
-            row, one = getattr(b, key)[i], getattr(r, key)
-            _expect_same(f"{label}: {key} history", row[:n], one[:n])
-            if not np.all(np.isnan(row[n:])):
-                raise AssertionError(f"{label}: the batch's {key} history is not NaN past "
-                                     f"the {n} samples the run wrote")
+        row = b.states[i]
+        _expect_same(f"{label}: state history", row[:n], r.states[:n])
+        if not np.all(np.isnan(row[n:])):
+            raise AssertionError(f"{label}: the batch's state history is not NaN past "
+                                 f"the {n} samples the run wrote")
+        if b.theta is not None:
+            for key in ("theta", "omega"):
+                _expect_same(f"{label}: {key} history", getattr(b, key)[i][:n],
+                             getattr(r, key)[:n])
 
 
 def _runs(cls, plan: _Plan, block, motions, **kw):
@@ -442,32 +463,43 @@ def check_result_conventions(cls, plan):
     bn = simulate_many(plan.block, ms, model=cls, return_histories=True, errors="nan",
                        **plan.run)
     singles = [simulate(plan.block, m, model=cls, **plan.run) for m in ms]
-    for key in (*SCALARS, "status", "n_steps", "t", "theta", "omega"):
+    planar = _planar(cls)
+    names = _declared(cls)
+    hist = ("t", "states") + (("theta", "omega") if planar else ())
+    for key in (*names, *hist):
         _expect_same(f"errors='nan' vs 'raise': {key}", getattr(bn, key), getattr(b, key),
                      "errors='nan'", "errors='raise'")
-    for key in (*SCALARS, "status", "n_steps"):
+    for key in names:
         shape = np.shape(getattr(bn, key))
         assert shape == (n,), f"batch {key} has shape {shape}, not ({n},)"
-    assert bn.t.shape == (bn.theta.shape[1],) and bn.theta.shape == bn.omega.shape \
-        and bn.theta.shape[0] == n, f"history shapes t {bn.t.shape}, theta {bn.theta.shape}"
+    ns = len(b.state_names)
+    assert bn.states.shape == (n, bn.t.size, ns), \
+        f"batch states shape {bn.states.shape}, not (runs, samples, states) = " \
+        f"({n}, {bn.t.size}, {ns})"
+    if planar:
+        assert bn.t.shape == (bn.theta.shape[1],) and bn.theta.shape == bn.omega.shape \
+            and bn.theta.shape[0] == n, f"history shapes t {bn.t.shape}, theta {bn.theta.shape}"
     assert np.all(b.status == 0), f"status {b.status.tolist()} (0: success)"
-    assert b.settled.dtype == np.bool_ and b.overturned.dtype == np.bool_, \
-        f"settled/overturned dtypes {b.settled.dtype}/{b.overturned.dtype} (bool)"
-    assert np.issubdtype(b.n_impacts.dtype, np.integer), f"n_impacts dtype {b.n_impacts.dtype}"
+    for o in cls.outputs:
+        if o.name == "n_out":
+            continue
+        v = getattr(b, o.name)
+        kind = "bool" if o.flag else "integer" if o.integer else "float"
+        ok = (v.dtype == np.bool_ if o.flag else np.issubdtype(v.dtype, np.integer)
+              if o.integer else np.issubdtype(v.dtype, np.floating))
+        assert ok, f"output {o.name}: dtype {v.dtype} (declared {kind})"
     assert len(b) == n
-    names = [o.name for o in cls.row_outputs]
-    assert list(b.outputs) == names, f"batch outputs {list(b.outputs)} != row_outputs {names}"
-    for o in cls.row_outputs:
-        v = b.outputs[o.name]
-        assert v.shape == (n,) and (v.dtype == np.bool_) == bool(o.flag), \
-            f"row output {o.name}: shape {v.shape}, dtype {v.dtype} (flag: {o.flag})"
+    names_own = [o.name for o in cls.row_outputs]
+    assert list(b.outputs) == names_own, \
+        f"batch outputs {list(b.outputs)} != row_outputs {names_own}"
     for res, label in ((b, "batch"), *((r, f"single run of {_describe(m)}")
                                       for r, m in zip(singles, ms, strict=True))):
         over, t_up = np.atleast_1d(res.overturned), np.atleast_1d(res.uplift_time)
         _nan_iff(f"{label}: overturn_time", res.overturn_time, ~over, "not overturned")
-        still = ((np.atleast_1d(res.n_impacts) == 0) & ~over
-                 & (np.atleast_1d(res.max_abs_theta) <= tol))
-        _nan_iff(f"{label}: uplift_time", res.uplift_time, still, "never left rest")
+        if planar:
+            still = ((np.atleast_1d(res.n_impacts) == 0) & ~over
+                     & (np.atleast_1d(res.max_abs_theta) <= tol))
+            _nan_iff(f"{label}: uplift_time", res.uplift_time, still, "never left rest")
         assert np.all(np.isnan(res.lift_off_time)), \
             f"{label}: lift_off_time {res.lift_off_time} without a vertical motion"
         assert np.all(np.atleast_1d(res.settled)[over]), f"{label}: overturned, not settled"
@@ -480,31 +512,52 @@ def check_result_conventions(cls, plan):
         assert isinstance(r.settled, bool) and isinstance(r.overturned, bool), \
             f"{label}: settled/overturned are {type(r.settled).__name__}/" \
             f"{type(r.overturned).__name__}, not bool"
-        assert isinstance(r.n_impacts, int), f"{label}: n_impacts is not an int"
+        assert sorted(r.outputs) == sorted(names), \
+            f"{label}: outputs {sorted(r.outputs)} != declared {sorted(names)}"
+        for o in cls.outputs:
+            if o.name != "n_out":
+                want = bool if o.flag else int if o.integer else float
+                assert type(r.outputs[o.name]) is want, \
+                    f"{label}: output {o.name} is a {type(r.outputs[o.name]).__name__}"
         assert r.impact_times.size <= r.n_impacts, \
             f"{label}: {r.impact_times.size} impact times for {r.n_impacts} impacts"
         k = _grid_samples(r)
         _expect_same(f"{label}: t", r.t[:k], np.arange(k) * plan.run["dt_out"], "t",
                      "k dt_out")
-        assert r.theta.shape == r.t.shape == r.omega.shape, f"{label}: history shapes"
-    assert np.any(b.max_abs_theta > 0.1 * plan.block.alpha), "no motion rocks the block"
+        assert r.states.shape == (r.t.size, ns) and tuple(r.state_names) == b.state_names, \
+            f"{label}: states {r.states.shape} ({r.state_names}), t {r.t.shape}"
+        cols = list(r.to_dataframe().columns)
+        assert all(name in cols for name in r.state_names), \
+            f"{label}: to_dataframe() columns {cols} lack a state of {r.state_names}"
+        if planar:
+            assert r.theta.shape == r.t.shape == r.omega.shape, f"{label}: history shapes"
+    if planar:
+        assert np.any(b.max_abs_theta > 0.1 * plan.block.alpha), "no motion rocks the block"
+    else:
+        assert np.any(np.isfinite(b.uplift_time)), "no motion moves the body"
 
 
 @_check
 def check_at_rest_below_uplift(cls, plan):
-    """A block at rest stays at rest under motions below the uplift threshold."""
+    """A body at rest stays at rest under motions below the uplift threshold."""
     tol = AT_REST_TOL * plan.block.alpha
     b = simulate_many(plan.block, list(plan.weak), model=cls, **plan.run)
+    names = _declared(cls)
     for i, m in enumerate(plan.weak):
         r = simulate(plan.block, m, model=cls, **plan.run)
         for label, get in ((f"single run of {_describe(m)}", lambda k, r=r: getattr(r, k)),
                            (f"batch row {i}", lambda k, i=i: getattr(b, k)[i])):
-            assert get("n_impacts") == 0, f"{label}: {get('n_impacts')} impacts"
+            if "n_impacts" in names:
+                assert get("n_impacts") == 0, f"{label}: {get('n_impacts')} impacts"
             assert not get("overturned"), f"{label}: overturned"
             assert math.isnan(get("uplift_time")), f"{label}: uplift_time {get('uplift_time')}"
             assert get("settled"), f"{label}: not settled"
-            assert get("max_abs_theta") <= tol, \
-                f"{label}: max_abs_theta {get('max_abs_theta')!r} rad > {tol:.3g}"
+            if "max_abs_theta" in names:
+                assert get("max_abs_theta") <= tol, \
+                    f"{label}: max_abs_theta {get('max_abs_theta')!r} rad > {tol:.3g}"
+        if not _planar(cls):
+            moved = float(np.max(np.abs(r.states - r.states[:1]))) if r.states.size else 0.0
+            assert moved <= tol, f"single run of {_describe(m)}: the state moved by {moved:.3g}"
 
 
 @_check
@@ -512,7 +565,7 @@ def check_batch_rows_equal_single_runs(cls, plan):
     """Each batch row is bit-identical to the single run of its motion."""
     b, singles = _runs(cls, plan, plan.block, plan.motions)
     for i, (m, r) in enumerate(zip(plan.motions, singles, strict=True)):
-        _row_equals_single(b, i, r, f"row {i} ({_describe(m)})")
+        _row_equals_single(b, i, r, f"row {i} ({_describe(m)})", cls)
 
 
 @_check
@@ -523,19 +576,18 @@ def check_chunk_independence(cls, plan):
     whole = simulate_many(plan.block, ms, model=cls, return_histories=True, **plan.run)
     parts = [simulate_many(plan.block, c, model=cls, return_histories=True, **plan.run)
              for c in (ms[:k], ms[k:])]
-    for key in (*SCALARS, "status", "n_steps"):
+    for key in _declared(cls):
         _expect_same(key, getattr(whole, key),
                      np.concatenate([getattr(p, key) for p in parts]), "whole batch",
                      f"chunks [:{k}] + [{k}:]")
-    for key in ("theta", "omega"):
-        for j, p in enumerate(parts):
-            rows = slice(0, k) if j == 0 else slice(k, None)
-            w = getattr(whole, key)[rows]
-            c = getattr(p, key)
-            _expect_same(f"{key} history of chunk {j}", w[:, : c.shape[1]], c,
-                         "whole batch", "chunk")
-            assert np.all(np.isnan(w[:, c.shape[1]:])), \
-                f"{key} history of chunk {j}: the whole batch has samples past its end"
+    for j, p in enumerate(parts):
+        rows = slice(0, k) if j == 0 else slice(k, None)
+        w = whole.states[rows]
+        c = p.states
+        _expect_same(f"state history of chunk {j}", w[:, : c.shape[1]], c, "whole batch",
+                     "chunk")
+        assert np.all(np.isnan(w[:, c.shape[1]:])), \
+            f"state history of chunk {j}: the whole batch has samples past its end"
 
 
 @_check
@@ -545,13 +597,29 @@ def check_blocks_per_row(cls, plan):
     ms = [plan.motions[i % len(plan.motions)] for i in range(len(blocks))]
     b, singles = _runs(cls, plan, blocks, ms)
     for i, r in enumerate(singles):
-        _row_equals_single(b, i, r, f"row {i} ({blocks[i].name}, {_describe(ms[i])})")
-    assert len(set(b.max_abs_theta.tolist())) > 1, "every block gave the same answer"
+        _row_equals_single(b, i, r, f"row {i} ({blocks[i].name}, {_describe(ms[i])})", cls)
+    if _planar(cls):
+        assert len(set(b.max_abs_theta.tolist())) > 1, "every block gave the same answer"
+
+
+def _state0(cls, plan, f: float, w: float, sign: float = 1.0) -> dict:
+    """The initial state of a free run, as keywords: the planar shorthand ``theta0 = f
+    alpha``, ``omega0 = w``; for another model ``state0`` with its first two states
+    ``(f alpha, w)`` (times ``sign``)."""
+    x = min(f * plan.block.alpha, 0.49 * math.pi)
+    if _planar(cls):
+        return {"theta0": sign * x, "omega0": sign * w}
+    n = len(cls.from_kwargs(plan.block).state_names)
+    y = np.zeros(n)
+    y[0] = x
+    if n > 1:
+        y[1] = w
+    return {"state0": sign * y}
 
 
 @_check
 def check_initial_state_per_row(cls, plan):
-    """Per-row ``theta0``/``omega0`` equal the single runs (or are refused)."""
+    """Per-row initial states equal the single runs."""
     ms = list(plan.motions)
     alpha = plan.block.alpha
     fr = [plan.theta0[i % len(plan.theta0)] for i in range(len(ms))]
@@ -560,37 +628,42 @@ def check_initial_state_per_row(cls, plan):
     th0[0] = 0.0
     om0 = np.array([w for _, w in fr])
     om0[0] = 0.0
-    if not cls.batch_initial_state:
-        try:
-            simulate_many(plan.block, ms, model=cls, theta0=th0, **plan.run)
-        except ParameterError as e:
-            assert "theta0" in str(e), f"the error does not name theta0: {e}"
-            return
-        raise AssertionError("batch_initial_state is False but a batch accepted theta0")
-    b, singles = _runs(cls, plan, plan.block, ms, theta0=th0, omega0=om0)
+    if _planar(cls):
+        b, singles = _runs(cls, plan, plan.block, ms, theta0=th0, omega0=om0)
+    else:
+        y0 = np.array([_state0(cls, plan, t / alpha, w)["state0"]
+                       for t, w in zip(th0, om0, strict=True)])
+        b = simulate_many(plan.block, ms, model=cls, return_histories=True, state0=y0,
+                          **plan.run)
+        singles = [simulate(plan.block, m, model=cls, state0=y, **plan.run)
+                   for m, y in zip(ms, y0, strict=True)]
     for i, r in enumerate(singles):
         _row_equals_single(b, i, r, f"row {i} (theta0={th0[i]:.4g}, omega0={om0[i]:.4g}, "
-                                    f"{_describe(ms[i])})")
+                                    f"{_describe(ms[i])})", cls)
 
 
 def _mirror(label: str, a, b, frac: float, block) -> None:
-    """``b`` is the mirror image of ``a`` (``theta`` negated) to ``frac alpha`` (angles)
-    and ``frac / p`` (times)."""
+    """``b`` is the mirror image of ``a`` (``theta`` negated; a model without a planar
+    angle: every state negated) to ``frac alpha`` (angles) and ``frac / p`` (times)."""
     tol, tol_t = frac * block.alpha, frac / block.p
-    for key in ("n_impacts", "overturned", "settled"):
+    planar = a.theta is not None
+    for key in ("n_impacts", "overturned", "settled") if planar else ("overturned", "settled"):
         _expect_same(f"{label}: {key}", getattr(b, key), getattr(a, key), "mirrored",
                      "original")
-    for key, t in (("max_abs_theta", tol), ("overturn_time", tol_t), ("uplift_time", tol_t)):
+    keys = (("max_abs_theta", tol),) if planar else ()
+    for key, t in (*keys, ("overturn_time", tol_t), ("uplift_time", tol_t)):
         x, y = getattr(a, key), getattr(b, key)
         if not (_same(x, y) or abs(x - y) <= t):
             raise AssertionError(f"{label}: {key} {y!r} (mirrored) != {x!r} (original)")
-    n = min(a.theta.size, b.theta.size)
-    d = np.abs(a.theta[:n] + b.theta[:n])
+    xa, xb = (a.theta, b.theta) if planar else (a.states, b.states)
+    n = min(len(xa), len(xb))
+    d = np.abs(xa[:n] + xb[:n])
+    d = d if d.ndim == 1 else d.max(axis=1, initial=0.0)
     if a.t.size != b.t.size or not np.all(d <= tol):
         j = int(np.argmax(d)) if n else 0
-        raise AssertionError(f"{label}: theta histories are not negatives of each other "
-                             f"(lengths {a.t.size}, {b.t.size}; max |theta + theta_mirror| "
-                             f"= {d.max() if n else 0:.3g} rad > {tol:.3g} at t = "
+        raise AssertionError(f"{label}: {'theta' if planar else 'state'} histories are not "
+                             f"negatives of each other (lengths {a.t.size}, {b.t.size}; max "
+                             f"|x + x_mirror| = {d.max() if n else 0:.3g} > {tol:.3g} at t = "
                              f"{a.t[j] if n else 0:.4g} s)")
     k = min(a.impact_times.size, b.impact_times.size)
     di = np.abs(a.impact_times[:k] - b.impact_times[:k])
@@ -601,28 +674,80 @@ def _mirror(label: str, a, b, frac: float, block) -> None:
 
 @_check
 def check_free_rocking_symmetry(cls, plan):
-    """Free rocking from ``-theta0`` is the mirror image of free rocking from ``theta0``."""
-    alpha = plan.block.alpha
+    """With the ``"mirror"`` tag, free motion from the mirrored initial state is the mirror
+    image of the original (planar: ``-theta0``, ``-omega0``)."""
+    if cls.tags.get("symmetry") != "mirror":
+        return
     for f, w in plan.theta0:
-        x = min(f * alpha, 0.49 * math.pi)
         kw = {**plan.run, "duration": plan.free_duration}
         if plan.free_duration is not None:
             kw.pop("max_free_time", None)
-        a = simulate(plan.block, None, model=cls, theta0=x, omega0=w, **kw)
-        b = simulate(plan.block, None, model=cls, theta0=-x, omega0=-w, **kw)
+        a = simulate(plan.block, None, model=cls, **_state0(cls, plan, f, w), **kw)
+        b = simulate(plan.block, None, model=cls, **_state0(cls, plan, f, w, -1.0), **kw)
         _mirror(f"theta0 = +-{f:g} alpha, omega0 = +-{w:g}", a, b, FREE_SYMMETRY_TOL,
                 plan.block)
 
 
 @_check
 def check_motion_symmetry(cls, plan):
-    """The response to ``-motion`` is the mirror image of the response to ``motion``."""
+    """With the ``"mirror"`` tag, the response to ``-motion`` is the mirror image of the
+    response to ``motion``."""
+    if cls.tags.get("symmetry") != "mirror":
+        return
     for m in plan.motions:
         kw = {**plan.run, "duration": m.duration}
         kw.pop("max_free_time", None)
         a = simulate(plan.block, m, model=cls, **kw)
         b = simulate(plan.block, -m, model=cls, **kw)
         _mirror(f"{_describe(m)} and its negation", a, b, MOTION_SYMMETRY_TOL, plan.block)
+
+
+@_check
+def check_declared_outputs(cls, plan):
+    """The declared outputs and states, everywhere: the result record's fields are the
+    outputs, ``summary()`` has every one, the batch and (for a registered model) a
+    campaign's table have a column each, with the declared unit in the Parquet schema."""
+    names = _declared(cls)
+    dtype_names = list(cls.result_dtype().names)
+    assert dtype_names == [o.name for o in cls.outputs], \
+        f"result record fields {dtype_names} != outputs {[o.name for o in cls.outputs]}"
+    assert [o.name for o in cls.outputs[:len(GENERIC_OUTPUTS)]] == \
+        [o.name for o in GENERIC_OUTPUTS], "outputs must start with GENERIC_OUTPUTS"
+    model = cls.from_kwargs(plan.block)
+    assert len(model.state_names) == len(model.initial_state()), \
+        f"initial_state() has {len(model.initial_state())} values for " \
+        f"{len(model.state_names)} state_names"
+    r = simulate(plan.block, plan.motions[0], model=cls, **plan.run)
+    s = r.summary()
+    missing = [k for k in names if k not in s]
+    assert not missing, f"summary() lacks the declared outputs {missing}"
+    from ..models import MODELS
+    if MODELS.get(cls.name) is not cls:
+        return  # campaigns take registered models
+    from ..campaign import Campaign, parse_spec
+    from ..campaign.store import result_schema
+    spec = parse_spec(CAMPAIGN_SPEC.format(model=cls.name))
+    rows = Campaign(spec).run_ids(range(spec.n_sims))
+    lacking = [k for k in names if k not in rows.columns and k not in ("n_steps",)]
+    assert not lacking, f"a campaign's table lacks the declared outputs {lacking}"
+    schema = result_schema(rows, [cls.name])
+    for o in cls.outputs:
+        if o.name in rows.columns:
+            meta = schema.field(o.name).metadata or {}
+            assert meta.get(b"unit", b"").decode() == o.unit, \
+                f"campaign column {o.name}: unit {meta.get(b'unit')} != declared {o.unit!r}"
+
+
+CAMPAIGN_SPEC = """\
+campaign = {{name = "check-model", seed = 1, model = "{model}"}}
+blocks = [{{specimen = 3}}]
+[motions]
+kind = "one_sine"
+period = 0.5
+amplitude = 1.0
+load_factors = [1.0, 3.0]
+"""
+"""The campaign of :func:`check_declared_outputs`: one block, one pulse at two levels."""
 
 
 # ================================================================================ driver

@@ -18,6 +18,7 @@ from ..._validate import as_float, positive
 from ...blocks import Block
 from ...errors import ParameterError
 from ...motions._kernel import NPRM
+from ..base import GENERIC_OUTPUTS, PLANAR_OUTPUTS, empty_results
 from . import geometry as GEO
 from . import statics as ST
 from .friction import DEFAULT_FRICTION_ANGLE, check_friction_angle
@@ -80,15 +81,16 @@ def _free_run(md, b, K, Ks, friction_angle, theta0, duration, dt_out):
     mp = ST.kernel_params(md, K, Ks, b, math.tan(friction_angle), 0.0, dt,
                           every, th_tol, theta0, 0.0, True)
     n_out = int(math.floor(duration / dt_out + 1e-9)) + 1
-    out_th, out_om, imp = np.empty(n_out), np.empty(n_out), np.empty(16)
     n, vmax = md.n, md.lv.shape[1]
-    extra = (np.empty((n_out, n, 3)), np.empty((n_out, n, 3)), np.empty((0, 3)),
-             np.empty((0, n * vmax * (n + 1), 4)))
-    res = kernel(mp, 0, np.zeros(NPRM), np.empty(0), duration, math.inf, theta0, 0.0,
-                 duration, dt_out, out_th, out_om, imp, extra)
-    k = res.n_out
-    return (np.arange(k) * dt_out, out_th[:k], imp[: min(res.n_impacts, imp.size)],
-            bool(res.overturned))
+    y0 = ST.state_vector(md, K, Ks, theta0, 0.0, True)
+    hist, imp = np.empty((n_out, 6 * n)), np.empty(16)
+    extra = (np.empty((0, 3)), np.empty((0, n * vmax * (n + 1), 4)))
+    res = empty_results(GENERIC_OUTPUTS + PLANAR_OUTPUTS, 1)
+    kernel(mp, 0, np.zeros(NPRM), np.empty(0), duration, math.inf, duration, y0, dt_out, hist,
+           imp, res[0], extra)
+    k, n_imp = int(res["n_out"][0]), int(res["n_impacts"][0])
+    return (np.arange(k) * dt_out, hist[:k, 3 * (n - 1) + 2].copy(), imp[: min(n_imp, imp.size)],
+            bool(res["overturned"][0]))
 
 
 def damping_cap(block, K: float | None = None, geometry: str = "auto",

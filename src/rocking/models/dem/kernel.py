@@ -4,13 +4,14 @@ differences (see :mod:`rocking.models.dem` for the equations and the event rules
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import njit, prange
 
 from ...motions._kernel import ground_acc, ground_acc_hv, has_vertical
 from ...units import G
-from ..base import KernelResult, row_args, same_block, store_row
+from ..base import row_args, same_block, set_planar_result, store_row
 
 HALF_PI = 0.5 * math.pi
 
@@ -371,41 +372,53 @@ def probe_contacts(pos, lv, lvn, len_, nv, rad, rr, tol, out):
     return c
 
 
+DEMParams = namedtuple("DEMParams", [
+    "lv", "lvn", "len_", "nv", "mass", "inertia", "rad", "rr", "K", "Ks", "cn", "cs", "tanphi",
+    "coh", "dt", "every", "fs0", "sedge0", "nominal", "iout", "th_tol", "resting"])
+"""The kernel parameters ``mp`` of the DEM: the packed assembly (vertices, normals,
+masses, inertias, radii, rounding), the contact law (stiffnesses, damping, friction,
+cohesion), the step and output stride, the contacts' initial shear forces and edges,
+the nominal positions, the output block, the impact tolerance and whether the run starts
+at rest (:func:`rocking.models.dem.statics.kernel_params`)."""
+
+
 @njit(cache=True)
-def kernel(mp, kind, prm, samples, t_end, t_quiet, th0, om0, h_scan, dt_out, out_th, out_om,
-           imp, extra):
+def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp, res, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`).
 
-    ``mp`` holds the packed assembly, the contact parameters, the step and the initial
-    state (copied, never changed); ``extra = (out_pos, out_vel, out_e, out_f)`` receives
-    the full state of every block, the energies and the contact forces when its arrays
-    have rows (single runs), and is empty in batches.
-    """
-    (lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, coh, dt, every,
-     pos0, vel0, fs0, sedge0, nominal, iout, th_tol) = mp
-    out_pos, out_vel, out_e, out_f = extra
-    n = nv.shape[0]
-    n_out = out_th.shape[0]
-    if out_pos.shape[0] >= n_out:
-        op, ov = out_pos, out_vel
-    else:
-        op = np.empty((n_out, n, 3))
-        ov = np.empty((n_out, n, 3))
-    resting = th0 == 0.0 and om0 == 0.0
+    The state (``y0``, the rows of ``hist``) is every block's ``(x, y, theta)`` (m, m,
+    rad; the centroid in the base's frame), then every block's ``(vx, vy, omega)``;
+    ``extra = (out_e, out_f)`` receives the energies and the contact forces when its
+    arrays have rows (single runs on request)."""
+    out_e, out_f = extra
+    n = mp.nv.shape[0]
+    n_out = hist.shape[0]
+    op = np.empty((n_out, n, 3))
+    ov = np.empty((n_out, n, 3))
+    pos = np.empty((n, 3))
+    vel = np.empty((n, 3))
+    for i in range(n):
+        for c in range(3):
+            pos[i, c] = y0[3 * i + c]
+            vel[i, c] = y0[3 * n + 3 * i + c]
     k, n_imp, peak, over, t_over, t_up, n_steps, ok, settled = integrate(
-        lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs, tanphi, coh, kind, prm,
-        samples, t_end, t_quiet, dt, every, pos0.copy(), vel0.copy(), fs0.copy(), sedge0.copy(),
-        nominal, iout, th_tol, resting, op, ov, out_e, out_f, imp)
+        mp.lv, mp.lvn, mp.len_, mp.nv, mp.mass, mp.inertia, mp.rad, mp.rr, mp.K, mp.Ks, mp.cn,
+        mp.cs, mp.tanphi, mp.coh, kind, prm, samples, t_end, t_quiet, mp.dt, mp.every, pos,
+        vel, mp.fs0.copy(), mp.sedge0.copy(), mp.nominal, mp.iout, mp.th_tol, mp.resting, op,
+        ov, out_e, out_f, imp)
     for j in range(k):
-        out_th[j] = op[j, iout, 2]
-        out_om[j] = ov[j, iout, 2]
-    return KernelResult(k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1, math.nan,
-                        ok and settled)
+        for i in range(n):
+            for c in range(3):
+                hist[j, 3 * i + c] = op[j, i, c]
+                hist[j, 3 * n + 3 * i + c] = ov[j, i, c]
+    set_planar_result(res, k, n_imp, peak, over, t_over, t_up, n_steps, 0 if ok else 1,
+                      math.nan, ok and settled)
 
 
 @njit(cache=True, parallel=True)
 def batch_kernel(mp, extra0, rows, blocks):
     """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`
-    (one assembly per batch: ``same_block``)."""
-    for i in prange(rows[0].shape[0]):
-        store_row(i, kernel(same_block(mp, blocks[i]), *row_args(i, rows, extra0)), rows)
+    (one assembly and initial contact state per batch: ``same_block``)."""
+    for i in prange(rows.kinds.shape[0]):
+        kernel(same_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+        store_row(i, rows)

@@ -93,6 +93,41 @@ class DEM(Model):
     batch_initial_state = False  # the initial state of the contacts is built per batch
     append_overturn = False
     response_class = DEMResponse
+    tags = {"planar": True, "symmetry": "mirror"}
+
+    @property
+    def state_names(self) -> tuple:
+        """Every block's ``x_cm``, ``y_cm`` (its centroid in the base's frame; m) and
+        ``theta`` (rad), then every block's ``vx_cm``, ``vy_cm`` (m/s) and ``omega``
+        (rad/s); ``_1`` ... ``_n`` from the bottom block up in a stack. (``DEMResponse.x``
+        and ``y`` are the top centroid's displacements from its nominal position.)"""
+        n = self.assembly.n
+        sfx = [""] if n == 1 else [f"_{i + 1}" for i in range(n)]
+        pos = [f"{v}{x}" for x in sfx for v in ("x_cm", "y_cm", "theta")]
+        vel = [f"{v}{x}" for x in sfx for v in ("vx_cm", "vy_cm", "omega")]
+        return tuple(pos + vel)
+
+    @property
+    def state_units(self) -> tuple:
+        return ("m", "m", "rad") * self.assembly.n + ("m/s", "m/s", "rad/s") * self.assembly.n
+
+    def planar_shorthand(self) -> tuple[int, int]:
+        """The top block's ``theta`` and ``omega``."""
+        n = self.assembly.n
+        return 3 * (n - 1) + 2, 3 * n + 3 * (n - 1) + 2
+
+    def initial_state(self, theta0: float = 0.0, omega0: float = 0.0) -> np.ndarray:
+        """The bodies rotated by ``theta0`` about the pivot with ``omega0``, settled on
+        their contact springs (:func:`rocking.models.dem.statics.state_vector`)."""
+        return ST.state_vector(self.assembly, self.K, self.Ks, theta0, omega0,
+                               self.options.settled)
+
+    def check_state(self, y0):
+        """The DEM takes its initial state as ``theta0``, ``omega0``: the contacts' initial
+        forces are built from them (:meth:`initial_state`)."""
+        raise ParameterError("model 'dem' takes its initial state as theta0 and omega0 (the "
+                             "contact forces of the initial state are built from them), "
+                             "not state0")
 
     @staticmethod
     def check_bodies(block, assembly: GEO.Assembly) -> None:
@@ -181,21 +216,21 @@ class DEM(Model):
         n, vmax = md.n, md.lv.shape[1]
         n_e = n_out if self.options.return_energy else 0
         n_f = n_out if self.options.return_forces else 0
-        return (np.empty((n_out, n, 3)), np.empty((n_out, n, 3)), np.empty((n_e, 3)),
-                np.empty((n_f, n * vmax * (n + 1), 4)))
+        return (np.empty((n_e, 3)), np.empty((n_f, n * vmax * (n + 1), 4)))
 
     def extra_bytes(self, n_out: int) -> int:
         md = self.assembly
         n, vmax = md.n, md.lv.shape[1]
-        per = 6 * n + (3 if self.options.return_energy else 0)
+        per = (3 if self.options.return_energy else 0)
         per += 4 * n * vmax * (n + 1) if self.options.return_forces else 0
-        return 8 * per * n_out
+        return 8 * (per + 6 * n) * n_out  # the kernel's own copy of the positions, velocities
 
-    def extra_fields(self, k: int, extra: tuple, dt_out: float) -> dict:
+    def extra_fields(self, k: int, states: np.ndarray, extra: tuple, dt_out: float) -> dict:
         md = self.assembly
-        out_pos, out_vel, out_e, out_f = extra
-        rel = out_pos[:k] - md.nominal[None, :, :]
-        th_all = out_pos[:k, :, 2].T.copy()
+        out_e, out_f = extra
+        out_pos = states[:k, : 3 * md.n].reshape(k, md.n, 3)
+        rel = out_pos - md.nominal[None, :, :]
+        th_all = out_pos[:, :, 2].T.copy()
         x_all = rel[:, :, 0].T.copy()
         y_all = rel[:, :, 1].T.copy()
         info = {"max_abs_theta_all": [float(np.max(np.abs(th_all[i]))) if k else 0.0

@@ -11,7 +11,7 @@ import numpy as np
 from ...errors import ParameterError
 from ...units import G
 from .geometry import Assembly
-from .kernel import probe_contacts
+from .kernel import DEMParams, probe_contacts
 
 SAFETY = 0.8
 """Fraction of the stability limit of central differences used as the time step."""
@@ -142,8 +142,19 @@ def time_step(model: Assembly, K: float, Ks: float, b: float, dt: float | None,
 def kernel_params(model: Assembly, K: float, Ks: float, b: float, tanphi: float,
                   cohesion: float, dt: float, every: int, th_tol: float, theta0: float,
                   omega0: float, settled: bool) -> tuple:
-    """The parameter tuple ``mp`` of :func:`rocking.models.dem.kernel.kernel`."""
-    pos, vel, fs, sedge = initial_state(model, K, Ks, theta0, omega0, settled)
-    return (model.lv, model.lvn, model.len_, model.nv, model.mass, model.inertia, model.rad,
-            model.rr, K, Ks, b * K, b * Ks, tanphi, cohesion, dt, every, pos, vel, fs, sedge,
-            model.nominal, model.n - 1, th_tol)
+    """The parameter tuple ``mp`` of :func:`rocking.models.dem.kernel.kernel` for a run
+    released from ``theta0``, ``omega0`` (the contacts' initial state; the bodies'
+    positions and velocities travel in the state vector, :func:`state_vector`)."""
+    _, _, fs, sedge = initial_state(model, K, Ks, theta0, omega0, settled)
+    return DEMParams(model.lv, model.lvn, model.len_, model.nv, model.mass, model.inertia,
+                     model.rad, model.rr, K, Ks, b * K, b * Ks, tanphi, cohesion, dt, every,
+                     fs, sedge, model.nominal, model.n - 1, th_tol,
+                     theta0 == 0.0 and omega0 == 0.0)
+
+
+def state_vector(model: Assembly, K: float, Ks: float, theta0: float, omega0: float,
+                 settled: bool) -> np.ndarray:
+    """The state vector of a run released from ``theta0``, ``omega0``: every block's
+    ``(x, y, theta)``, then every block's ``(vx, vy, omega)`` (:func:`initial_state`)."""
+    pos, vel, _, _ = initial_state(model, K, Ks, theta0, omega0, settled)
+    return np.concatenate((pos.ravel(), vel.ravel()))

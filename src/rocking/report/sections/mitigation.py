@@ -92,7 +92,7 @@ def isolated_restitution(block) -> float:
     isolation periods)."""
     model = get_model("isolated")
     opts = model.Options(**MITIGATIONS[f"isolated_{ISOLATION_PERIODS[0]:g}s"][1])
-    return float(model(block, opts).kernel_params(0.01, 0.0, 0.0)[2])
+    return float(model(block, opts).kernel_params(0.01, 0.0, 0.0).mu)
 
 
 def building():
