@@ -308,9 +308,10 @@ class HorizontalPair:
 
         Examples
         --------
+        >>> import math
         >>> from rocking.motions import HorizontalPair
         >>> pair = HorizontalPair.builtin("rinaldi")  # first component: 228 deg
-        >>> round(np.degrees(pair.orientation_of("30deg")), 9)  # 30 deg ccw: 198 deg
+        >>> round(math.degrees(pair.orientation_of("30deg")), 9)  # 30 deg ccw: 198 deg
         198.0
         """
         az1 = 0.0 if self.azimuths is None else self.azimuths[0]
