@@ -514,6 +514,45 @@ class FloorMotion(Motion):
         return float(np.max(np.abs(self.samples))) * abs(self.scale)
 
     @property
+    def pgv(self) -> float:
+        """Peak horizontal floor velocity (m/s) from rest, load factor applied: that of the
+        floor samples (:meth:`~rocking.motions.Record.velocity` of :attr:`record`); at
+        floor 0 the ground's own ``pgv``."""
+        if self.identity:
+            return self.ground.scaled(self.scale).pgv
+        return float(np.max(np.abs(self.record.velocity())))
+
+    def horizontal_scaled(self, factor: float) -> Motion:
+        """The horizontal floor acceleration times ``factor``, the vertical component
+        unchanged: the floor motion scaled without a vertical component; with one, a
+        :class:`~rocking.motions.GroundMotion` of the floor record (the ground's own
+        motion at floor 0).
+
+        Examples
+        --------
+        >>> from rocking.buildings import Building, FloorMotion
+        >>> from rocking.motions import GroundMotion, Sine
+        >>> ground = GroundMotion(Sine(2.0, 0.01, 1.0), Sine(4.0, 0.002, 1.0))
+        >>> floor = FloorMotion(ground, Building.sdof(0.5, 0.1), floor=1)
+        >>> h = floor.horizontal_scaled(0.5)
+        >>> type(h).__name__, h.horizontal.scale, h.vertical.scale
+        ('GroundMotion', 0.5, 1.0)
+        >>> bool(np.array_equal(h.acceleration([0.3, 0.7]), 0.5 * floor.acceleration([0.3, 0.7])))
+        True
+        """
+        if self.vertical is None:
+            return self.scaled(factor)
+        if self.identity:
+            g = self.ground if self.scale == 1.0 else self.ground.scaled(self.scale)
+            return g.horizontal_scaled(factor)
+        with warnings.catch_warnings():  # an amplified floor may exceed 5 g: not a unit slip
+            warnings.simplefilter("ignore", PlausibilityWarning)
+            h = Record(self.samples, self.step, name=self.name,
+                       scale=self.scale * as_float("factor", factor))
+        return GroundMotion(h, self.vertical if self.scale == 1.0
+                            else self.vertical.scaled(self.scale))
+
+    @property
     def pfa(self) -> float:
         """Peak floor acceleration (m/s^2): :attr:`pga` by its floor name."""
         return self.pga

@@ -54,7 +54,7 @@ from ..analysis.montecarlo import PARAMETERS, distributions, draw_parameters, pe
 from ..blocks import Block
 from ..errors import ParameterError
 from ..models import MODELS, simulate_many
-from ..motions import GroundMotion, HanningSine, Motion, Record, Sine, catalog, sample
+from ..motions import GroundMotion, Motion, Record, catalog, sample
 from .spec import CampaignSpec, building_model, motion_kind, motion_value, nominal
 
 STREAM = 3
@@ -111,14 +111,9 @@ def column_units(models) -> dict:
 
 
 def _pga(mo: Motion) -> float | None:
-    """The exact PGA where the motion states it (records, sines, pulses), else None."""
-    if isinstance(mo, Record):
-        return mo.pga
-    if isinstance(mo, Sine):
-        return mo.acc_amplitude
-    if hasattr(mo, "amplitude") and not isinstance(mo, HanningSine):  # a displacement
-        return abs(mo.scale) * mo.amplitude
-    return None
+    """The motion's own PGA (:attr:`Motion.pga`: exact where the kind states it, else the
+    motion sampled at ``min(scan_step, 0.005)``, as below)."""
+    return mo.pga
 
 
 def motion_im(mo: Motion, im: str, block: Block | None = None) -> float:

@@ -16,6 +16,23 @@ indexes ``prm`` beyond the horizontal parameters):
 ``prm[V_SAME]`` 1 when both components are records on the same time grid (one
 interpolation index serves both: :func:`ground_acc_hv`).
 ``vertical_acc`` evaluates it (m/s^2, positive upwards).
+
+**Three components** (a 3-D body: two horizontal components and the vertical one,
+:meth:`rocking.motions.Motion.spec3`, :meth:`rocking.motions.HorizontalPair.spec3`). A
+three-component spec is a spec as above whose ``prm`` is longer, :data:`NPRM3`, written by
+:func:`with_axes` only: ``prm[AXES:AXES + 4] = (wx1, wx2, wy1, wy2)`` give the body's
+horizontal components from the two horizontal components ``h1``, ``h2`` of the spec:
+``ax = wx1 h1 + wx2 h2``, ``ay = wy1 h1 + wy2 h2`` (the weights of the body's ``x`` and
+``y`` axes, :func:`rocking.motions.components.plane_weights`). ``h1`` is what
+:func:`ground_acc` reads and ``h2`` is 0, except for the kind :data:`PAIR` (written by
+:func:`pair_spec`): two records on one time grid, ``prm[:3] = (scale, dt, n)`` and
+``samples[:n]``, ``samples[n:2 n]`` the first and the second component (the scale applies
+to both); a vertical component follows in the vertical slot as above (its samples from
+``2 n``; ``prm[V_SAME] = 1`` when it is a record on the same grid: one interpolation index
+for the three). :func:`ground_acc3` reads any spec, planar or not: a planar spec (length
+:data:`NPRM`, today's) answers ``(a, 0, a_v)``. The planar accessors (:func:`ground_acc`,
+:func:`ground_acc_hv`) do not read a :data:`PAIR` spec: project it on a plane first
+(``HorizontalPair.on_plane``); :func:`next_breakpoint` reads every spec.
 """
 
 from __future__ import annotations
@@ -35,6 +52,7 @@ HALF_SINE = 6  # prm: scale, amplitude (acc), length, t0
 RECTANGULAR = 7  # prm: scale, amplitude (acc), length, t0
 RICKER = 8  # prm: scale, amplitude (acc), peak frequency, centre time
 MAVROEIDIS_PAPAGEORGIOU = 9  # prm: scale, velocity amplitude A, fp, gamma, nu, centre t0
+PAIR = 10  # prm: scale, dt, n; samples: first (n), second (n): three-component specs only
 
 NPRM1 = 6  # parameters of one component
 V_KIND = 6  # prm[V_KIND]: kind of the vertical component (NONE: none)
@@ -42,6 +60,8 @@ V_OFFSET = 7  # prm[V_OFFSET]: first index of its samples
 V0 = 8  # prm[V0:V0 + NPRM1]: its parameters
 V_SAME = V0 + NPRM1  # prm[V_SAME] = 1: both components are records on the same time grid
 NPRM = V_SAME + 1
+AXES = NPRM  # prm[AXES:AXES + 4] = (wx1, wx2, wy1, wy2): the body's axes (3 components)
+NPRM3 = AXES + 4
 TWO_PI = 2.0 * math.pi
 
 
@@ -136,8 +156,9 @@ def with_vertical(kind, prm, samples, v_kind, v_prm, v_samples):
     prm[V_KIND] = v_kind
     prm[V_OFFSET] = samples.size
     prm[V0:V0 + NPRM1] = v_prm[:NPRM1]
-    if (kind == RECORD and v_kind == RECORD and v_prm[1] == prm[1] and v_prm[2] == prm[2]
-            and samples.size == int(prm[2])):
+    n_h = 2 * int(prm[2]) if kind == PAIR else int(prm[2])  # horizontal samples
+    if ((kind == RECORD or kind == PAIR) and v_kind == RECORD and v_prm[1] == prm[1]
+            and v_prm[2] == prm[2] and samples.size == n_h):
         prm[V_SAME] = 1.0
     return prm, np.ascontiguousarray(np.concatenate([samples, v_samples]))
 
@@ -200,7 +221,7 @@ def next_breakpoint(kind, prm, samples, t):
 def _breakpoint(kind, prm, samples, t):
     """:func:`next_breakpoint` of one component."""
     eps = 1e-12
-    if kind == RECORD:
+    if kind == RECORD or kind == PAIR:
         dt = prm[1]
         n = min(int(prm[2]), samples.shape[0])
         end = (n - 1) * dt
@@ -241,4 +262,95 @@ def acc_many(kind, prm, samples, t):
     out = np.empty(t.shape[0])
     for i in range(t.shape[0]):
         out[i] = ground_acc(kind, prm, samples, t[i])
+    return out
+
+
+# ---------------------------------------------------------------- three components
+def pair_spec(dt, first, second, scale=1.0):
+    """``(PAIR, prm, samples)`` of two horizontal records ``first``, ``second`` (m/s^2) on
+    one time grid of step ``dt`` (s), of equal lengths, times ``scale``; ``prm`` of length
+    :data:`NPRM3`, the body's axes along the components (:func:`with_axes` turns them)."""
+    n = first.size
+    if second.size != n:
+        raise ValueError("the two components must have the same number of samples")
+    prm = np.zeros(NPRM3)
+    prm[0], prm[1], prm[2] = scale, dt, float(n)
+    prm[AXES:AXES + 4] = (1.0, 0.0, 0.0, 1.0)
+    samples = np.ascontiguousarray(np.concatenate([first, second]), dtype=np.float64)
+    return PAIR, prm, samples
+
+
+def with_axes(prm, wx, wy):
+    """``prm`` (a planar or three-component spec's) of length :data:`NPRM3` with the body's
+    axes: ``ax = wx[0] h1 + wx[1] h2``, ``ay = wy[0] h1 + wy[1] h2`` (module docstring)."""
+    out = np.zeros(NPRM3)
+    out[:NPRM] = prm[:NPRM]
+    out[AXES:AXES + 4] = (wx[0], wx[1], wy[0], wy[1])
+    return out
+
+
+@njit(cache=True)
+def _interp(samples, off, n, dt, s, t):
+    """``s`` times the record ``samples[off:off + n]`` (step ``dt``) at ``t``, as
+    :func:`ground_acc` reads a record."""
+    if t < 0.0 or n == 0:
+        return 0.0
+    x = t / dt
+    i = int(math.floor(x))
+    if i >= n - 1:
+        if i == n - 1 and x - i < 1e-9:
+            return s * samples[off + n - 1]
+        return 0.0
+    f = x - i
+    return s * (samples[off + i] + f * (samples[off + i + 1] - samples[off + i]))
+
+
+@njit(cache=True)
+def ground_acc3(kind, prm, samples, t):
+    """``(ax, ay, az)``: the ground acceleration (m/s^2) at ``t`` of any spec in the body's
+    frame (module docstring): ``ax``, ``ay`` horizontal, ``az`` vertical, positive upwards;
+    ``(a, 0, a_v)`` for a planar spec."""
+    if kind == PAIR:
+        s, dt, n = prm[0], prm[1], int(prm[2])
+        if prm[V_SAME] == 1.0:  # one interpolation index for the three components
+            off = int(prm[V_OFFSET])
+            if t < 0.0 or n == 0:
+                h1 = h2 = av = 0.0
+            else:
+                x = t / dt
+                i = int(math.floor(x))
+                if i >= n - 1:
+                    if i == n - 1 and x - i < 1e-9:
+                        h1, h2 = s * samples[n - 1], s * samples[2 * n - 1]
+                        av = prm[V0] * samples[off + n - 1]
+                    else:
+                        h1 = h2 = av = 0.0
+                else:
+                    f = x - i
+                    h1 = s * (samples[i] + f * (samples[i + 1] - samples[i]))
+                    h2 = s * (samples[n + i] + f * (samples[n + i + 1] - samples[n + i]))
+                    av = prm[V0] * (samples[off + i] + f * (samples[off + i + 1]
+                                                            - samples[off + i]))
+        else:
+            h1 = _interp(samples, 0, n, dt, s, t)
+            h2 = _interp(samples, n, n, dt, s, t)
+            av = vertical_acc(prm, samples, t)
+    else:
+        h1, av = ground_acc_hv(kind, prm, samples, t)
+        h2 = 0.0
+    if prm.shape[0] < NPRM3:
+        return h1, h2, av
+    return (prm[AXES] * h1 + prm[AXES + 1] * h2, prm[AXES + 2] * h1 + prm[AXES + 3] * h2,
+            av)
+
+
+@njit(cache=True)
+def acc3_many(kind, prm, samples, t):
+    """Vectorised :func:`ground_acc3` over an array of times: an array ``(len(t), 3)``."""
+    out = np.empty((t.shape[0], 3))
+    for i in range(t.shape[0]):
+        ax, ay, az = ground_acc3(kind, prm, samples, t[i])
+        out[i, 0] = ax
+        out[i, 1] = ay
+        out[i, 2] = az
     return out

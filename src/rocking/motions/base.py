@@ -8,7 +8,20 @@ so a positive ``a`` drives the rocking angle ``theta`` positive (see
 
 Internally a motion is handed to compiled kernels as a *spec* ``(kind, prm, samples)``
 that this package's compiled motion kernels evaluate; the numpy evaluation uses the same
-compiled code, so the Python and the kernel views of a motion can never disagree.
+compiled code, so the Python and the kernel views of a motion can never disagree. A 3-D
+body gets a *three-component* spec (:meth:`Motion.spec3`: the motion along the body's
+``x`` axis turned by a heading, and the vertical component), and a planar model the
+motion along one direction of the body (:meth:`Motion.on_plane`); see
+:mod:`rocking.motions.components` for the angles.
+
+**Peaks.** Every motion answers its ``pga`` (m/s^2), ``pgv`` (m/s) and ``duration`` (s),
+load factor applied. A kind that states them gives them exactly (a record: from its
+samples; a sine and the pulses: their closed forms). For the others the default is that
+of the motion sampled as :func:`rocking.motions.sample` does it, with the step
+:attr:`Motion.sampling_step` (``min(scan_step, 5 ms)``, the sampling that the intensity
+measures of campaigns and Monte Carlo use): the largest ``|a|`` of the samples, and the
+largest ``|v|`` of the velocity integrated from rest at ``t = 0`` (exactly, for the
+piecewise-linear samples: :func:`rocking.motions.velocity`).
 """
 
 from __future__ import annotations
@@ -18,12 +31,35 @@ from typing import ClassVar
 import numpy as np
 
 from .._validate import as_float, positive
-from ..errors import RecordError
 from . import _kernel as K
+from .components import angle, plane_weights
+from .processing import integrate
+from .samples import as_samples, is_sampled  # noqa: F401 (their former home)
+
+SAMPLING_STEP = 0.005
+"""The largest step (s) at which a motion whose kind states no peaks is sampled for them
+(:attr:`Motion.sampling_step`)."""
 
 
 class Motion:
     """Abstract base of all base motions (dataclasses with a ``scale`` load factor).
+
+    Attributes
+    ----------
+    duration : float
+        The default length of a simulation (s): a record's last sample, a harmonic motion's
+        window, a pulse's window (past the pulse).
+    scale : float
+        The load factor.
+    pga : float
+        Peak ground acceleration (m/s^2), load factor applied (module docstring: exact
+        where the kind states it, else from the motion sampled at :attr:`sampling_step`).
+        A vertical component has its own (``GroundMotion.pga_vertical``).
+    pgv : float
+        Peak ground velocity (m/s), load factor applied, the same way: the velocity the kind
+        states, else the acceleration integrated from rest at ``t = 0``.
+    sampling_step : float
+        ``min(scan_step, 5 ms)`` (s): the step of the default peaks.
 
     Examples
     --------
@@ -33,6 +69,8 @@ class Motion:
     (True, -1.5791)
     >>> round((-s)(0.125), 4), round(s.scaled(2.0)(0.125), 4)
     (1.5791, -3.1583)
+    >>> round(s.pga, 4), round(s.pgv, 5), s.scaled(-2.0).pga == 2.0 * s.pga  # X w^2, X w
+    (1.5791, 0.12566, True)
     """
 
     kind: ClassVar[int] = K.NONE
@@ -142,34 +180,87 @@ class Motion:
         dt = positive("dt", dt, "s")
         return np.arange(int(round(self.duration / dt)) + 1) * dt
 
+    # ---- peaks (module docstring): the defaults, from the sampled motion
+    @property
+    def sampling_step(self) -> float:
+        """The step (s) of the default peaks: ``min(scan_step, SAMPLING_STEP)``."""
+        return min(self.scan_step, SAMPLING_STEP)
+
+    def _sampled(self) -> tuple[np.ndarray, float]:
+        """``(acc, dt)``: the motion on the grid of :func:`rocking.motions.sample` with the
+        step :attr:`sampling_step` (the same samples, bit for bit)."""
+        dt = self.sampling_step
+        return np.asarray(self.acceleration(self.time(dt)), dtype=np.float64), dt
+
     @property
     def pga(self) -> float:
-        """Peak absolute ground acceleration (m/s^2), sampled at ``scan_step / 4``."""
-        t = self.time(min(self.scan_step / 4.0, self.duration / 100.0))
-        return float(np.max(np.abs(self.acceleration(t))))
+        """Peak absolute ground acceleration (m/s^2) of the sampled motion."""
+        return float(np.max(np.abs(self._sampled()[0])))
+
+    @property
+    def pgv(self) -> float:
+        """Peak absolute ground velocity (m/s) of the sampled motion, from rest."""
+        acc, dt = self._sampled()
+        return float(np.max(np.abs(integrate(acc, dt)[0])))
+
+    # ---- directions (rocking.motions.components)
+    def spec3(self, heading=0.0) -> tuple[int, np.ndarray, np.ndarray]:
+        """The three-component spec (:func:`~rocking.motions._kernel.ground_acc3` reads
+        it): the motion is along the ground's ``x`` axis, the body's ``x`` axis at
+        ``heading`` (rad, or ``"30deg"``) counter-clockwise of it looking down; the body
+        sees ``(a cos h, -a sin h, a_v)``.
+
+        Examples
+        --------
+        >>> import math
+        >>> from rocking.motions import Sine
+        >>> from rocking.motions import _kernel as K
+        >>> s = Sine(freq=2.0, amplitude=0.01, duration=5.0)
+        >>> K.ground_acc3(*s.spec3(), 0.125) == (s(0.125), 0.0, 0.0)  # along x
+        True
+        >>> ax, ay, az = K.ground_acc3(*s.spec3("30deg"), 0.125)
+        >>> round(ax / s(0.125), 6), round(ay / s(0.125), 6)  # cos 30, -sin 30
+        (0.866025, -0.5)
+        """
+        o = -angle("heading", heading)  # the bearing of the body's x axis (module docs)
+        kind, prm, samples = self.spec()
+        wx = plane_weights(0.0, o)
+        wy = plane_weights(0.5 * np.pi, o)
+        return kind, K.with_axes(prm, wx, wy), samples
+
+    def on_plane(self, phi, heading=0.0) -> Motion:
+        """The planar motion along the body's direction ``phi`` (rad, or ``"30deg"``;
+        counter-clockwise from its ``x`` axis), the body's ``x`` axis at ``heading`` from
+        the motion's direction (:meth:`spec3`): the horizontal acceleration times
+        ``cos(heading + phi)``, the vertical component unchanged; the motion itself when
+        that is 1.
+
+        Examples
+        --------
+        >>> from rocking.motions import Sine
+        >>> s = Sine(freq=2.0, amplitude=0.01, duration=5.0)
+        >>> s.on_plane(0.0) is s, s.on_plane("90deg").scale, s.on_plane("180deg").scale
+        (True, 0.0, -1.0)
+        >>> round(s.on_plane("20deg", heading="40deg").scale, 12)  # cos 60
+        0.5
+        """
+        w, _ = plane_weights(angle("phi", phi), -angle("heading", heading))
+        return self if w == 1.0 else self.horizontal_scaled(w)
+
+    def horizontal_scaled(self, factor: float) -> Motion:
+        """A copy with the horizontal acceleration times ``factor`` and the vertical
+        component (if any) unchanged: :meth:`scaled` for a motion without one.
+
+        Examples
+        --------
+        >>> from rocking.motions import GroundMotion, Sine
+        >>> gm = GroundMotion(Sine(2.0, 0.01, 5.0), Sine(4.0, 0.001, 5.0))
+        >>> h = gm.horizontal_scaled(0.5)
+        >>> h.horizontal.scale, h.vertical.scale, Sine(2.0, 0.01, 5.0).horizontal_scaled(3).scale
+        (0.5, 1.0, 3.0)
+        """
+        return self.scaled(factor)
 
 
 def validate_scale(scale) -> float:
     return as_float("scale", scale)
-
-
-# ---- sampled accelerograms (what processing, spectra and io work on, without a Record)
-def is_sampled(obj) -> bool:
-    """True for a sampled accelerogram: an object with ``acc`` (m/s^2), ``dt`` (s) and
-    ``values`` (``acc`` times its load factor), such as a
-    :class:`~rocking.motions.records.Record`."""
-    return all(hasattr(obj, a) for a in ("acc", "dt", "values"))
-
-
-def as_samples(acc) -> np.ndarray:
-    """``acc`` as a contiguous 1-D float64 array of at least 2 finite samples."""
-    try:
-        a = np.asarray(acc, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise RecordError("the accelerogram must be a 1-D array of numbers") from None
-    if a.ndim != 1 or a.size < 2:
-        raise RecordError(f"the accelerogram must be a 1-D array of at least 2 samples, got "
-                          f"shape {a.shape}")
-    if not np.all(np.isfinite(a)):
-        raise RecordError("the accelerogram has a non-finite value (NaN or inf)")
-    return np.ascontiguousarray(a)

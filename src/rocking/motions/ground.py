@@ -30,7 +30,8 @@ class GroundMotion(Motion):
     """A horizontal motion and an optional vertical one (m/s^2, ``a_v`` positive upwards).
 
     ``duration`` is the longer of the two; ``scale`` multiplies both components
-    (:meth:`scaled` puts its factors on the components and leaves ``scale`` at 1).
+    (:meth:`scaled` puts its factors on the components and leaves ``scale`` at 1). ``pga``
+    and ``pgv`` are the horizontal component's, ``pga_vertical`` the vertical one's.
 
     Examples
     --------
@@ -226,6 +227,27 @@ class GroundMotion(Motion):
     def pga(self) -> float:
         """Peak horizontal acceleration (m/s^2), as the horizontal motion's own ``pga``."""
         return self.horizontal.scaled(self.scale).pga
+
+    @property
+    def pgv(self) -> float:
+        """Peak horizontal velocity (m/s), as the horizontal motion's own ``pgv``."""
+        return self.horizontal.scaled(self.scale).pgv
+
+    def horizontal_scaled(self, factor: float) -> GroundMotion:
+        """The horizontal component times ``factor``, the vertical one unchanged
+        (:meth:`scaled` with ``vertical=1``).
+
+        Examples
+        --------
+        >>> from rocking.motions import GroundMotion, Sine
+        >>> gm = GroundMotion(Sine(2.0, 0.01, 5.0), Sine(4.0, 0.001, 5.0), scale=2.0)
+        >>> h = gm.horizontal_scaled(-1.0)
+        >>> h.horizontal.scale, h.vertical.scale, h.pga == gm.pga
+        (-2.0, 2.0, True)
+        """
+        if self.vertical is None:
+            return self.scaled(factor)
+        return self.scaled(factor, vertical=1.0)
 
     @property
     def pga_vertical(self) -> float:

@@ -58,6 +58,8 @@ class Sine(Motion):
     (1.5791, 1.5791)
     >>> round(s.acceleration(0.125), 4)  # u = X at t = 1/(4 f)
     -1.5791
+    >>> s.pga == s.acc_amplitude, round(s.pgv, 6) == round(0.01 * 2 * math.pi * 2.0, 6)
+    (True, True)
     """
 
     freq: float
@@ -98,6 +100,19 @@ class Sine(Motion):
     def acc_amplitude(self) -> float:
         """Peak acceleration (m/s^2)."""
         return abs(self.scale) * self.amplitude * (2 * math.pi * self.freq) ** 2
+
+    @property
+    def pga(self) -> float:
+        """The acceleration amplitude ``X (2 pi f)^2`` (m/s^2, :attr:`acc_amplitude`),
+        reached when the sine lasts half a period or more."""
+        return self.acc_amplitude
+
+    @property
+    def pgv(self) -> float:
+        """The table's velocity amplitude ``X 2 pi f`` (m/s): the peak of ``u' = X 2 pi f
+        cos(2 pi f t + phase)``. (The table moves at ``u'(0)`` when the sine starts: the
+        acceleration integrated from rest differs from ``u'`` by that constant.)"""
+        return abs(self.scale) * self.amplitude * (2 * math.pi * self.freq)
 
     def _params(self):
         return (self.freq, self.amplitude, self.duration, self.phase)

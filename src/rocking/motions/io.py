@@ -67,7 +67,7 @@ from ..units import (
     time_unit,
 )
 from . import formats
-from .base import is_sampled
+from .samples import is_sampled
 
 __all__ = ["read_record", "write_csv", "builtin_records", "read_builtin"]
 

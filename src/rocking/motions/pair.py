@@ -39,55 +39,33 @@ zeros to the longer one's length (a record is zero after its last sample). A com
 load factor (``Record.scale``) is applied. The vertical component (positive upwards) is
 any :class:`~rocking.motions.Motion`, not projected: :meth:`HorizontalPair.motion` returns
 a :class:`~rocking.motions.GroundMotion` with it.
+
+**Three components.** :meth:`HorizontalPair.spec3` hands both horizontal components and
+the vertical one to a 3-D body's kernel, the body's ``x`` axis at a ``heading``
+counter-clockwise of the first component; :meth:`HorizontalPair.on_plane` is its
+projection on one direction of the body (:meth:`HorizontalPair.motion` with the
+orientation of that heading). Both take their weights from
+:func:`rocking.motions.components.plane_weights`, the one place that writes the projection.
 """
 
 from __future__ import annotations
 
 import math
-import numbers
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import ParameterError
-from ..units import parse_quantity
+from . import _kernel as K
 from .base import Motion
+from .components import angle, cos_sin, plane_weights
 from .ground import GroundMotion
 from .records import Record, load_builtin
 
 ORTHOGONALITY_TOL = math.radians(0.01)
 """How far (rad) the stated azimuths may be from orthogonal."""
-EXACT_TOL = 1e-9
-"""Angles (rad) within this of a multiple of 90 deg are taken as exact."""
 DT_RTOL = 1e-9
 """Relative tolerance on the equality of the two components' time steps."""
-
-
-def angle(name: str, value) -> float:
-    """An angle in rad: a number (rad) or a string with a unit (``"228deg"``)."""
-    if isinstance(value, bool) or value is None:
-        raise ParameterError(f"{name} must be an angle (rad, or a string such as '30deg'), "
-                             f"got {value!r}")
-    if isinstance(value, numbers.Real):
-        x = float(value)
-    else:
-        try:
-            x = parse_quantity(value, "angle", name=name, default_unit="rad")
-        except Exception as exc:
-            raise ParameterError(str(exc)) from None
-    if not math.isfinite(x):
-        raise ParameterError(f"{name} must be finite, got {value!r}")
-    return float(x)
-
-
-def cos_sin(a: float) -> tuple[float, float]:
-    """``(cos a, sin a)``, exact (in {-1, 0, 1}) within :data:`EXACT_TOL` of a multiple of
-    90 deg."""
-    q = a / (0.5 * math.pi)
-    k = round(q)
-    if abs(a - k * 0.5 * math.pi) <= EXACT_TOL:
-        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k % 4]
-    return math.cos(a), math.sin(a)
 
 
 def _component_azimuth(rec) -> float | None:
@@ -276,10 +254,7 @@ class HorizontalPair:
         p = angle("phi", phi)
         az1 = 0.0 if self.azimuths is None else self.azimuths[0]
         o = az1 if orientation is None else angle("orientation", orientation)
-        c, s = cos_sin((o - p) - az1)  # B - A1
-        # a_phi = a1 cos(B - A1) + a2 cos(B - A2), A2 = A1 + h 90 deg:
-        # cos(B - A1 - h 90deg) = h sin(B - A1)
-        return c, self.handedness * s
+        return plane_weights(p, o, az1, self.handedness)
 
     def along(self, phi, orientation=None) -> Record:
         """The horizontal acceleration along the object's direction ``phi`` (rad) as a
@@ -325,6 +300,75 @@ class HorizontalPair:
         h = self.along(phi, orientation)
         return GroundMotion(h, self.vertical) if vertical and self.vertical is not None \
             else h
+
+    def orientation_of(self, heading) -> float:
+        """The compass bearing (rad) of a body's ``x`` axis at ``heading`` (rad or
+        ``"30deg"``) counter-clockwise of the first component, looking down:
+        ``A1 - heading`` (``A1 = 0`` without azimuths).
+
+        Examples
+        --------
+        >>> import math
+        >>> from rocking.motions import HorizontalPair
+        >>> pair = HorizontalPair.builtin("rinaldi")  # first component: 228 deg
+        >>> round(math.degrees(pair.orientation_of("30deg")), 9)  # 30 deg ccw: 198 deg
+        198.0
+        """
+        az1 = 0.0 if self.azimuths is None else self.azimuths[0]
+        return az1 - angle("heading", heading)
+
+    def on_plane(self, phi, heading=0.0, *, vertical: bool = True) -> Motion:
+        """The planar motion along the body's direction ``phi`` (rad or ``"30deg"``), its
+        ``x`` axis at ``heading`` counter-clockwise of the first component: :meth:`motion`
+        with ``orientation = A1 - heading`` (:meth:`orientation_of`), the projection of
+        :meth:`spec3` on that direction.
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair
+        >>> from rocking.motions import _kernel as K
+        >>> pair = HorizontalPair.builtin("rinaldi")
+        >>> m = pair.on_plane("30deg", heading="15deg")
+        >>> bool(np.array_equal(m.horizontal.values, pair.along("30deg", "213deg").values))
+        True
+        >>> kind, prm, samples = pair.spec3(heading="15deg")
+        >>> ax, ay, az = K.ground_acc3(kind, prm, samples, 3.0)  # projected on 30 deg:
+        >>> c, s = np.cos(np.radians(30)), np.sin(np.radians(30))
+        >>> bool(np.isclose(ax * c + ay * s, m.acceleration(3.0), rtol=1e-12))
+        True
+        """
+        return self.motion(phi, self.orientation_of(heading), vertical=vertical)
+
+    def spec3(self, heading=0.0, *, vertical: bool = True) -> tuple[int, np.ndarray,
+                                                                      np.ndarray]:
+        """The three-component spec of the pair (:mod:`rocking.motions.components`): the
+        two components (kind ``PAIR``) and the vertical one when the pair has one and
+        ``vertical`` is True; the body's ``x`` axis at ``heading`` (rad or ``"30deg"``)
+        counter-clockwise of the first component, looking down. The body sees
+        ``ax = a_x cos h + a_y sin h``, ``ay = -a_x sin h + a_y cos h`` with ``a_x = a1``
+        and ``a_y`` the acceleration 90 deg counter-clockwise of the first component:
+        ``a2`` for a counter-clockwise pair (no azimuths), ``-a2`` for a clockwise one.
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair, Record
+        >>> from rocking.motions import _kernel as K
+        >>> x, y = Record(np.array([0.0, 1.0, 0.0]), 0.01), Record(np.array([0.0, 2.0, 0.0]), 0.01)
+        >>> pair = HorizontalPair(x, y)  # no azimuths: the second is y
+        >>> K.ground_acc3(*pair.spec3(), 0.01), K.ground_acc3(*pair.spec3(), 0.015)
+        ((1.0, 2.0, 0.0), (0.5, 1.0, 0.0))
+        >>> K.ground_acc3(*pair.spec3(heading="90deg"), 0.01)  # x along y: (a_y, -a_x)
+        (2.0, -1.0, 0.0)
+        """
+        o = self.orientation_of(heading)
+        az1 = 0.0 if self.azimuths is None else self.azimuths[0]
+        kind, prm, samples = K.pair_spec(self.dt, self.a1, self.a2)
+        wx = plane_weights(0.0, o, az1, self.handedness)
+        wy = plane_weights(0.5 * math.pi, o, az1, self.handedness)
+        prm = K.with_axes(prm, wx, wy)
+        if vertical and self.vertical is not None:
+            prm, samples = K.with_vertical(kind, prm, samples, *self.vertical.spec())
+        return kind, prm, samples
 
     def rotated(self, angle_: float) -> HorizontalPair:
         """The same ground motion recorded on axes turned clockwise by ``angle_`` (rad,

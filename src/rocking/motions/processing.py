@@ -35,7 +35,7 @@ import numpy as np
 from .._validate import in_range, positive
 from ..errors import ParameterError, RecordError
 from ..units import G
-from .base import as_samples, is_sampled
+from .samples import as_samples, is_sampled
 
 __all__ = ["resample", "bandpass", "baseline_correct", "velocity", "displacement",
            "integrate", "pga", "pgv", "pgd", "arias_intensity", "husid",

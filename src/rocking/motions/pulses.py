@@ -15,6 +15,16 @@ motion that follows: by default ``max(10 s, 5 x pulse length)`` after ``t0``.
   Papageorgiou (2003), ``v = A/2 [1 + cos(2 pi fp (t - t0) / gamma)] cos(2 pi fp (t - t0)
   + nu)`` for ``|t - t0| <= gamma / (2 fp)``; the motion is its exact derivative, scaled
   so that its peak acceleration is ``amplitude`` (like the other pulses).
+
+Peaks (``pga``, ``pgv``; load factor applied): the PGA of each pulse is ``amplitude``; the
+PGV is that of the ground velocity from rest (the ground is at rest before the pulse),
+over the whole pulse: ``A Tp / pi`` (one sine, at ``Tp / 2``), ``A Tp / (2 pi)`` (one
+cosine, at ``Tp / 4``), ``2 A t1 / pi`` (half sine, from its end on), ``A t1``
+(rectangular, from its end on), ``A / (pi fp) (1 / sqrt(2 e) + x0 exp(-x0^2))`` with
+``x0 = pi fp tc`` (Ricker: ``v = A / (pi fp) (x exp(-x^2) + x0 exp(-x0^2))`` since
+``d/dx (x exp(-x^2)) = (1 - 2 x^2) exp(-x^2)``, largest at ``x = 1 / sqrt(2)``), and the
+peak of the stated velocity ``v`` (Mavroeidis-Papageorgiou: ``A`` for ``nu = 0`` or
+``pi``).
 """
 
 from __future__ import annotations
@@ -47,6 +57,7 @@ class _Pulse(Motion):
     scale: float = 1.0
 
     _length_name: ClassVar[str] = "length"
+    _pgv_factor: ClassVar[float] = math.nan  # PGV / (A length), module docstring
 
     def __post_init__(self):
         object.__setattr__(self, "amplitude", non_negative("amplitude", self.amplitude, "m/s^2"))
@@ -57,6 +68,16 @@ class _Pulse(Motion):
 
     def _params(self):
         return (self.amplitude, self.length, self.t0)
+
+    @property
+    def pga(self) -> float:
+        """``amplitude`` (m/s^2), load factor applied."""
+        return abs(self.scale) * self.amplitude
+
+    @property
+    def pgv(self) -> float:
+        """The peak ground velocity from rest (m/s), module docstring."""
+        return abs(self.scale) * self.amplitude * self.length * self._pgv_factor
 
     @property
     def scan_step(self) -> float:
@@ -73,16 +94,20 @@ class OneSine(_Pulse):
 
     Examples
     --------
+    >>> import math
     >>> from rocking.motions import OneSine
     >>> p = OneSine(amplitude=3.0, length=0.5)
     >>> [round(float(a), 6) for a in p.acceleration([0.125, 0.375, 0.6])]  # Tp/4, 3Tp/4, after
     [3.0, -3.0, 0.0]
     >>> p.duration  # max(10 s, 5 Tp) after t0
     10.0
+    >>> p.pga, round(p.pgv, 6), round(3.0 * 0.5 / math.pi, 6)  # A, A Tp / pi
+    (3.0, 0.477465, 0.477465)
     """
 
     kind = K.ONE_SINE
     _length_name = "Tp"
+    _pgv_factor = 1.0 / math.pi
 
 
 @dataclass(frozen=True)
@@ -99,6 +124,7 @@ class OneCosine(_Pulse):
 
     kind = K.ONE_COSINE
     _length_name = "Tp"
+    _pgv_factor = 0.5 / math.pi
 
 
 @dataclass(frozen=True)
@@ -115,6 +141,7 @@ class HalfSine(_Pulse):
 
     kind = K.HALF_SINE
     _length_name = "t1"
+    _pgv_factor = 2.0 / math.pi
 
 
 @dataclass(frozen=True)
@@ -129,10 +156,13 @@ class Rectangular(_Pulse):
     [1.0, 0.0]
     >>> round(float(velocity(sample(p, 0.01))[-1]), 6)  # velocity change A t1
     2.0
+    >>> p.pga, p.pgv
+    (1.0, 2.0)
     """
 
     kind = K.RECTANGULAR
     _length_name = "t1"
+    _pgv_factor = 1.0
 
 
 @dataclass(frozen=True)
@@ -148,6 +178,8 @@ class Ricker(Motion):
     (0.75, 4.0)
     >>> round(w(w.tc + 1 / (math.sqrt(2) * math.pi * w.fp)), 9)  # zero at x = 1/sqrt(2)
     0.0
+    >>> w.pga, round(w.pgv, 6), round(4.0 / (math.pi * 2.0 * math.sqrt(2 * math.e)), 6)
+    (4.0, 0.273035, 0.273035)
     """
 
     amplitude: float
@@ -170,6 +202,19 @@ class Ricker(Motion):
 
     def _params(self):
         return (self.amplitude, self.fp, self.tc)
+
+    @property
+    def pga(self) -> float:
+        """``amplitude`` (m/s^2, at ``tc``), load factor applied."""
+        return abs(self.scale) * self.amplitude
+
+    @property
+    def pgv(self) -> float:
+        """``A / (pi fp) (1 / sqrt(2 e) + x0 exp(-x0^2))``, ``x0 = pi fp tc`` (m/s; module
+        docstring), load factor applied."""
+        x0 = math.pi * self.fp * self.tc
+        k = 1.0 / math.sqrt(2.0 * math.e) + x0 * math.exp(-x0 * x0)
+        return abs(self.scale) * self.amplitude / (math.pi * self.fp) * k
 
     @property
     def scan_step(self) -> float:
@@ -200,6 +245,26 @@ def _mp_peak(gamma: float, nu: float) -> float:
     res = minimize_scalar(lambda x: -abs(float(g(x))), bounds=(lo, hi), method="bounded",
                           options={"xatol": 1e-12})
     return max(abs(float(g(u[i]))), -float(res.fun))
+
+
+@functools.lru_cache(maxsize=256)
+def _mp_velocity_peak(gamma: float, nu: float) -> float:
+    """Peak of ``|(1 + cos(u / gamma)) / 2 cos(u + nu)|`` over ``|u| <= pi gamma``: the
+    PGV of the M&P pulse over its velocity amplitude ``A``."""
+    from scipy.optimize import minimize_scalar
+
+    def f(u):
+        return 0.5 * (1.0 + np.cos(u / gamma)) * np.cos(u + nu)
+
+    half = math.pi * gamma
+    n = max(4097, int(512 * gamma) + 1)
+    u = np.linspace(-half, half, n)
+    i = int(np.argmax(np.abs(f(u))))
+    h = u[1] - u[0]
+    lo, hi = max(-half, u[i] - h), min(half, u[i] + h)
+    res = minimize_scalar(lambda x: -abs(float(f(x))), bounds=(lo, hi), method="bounded",
+                          options={"xatol": 1e-12})
+    return max(abs(float(f(u[i]))), -float(res.fun))
 
 
 @dataclass(frozen=True)
@@ -249,6 +314,8 @@ class MavroeidisPapageorgiou(Motion):
     1.0
     >>> round(pga(sample(mp, 0.001)), 3)  # the peak acceleration is ``amplitude``
     5.0
+    >>> mp.pga, round(mp.pgv / mp.velocity_amplitude, 9)  # nu = 0: the PGV is A
+    (5.0, 1.0)
     """
 
     amplitude: float
@@ -316,6 +383,17 @@ class MavroeidisPapageorgiou(Motion):
 
     def _params(self):
         return (self.velocity_amplitude, self.fp, self.gamma, self.nu, self.t0)
+
+    @property
+    def pga(self) -> float:
+        """``amplitude`` (m/s^2), load factor applied."""
+        return abs(self.scale) * self.amplitude
+
+    @property
+    def pgv(self) -> float:
+        """The peak of ``|v|`` (m/s), load factor applied: ``A`` for ``nu = 0`` or ``pi``."""
+        return abs(self.scale) * self.velocity_amplitude * _mp_velocity_peak(self.gamma,
+                                                                             self.nu)
 
     @property
     def scan_step(self) -> float:

@@ -51,6 +51,8 @@ class Record(Motion):
     >>> r = Record(np.array([0.0, 1.0, -2.0, 0.5]), dt=0.01, name="toy", scale=0.5)
     >>> r.pga, r.values.tolist()  # the load factor applied
     (1.0, [0.0, 0.5, -1.0, 0.25])
+    >>> r.pgv == float(np.max(np.abs(r.velocity()))), r.duration  # from rest; (n - 1) dt
+    (True, 0.03)
     """
 
     acc: np.ndarray
@@ -140,8 +142,14 @@ class Record(Motion):
 
     @property
     def pga(self) -> float:
-        """Peak ground acceleration (m/s^2)."""
+        """Peak ground acceleration (m/s^2): the largest ``|value|``."""
         return float(np.max(np.abs(self.values)))
+
+    @property
+    def pgv(self) -> float:
+        """Peak ground velocity (m/s): the largest ``|v|`` at the samples of the velocity
+        from rest (:meth:`velocity`; ``intensity_measures()["pgv"]``)."""
+        return float(np.max(np.abs(self.velocity())))
 
     # ---- processing (see rocking.motions.processing)
     def resampled(self, dt: float, method: str = "auto") -> Record:

@@ -41,7 +41,7 @@ from numba import njit, prange
 from .._validate import in_range, positive
 from ..errors import ParameterError
 from ..units import G
-from .base import as_samples, is_sampled
+from .samples import as_samples, is_sampled
 
 __all__ = ["response_spectrum", "response_spectra", "sdof_response", "log_periods", "KINDS",
            "plot_spectra",
