@@ -88,7 +88,8 @@ class Response:
     theta: np.ndarray
     omega: np.ndarray
     impact_times: np.ndarray
-    max_abs_theta: float
+    max_abs_theta: float | None
+    """Largest ``|theta|`` (rad); None for a model without a planar angle."""
     overturned: bool
     overturn_time: float
     """Time (s) at which ``|theta|`` reached pi/2; NaN if the block did not overturn."""
@@ -146,7 +147,7 @@ class Response:
     @property
     def rocked(self) -> bool:
         """True if the block ever left its rest position."""
-        return not math.isnan(self.uplift_time) or self.max_abs_theta > 0.0
+        return not math.isnan(self.uplift_time) or bool(self.max_abs_theta)
 
     @property
     def duration(self) -> float:

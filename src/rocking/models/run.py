@@ -284,7 +284,7 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     n_imp = values.get("n_impacts", 0)
     return m.response_class(
         t=t, theta=th, omega=om, impact_times=imp[: min(n_imp, cap)].copy(),
-        max_abs_theta=values.get("max_abs_theta", math.nan), overturned=over,
+        max_abs_theta=values.get("max_abs_theta"), overturned=over,
         overturn_time=t_over if over else math.nan, uplift_time=values["uplift_time"],
         n_impacts=n_imp, model=m.result_name, block=block, motion=motion,
         info=info, lift_off_time=values["lift_off_time"], settled=values["settled"],
@@ -466,6 +466,8 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
             idx = np.array(members)
             sub = Batch(*(a[idx] if isinstance(a, np.ndarray) else a for a in rows))
             mb = m if blocks[j] is blocks[0] else type(m)(blocks[j], m.options)
+            if state0 is None and cls.initial_state is not Model.initial_state:
+                sub.y0[:] = mb.initial_state(t0, w0)  # the state of this block
             cls.batch_kernel(mb.kernel_params(dt_out, t0, w0), mb.extra_buffers(0), sub,
                              np.empty((idx.size, 0)))
             for name in BATCH_OUTPUTS:
