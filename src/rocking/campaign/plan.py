@@ -28,7 +28,10 @@ The uncertain parameters are drawn as in :func:`rocking.analysis.monte_carlo`
 (:func:`~rocking.analysis.montecarlo.draw_parameters`): each distribution truncated to its
 parameter's range by redrawing, ``theta0`` to ``|theta0| < alpha`` of the row's own
 (drawn) alpha. A row whose ``theta0`` was redrawn says so in ``theta0_truncated``; the
-report counts them.
+report counts them. The row's block is :func:`~rocking.analysis.montecarlo.sample_block`'s,
+as in Monte Carlo: an asymmetric block (a ``mesh`` block) keeps its two sides, a drawn
+``alpha``, ``p`` or ``mu`` scaling both by ``drawn / nominal`` (the factor rule; the
+table's ``alpha``, ``p``, ``mu`` are the weaker side's).
 
 With ``[building]``, motion ``j`` of ``[motions]`` is the ground motion and a block on a
 floor feels :class:`rocking.buildings.FloorMotion` of it; the intensity levels scale the
@@ -50,7 +53,13 @@ import pandas as pd
 
 from ..analysis.damage import damage_state
 from ..analysis.ida import IMS, intensity
-from ..analysis.montecarlo import PARAMETERS, distributions, draw_parameters, perturbed
+from ..analysis.montecarlo import (
+    PARAMETERS,
+    distributions,
+    draw_parameters,
+    perturbed,
+    sample_block,
+)
 from ..blocks import Block
 from ..errors import ParameterError
 from ..models import MODELS, simulate_many
@@ -323,8 +332,7 @@ class Campaign:
                 rng = np.random.default_rng(np.random.SeedSequence(
                     s.seed, spawn_key=(STREAM, int(draws[r]))))
                 v, truncated[r] = draw_parameters(nom, self._dists[b], rng)
-                if uncertain.keys() & {"alpha", "p", "mu"}:
-                    block = Block.from_params(v["alpha"], v["p"], v["mu"], name=block.name)
+                block = sample_block(block, v, self._dists[b])
                 mo = perturbed(self.motions.on_floor(f, j).scaled(scale), v["amplitude"],
                                v["noise"], rng)
             else:

@@ -1331,7 +1331,8 @@ def keys_table() -> str:
                  _motion_rows())
     out += ["", _legacy_text()]
     out += ["", "**`[uncertain]`**: `{dist = ...}` per parameter "
-            "(`rocking.analysis.montecarlo`):", ""]
+            "(`rocking.analysis.montecarlo`; a drawn `alpha`, `p` or `mu` of an asymmetric "
+            "block, e.g. a `mesh` block, scales both its sides by drawn / nominal):", ""]
     out += _rows(["key", "range"], [[f"`{k}`", RANGES[k]] for k in PARAMETERS])
     out += ["", "**`[run]`**", ""] + _rows(["key", "meaning"],
                                           [[f"`{k}`", h] for k, h in RUN_KEYS.items()])
