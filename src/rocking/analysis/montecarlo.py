@@ -23,6 +23,21 @@ truncation existed, so its numbers do not change. A distribution with more than 
 (:data:`~rocking.analysis.distributions.MAX_OUTSIDE`) of its mass outside its range (for
 ``theta0``: beyond +-alpha, averaged over alpha's distribution when alpha is uncertain) is
 refused with a :class:`~rocking.ParameterError` naming it.
+
+Asymmetric blocks (:attr:`rocking.Block.symmetric` False: :meth:`rocking.Block.from_geometry`,
+``from_shape``, ``from_mesh``) keep their two sides, by the *factor rule*
+(:func:`sample_block`, used by Monte Carlo and campaigns alike): the nominal ``alpha``,
+``p``, ``mu`` of such a block are its one-number summaries, those of its weaker side
+(:attr:`rocking.Block.alpha`, ...), and a drawn value ``x`` of parameter ``k`` multiplies
+each side's own value by ``x / k_nominal``: ``k_plus = k_plus_nominal x / k_nominal``, and
+the same for side ``-``. The weaker side gets ``x`` itself (the table's column), the block
+keeps the ratio of its sides, its outline, mass and radii, and a vanishing spread gives the
+nominal block. The range of ``alpha`` and ``mu`` (:func:`bounds`) is then the one that
+keeps *every* side in its physical range (e.g. ``mu`` below ``mu_nominal / max(mu_plus,
+mu_minus)``, so that neither side's restitution exceeds 1). A symmetric block's sample is
+:meth:`rocking.Block.from_params` of the drawn values, as it always was. A
+:class:`~rocking.Stack` has no rule for its blocks' sides: an uncertain ``alpha``, ``p`` or
+``mu`` of a stack is refused.
 """
 
 from __future__ import annotations
@@ -34,7 +49,7 @@ import numpy as np
 import pandas as pd
 
 from .._validate import in_range
-from ..blocks import Block
+from ..blocks import Block, Stack
 from ..errors import ParameterError
 from ..models import simulate_many
 from ..motions import Motion, Record, sample
@@ -59,6 +74,97 @@ added to the motion's samples, m/s^2)."""
 RANGES = {"alpha": "(0, pi/2) rad", "p": "(0, inf) 1/s", "mu": "(0, 1]",
           "theta0": "(-alpha, alpha)", "amplitude": "(0, inf)", "noise": "[0, inf) m/s^2"}
 """The ranges of :data:`PARAMETERS` as written in messages."""
+SCALED = ("alpha", "p", "mu")
+"""The parameters of the block itself: drawn, they make the sample's block
+(:func:`sample_block`; an asymmetric block's sides by the factor rule of the module
+docstring)."""
+
+
+def bounds(block, name: str) -> tuple[float, float, str]:
+    """``(lo, hi, shown)``: the open range that a draw of parameter ``name`` is truncated to
+    for ``block``, and that range as written in messages. The range of :data:`PARAMETERS`
+    (:data:`RANGES`), except for the ``alpha`` and ``mu`` of an asymmetric block: the
+    factor rule (module docstring) multiplies each side by ``drawn / nominal``, so the
+    drawn value must stay below ``pi/2`` (``1`` for ``mu``) times ``nominal / max(side
+    values)`` for every side to stay in its range.
+
+    Examples
+    --------
+    A body whose + side is the weaker one (``alpha_plus = atan(0.2) < alpha_minus =
+    atan(0.4)``): a drawn alpha may reach ``pi/2 alpha_plus / alpha_minus`` only.
+
+    >>> import math
+    >>> from rocking import Block
+    >>> from rocking.analysis.montecarlo import bounds
+    >>> body = Block.from_geometry(0.5, 0.1, 0.2, 0.3)
+    >>> lo, hi, shown = bounds(body, "alpha")
+    >>> lo, round(hi, 6) == round(math.pi / 2 * math.atan(0.2) / math.atan(0.4), 6)
+    (0.0, True)
+    >>> bounds(Block.rectangular(0.4, 1.2), "alpha")[1] == math.pi / 2  # symmetric: as ever
+    True
+    """
+    lo, hi = PARAMETERS[name][1]
+    if name not in ("alpha", "mu") or not isinstance(block, Block) or block.sides is None:
+        return lo, hi, RANGES[name]
+    nom = PARAMETERS[name][0](block)
+    plus, minus = getattr(block, f"{name}_plus"), getattr(block, f"{name}_minus")
+    top = max(plus, minus)
+    if not top > nom:
+        return lo, hi, RANGES[name]
+    side = f"{name}_{'plus' if plus >= minus else 'minus'}"
+    cap, unit, cap_s = (HALF_PI, " rad", "pi/2") if name == "alpha" else (1.0, "", "1")
+    hi = cap * (nom / top)
+    return lo, hi, (f"(0, {hi:.6g}){unit} (an asymmetric block: {side} = {top:.6g}{unit} "
+                    f"is scaled by drawn / {nom:.6g}, and must stay below {cap_s})")
+
+
+def sample_block(block, values: dict, drawn) -> Block:
+    """The block of one sample, in Monte Carlo and campaigns alike: ``block`` itself when
+    none of :data:`SCALED` (``alpha``, ``p``, ``mu``) is in ``drawn`` (the names drawn,
+    e.g. the keys of :func:`distributions`), else the block with the sample's ``values``
+    (``{name: value}``, as :func:`draw_parameters` gives them).
+
+    A symmetric block's sample is :meth:`rocking.Block.from_params` of ``values["alpha"]``,
+    ``values["p"]``, ``values["mu"]`` (its name kept). An asymmetric block keeps its two
+    sides by the factor rule (module docstring): each drawn parameter ``k`` multiplies both
+    sides' ``k`` by ``values[k] / k_nominal`` (the weaker side gets ``values[k]`` itself);
+    the block's outline, mass, inertia and radii are kept
+    (:meth:`rocking.Block.with_params`). A :class:`~rocking.Stack` has no such rule: an
+    uncertain ``alpha``, ``p`` or ``mu`` of a stack is a :class:`~rocking.ParameterError`.
+
+    Examples
+    --------
+    An asymmetric body whose drawn alpha is 10 % above its nominal (weaker) one: both
+    sides are 10 % above theirs.
+
+    >>> from rocking import Block
+    >>> from rocking.analysis.montecarlo import sample_block
+    >>> body = Block.from_geometry(0.5, 0.1, 0.2, 0.3)
+    >>> values = {"alpha": 1.1 * body.alpha, "p": body.p, "mu": body.mu}
+    >>> drawn = sample_block(body, values, ["alpha"])
+    >>> drawn.alpha == values["alpha"], round(drawn.alpha_minus / body.alpha_minus, 12)
+    (True, 1.1)
+    >>> (drawn.p_plus, drawn.mu_minus) == (body.p_plus, body.mu_minus)
+    True
+    """
+    keys = [k for k in SCALED if k in drawn]
+    if not keys:
+        return block
+    if isinstance(block, Stack):
+        raise ParameterError(
+            f"uncertain {', '.join(keys)}: no rule scales the blocks of a stack "
+            f"({block.name or 'the stack'}); a stack's alpha, p and mu cannot be uncertain")
+    if not isinstance(block, Block):
+        raise ParameterError(f"block must be a rocking.Block, got {type(block).__name__}")
+    if block.sides is None:
+        return Block.from_params(values["alpha"], values["p"], values["mu"], name=block.name)
+    changes = {}
+    for k in keys:
+        nom = PARAMETERS[k][0](block)
+        for s in ("plus", "minus"):
+            # drawn x (side / nominal): exactly the drawn value on the weaker side
+            changes[f"{k}_{s}"] = values[k] * (getattr(block, f"{k}_{s}") / nom)
+    return block.with_params(**changes)
 
 
 def distributions(block: Block, uncertain: dict, where=None, of: str = "") -> dict:
@@ -81,10 +187,10 @@ def distributions(block: Block, uncertain: dict, where=None, of: str = "") -> di
              for k in PARAMETERS if k in uncertain}
     for k, d in dists.items():
         if k != "theta0":
-            check_mass(key(k), d, *PARAMETERS[k][1], RANGES[k])
+            check_mass(key(k), d, *bounds(block, k))
     if "theta0" in dists:
         a = dists.get("alpha", block.alpha)
-        m = mass_beyond(dists["theta0"], a, PARAMETERS["alpha"][1])
+        m = mass_beyond(dists["theta0"], a, bounds(block, "alpha")[:2])
         if m > MAX_OUTSIDE:
             alpha = (f"alpha{of} ~ its distribution around {block.alpha:.4g} rad"
                      if "alpha" in dists else f"alpha{of} = {block.alpha:.4g} rad")
@@ -98,11 +204,13 @@ def distributions(block: Block, uncertain: dict, where=None, of: str = "") -> di
 def draw_parameters(block: Block, dists: dict, rng) -> tuple[dict, bool]:
     """One sample: ``({name: value}, theta0_truncated)``, every parameter of
     :data:`PARAMETERS` in its order, drawn from ``dists`` (:func:`distributions`) truncated
-    to its range, or nominal; ``theta0`` inside ``(-alpha, alpha)`` of this sample.
+    to its range (:func:`bounds`), or nominal; ``theta0`` inside ``(-alpha, alpha)`` of
+    this sample (the weaker side's alpha for an asymmetric block).
     ``theta0_truncated`` says that a ``theta0`` draw fell at or beyond +-alpha and was
     redrawn."""
     v, redrawn = {}, 0
-    for k, (nominal, (lo, hi)) in PARAMETERS.items():
+    for k, (nominal, _) in PARAMETERS.items():
+        lo, hi, _ = bounds(block, k)
         if k not in dists:
             v[k] = nominal(block)
         elif k == "theta0":
@@ -326,8 +434,7 @@ def draw_samples(block: Block, motions, uncertain: dict, n: int, seed: int, star
         rng = np.random.default_rng(np.random.SeedSequence(seed, spawn_key=(STREAM, i)))
         v, truncated = draw_parameters(block, dists, rng)
         j = i % len(motions)
-        blocks.append(block if all(k not in dists for k in ("alpha", "p", "mu"))
-                      else Block.from_params(v["alpha"], v["p"], v["mu"], name=block.name))
+        blocks.append(sample_block(block, v, dists))
         ms.append(perturbed(motions[j], v["amplitude"], v["noise"], rng))
         rows.append({"sample": i, "motion": j, **v, "theta0_truncated": truncated})
     return pd.DataFrame(rows), blocks, ms
@@ -341,7 +448,11 @@ def monte_carlo(block: Block, motions, uncertain: dict | None = None, n: int = 1
     Parameters
     ----------
     block : Block
-        The nominal block (its ``alpha``, ``p``, ``mu`` are the nominal values).
+        The nominal block (its ``alpha``, ``p``, ``mu`` are the nominal values). An
+        asymmetric block keeps its two sides: a drawn ``alpha``, ``p`` or ``mu`` scales
+        both sides by ``drawn / nominal`` (the factor rule, :func:`sample_block`; its
+        nominal values are its weaker side's, the table's columns the weaker side's
+        drawn ones).
     motions : Motion or sequence of Motion
         Sample ``i`` runs under ``motions[i % len(motions)]`` (one motion: every sample).
     uncertain : dict

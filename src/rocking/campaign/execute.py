@@ -300,7 +300,7 @@ def _check_buildable(campaign: Campaign) -> None:
     from .plan import KEEP
     spec = campaign.spec
     first = np.arange(*campaign.chunk_range(0))
-    if spec.motions["kind"] != "stochastic":
+    if spec.motion_axis.kind != "stochastic":
         campaign.motions.prepare(range(min(spec.n_motions, KEEP)))
     campaign.inputs(first)
 
@@ -344,7 +344,7 @@ def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:
         seconds += (time.perf_counter() - t0) / ids.size * spec.n_sims / len(runs)
         sampled += ids.size
     axes = {f"{k}s": v for k, v in spec.axes.items()}
-    if spec.building is None:
+    if spec.building_axis is None:
         del axes["floors"]
     if not spec.mitigations:
         del axes["mitigations"]

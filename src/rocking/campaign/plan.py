@@ -28,7 +28,10 @@ The uncertain parameters are drawn as in :func:`rocking.analysis.monte_carlo`
 (:func:`~rocking.analysis.montecarlo.draw_parameters`): each distribution truncated to its
 parameter's range by redrawing, ``theta0`` to ``|theta0| < alpha`` of the row's own
 (drawn) alpha. A row whose ``theta0`` was redrawn says so in ``theta0_truncated``; the
-report counts them.
+report counts them. The row's block is :func:`~rocking.analysis.montecarlo.sample_block`'s,
+as in Monte Carlo: an asymmetric block (a ``mesh`` block) keeps its two sides, a drawn
+``alpha``, ``p`` or ``mu`` scaling both by ``drawn / nominal`` (the factor rule; the
+table's ``alpha``, ``p``, ``mu`` are the weaker side's).
 
 With ``[building]``, motion ``j`` of ``[motions]`` is the ground motion and a block on a
 floor feels :class:`rocking.buildings.FloorMotion` of it; the intensity levels scale the
@@ -41,8 +44,6 @@ the ground motions (:class:`MotionSet`), never per run.
 
 from __future__ import annotations
 
-import copy
-from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -50,12 +51,18 @@ import pandas as pd
 
 from ..analysis.damage import damage_state
 from ..analysis.ida import IMS, intensity
-from ..analysis.montecarlo import PARAMETERS, distributions, draw_parameters, perturbed
+from ..analysis.montecarlo import (
+    PARAMETERS,
+    distributions,
+    draw_parameters,
+    perturbed,
+    sample_block,
+)
 from ..blocks import Block
 from ..errors import ParameterError
 from ..models import MODELS, simulate_many
 from ..motions import GroundMotion, Motion, Record, catalog, sample
-from .spec import CampaignSpec, building_model, motion_kind, motion_value, nominal
+from .spec import BuildingAxis, CampaignSpec, MotionAxis, nominal
 
 STREAM = 3
 """Tag of the campaign's random streams (Monte Carlo uses 1, stochastic records 2)."""
@@ -129,43 +136,38 @@ def motion_im(mo: Motion, im: str, block: Block | None = None) -> float:
 
 
 class MotionSet:
-    """The motions of a checked ``[motions]`` table, made by the catalog
-    (:mod:`rocking.motions.catalog`) on demand and kept (unscaled) up to :data:`KEEP` of
-    them (then those of the current chunk only: memory follows the chunk size, not the
-    number of motions). With a checked ``[building]`` (``building``), also the floor
-    motions of each (floor, ground motion), kept the same way (:meth:`on_floor`)."""
+    """The motions of a checked ``[motions]`` table (a :class:`~.spec.MotionAxis`), made
+    by the catalog (:mod:`rocking.motions.catalog`) on demand and kept (unscaled) up to
+    :data:`KEEP` of them (then those of the current chunk only: memory follows the chunk
+    size, not the number of motions). Record files are not read again: the motions that
+    the spec made while checking them (:attr:`~.spec.MotionAxis.records`) are taken as
+    they are. With a checked ``[building]`` (``building``, a
+    :class:`~.spec.BuildingAxis`), also the floor motions of each (floor, ground motion),
+    kept the same way (:meth:`on_floor`)."""
 
-    def __init__(self, m: dict, seed: int, base_dir=".", building: dict | None = None):
+    def __init__(self, m: MotionAxis, seed: int, base_dir=".",
+                 building: BuildingAxis | None = None):
         self.m, self.seed = m, seed
-        self.kind = motion_kind(m)
+        self.kind = m.catalog_kind
+        self.n = m.n
         self.ctx = catalog.Context(Path(base_dir), seed)
         self._cache: dict[int, Motion] = {}
+        self._params: dict[int, object] = {}
         self._im: dict[tuple, float] = {}
         self.building = building
-        self.model = None if building is None else building_model(building)
+        self.model = None if building is None else building.model()
         self._floors: dict[tuple[int, int], Motion] = {}
         self._floor_pga: dict[tuple[int, int], float] = {}
 
-    @cached_property
-    def n(self) -> int:
-        return self.m["n"]
-
-    @cached_property
-    def _template(self):
-        """The parameters of motion 0 (checked by the catalog)."""
-        values = dict(self.m["params"])
-        if self.m["sweep"] is not None:
-            values[self.m["sweep"]] = motion_value(self.m, 0)
-        return self.kind.Params(**values)
-
     def params(self, j: int):
-        """The catalog parameters of motion ``j`` (its value of the swept parameter, checked
-        with the spec, in the checked parameters of motion 0)."""
-        p = self._template
-        if self.m["sweep"] is None or j == 0:
-            return p
-        p = copy.copy(p)
-        object.__setattr__(p, self.m["sweep"], motion_value(self.m, j))
+        """The catalog parameters of motion ``j``: the checked parameters of motion 0 with
+        its value of the swept parameter (:meth:`~.spec.MotionAxis.params`; kept, up to
+        :data:`KEEP` of them)."""
+        p = self._params.get(j)
+        if p is None:
+            if len(self._params) >= KEEP:
+                self._params.clear()
+            p = self._params[j] = self.m.params(j)
         return p
 
     def id(self, j: int) -> str:
@@ -180,9 +182,12 @@ class MotionSet:
             self._cache = {j: m for j, m in self._cache.items() if j in wanted}
         if not missing:
             return
-        ps = [self.params(j) for j in missing]
-        made = (self.kind.make_many(ps, self.ctx) if self.kind.make_many is not None
-                else [self.kind.make(p, self.ctx) for p in ps])
+        if self.m.records is not None:  # read by the spec's check: not read again
+            made = [self.m.records[j] for j in missing]
+        else:
+            ps = [self.params(j) for j in missing]
+            made = (self.kind.make_many(ps, self.ctx) if self.kind.make_many is not None
+                    else [self.kind.make(p, self.ctx) for p in ps])
         self._cache.update(zip(missing, made, strict=True))
 
     def get(self, j: int) -> Motion:
@@ -194,7 +199,7 @@ class MotionSet:
 
     def _floor_motion(self, f: int, j: int) -> Motion:
         from ..buildings import FloorMotion
-        where = {self.building["axis"]: self.building["values"][f]}
+        where = {self.building.axis: self.building.values[f]}
         return FloorMotion(self.get(j), self.model, **where)
 
     def prepare_floors(self, fs, js) -> None:
@@ -259,9 +264,10 @@ class Campaign:
 
     def __init__(self, spec: CampaignSpec):
         self.spec = spec
-        self.motions = MotionSet(spec.motions, spec.seed, spec.base_dir, spec.building)
+        self.motions = MotionSet(spec.motion_axis, spec.seed, spec.base_dir,
+                                 spec.building_axis)
         self.levels = np.asarray(spec.levels, dtype=float)
-        self._dists = [distributions(nominal(block), spec.uncertain,
+        self._dists = [distributions(nominal(block), spec.uncertain_parameters.to_dict(),
                                      where=lambda k: f"uncertain.{k}")
                        for block in spec.blocks]
 
@@ -335,7 +341,7 @@ class Campaign:
         lf, pga, truncated = np.empty(n), np.empty(n), np.zeros(n, bool)
         floor_pga = np.empty(n)
         blocks, motions = [], []
-        uncertain = s.uncertain
+        uncertain = len(s.uncertain_parameters) > 0
         for r in range(n):
             b, j, f = int(bi[r]), int(ji[r]), int(fi[r])
             block = s.blocks[b]
@@ -346,8 +352,7 @@ class Campaign:
                 rng = np.random.default_rng(np.random.SeedSequence(
                     s.seed, spawn_key=(STREAM, int(draws[r]))))
                 v, truncated[r] = draw_parameters(nom, self._dists[b], rng)
-                if uncertain.keys() & {"alpha", "p", "mu"}:
-                    block = Block.from_params(v["alpha"], v["p"], v["mu"], name=block.name)
+                block = sample_block(block, v, self._dists[b])
                 mo = perturbed(self.motions.on_floor(f, j).scaled(scale), v["amplitude"],
                                v["noise"], rng)
             else:
@@ -356,7 +361,7 @@ class Campaign:
             for k in PARAMETERS:
                 vals[k][r] = v[k]
             pga[r] = self.motions.im(j, "pga") * abs(scale * v["amplitude"])
-            if s.building is not None:
+            if s.building_axis is not None:
                 floor_pga[r] = self.motions.floor_pga(f, j) * abs(scale * v["amplitude"])
             blocks.append(block)
             motions.append(mo)
@@ -377,7 +382,7 @@ class Campaign:
             "theta0": vals["theta0"], "theta0_truncated": truncated,
             "amplitude": vals["amplitude"], "noise": vals["noise"],
             "pga": pga,
-            **({"floor_pga": floor_pga} if s.building is not None else {}),
+            **({"floor_pga": floor_pga} if s.building_axis is not None else {}),
         })
         return table, blocks, motions
 
@@ -410,11 +415,11 @@ class Campaign:
     def _floor_columns(self, fi: np.ndarray) -> dict:
         """``floor`` (the floor number; with ``height_ratios`` its index there) and
         ``height_ratio`` (with ``height_ratios``); none without a building."""
-        b = self.spec.building
+        b = self.spec.building_axis
         if b is None:
             return {}
-        values = np.asarray(b["values"])
-        if b["axis"] == "floor":
+        values = np.asarray(b.values)
+        if b.axis == "floor":
             return {"floor": values[fi].astype(np.int64)}
         return {"floor": fi.astype(np.int64), "height_ratio": values[fi].astype(float)}
 

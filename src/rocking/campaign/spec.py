@@ -312,6 +312,206 @@ def grid(key: str, v, lo: float = 0.0, *, lo_open: bool = True) -> np.ndarray:
                     dtype=float)
 
 
+# ------------------------------------------------------------------ the checked tables
+def _frozen(v):
+    """``v`` with every list made a tuple (recursively): a value that nothing can change."""
+    if isinstance(v, list | tuple):
+        return tuple(_frozen(x) for x in v)
+    return v
+
+
+def _thawed(v):
+    """The inverse of :func:`_frozen`: tuples as lists (as TOML and JSON give them)."""
+    if isinstance(v, tuple):
+        return [_thawed(x) for x in v]
+    return v
+
+
+@dataclass(frozen=True)
+class MotionAxis:
+    """The checked ``[motions]`` table: the motion axis and the intensity axis
+    (:attr:`CampaignSpec.motion_axis`).
+
+    ``kind`` is the catalog's name (:data:`rocking.motions.catalog.KINDS`), ``template``
+    the checked parameters of motion 0 (the kind's ``Params``), ``fixed`` the names of the
+    parameters the spec gives one value, ``sweep`` the swept parameter (None: one motion),
+    ``n`` the number of motions, ``axis`` the key that sets them, ``values`` the swept
+    parameter's values (None for ``n = N``: the index itself), ``digests`` the content
+    digests of record files (None without files), and ``load_factors`` or ``im`` +
+    ``levels``. ``records`` holds the motions made while checking the record files (the
+    files are read once: :class:`rocking.campaign.plan.MotionSet` takes them); it is not
+    compared, and not pickled (a Dask worker reads the files it needs).
+    :meth:`to_dict` is the table as a plain dict (:attr:`CampaignSpec.motions`, the
+    manifest's ``motions``).
+
+    Examples
+    --------
+    >>> from rocking.campaign import EXAMPLE_SPEC, parse_spec
+    >>> axis = parse_spec(EXAMPLE_SPEC).motion_axis
+    >>> axis.kind, axis.n, axis.sweep, axis.load_factors
+    ('one_sine', 1, None, (1.0, 1.5, 2.0, 3.0))
+    >>> axis.params(0).period, axis.to_dict()["params"]
+    (0.5, {'period': 0.5, 'amplitude': 1.0})
+    """
+
+    kind: str
+    template: object
+    fixed: tuple[str, ...]
+    sweep: str | None
+    n: int
+    axis: str
+    values: tuple | None = None
+    digests: tuple[str, ...] | None = None
+    load_factors: tuple[float, ...] | None = None
+    im: str | None = None
+    levels: tuple[float, ...] | None = None
+    records: tuple | None = field(default=None, compare=False, repr=False)
+
+    def __getstate__(self) -> dict:
+        return {**self.__dict__, "records": None}
+
+    def __setstate__(self, state: dict) -> None:
+        for k, v in state.items():
+            object.__setattr__(self, k, v)
+
+    @property
+    def catalog_kind(self) -> catalog.MotionKind:
+        """The catalog entry of the motions."""
+        return catalog.KINDS[self.kind]
+
+    def value(self, j: int):
+        """The swept parameter's value of motion ``j`` (the index itself for ``n``)."""
+        return self.values[j] if self.values is not None else j
+
+    def params(self, j: int):
+        """The checked catalog parameters of motion ``j``: :attr:`template` with its
+        swept parameter's value (``dataclasses.replace``, checked again)."""
+        if self.sweep is None or j == 0:
+            return self.template
+        return dataclasses.replace(self.template, **{self.sweep: self.value(j)})
+
+    @property
+    def intensity_levels(self) -> tuple[float, ...]:
+        """The intensity axis: :attr:`levels` with ``im``, else :attr:`load_factors`."""
+        return self.levels if self.im is not None else self.load_factors
+
+    def to_dict(self) -> dict:
+        """The table as a plain dict, as the spec kept it before it was typed: ``kind``,
+        ``params`` (the fixed parameters), ``sweep``, ``n``, ``axis``, ``values`` (absent
+        for ``n``), ``digests`` (of record files), ``load_factors`` or ``im`` +
+        ``levels``."""
+        out = {"kind": self.kind,
+               "params": {k: getattr(self.template, k) for k in self.fixed},
+               "sweep": self.sweep, "n": self.n, "axis": self.axis}
+        if self.values is not None:
+            out["values"] = list(self.values)
+        if self.digests is not None:
+            out["digests"] = list(self.digests)
+        if self.im is None:
+            out["load_factors"] = list(self.load_factors)
+        else:
+            out["im"], out["levels"] = self.im, list(self.levels)
+        return out
+
+
+@dataclass(frozen=True)
+class Distribution:
+    """One checked ``[uncertain]`` entry: the ``parameter`` (a name of
+    :data:`rocking.analysis.montecarlo.PARAMETERS`) and its table's ``items`` (``dist``
+    and its parameters, in the spec's order; :mod:`rocking.analysis.distributions`).
+
+    Examples
+    --------
+    >>> from rocking.campaign.spec import Distribution
+    >>> d = Distribution("alpha", (("dist", "normal"), ("cov", 0.02)))
+    >>> d.dist, d.to_dict()
+    ('normal', {'dist': 'normal', 'cov': 0.02})
+    """
+
+    parameter: str
+    items: tuple[tuple[str, object], ...]
+
+    @property
+    def dist(self) -> str:
+        return dict(self.items)["dist"]
+
+    def to_dict(self) -> dict:
+        """The distribution as :func:`rocking.analysis.distributions.frozen` takes it."""
+        return {k: _thawed(v) for k, v in self.items}
+
+
+@dataclass(frozen=True)
+class UncertainParameters:
+    """The checked ``[uncertain]`` table (:attr:`CampaignSpec.uncertain_parameters`): one
+    :class:`Distribution` per uncertain parameter, in the spec's order. Its length is the
+    number of uncertain parameters; :meth:`to_dict` gives ``{parameter: distribution}``
+    for :func:`rocking.analysis.montecarlo.distributions` (and
+    :attr:`CampaignSpec.uncertain`).
+
+    Examples
+    --------
+    >>> from rocking.campaign import EXAMPLE_SPEC, parse_spec
+    >>> spec = parse_spec(EXAMPLE_SPEC + '[uncertain]\\nmu = {dist = "normal", cov = 0.01}\\n')
+    >>> u = spec.uncertain_parameters
+    >>> len(u), u.names, u.to_dict()
+    (1, ('mu',), {'mu': {'dist': 'normal', 'cov': 0.01}})
+    """
+
+    parameters: tuple[Distribution, ...] = ()
+
+    def __len__(self) -> int:
+        return len(self.parameters)
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return tuple(d.parameter for d in self.parameters)
+
+    def to_dict(self) -> dict:
+        return {d.parameter: d.to_dict() for d in self.parameters}
+
+
+@dataclass(frozen=True)
+class BuildingAxis:
+    """The checked ``[building]`` table (:attr:`CampaignSpec.building_axis`): ``params``
+    (the keys for :func:`~rocking.buildings.catalog.make_building`, as given), ``axis``
+    (``floor`` or ``height_ratio``), ``values`` (the floors or height ratios),
+    ``n_floors``, the modal ``periods`` (s), the building's ``name`` and its ``checked``
+    keys (SI). :meth:`model` builds the building; :meth:`to_dict` is the table as a plain
+    dict (:attr:`CampaignSpec.building`, the manifest's ``building``).
+
+    Examples
+    --------
+    >>> from rocking.campaign import EXAMPLE_SPEC, parse_spec
+    >>> b = parse_spec(EXAMPLE_SPEC + '[building]\\nkind = "shear"\\nstoreys = 2\\n'
+    ...                'period = 0.3\\nfloors = "all"\\n').building_axis
+    >>> b.axis, b.values, b.n_floors, b.model().n_floors
+    ('floor', (0, 1, 2), 2, 2)
+    """
+
+    params: tuple[tuple[str, object], ...]
+    axis: str
+    values: tuple
+    n_floors: int | None
+    periods: tuple[float, ...]
+    name: str
+    checked: tuple[tuple[str, object], ...]
+
+    def model(self):
+        """The :class:`~rocking.buildings.Building`."""
+        return buildings.make_building(self.params_dict())
+
+    def params_dict(self) -> dict:
+        """:attr:`params` as a dict (lists as TOML gave them)."""
+        return {k: _thawed(v) for k, v in self.params}
+
+    def to_dict(self) -> dict:
+        """``params``, ``axis``, ``values``, ``n_floors``, ``periods``, ``name`` and
+        ``checked``, as the spec kept them before they were typed."""
+        return {"params": self.params_dict(), "axis": self.axis, "values": list(self.values),
+                "n_floors": self.n_floors, "periods": list(self.periods), "name": self.name,
+                "checked": dict(self.checked)}
+
+
 # ------------------------------------------------------------------------------- blocks
 BLOCK_KEYS = {"name", *(k for f in factory.FORMS.values() for k in f.Params.names())}
 
@@ -512,28 +712,31 @@ def _digest(key: str, path: Path) -> str:
     return hashlib.sha256(data).hexdigest()[:16]
 
 
-def _read(kind: catalog.MotionKind, p, ctx: catalog.Context, where: str, param) -> str:
+def _read(kind: catalog.MotionKind, p, ctx: catalog.Context, where: str,
+          param) -> tuple[str, object]:
     """Read the files of motion ``p`` as a run will (refused if they cannot be read or
-    parsed); their content digest (``+`` between files)."""
+    parsed): their content digest (``+`` between files) and the motion made from them
+    (``("", None)`` when the motion names no file)."""
     given = [f for f in kind.files if getattr(p, f) is not None]
     if not given:
-        return ""
+        return "", None
     paths = [ctx.path(getattr(p, f)) for f in given]
     keys = [where if f == param else f"motions.{f}" for f in given]
     digest = "+".join(_digest(k, q) for k, q in zip(keys, paths, strict=True))
     try:
-        kind.make(p, ctx)
+        motion = kind.make(p, ctx)
     except RockingError as e:
         _fail(keys[0], f"{', '.join(q.name for q in paths)}: "
                        f"{(str(e).splitlines() or [type(e).__name__])[0]}")
     except (OSError, ValueError) as e:  # unreadable, not text, ...
         _fail(keys[0], f"cannot read {', '.join(map(str, paths))}: {type(e).__name__}: "
                        f"{(str(e).splitlines() or [''])[0]}")
-    return digest
+    return digest, motion
 
 
 def _checked(kind: catalog.MotionKind, t: dict, axis: _Axis, ctx: catalog.Context) -> dict:
-    """Every motion's parameters checked by the catalog; the normalized ``[motions]``."""
+    """Every motion's parameters checked by the catalog: the keys of :class:`MotionAxis`
+    but the intensity axis (``records``: the motions made from record files)."""
     fixed = {k: v for k, v in t.items() if k in kind.Params.names() and k != axis.param}
     n = axis.values if isinstance(axis.values, int) else len(axis.values)
     if n == 0:
@@ -541,24 +744,27 @@ def _checked(kind: catalog.MotionKind, t: dict, axis: _Axis, ctx: catalog.Contex
     values = [0] if isinstance(axis.values, int) else axis.values
     where = axis.where or [axis.key]
     template = _params(kind, fixed, axis.param, values[0], where[0])
-    out = {"kind": kind.name, "params": {k: getattr(template, k) for k in fixed},
+    out = {"kind": kind.name, "template": template, "fixed": tuple(fixed),
            "sweep": axis.param, "n": n, "axis": axis.key.removeprefix("motions.")}
     if axis.param == COUNTER:  # the index alone: the kind's check does not depend on it
         meta = {f.name: f.metadata for f in dataclasses.fields(kind.Params)}[COUNTER]
         ps = [template]
         if not isinstance(axis.values, int):
-            out["values"] = [_index(v, w, meta) for v, w in zip(values, where, strict=True)]
+            out["values"] = tuple(_index(v, w, meta)
+                                  for v, w in zip(values, where, strict=True))
     else:
         ps = [_params(kind, fixed, axis.param, v, w) for v, w in zip(values, where,
                                                                         strict=True)]
         if axis.param is not None:
-            out["values"] = [getattr(p, axis.param) for p in ps]
+            out["values"] = tuple(getattr(p, axis.param) for p in ps)
     if "values" in out and len(set(out["values"])) != n:
         _fail(axis.key, "has repeated values (one motion each)")
-    digests = ([_read(kind, p, ctx, w, axis.param) for p, w in zip(ps, where, strict=True)]
-               if kind.files else [])
-    if any(digests):  # record files (not a built-in set)
-        out["digests"] = digests
+    read = ([_read(kind, p, ctx, w, axis.param) for p, w in zip(ps, where, strict=True)]
+            if kind.files else [])
+    if any(d for d, _ in read):  # record files (not a built-in set)
+        out["digests"] = tuple(d for d, _ in read)
+        if all(m is not None for _, m in read) and len(read) == n:
+            out["records"] = tuple(m for _, m in read)
     return out
 
 
@@ -575,21 +781,18 @@ def _intensity(t: dict) -> dict:
     if has_lf and has_im:
         _fail("motions.load_factors", "give load_factors or im + levels, not both")
     if not has_im:
-        return {"load_factors": grid("motions.load_factors",
-                                     t.get("load_factors", [1.0])).tolist()}
+        return {"load_factors": tuple(grid("motions.load_factors",
+                                           t.get("load_factors", [1.0])).tolist())}
     if "im" not in t:
         _fail("motions.im", f"missing with levels (one of {', '.join(IMS)})")
     if "levels" not in t:
         _fail("motions.levels", f"missing with im = {t['im']!r}")
     return {"im": _string("motions.im", t["im"], tuple(IMS)),
-            "levels": grid("motions.levels", t["levels"]).tolist()}
+            "levels": tuple(grid("motions.levels", t["levels"]).tolist())}
 
 
-def _motions(t, base_dir: Path, seed: int) -> dict:
-    """The checked ``[motions]``: ``kind`` (the catalog's name), ``params`` (the fixed
-    parameters), ``sweep`` (the swept parameter or None), ``values`` (its values; absent
-    for ``n``), ``n``, ``axis`` (the key that sets it), ``digests`` (of record files), and
-    ``load_factors`` or ``im`` + ``levels``."""
+def _motions(t, base_dir: Path, seed: int) -> MotionAxis:
+    """The checked ``[motions]`` (:class:`MotionAxis`)."""
     t, renamed = _legacy(_table("motions", t))
     try:
         kind = _motion_kind(t)
@@ -599,31 +802,37 @@ def _motions(t, base_dir: Path, seed: int) -> dict:
     except SpecError as e:
         raise _renamed(e, renamed) from None
     out["axis"] = renamed.get(out["axis"], out["axis"])
-    return out
+    return MotionAxis(**out)
 
 
-def motion_kind(m: dict) -> catalog.MotionKind:
-    """The catalog entry of a checked ``[motions]`` table."""
-    return catalog.KINDS[m["kind"]]
+def motion_kind(m) -> catalog.MotionKind:
+    """The catalog entry of a checked ``[motions]`` table (a :class:`MotionAxis`, or its
+    :meth:`~MotionAxis.to_dict`)."""
+    return catalog.KINDS[m.kind if isinstance(m, MotionAxis) else m["kind"]]
 
 
-def motion_value(m: dict, j: int):
-    """The swept parameter's value of motion ``j`` of a checked ``[motions]`` table."""
+def motion_value(m, j: int):
+    """The swept parameter's value of motion ``j`` of a checked ``[motions]`` table (a
+    :class:`MotionAxis`, or its :meth:`~MotionAxis.to_dict`)."""
+    if isinstance(m, MotionAxis):
+        return m.value(j)
     return m["values"][j] if "values" in m else j
 
 
-def n_motions(m: dict) -> int:
-    """Number of motions of a checked ``[motions]`` table."""
-    return m["n"]
+def n_motions(m) -> int:
+    """Number of motions of a checked ``[motions]`` table (a :class:`MotionAxis`, or its
+    :meth:`~MotionAxis.to_dict`)."""
+    return m.n if isinstance(m, MotionAxis) else m["n"]
 
 
 # ----------------------------------------------------------------------------- building
 BUILDING_KEYS = {"kind", *(k for b in buildings.KINDS.values() for k in b.Params.names())}
 
 
-def building_model(b: dict):
-    """The :class:`~rocking.buildings.Building` of a checked ``[building]`` table."""
-    return buildings.make_building(b["params"])
+def building_model(b):
+    """The :class:`~rocking.buildings.Building` of a checked ``[building]`` table (a
+    :class:`BuildingAxis`, or its :meth:`~BuildingAxis.to_dict`)."""
+    return b.model() if isinstance(b, BuildingAxis) else buildings.make_building(b["params"])
 
 
 def _building_kind(t: dict) -> buildings.BuildingKind:
@@ -664,12 +873,8 @@ def _ratios(v, building) -> list[float]:
     return out
 
 
-def _building(raw: dict) -> dict | None:
-    """The checked ``[building]``: ``params`` (the keys for
-    :func:`~rocking.buildings.catalog.make_building`), ``axis`` (``floor`` or
-    ``height_ratio``), ``values`` (the floors or height ratios), ``n_floors``, the modal
-    ``periods`` (s), the building's ``name`` and its ``checked`` keys (SI); None without
-    the table."""
+def _building(raw: dict) -> BuildingAxis | None:
+    """The checked ``[building]`` (:class:`BuildingAxis`); None without the table."""
     if "building" not in raw:
         return None
     t = _table("building", raw["building"])
@@ -690,10 +895,11 @@ def _building(raw: dict) -> dict | None:
     else:
         axis, values = "height_ratio", _ratios(t["height_ratios"], b)
     checked = kind.Params(**{k: v for k, v in params.items() if k != "kind"}).to_dict()
-    return {"params": params, "axis": axis, "values": values, "n_floors": b.n_floors,
-            "periods": b.periods.tolist(), "name": b.name,
-            "checked": {"kind": kind.name, **{k: v for k, v in checked.items()
-                                              if v is not None}}}
+    return BuildingAxis(
+        params=tuple((k, _frozen(v)) for k, v in params.items()), axis=axis,
+        values=tuple(values), n_floors=b.n_floors, periods=tuple(b.periods.tolist()),
+        name=b.name, checked=(("kind", kind.name), *((k, v) for k, v in checked.items()
+                                                     if v is not None)))
 
 
 # ------------------------------------------------------------------------------- hazard
@@ -715,7 +921,7 @@ def _hazard_fail(e: ParameterError, given: dict) -> NoReturn:
     _fail("hazard.file" if "file" in given else "hazard", msg)
 
 
-def _hazard(raw: dict, base_dir: Path, motions: dict) -> dict | None:
+def _hazard(raw: dict, base_dir: Path, motions: MotionAxis) -> dict | None:
     """The checked ``[hazard]`` as the manifest's record (:func:`rocking.campaign.hazard.
     record`: the curve's points, IM, unit, label, source, ``t_years``); None without it.
     The file is read here, and a curve of another IM than the campaign's is refused."""
@@ -772,11 +978,11 @@ def _hazard(raw: dict, base_dir: Path, motions: dict) -> dict | None:
         if isinstance(e, SpecError):
             raise
         _hazard_fail(e, given)
-    im = site_hazard.campaign_im(motions.get("im"))
+    im = site_hazard.campaign_im(motions.im)
     why = site_hazard.mismatch(curve, im)
     if why is not None:
         _fail("hazard.file" if has_file else "hazard.pga_475",
-              f"{why} ({'motions.im' if motions.get('im') else 'no motions.im'})")
+              f"{why} ({'motions.im' if motions.im else 'no motions.im'})")
     return site_hazard.record(curve, source, t_years)
 
 
@@ -844,8 +1050,11 @@ class CampaignSpec:
     thresholds: tuple[float, ...]
     blocks: tuple
     """:class:`~rocking.Block` or :class:`~rocking.Stack` each (:func:`nominal`)."""
-    motions: dict
-    uncertain: dict
+    motion_axis: MotionAxis
+    """The checked ``[motions]`` (:class:`MotionAxis`; :attr:`motions` as a dict)."""
+    uncertain_parameters: UncertainParameters
+    """The checked ``[uncertain]`` (:class:`UncertainParameters`; :attr:`uncertain` as a
+    dict)."""
     chunk_size: int
     window: int | None
     options: dict
@@ -856,9 +1065,9 @@ class CampaignSpec:
     max_free_time: float | None = None
     """Cap (s) of the free rocking after each motion (``duration`` unset); None: the
     package's default (:data:`rocking.models.run.DEFAULT_MAX_FREE_TIME`)."""
-    building: dict | None = None
-    """The checked ``[building]`` (:func:`building_model` builds it), or None: the blocks
-    stand on the ground."""
+    building_axis: BuildingAxis | None = None
+    """The checked ``[building]`` (:class:`BuildingAxis`; :attr:`building` as a dict), or
+    None: the blocks stand on the ground."""
     mitigations: tuple = ()
     """The checked ``[[mitigation]]`` entries (:class:`Mitigation`), or ``()``: none given
     (the mitigation axis has size 1 and the table no ``mitigation`` column)."""
@@ -868,6 +1077,25 @@ class CampaignSpec:
     """The checked ``[hazard]``: the manifest's record of the site's hazard curve
     (:func:`rocking.campaign.hazard.record`), or None. Not in :attr:`hash`: it changes no
     run, only the report."""
+
+    @property
+    def motions(self) -> dict:
+        """The checked ``[motions]`` as a plain dict (:meth:`MotionAxis.to_dict`, a new one
+        each time; the manifest's ``motions``)."""
+        return self.motion_axis.to_dict()
+
+    @property
+    def uncertain(self) -> dict:
+        """The checked ``[uncertain]`` as ``{parameter: distribution}`` (a new dict each
+        time: :meth:`UncertainParameters.to_dict`)."""
+        return self.uncertain_parameters.to_dict()
+
+    @property
+    def building(self) -> dict | None:
+        """The checked ``[building]`` as a plain dict (:meth:`BuildingAxis.to_dict`, a new
+        one each time; :func:`building_model` builds it), or None: the blocks stand on the
+        ground."""
+        return None if self.building_axis is None else self.building_axis.to_dict()
 
     @property
     def runs(self) -> tuple[tuple[str, dict], ...]:
@@ -891,7 +1119,8 @@ class CampaignSpec:
         digest each), not where they are."""
         raw = {k: v for k, v in self.raw.items() if k not in ("run", "hazard")}
         raw["run"] = {k: v for k, v in self.raw.get("run", {}).items() if k != "window"}
-        content = {"raw": raw, "digests": self.motions.get("digests")}
+        digests = self.motion_axis.digests
+        content = {"raw": raw, "digests": None if digests is None else list(digests)}
         if self.block_digests:  # a mesh file's content (absent: the hash of older specs)
             content["block_digests"] = list(self.block_digests)
         return hashlib.sha256(json.dumps(content, sort_keys=True, default=str)
@@ -900,25 +1129,25 @@ class CampaignSpec:
     @property
     def levels(self) -> np.ndarray:
         """The intensity axis: load factors, or IM levels when ``im`` is set."""
-        return np.asarray(self.motions.get("levels", self.motions.get("load_factors")))
+        return np.asarray(self.motion_axis.intensity_levels)
 
     @property
     def im(self) -> str | None:
-        return self.motions.get("im")
+        return self.motion_axis.im
 
     @property
     def motion_kind(self) -> catalog.MotionKind:
         """The catalog entry of the motions."""
-        return motion_kind(self.motions)
+        return self.motion_axis.catalog_kind
 
     @property
     def n_motions(self) -> int:
-        return n_motions(self.motions)
+        return self.motion_axis.n
 
     @property
     def floors(self) -> list:
         """The floor axis: floor numbers or height ratios (``[0]`` without a building)."""
-        return [0] if self.building is None else list(self.building["values"])
+        return [0] if self.building_axis is None else list(self.building_axis.values)
 
     @property
     def axes(self) -> dict[str, int]:
@@ -999,7 +1228,8 @@ def _campaign(raw: dict) -> dict:
     return out
 
 
-def _uncertain(raw: dict, c: dict, blocks: tuple, motions: dict, models: tuple) -> dict:
+def _uncertain(raw: dict, c: dict, blocks: tuple, motions: MotionAxis,
+               models: tuple) -> UncertainParameters:
     """The checked ``[uncertain]`` table (each distribution against each block)."""
     uncertain = _table("uncertain", raw.get("uncertain", {}))
     _known("uncertain", uncertain, PARAMETERS)
@@ -1021,24 +1251,25 @@ def _uncertain(raw: dict, c: dict, blocks: tuple, motions: dict, models: tuple) 
     if geometry and "dem" in models:
         _fail(f"uncertain.{geometry[0]}", "not supported with model 'dem' (its geometry and "
                                           "contacts define alpha, p and mu; it starts at rest)")
-    if "noise" in uncertain and motion_kind(motions).vertical:
-        _fail("uncertain.noise", f"not supported with kind {motions['kind']!r} (the noise is "
+    if "noise" in uncertain and motions.catalog_kind.vertical:
+        _fail("uncertain.noise", f"not supported with kind {motions.kind!r} (the noise is "
                                  "added to samples of the horizontal component only)")
-    return uncertain
+    return UncertainParameters(tuple(
+        Distribution(k, tuple((key, _frozen(v)) for key, v in d.items()))
+        for k, d in uncertain.items()))
 
 
-def _check_size(c: dict, blocks: tuple, motions: dict, building: dict | None,
+def _check_size(c: dict, blocks: tuple, motions: MotionAxis, building: BuildingAxis | None,
                 n_mitigations: int = 0) -> None:
-    floors = [0] if building is None else building["values"]
+    floors = [0] if building is None else building.values
     shape = (len(c["models"]) * max(1, n_mitigations), len(blocks), len(floors),
-             n_motions(motions),
-             len(motions.get("levels", motions.get("load_factors", []))), c["samples"])
+             motions.n, len(motions.intensity_levels), c["samples"])
     if math.prod(shape) > MAX_SIMS:
         axes = {"mitigation" if n_mitigations else "campaign.model": shape[0],
                 "blocks": shape[1],
-                f"building.{building['axis']}s" if building else "building": shape[2],
-                f"motions.{motions['axis']}": shape[3],
-                "motions.levels" if "levels" in motions else "motions.load_factors": shape[4],
+                f"building.{building.axis}s" if building else "building": shape[2],
+                f"motions.{motions.axis}": shape[3],
+                "motions.levels" if motions.im else "motions.load_factors": shape[4],
                 "campaign.samples": shape[5]}
         key = max(axes, key=axes.get)
         _fail(key, f"the campaign would have {math.prod(shape):.3g} simulations ("
@@ -1110,13 +1341,23 @@ def _options(raw: dict, models) -> dict:
     return options
 
 
-class Mitigation(NamedTuple):
+@dataclass(frozen=True)
+class Mitigation:
     """A checked ``[[mitigation]]`` entry: its ``name``, the ``model`` it runs and that
-    model's ``options`` (``[options.<model>]`` with the entry's own over them, SI)."""
+    model's ``options`` (``[options.<model>]`` with the entry's own over them, SI; a dict
+    of its own, for :func:`rocking.simulate_many` and the manifest).
+
+    Examples
+    --------
+    >>> from rocking.campaign import EXAMPLE_SPEC, parse_spec
+    >>> mit = 'mitigation = [{name = "none"}, {name = "anchors", model = "anchored"}]\\n'
+    >>> [(m.name, m.model) for m in parse_spec(mit + EXAMPLE_SPEC).mitigations]
+    [('none', 'housner'), ('anchors', 'anchored')]
+    """
 
     name: str
     model: str
-    options: dict
+    options: dict = field(hash=False)
 
 
 def _mitigation_entries(raw: dict, c: dict) -> list[tuple[str, str, dict, bool]]:
@@ -1165,7 +1406,7 @@ def _mitigations(entries: list, options: dict) -> tuple[Mitigation, ...]:
         own = option_values(model, own, key)
         merged = {**options.get(model, {}), **own}
         _build_options(model, merged, key, own)
-        out.append(Mitigation(name, model, merged))
+        out.append(Mitigation(name, model, dict(merged)))
     return tuple(out)
 
 
@@ -1224,10 +1465,11 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
     hazard = _hazard(raw, Path(base_dir).resolve(), motions)
     return CampaignSpec(name=c["name"], seed=c["seed"], models=c["models"],
                         duration=c["duration"], samples=c["samples"],
-                        thresholds=c["thresholds"], blocks=blocks, motions=motions,
-                        uncertain=uncertain, chunk_size=chunk, window=window, options=options,
-                        text=text, raw=raw, base_dir=str(Path(base_dir).resolve()),
-                        max_free_time=c["max_free_time"], building=building,
+                        thresholds=c["thresholds"], blocks=blocks, motion_axis=motions,
+                        uncertain_parameters=uncertain, chunk_size=chunk, window=window,
+                        options=options, text=text, raw=raw,
+                        base_dir=str(Path(base_dir).resolve()),
+                        max_free_time=c["max_free_time"], building_axis=building,
                         mitigations=mitigations, block_digests=block_digests,
                         hazard=hazard)
 
@@ -1331,7 +1573,8 @@ def keys_table() -> str:
                  _motion_rows())
     out += ["", _legacy_text()]
     out += ["", "**`[uncertain]`**: `{dist = ...}` per parameter "
-            "(`rocking.analysis.montecarlo`):", ""]
+            "(`rocking.analysis.montecarlo`; a drawn `alpha`, `p` or `mu` of an asymmetric "
+            "block, e.g. a `mesh` block, scales both its sides by drawn / nominal):", ""]
     out += _rows(["key", "range"], [[f"`{k}`", RANGES[k]] for k in PARAMETERS])
     out += ["", "**`[run]`**", ""] + _rows(["key", "meaning"],
                                           [[f"`{k}`", h] for k, h in RUN_KEYS.items()])
