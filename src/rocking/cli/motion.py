@@ -526,6 +526,155 @@ def _spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta, T1, bname)
     return fig
 
 
+@dataclasses.dataclass(frozen=True)
+class FloorRequest:
+    """``rocking motion floor``'s options, read and checked (:meth:`from_options`): the
+    record, the building, the places of its floors to write, the spectra's periods and
+    damping."""
+
+    record: object
+    source: str
+    """The record as the user named it (a file or a built-in record)."""
+    building: object
+    places: list
+    """Keyword arguments of :class:`~rocking.buildings.FloorMotion`, bottom to top."""
+    height_ratios: str | None
+    """The text of ``--height-ratios`` (for messages)."""
+    periods: np.ndarray
+    damping: float
+    no_plots: bool
+    out: str
+
+    @classmethod
+    def from_options(cls, *, record, units, dt, building, storeys, building_period,
+                     building_damping, building_params, floors, height_ratios, damping,
+                     tmin, tmax, npts, no_plots, out):
+        """The request of the command's options (click's values)."""
+        from ..motions.spectra import log_periods
+
+        if building is None:
+            raise ParameterError("building: give --building KIND (sdof, shear, continuous, "
+                                 "modal; 'rocking buildings' lists them)")
+        zeta = _damping(damping)
+        t_lo, t_hi = _time(tmin, "tmin"), _time(tmax, "tmax")
+        n = integer(npts, "n", 2, 10000)
+        step = _time(dt, "dt")
+        bld, _ = make_building(building, storeys, building_period, building_damping,
+                               building_params)
+        places = floor_list(floors, height_ratios, bld)
+        T = log_periods(t_lo, t_hi, n)
+        rec, src = read_record_arg(record, "record", units, step)
+        return cls(record=rec, source=src, building=bld, places=places,
+                   height_ratios=height_ratios, periods=T, damping=zeta, no_plots=no_plots,
+                   out=out)
+
+
+def _floor_motions(req: FloorRequest) -> list:
+    """The FloorMotion of each place (a height ratio that is not a floor: in the flags'
+    words)."""
+    from ..buildings import FloorMotion
+
+    motions = []
+    for where in req.places:
+        try:
+            motions.append(FloorMotion(req.record, req.building, **where))
+        except ParameterError as e:  # a height ratio that is not a floor of the building
+            words = {"height_ratio": ("height-ratios", req.height_ratios)}
+            raise type(e)(one_line(in_flag_words(e, words))) from None
+    return motions
+
+
+def _floor_rows(req: FloorRequest, motions) -> list[dict]:
+    """The rows of floors.csv (with ``where``, for the terminal)."""
+    from ..buildings import asce7_hf, code_floor_spectrum_ec8
+
+    rec, bld = req.record, req.building
+    T1 = float(bld.periods[0])
+    heights = bld.heights
+    width = len(str(bld.n_floors or 0))
+    rows = []
+    for where, fm in zip(req.places, motions, strict=True):
+        if "floor" in where:
+            k = where["floor"]
+            z = float(heights[k]) if heights is not None else math.nan
+            name = f"floor_{k:0{width}d}.csv"
+        else:
+            k, z = None, where["height_ratio"]
+            name = f"height_ratio_{z:g}.csv"
+        known = not math.isnan(z)
+        rows.append({"floor": k, "height_ratio": z, "file": name, "pga_ms2": rec.pga,
+                     "pfa_ms2": fm.pga, "pfa_over_pga": fm.pga / rec.pga,
+                     "asce7_hf": float(asce7_hf(z, T1)) if known else math.nan,
+                     "ec8_rigid": float(code_floor_spectrum_ec8(0.0, 1.0, z, T1))
+                     if known else math.nan,
+                     "where": fm.where})
+    return rows
+
+
+def _write_floors(req: FloorRequest, rows, motions) -> list[str]:
+    """OUT: the floor records, floors.csv, floor_spectra.csv and the PNGs (unless
+    ``--no-plots``); the names of the PNGs written."""
+    import pandas as pd
+
+    from ..buildings import floor_spectrum
+    from ..motions.io import write_csv
+    from ..motions.spectra import response_spectrum
+
+    rec, T, zeta = req.record, req.periods, req.damping
+    folder = Path(req.out)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise click.ClickException(f"cannot create {folder}: {e.strerror or e}") from None
+    for r, fm in zip(rows, motions, strict=True):
+        write_csv(fm.record, folder / r["file"])
+    table = pd.DataFrame(rows).drop(columns="where")
+    table["floor"] = table["floor"].astype("Int64")
+    with atomic_path(folder / "floors.csv") as tmp:
+        table.to_csv(tmp, index=False, float_format="%.10g")
+    ground_psa = response_spectrum(rec, T, damping=zeta)
+    floor_psa = [floor_spectrum(fm, periods=T, damping=zeta) for fm in motions]
+    spectra = {"period_s": T, "ground_psa_ms2": ground_psa}
+    for r, psa in zip(rows, floor_psa, strict=True):
+        spectra[f"{r['file'][:-4]}_psa_ms2"] = psa
+    with atomic_path(folder / "floor_spectra.csv") as tmp:
+        pd.DataFrame(spectra).to_csv(tmp, index=False, float_format="%.10g")
+    if req.no_plots:
+        return []
+    bld = req.building
+    shown = _plotted(len(rows))
+    _save(_accelerations_figure(rec, rows, motions, shown, bld.name),
+          folder / "floor_accelerations.png")
+    _save(_spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta,
+                          float(bld.periods[0]), bld.name), folder / "floor_spectra.png")
+    return ["floor_accelerations.png", "floor_spectra.png"]
+
+
+def _echo_floors(req: FloorRequest, rows, motions, pngs) -> None:
+    """The terminal: the record, the building, one line per place, the files."""
+    rec, bld = req.record, req.building
+    Ts = ", ".join(f"{t:.3g}" for t in bld.periods[:4]) + (", ..." if bld.n_modes > 4
+                                                             else "")
+    click.echo(f"record      {req.source}: {len(rec)} samples, dt = {rec.dt:g} s, PGA "
+               f"{rec.pga:.4g} m/s^2 ({rec.pga / G:.3g} g)")
+    click.echo(f"building    {bld.name}: T = {Ts} s, damping "
+               f"{100 * float(bld.damping[0]):g} %")
+    click.echo(f"floors      dt = {motions[-1].step:g} s, ring-down to t = "
+               f"{max(fm.record.duration for fm in motions):.4g} s")
+    click.echo(f"{'where':>14} {'z/H':>6} {'PFA (g)':>8} {'PFA/PGA':>8} {'ASCE7 Hf':>9} "
+               f"{'EC8 rigid':>9}")
+    for r in rows:
+        z, hf, ec8 = (("-" if math.isnan(x) else f"{x:.4g}")
+                      for x in (r["height_ratio"], r["asce7_hf"], r["ec8_rigid"]))
+        click.echo(f"{r['where']:>14} {z:>6} {r['pfa_ms2'] / G:8.4g} "
+                   f"{r['pfa_over_pga']:8.4g} {hf:>9} {ec8:>9}")
+    if bld.heights is None and req.height_ratios is None:
+        click.echo(f"            (a {bld.kind} building without floor heights: no z/H, "
+                   "no code values)")
+    click.echo(f"wrote       {Path(req.out)}/: {len(rows)} floor records (CSV: t s, acc "
+               "m/s^2), floors.csv, floor_spectra.csv" + "".join(f", {p}" for p in pngs))
+
+
 @motion.command("floor")
 @click.argument("record")
 @click.option("--units", metavar="U",
@@ -550,9 +699,7 @@ def _spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta, T1, bname)
 @click.option("--no-plots", is_flag=True, help="Skip the PNGs.")
 @click.option("--out", required=True, type=click.Path(file_okay=False),
               help="Folder for the floor records, floors.csv, floor_spectra.csv and PNGs.")
-def floor_cmd(record, units, dt, building, storeys, building_period, building_damping,
-              building_params, floors, height_ratios, damping, tmin, tmax, npts, no_plots,
-              out):
+def floor_cmd(**options):
     """Filter the record RECORD through a building into the motion of its floors.
 
     RECORD is a file (.AT2, CSV or columns) or a built-in record's name (e.g.
@@ -562,99 +709,11 @@ def floor_cmd(record, units, dt, building, storeys, building_period, building_da
     (pseudo-acceleration, m/s^2) and the PNGs floor_accelerations.png and
     floor_spectra.png.
     """
-    import pandas as pd
-
-    from ..buildings import FloorMotion, asce7_hf, code_floor_spectrum_ec8, floor_spectrum
-    from ..motions.io import write_csv
-    from ..motions.spectra import log_periods, response_spectrum
-
-    if building is None:
-        raise ParameterError("building: give --building KIND (sdof, shear, continuous, "
-                             "modal; 'rocking buildings' lists them)")
-    zeta = _damping(damping)
-    t_lo, t_hi = _time(tmin, "tmin"), _time(tmax, "tmax")
-    n = integer(npts, "n", 2, 10000)
-    step = _time(dt, "dt")
-    bld, bdesc = make_building(building, storeys, building_period, building_damping,
-                               building_params)
-    places = floor_list(floors, height_ratios, bld)
-    T = log_periods(t_lo, t_hi, n)
-    rec, src = read_record_arg(record, "record", units, step)
-
-    motions = []
-    for where in places:
-        try:
-            motions.append(FloorMotion(rec, bld, **where))
-        except ParameterError as e:  # a height ratio that is not a floor of the building
-            words = {"height_ratio": ("height-ratios", height_ratios)}
-            raise type(e)(one_line(in_flag_words(e, words))) from None
-    T1 = float(bld.periods[0])
-    heights = bld.heights
-    width = len(str(bld.n_floors or 0))
-    rows = []
-    for where, fm in zip(places, motions, strict=True):
-        if "floor" in where:
-            k = where["floor"]
-            z = float(heights[k]) if heights is not None else math.nan
-            name = f"floor_{k:0{width}d}.csv"
-        else:
-            k, z = None, where["height_ratio"]
-            name = f"height_ratio_{z:g}.csv"
-        known = not math.isnan(z)
-        rows.append({"floor": k, "height_ratio": z, "file": name, "pga_ms2": rec.pga,
-                     "pfa_ms2": fm.pga, "pfa_over_pga": fm.pga / rec.pga,
-                     "asce7_hf": float(asce7_hf(z, T1)) if known else math.nan,
-                     "ec8_rigid": float(code_floor_spectrum_ec8(0.0, 1.0, z, T1))
-                     if known else math.nan,
-                     "where": fm.where})
-
-    folder = Path(out)
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as e:
-        raise click.ClickException(f"cannot create {folder}: {e.strerror or e}") from None
-    for r, fm in zip(rows, motions, strict=True):
-        write_csv(fm.record, folder / r["file"])
-    table = pd.DataFrame(rows).drop(columns="where")
-    table["floor"] = table["floor"].astype("Int64")
-    with atomic_path(folder / "floors.csv") as tmp:
-        table.to_csv(tmp, index=False, float_format="%.10g")
-    ground_psa = response_spectrum(rec, T, damping=zeta)
-    floor_psa = [floor_spectrum(fm, periods=T, damping=zeta) for fm in motions]
-    spectra = {"period_s": T, "ground_psa_ms2": ground_psa}
-    for r, psa in zip(rows, floor_psa, strict=True):
-        spectra[f"{r['file'][:-4]}_psa_ms2"] = psa
-    with atomic_path(folder / "floor_spectra.csv") as tmp:
-        pd.DataFrame(spectra).to_csv(tmp, index=False, float_format="%.10g")
-    pngs = []
-    if not no_plots:
-        shown = _plotted(len(rows))
-        _save(_accelerations_figure(rec, rows, motions, shown, bld.name),
-              folder / "floor_accelerations.png")
-        _save(_spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta, T1,
-                              bld.name), folder / "floor_spectra.png")
-        pngs = ["floor_accelerations.png", "floor_spectra.png"]
-
-    Ts = ", ".join(f"{t:.3g}" for t in bld.periods[:4]) + (", ..." if bld.n_modes > 4
-                                                             else "")
-    click.echo(f"record      {src}: {len(rec)} samples, dt = {rec.dt:g} s, PGA "
-               f"{rec.pga:.4g} m/s^2 ({rec.pga / G:.3g} g)")
-    click.echo(f"building    {bld.name}: T = {Ts} s, damping "
-               f"{100 * float(bld.damping[0]):g} %")
-    click.echo(f"floors      dt = {motions[-1].step:g} s, ring-down to t = "
-               f"{max(fm.record.duration for fm in motions):.4g} s")
-    click.echo(f"{'where':>14} {'z/H':>6} {'PFA (g)':>8} {'PFA/PGA':>8} {'ASCE7 Hf':>9} "
-               f"{'EC8 rigid':>9}")
-    for r in rows:
-        z, hf, ec8 = (("-" if math.isnan(x) else f"{x:.4g}")
-                      for x in (r["height_ratio"], r["asce7_hf"], r["ec8_rigid"]))
-        click.echo(f"{r['where']:>14} {z:>6} {r['pfa_ms2'] / G:8.4g} "
-                   f"{r['pfa_over_pga']:8.4g} {hf:>9} {ec8:>9}")
-    if heights is None and height_ratios is None:
-        click.echo(f"            (a {bld.kind} building without floor heights: no z/H, "
-                   "no code values)")
-    click.echo(f"wrote       {folder}/: {len(rows)} floor records (CSV: t s, acc m/s^2), "
-               "floors.csv, floor_spectra.csv" + "".join(f", {p}" for p in pngs))
+    req = FloorRequest.from_options(**options)
+    motions = _floor_motions(req)
+    rows = _floor_rows(req, motions)
+    pngs = _write_floors(req, rows, motions)
+    _echo_floors(req, rows, motions, pngs)
 
 
 # ----------------------------------------------------------------------------- select
