@@ -170,6 +170,48 @@ def motion():
     motion of a building's floors."""
 
 
+@dataclasses.dataclass(frozen=True)
+class SynthRequest:
+    """``rocking motion synth``'s options, read and checked (:meth:`from_options`)."""
+
+    count: int
+    first: int
+    seed: int
+    duration: float | None
+    dt: float | None
+    envelope: str
+    target: object
+    """The target spectrum: the paper's, or EC8's of ``--ag``."""
+    paper_target: bool
+    out: str
+    no_plots: bool
+
+    @classmethod
+    def from_options(cls, *, count, out, seed, first, duration, dt, envelope, ag, ground,
+                     stype, no_plots):
+        """The request of the command's options (click's values)."""
+        from ..motions.synthetic import PAPER_SEED
+
+        n = integer(count, "count", 1, 1000)
+        k0 = integer(first, "first", 0)
+        sd = PAPER_SEED if seed is None else integer(seed, "seed", 0)
+        dur = _time(duration, "duration")
+        step = _time(dt, "dt")
+        target, is_paper = _target(ag, ground, stype, 0.05)
+        return cls(count=n, first=k0, seed=sd, duration=dur, dt=step, envelope=envelope,
+                   target=target, paper_target=is_paper, out=out, no_plots=no_plots)
+
+    @property
+    def paper(self) -> bool:
+        """Whether the records are of the paper's set (taken from it: cached, identical
+        numbering)."""
+        from ..motions.synthetic import PAPER_COUNT, PAPER_SEED
+
+        return (self.paper_target and self.seed == PAPER_SEED and 1 <= self.first
+                and self.first + self.count - 1 <= PAPER_COUNT and self.duration is None
+                and self.dt is None and self.envelope == "jennings")
+
+
 @motion.command("synth")
 @click.option("--count", default="30", show_default=True, metavar="N",
               help="Number of records.")
@@ -190,7 +232,7 @@ def motion():
 @click.option("--type", "stype", type=click.Choice(["1", "2"]),
               help="EC8 spectrum type (with --ag; default 1).")
 @click.option("--no-plots", is_flag=True, help="Skip the PNG of each record.")
-def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype, no_plots):
+def synth_cmd(**options):
     """Generate spectrum-compatible synthetic earthquakes into OUT.
 
     Without options this writes the paper's set (our realisation: 30 records, seed 2007,
@@ -203,7 +245,6 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
     from ..motions.spectra import plot_spectra
     from ..motions.synthetic import (
         PAPER_COUNT,
-        PAPER_SEED,
         PERIOD_RANGE,
         Envelope,
         check_compatibility,
@@ -211,18 +252,14 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
         synthetic,
     )
 
-    n = integer(count, "count", 1, 1000)
-    k0 = integer(first, "first", 0)
-    sd = PAPER_SEED if seed is None else integer(seed, "seed", 0)
-    dur = _time(duration, "duration")
-    step = _time(dt, "dt")
-    target, is_paper = _target(ag, ground, stype, 0.05)
-    paper = (is_paper and sd == PAPER_SEED and 1 <= k0 and k0 + n - 1 <= PAPER_COUNT
-             and dur is None and step is None and envelope == "jennings")
+    req = SynthRequest.from_options(**options)
+    n, k0, sd, dur, step = req.count, req.first, req.seed, req.duration, req.dt
+    target, out, no_plots = req.target, req.out, req.no_plots
+    paper = req.paper
     if paper:  # records of the paper's set: take them from it (cached, identical numbering)
         recs = seed_earthquakes()[k0 - 1:k0 - 1 + n]
     else:
-        env = Envelope(envelope, duration=20.0 if dur is None else dur)
+        env = Envelope(req.envelope, duration=20.0 if dur is None else dur)
         recs = synthetic(target, n=n, seed=sd, envelope=env, first_number=k0,
                          dt=0.01 if step is None else step)
     folder = Path(out)
@@ -279,6 +316,38 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
                + ", spectra.png, summary.csv, compatibility.txt")
 
 
+@dataclasses.dataclass(frozen=True)
+class SpectrumRequest:
+    """``rocking motion spectrum``'s options, read and checked (:meth:`from_options`): the
+    record read, the periods and the damping."""
+
+    file: Path
+    record: object
+    units: str | None
+    periods: np.ndarray
+    damping: float
+    plot_path: str | None
+    no_plot: bool
+    target: str
+    as_json: bool
+
+    @classmethod
+    def from_options(cls, *, file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
+                     target, as_json):
+        """The request of the command's options (click's values)."""
+        from ..motions.spectra import log_periods
+
+        zeta = _damping(damping)
+        t_lo, t_hi = _time(tmin, "tmin"), _time(tmax, "tmax")
+        n = integer(npts, "n", 2, 10000)
+        step = _time(dt, "dt")
+        p = Path(file)
+        rec, _ = read_record_arg(p, "file", units, step)  # messages in option words
+        T = log_periods(t_lo, t_hi, n)
+        return cls(file=p, record=rec, units=units, periods=T, damping=zeta,
+                   plot_path=plot_path, no_plot=no_plot, target=target, as_json=as_json)
+
+
 @motion.command("spectrum")
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--units", metavar="U",
@@ -296,8 +365,7 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
 @click.option("--target", type=click.Choice(["none", "paper"]), default="none",
               show_default=True, help="Draw the paper's target spectrum on the plot.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of a table.")
-def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot, target,
-                 as_json):
+def spectrum_cmd(**options):
     """Print and plot the elastic response spectrum of the record FILE.
 
     FILE is a PEER NGA .AT2 file (always in g) or CSV/whitespace columns (t, acc) or one
@@ -306,15 +374,11 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
     from matplotlib.figure import Figure
 
     from ..motions.ec8 import paper_target
-    from ..motions.spectra import log_periods, plot_spectra, response_spectra
+    from ..motions.spectra import plot_spectra, response_spectra
 
-    zeta = _damping(damping)
-    t_lo, t_hi = _time(tmin, "tmin"), _time(tmax, "tmax")
-    n = integer(npts, "n", 2, 10000)
-    step = _time(dt, "dt")
-    p = Path(file)
-    rec, _ = read_record_arg(p, "file", units, step)  # messages in option words
-    T = log_periods(t_lo, t_hi, n)
+    req = SpectrumRequest.from_options(**options)
+    p, rec, units, T, zeta = req.file, req.record, req.units, req.periods, req.damping
+    plot_path, no_plot, target, as_json = req.plot_path, req.no_plot, req.target, req.as_json
     s = response_spectra(rec, T, zeta)
     im = rec.intensity_measures()
     if as_json:
@@ -346,6 +410,33 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
             click.echo(f"wrote       {out}")
 
 
+@dataclasses.dataclass(frozen=True)
+class ShowRequest:
+    """``rocking motion show``'s options, read and checked (:meth:`from_options`): the
+    components read, as ``(label, record, source)``."""
+
+    file: str
+    components: tuple
+    plot_path: str | None
+    no_plot: bool
+
+    @property
+    def vertical(self):
+        """The vertical record, or None."""
+        return self.components[1][1] if len(self.components) > 1 else None
+
+    @classmethod
+    def from_options(cls, *, file, vertical, units, dt, plot_path, no_plot):
+        """The request of the command's options (click's values)."""
+        step = _time(dt, "dt")
+        h, hs = read_record_arg(file, "file", units, step)
+        comps = [("horizontal", h, hs)]
+        if vertical is not None:
+            v, vs = read_record_arg(vertical, "vertical", units, step)
+            comps.append(("vertical", v, vs))
+        return cls(file=file, components=tuple(comps), plot_path=plot_path, no_plot=no_plot)
+
+
 @motion.command("show")
 @click.argument("file")
 @click.option("--vertical", metavar="V", help="Vertical component (positive upwards), a file "
@@ -356,7 +447,7 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
 @click.option("--plot", "plot_path", type=click.Path(dir_okay=False),
               help="PNG of both components (default: <file stem>_motion.png here).")
 @click.option("--no-plot", is_flag=True, help="Do not write a PNG.")
-def show_cmd(file, vertical, units, dt, plot_path, no_plot):
+def show_cmd(**options):
     """Summarise a record FILE and its vertical component: peaks, intensity, and where
     g + a_v <= 0 (the base falls faster than gravity: a block would leave the ground).
 
@@ -365,12 +456,10 @@ def show_cmd(file, vertical, units, dt, plot_path, no_plot):
     """
     from matplotlib.figure import Figure
 
-    step = _time(dt, "dt")
-    h, hs = read_record_arg(file, "file", units, step)
-    comps = [("horizontal", h, hs)]
-    if vertical is not None:
-        v, vs = read_record_arg(vertical, "vertical", units, step)
-        comps.append(("vertical", v, vs))
+    req = ShowRequest.from_options(**options)
+    file, comps, plot_path, no_plot = req.file, list(req.components), req.plot_path, req.no_plot
+    h, v = comps[0][1], req.vertical
+    vertical = None if v is None else comps[1][2]
     for label, rec, src in comps:
         im = rec.intensity_measures()
         click.echo(f"{label:<11} {src}: {len(rec)} samples, dt = {rec.dt:g} s, "
