@@ -29,6 +29,7 @@ service life (``--t-years``), in ``risk.csv``, ``report.md`` and the lines print
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import os
 import shutil
@@ -219,6 +220,44 @@ def upgrade_cmd(store):
     return 0
 
 
+@dataclasses.dataclass(frozen=True)
+class ReportRequest:
+    """``rocking campaign report``'s options, read and checked (:meth:`from_options`): the
+    store, the report's folder, the ``--hazard`` curve read (or None: the store's) and the
+    service life."""
+
+    store: str
+    out: str | None
+    hazard: tuple | None
+    """``(curve, source)`` of ``--hazard``, or None."""
+    t_years: float | None
+
+    @classmethod
+    def from_options(cls, *, store, out, hazard, site, investigation_time, max_distance_km,
+                     t_years):
+        """The request of the command's options (click's values)."""
+        from ..campaign.hazard import check_t_years, parse_site, read_hazard
+
+        if t_years is not None:
+            t_years = check_t_years(t_years, "--t-years")
+        for name, v in (("--site", site), ("--investigation-time", investigation_time),
+                        ("--max-distance-km", max_distance_km)):
+            if v is not None and hazard is None:
+                raise ParameterError(f"{name} applies with --hazard (the store's [hazard] "
+                                     "holds one site's curve, read as its spec says)")
+        read = None
+        if hazard is not None:
+            try:
+                read = read_hazard(hazard, site=None if site is None else parse_site(site),
+                                   investigation_time=investigation_time,
+                                   max_distance_km=max_distance_km)
+            except ParameterError as e:
+                msg = _option_names(str(e))
+                raise ParameterError(msg if msg.startswith("--") else
+                                     f"--hazard {msg.removeprefix('file: ')}") from None
+        return cls(store=store, out=out, hazard=read, t_years=t_years)
+
+
 @campaign.command("report", context_settings=CONTEXT)
 @click.argument("store", type=click.Path(file_okay=False))
 @click.option("--out", "out", default=None, metavar="DIR",
@@ -238,39 +277,21 @@ def upgrade_cmd(store):
 @click.option("--t-years", "t_years", default=None, type=float, metavar="YEARS",
               help="Service life of the probability 1 - exp(-lambda t) (default: the "
                    "[hazard]'s t_years, else 50).")
-def report_cmd(store, out, hazard, site, investigation_time, max_distance_km, t_years):
+def report_cmd(**options):
     """Fragility curves, P(overturn) tables and plots from STORE (rocking.analysis); with a
     hazard (the spec's [hazard], or --hazard) the annual frequency of overturning and its
     probability over the service life per block and mitigation (risk.csv)."""
     from ..campaign import Store, load
-    from ..campaign.hazard import (
-        DEFAULT_T_YEARS,
-        check_t_years,
-        parse_site,
-        read_hazard,
-        record,
-    )
+    from ..campaign.hazard import DEFAULT_T_YEARS, record
     from ..campaign.report import report, summary_lines
+
+    req = ReportRequest.from_options(**options)
+    store, out, t_years = req.store, req.out, req.t_years
     given = None
-    if t_years is not None:
-        t_years = check_t_years(t_years, "--t-years")
-    for name, v in (("--site", site), ("--investigation-time", investigation_time),
-                    ("--max-distance-km", max_distance_km)):
-        if v is not None and hazard is None:
-            raise ParameterError(f"{name} applies with --hazard (the store's [hazard] holds "
-                                 "one site's curve, read as its spec says)")
-    if hazard is not None:
-        try:
-            curve, src = read_hazard(hazard, site=None if site is None else parse_site(site),
-                                     investigation_time=investigation_time,
-                                     max_distance_km=max_distance_km)
-        except ParameterError as e:
-            msg = _option_names(str(e))
-            raise ParameterError(msg if msg.startswith("--") else
-                                 f"--hazard {msg.removeprefix('file: ')}") from None
     s = Store(store)
     manifest = s.manifest
-    if hazard is not None:  # the service life: --t-years, else the store's [hazard]'s
+    if req.hazard is not None:  # the service life: --t-years, else the store's [hazard]'s
+        curve, src = req.hazard
         stored = manifest.get("hazard") or {}
         given = record(curve, src, t_years if t_years is not None
                        else stored.get("t_years", DEFAULT_T_YEARS))

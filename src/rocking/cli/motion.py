@@ -55,6 +55,7 @@ raises :class:`~rocking.errors.RockingError`; the main entry point prints it as 
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import re
@@ -169,6 +170,48 @@ def motion():
     motion of a building's floors."""
 
 
+@dataclasses.dataclass(frozen=True)
+class SynthRequest:
+    """``rocking motion synth``'s options, read and checked (:meth:`from_options`)."""
+
+    count: int
+    first: int
+    seed: int
+    duration: float | None
+    dt: float | None
+    envelope: str
+    target: object
+    """The target spectrum: the paper's, or EC8's of ``--ag``."""
+    paper_target: bool
+    out: str
+    no_plots: bool
+
+    @classmethod
+    def from_options(cls, *, count, out, seed, first, duration, dt, envelope, ag, ground,
+                     stype, no_plots):
+        """The request of the command's options (click's values)."""
+        from ..motions.synthetic import PAPER_SEED
+
+        n = integer(count, "count", 1, 1000)
+        k0 = integer(first, "first", 0)
+        sd = PAPER_SEED if seed is None else integer(seed, "seed", 0)
+        dur = _time(duration, "duration")
+        step = _time(dt, "dt")
+        target, is_paper = _target(ag, ground, stype, 0.05)
+        return cls(count=n, first=k0, seed=sd, duration=dur, dt=step, envelope=envelope,
+                   target=target, paper_target=is_paper, out=out, no_plots=no_plots)
+
+    @property
+    def paper(self) -> bool:
+        """Whether the records are of the paper's set (taken from it: cached, identical
+        numbering)."""
+        from ..motions.synthetic import PAPER_COUNT, PAPER_SEED
+
+        return (self.paper_target and self.seed == PAPER_SEED and 1 <= self.first
+                and self.first + self.count - 1 <= PAPER_COUNT and self.duration is None
+                and self.dt is None and self.envelope == "jennings")
+
+
 @motion.command("synth")
 @click.option("--count", default="30", show_default=True, metavar="N",
               help="Number of records.")
@@ -189,7 +232,7 @@ def motion():
 @click.option("--type", "stype", type=click.Choice(["1", "2"]),
               help="EC8 spectrum type (with --ag; default 1).")
 @click.option("--no-plots", is_flag=True, help="Skip the PNG of each record.")
-def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype, no_plots):
+def synth_cmd(**options):
     """Generate spectrum-compatible synthetic earthquakes into OUT.
 
     Without options this writes the paper's set (our realisation: 30 records, seed 2007,
@@ -202,7 +245,6 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
     from ..motions.spectra import plot_spectra
     from ..motions.synthetic import (
         PAPER_COUNT,
-        PAPER_SEED,
         PERIOD_RANGE,
         Envelope,
         check_compatibility,
@@ -210,18 +252,14 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
         synthetic,
     )
 
-    n = integer(count, "count", 1, 1000)
-    k0 = integer(first, "first", 0)
-    sd = PAPER_SEED if seed is None else integer(seed, "seed", 0)
-    dur = _time(duration, "duration")
-    step = _time(dt, "dt")
-    target, is_paper = _target(ag, ground, stype, 0.05)
-    paper = (is_paper and sd == PAPER_SEED and 1 <= k0 and k0 + n - 1 <= PAPER_COUNT
-             and dur is None and step is None and envelope == "jennings")
+    req = SynthRequest.from_options(**options)
+    n, k0, sd, dur, step = req.count, req.first, req.seed, req.duration, req.dt
+    target, out, no_plots = req.target, req.out, req.no_plots
+    paper = req.paper
     if paper:  # records of the paper's set: take them from it (cached, identical numbering)
         recs = seed_earthquakes()[k0 - 1:k0 - 1 + n]
     else:
-        env = Envelope(envelope, duration=20.0 if dur is None else dur)
+        env = Envelope(req.envelope, duration=20.0 if dur is None else dur)
         recs = synthetic(target, n=n, seed=sd, envelope=env, first_number=k0,
                          dt=0.01 if step is None else step)
     folder = Path(out)
@@ -278,6 +316,38 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
                + ", spectra.png, summary.csv, compatibility.txt")
 
 
+@dataclasses.dataclass(frozen=True)
+class SpectrumRequest:
+    """``rocking motion spectrum``'s options, read and checked (:meth:`from_options`): the
+    record read, the periods and the damping."""
+
+    file: Path
+    record: object
+    units: str | None
+    periods: np.ndarray
+    damping: float
+    plot_path: str | None
+    no_plot: bool
+    target: str
+    as_json: bool
+
+    @classmethod
+    def from_options(cls, *, file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
+                     target, as_json):
+        """The request of the command's options (click's values)."""
+        from ..motions.spectra import log_periods
+
+        zeta = _damping(damping)
+        t_lo, t_hi = _time(tmin, "tmin"), _time(tmax, "tmax")
+        n = integer(npts, "n", 2, 10000)
+        step = _time(dt, "dt")
+        p = Path(file)
+        rec, _ = read_record_arg(p, "file", units, step)  # messages in option words
+        T = log_periods(t_lo, t_hi, n)
+        return cls(file=p, record=rec, units=units, periods=T, damping=zeta,
+                   plot_path=plot_path, no_plot=no_plot, target=target, as_json=as_json)
+
+
 @motion.command("spectrum")
 @click.argument("file", type=click.Path(dir_okay=False))
 @click.option("--units", metavar="U",
@@ -295,8 +365,7 @@ def synth_cmd(count, out, seed, first, duration, dt, envelope, ag, ground, stype
 @click.option("--target", type=click.Choice(["none", "paper"]), default="none",
               show_default=True, help="Draw the paper's target spectrum on the plot.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON instead of a table.")
-def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot, target,
-                 as_json):
+def spectrum_cmd(**options):
     """Print and plot the elastic response spectrum of the record FILE.
 
     FILE is a PEER NGA .AT2 file (always in g) or CSV/whitespace columns (t, acc) or one
@@ -305,15 +374,11 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
     from matplotlib.figure import Figure
 
     from ..motions.ec8 import paper_target
-    from ..motions.spectra import log_periods, plot_spectra, response_spectra
+    from ..motions.spectra import plot_spectra, response_spectra
 
-    zeta = _damping(damping)
-    t_lo, t_hi = _time(tmin, "tmin"), _time(tmax, "tmax")
-    n = integer(npts, "n", 2, 10000)
-    step = _time(dt, "dt")
-    p = Path(file)
-    rec, _ = read_record_arg(p, "file", units, step)  # messages in option words
-    T = log_periods(t_lo, t_hi, n)
+    req = SpectrumRequest.from_options(**options)
+    p, rec, units, T, zeta = req.file, req.record, req.units, req.periods, req.damping
+    plot_path, no_plot, target, as_json = req.plot_path, req.no_plot, req.target, req.as_json
     s = response_spectra(rec, T, zeta)
     im = rec.intensity_measures()
     if as_json:
@@ -345,6 +410,33 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
             click.echo(f"wrote       {out}")
 
 
+@dataclasses.dataclass(frozen=True)
+class ShowRequest:
+    """``rocking motion show``'s options, read and checked (:meth:`from_options`): the
+    components read, as ``(label, record, source)``."""
+
+    file: str
+    components: tuple
+    plot_path: str | None
+    no_plot: bool
+
+    @property
+    def vertical(self):
+        """The vertical record, or None."""
+        return self.components[1][1] if len(self.components) > 1 else None
+
+    @classmethod
+    def from_options(cls, *, file, vertical, units, dt, plot_path, no_plot):
+        """The request of the command's options (click's values)."""
+        step = _time(dt, "dt")
+        h, hs = read_record_arg(file, "file", units, step)
+        comps = [("horizontal", h, hs)]
+        if vertical is not None:
+            v, vs = read_record_arg(vertical, "vertical", units, step)
+            comps.append(("vertical", v, vs))
+        return cls(file=file, components=tuple(comps), plot_path=plot_path, no_plot=no_plot)
+
+
 @motion.command("show")
 @click.argument("file")
 @click.option("--vertical", metavar="V", help="Vertical component (positive upwards), a file "
@@ -355,7 +447,7 @@ def spectrum_cmd(file, units, dt, damping, tmin, tmax, npts, plot_path, no_plot,
 @click.option("--plot", "plot_path", type=click.Path(dir_okay=False),
               help="PNG of both components (default: <file stem>_motion.png here).")
 @click.option("--no-plot", is_flag=True, help="Do not write a PNG.")
-def show_cmd(file, vertical, units, dt, plot_path, no_plot):
+def show_cmd(**options):
     """Summarise a record FILE and its vertical component: peaks, intensity, and where
     g + a_v <= 0 (the base falls faster than gravity: a block would leave the ground).
 
@@ -364,12 +456,10 @@ def show_cmd(file, vertical, units, dt, plot_path, no_plot):
     """
     from matplotlib.figure import Figure
 
-    step = _time(dt, "dt")
-    h, hs = read_record_arg(file, "file", units, step)
-    comps = [("horizontal", h, hs)]
-    if vertical is not None:
-        v, vs = read_record_arg(vertical, "vertical", units, step)
-        comps.append(("vertical", v, vs))
+    req = ShowRequest.from_options(**options)
+    file, comps, plot_path, no_plot = req.file, list(req.components), req.plot_path, req.no_plot
+    h, v = comps[0][1], req.vertical
+    vertical = None if v is None else comps[1][2]
     for label, rec, src in comps:
         im = rec.intensity_measures()
         click.echo(f"{label:<11} {src}: {len(rec)} samples, dt = {rec.dt:g} s, "
@@ -525,6 +615,155 @@ def _spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta, T1, bname)
     return fig
 
 
+@dataclasses.dataclass(frozen=True)
+class FloorRequest:
+    """``rocking motion floor``'s options, read and checked (:meth:`from_options`): the
+    record, the building, the places of its floors to write, the spectra's periods and
+    damping."""
+
+    record: object
+    source: str
+    """The record as the user named it (a file or a built-in record)."""
+    building: object
+    places: list
+    """Keyword arguments of :class:`~rocking.buildings.FloorMotion`, bottom to top."""
+    height_ratios: str | None
+    """The text of ``--height-ratios`` (for messages)."""
+    periods: np.ndarray
+    damping: float
+    no_plots: bool
+    out: str
+
+    @classmethod
+    def from_options(cls, *, record, units, dt, building, storeys, building_period,
+                     building_damping, building_params, floors, height_ratios, damping,
+                     tmin, tmax, npts, no_plots, out):
+        """The request of the command's options (click's values)."""
+        from ..motions.spectra import log_periods
+
+        if building is None:
+            raise ParameterError("building: give --building KIND (sdof, shear, continuous, "
+                                 "modal; 'rocking buildings' lists them)")
+        zeta = _damping(damping)
+        t_lo, t_hi = _time(tmin, "tmin"), _time(tmax, "tmax")
+        n = integer(npts, "n", 2, 10000)
+        step = _time(dt, "dt")
+        bld, _ = make_building(building, storeys, building_period, building_damping,
+                               building_params)
+        places = floor_list(floors, height_ratios, bld)
+        T = log_periods(t_lo, t_hi, n)
+        rec, src = read_record_arg(record, "record", units, step)
+        return cls(record=rec, source=src, building=bld, places=places,
+                   height_ratios=height_ratios, periods=T, damping=zeta, no_plots=no_plots,
+                   out=out)
+
+
+def _floor_motions(req: FloorRequest) -> list:
+    """The FloorMotion of each place (a height ratio that is not a floor: in the flags'
+    words)."""
+    from ..buildings import FloorMotion
+
+    motions = []
+    for where in req.places:
+        try:
+            motions.append(FloorMotion(req.record, req.building, **where))
+        except ParameterError as e:  # a height ratio that is not a floor of the building
+            words = {"height_ratio": ("height-ratios", req.height_ratios)}
+            raise type(e)(one_line(in_flag_words(e, words))) from None
+    return motions
+
+
+def _floor_rows(req: FloorRequest, motions) -> list[dict]:
+    """The rows of floors.csv (with ``where``, for the terminal)."""
+    from ..buildings import asce7_hf, code_floor_spectrum_ec8
+
+    rec, bld = req.record, req.building
+    T1 = float(bld.periods[0])
+    heights = bld.heights
+    width = len(str(bld.n_floors or 0))
+    rows = []
+    for where, fm in zip(req.places, motions, strict=True):
+        if "floor" in where:
+            k = where["floor"]
+            z = float(heights[k]) if heights is not None else math.nan
+            name = f"floor_{k:0{width}d}.csv"
+        else:
+            k, z = None, where["height_ratio"]
+            name = f"height_ratio_{z:g}.csv"
+        known = not math.isnan(z)
+        rows.append({"floor": k, "height_ratio": z, "file": name, "pga_ms2": rec.pga,
+                     "pfa_ms2": fm.pga, "pfa_over_pga": fm.pga / rec.pga,
+                     "asce7_hf": float(asce7_hf(z, T1)) if known else math.nan,
+                     "ec8_rigid": float(code_floor_spectrum_ec8(0.0, 1.0, z, T1))
+                     if known else math.nan,
+                     "where": fm.where})
+    return rows
+
+
+def _write_floors(req: FloorRequest, rows, motions) -> list[str]:
+    """OUT: the floor records, floors.csv, floor_spectra.csv and the PNGs (unless
+    ``--no-plots``); the names of the PNGs written."""
+    import pandas as pd
+
+    from ..buildings import floor_spectrum
+    from ..motions.io import write_csv
+    from ..motions.spectra import response_spectrum
+
+    rec, T, zeta = req.record, req.periods, req.damping
+    folder = Path(req.out)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise click.ClickException(f"cannot create {folder}: {e.strerror or e}") from None
+    for r, fm in zip(rows, motions, strict=True):
+        write_csv(fm.record, folder / r["file"])
+    table = pd.DataFrame(rows).drop(columns="where")
+    table["floor"] = table["floor"].astype("Int64")
+    with atomic_path(folder / "floors.csv") as tmp:
+        table.to_csv(tmp, index=False, float_format="%.10g")
+    ground_psa = response_spectrum(rec, T, damping=zeta)
+    floor_psa = [floor_spectrum(fm, periods=T, damping=zeta) for fm in motions]
+    spectra = {"period_s": T, "ground_psa_ms2": ground_psa}
+    for r, psa in zip(rows, floor_psa, strict=True):
+        spectra[f"{r['file'][:-4]}_psa_ms2"] = psa
+    with atomic_path(folder / "floor_spectra.csv") as tmp:
+        pd.DataFrame(spectra).to_csv(tmp, index=False, float_format="%.10g")
+    if req.no_plots:
+        return []
+    bld = req.building
+    shown = _plotted(len(rows))
+    _save(_accelerations_figure(rec, rows, motions, shown, bld.name),
+          folder / "floor_accelerations.png")
+    _save(_spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta,
+                          float(bld.periods[0]), bld.name), folder / "floor_spectra.png")
+    return ["floor_accelerations.png", "floor_spectra.png"]
+
+
+def _echo_floors(req: FloorRequest, rows, motions, pngs) -> None:
+    """The terminal: the record, the building, one line per place, the files."""
+    rec, bld = req.record, req.building
+    Ts = ", ".join(f"{t:.3g}" for t in bld.periods[:4]) + (", ..." if bld.n_modes > 4
+                                                             else "")
+    click.echo(f"record      {req.source}: {len(rec)} samples, dt = {rec.dt:g} s, PGA "
+               f"{rec.pga:.4g} m/s^2 ({rec.pga / G:.3g} g)")
+    click.echo(f"building    {bld.name}: T = {Ts} s, damping "
+               f"{100 * float(bld.damping[0]):g} %")
+    click.echo(f"floors      dt = {motions[-1].step:g} s, ring-down to t = "
+               f"{max(fm.record.duration for fm in motions):.4g} s")
+    click.echo(f"{'where':>14} {'z/H':>6} {'PFA (g)':>8} {'PFA/PGA':>8} {'ASCE7 Hf':>9} "
+               f"{'EC8 rigid':>9}")
+    for r in rows:
+        z, hf, ec8 = (("-" if math.isnan(x) else f"{x:.4g}")
+                      for x in (r["height_ratio"], r["asce7_hf"], r["ec8_rigid"]))
+        click.echo(f"{r['where']:>14} {z:>6} {r['pfa_ms2'] / G:8.4g} "
+                   f"{r['pfa_over_pga']:8.4g} {hf:>9} {ec8:>9}")
+    if bld.heights is None and req.height_ratios is None:
+        click.echo(f"            (a {bld.kind} building without floor heights: no z/H, "
+                   "no code values)")
+    click.echo(f"wrote       {Path(req.out)}/: {len(rows)} floor records (CSV: t s, acc "
+               "m/s^2), floors.csv, floor_spectra.csv" + "".join(f", {p}" for p in pngs))
+
+
 @motion.command("floor")
 @click.argument("record")
 @click.option("--units", metavar="U",
@@ -549,9 +788,7 @@ def _spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta, T1, bname)
 @click.option("--no-plots", is_flag=True, help="Skip the PNGs.")
 @click.option("--out", required=True, type=click.Path(file_okay=False),
               help="Folder for the floor records, floors.csv, floor_spectra.csv and PNGs.")
-def floor_cmd(record, units, dt, building, storeys, building_period, building_damping,
-              building_params, floors, height_ratios, damping, tmin, tmax, npts, no_plots,
-              out):
+def floor_cmd(**options):
     """Filter the record RECORD through a building into the motion of its floors.
 
     RECORD is a file (.AT2, CSV or columns) or a built-in record's name (e.g.
@@ -561,99 +798,11 @@ def floor_cmd(record, units, dt, building, storeys, building_period, building_da
     (pseudo-acceleration, m/s^2) and the PNGs floor_accelerations.png and
     floor_spectra.png.
     """
-    import pandas as pd
-
-    from ..buildings import FloorMotion, asce7_hf, code_floor_spectrum_ec8, floor_spectrum
-    from ..motions.io import write_csv
-    from ..motions.spectra import log_periods, response_spectrum
-
-    if building is None:
-        raise ParameterError("building: give --building KIND (sdof, shear, continuous, "
-                             "modal; 'rocking buildings' lists them)")
-    zeta = _damping(damping)
-    t_lo, t_hi = _time(tmin, "tmin"), _time(tmax, "tmax")
-    n = integer(npts, "n", 2, 10000)
-    step = _time(dt, "dt")
-    bld, bdesc = make_building(building, storeys, building_period, building_damping,
-                               building_params)
-    places = floor_list(floors, height_ratios, bld)
-    T = log_periods(t_lo, t_hi, n)
-    rec, src = read_record_arg(record, "record", units, step)
-
-    motions = []
-    for where in places:
-        try:
-            motions.append(FloorMotion(rec, bld, **where))
-        except ParameterError as e:  # a height ratio that is not a floor of the building
-            words = {"height_ratio": ("height-ratios", height_ratios)}
-            raise type(e)(one_line(in_flag_words(e, words))) from None
-    T1 = float(bld.periods[0])
-    heights = bld.heights
-    width = len(str(bld.n_floors or 0))
-    rows = []
-    for where, fm in zip(places, motions, strict=True):
-        if "floor" in where:
-            k = where["floor"]
-            z = float(heights[k]) if heights is not None else math.nan
-            name = f"floor_{k:0{width}d}.csv"
-        else:
-            k, z = None, where["height_ratio"]
-            name = f"height_ratio_{z:g}.csv"
-        known = not math.isnan(z)
-        rows.append({"floor": k, "height_ratio": z, "file": name, "pga_ms2": rec.pga,
-                     "pfa_ms2": fm.pga, "pfa_over_pga": fm.pga / rec.pga,
-                     "asce7_hf": float(asce7_hf(z, T1)) if known else math.nan,
-                     "ec8_rigid": float(code_floor_spectrum_ec8(0.0, 1.0, z, T1))
-                     if known else math.nan,
-                     "where": fm.where})
-
-    folder = Path(out)
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as e:
-        raise click.ClickException(f"cannot create {folder}: {e.strerror or e}") from None
-    for r, fm in zip(rows, motions, strict=True):
-        write_csv(fm.record, folder / r["file"])
-    table = pd.DataFrame(rows).drop(columns="where")
-    table["floor"] = table["floor"].astype("Int64")
-    with atomic_path(folder / "floors.csv") as tmp:
-        table.to_csv(tmp, index=False, float_format="%.10g")
-    ground_psa = response_spectrum(rec, T, damping=zeta)
-    floor_psa = [floor_spectrum(fm, periods=T, damping=zeta) for fm in motions]
-    spectra = {"period_s": T, "ground_psa_ms2": ground_psa}
-    for r, psa in zip(rows, floor_psa, strict=True):
-        spectra[f"{r['file'][:-4]}_psa_ms2"] = psa
-    with atomic_path(folder / "floor_spectra.csv") as tmp:
-        pd.DataFrame(spectra).to_csv(tmp, index=False, float_format="%.10g")
-    pngs = []
-    if not no_plots:
-        shown = _plotted(len(rows))
-        _save(_accelerations_figure(rec, rows, motions, shown, bld.name),
-              folder / "floor_accelerations.png")
-        _save(_spectra_figure(rec, rows, T, ground_psa, floor_psa, shown, zeta, T1,
-                              bld.name), folder / "floor_spectra.png")
-        pngs = ["floor_accelerations.png", "floor_spectra.png"]
-
-    Ts = ", ".join(f"{t:.3g}" for t in bld.periods[:4]) + (", ..." if bld.n_modes > 4
-                                                             else "")
-    click.echo(f"record      {src}: {len(rec)} samples, dt = {rec.dt:g} s, PGA "
-               f"{rec.pga:.4g} m/s^2 ({rec.pga / G:.3g} g)")
-    click.echo(f"building    {bld.name}: T = {Ts} s, damping "
-               f"{100 * float(bld.damping[0]):g} %")
-    click.echo(f"floors      dt = {motions[-1].step:g} s, ring-down to t = "
-               f"{max(fm.record.duration for fm in motions):.4g} s")
-    click.echo(f"{'where':>14} {'z/H':>6} {'PFA (g)':>8} {'PFA/PGA':>8} {'ASCE7 Hf':>9} "
-               f"{'EC8 rigid':>9}")
-    for r in rows:
-        z, hf, ec8 = (("-" if math.isnan(x) else f"{x:.4g}")
-                      for x in (r["height_ratio"], r["asce7_hf"], r["ec8_rigid"]))
-        click.echo(f"{r['where']:>14} {z:>6} {r['pfa_ms2'] / G:8.4g} "
-                   f"{r['pfa_over_pga']:8.4g} {hf:>9} {ec8:>9}")
-    if heights is None and height_ratios is None:
-        click.echo(f"            (a {bld.kind} building without floor heights: no z/H, "
-                   "no code values)")
-    click.echo(f"wrote       {folder}/: {len(rows)} floor records (CSV: t s, acc m/s^2), "
-               "floors.csv, floor_spectra.csv" + "".join(f", {p}" for p in pngs))
+    req = FloorRequest.from_options(**options)
+    motions = _floor_motions(req)
+    rows = _floor_rows(req, motions)
+    pngs = _write_floors(req, rows, motions)
+    _echo_floors(req, rows, motions, pngs)
 
 
 # ----------------------------------------------------------------------------- select
@@ -889,6 +1038,388 @@ def same_motion_notes(spectra, indices, names, periods,
     return out
 
 
+# ----------------------------------------------------------------------------- select request
+def _max_scale(text) -> float:
+    """``--max-scale F``, a number >= 1."""
+    try:
+        ms = as_float("max-scale", text)
+    except ParameterError:
+        ms = math.nan
+    if not (math.isfinite(ms) and ms >= 1.0):
+        raise ParameterError(f"max-scale must be a number >= 1 (scale factors within "
+                             f"[1/F, F]), got {text!r}")
+    return ms
+
+
+def _target_kind(target) -> str:
+    """``ec8``, ``uhs`` (in any case) or the text of a table's path."""
+    kind = str(target).strip()
+    return kind.lower() if kind.lower() in ("ec8", "uhs") else kind
+
+
+def _check_target_flags(kind: str, ec8_flags: tuple, uhs_flags: tuple) -> None:
+    """The flags of a target kind given with another kind are refused (``uhs_flags``: the
+    hazard files, return period, site, hazard unit, investigation time, max distance)."""
+    if kind != "ec8" and any(ec8_flags):
+        raise ParameterError("ag, ground and type apply to --target ec8 only")
+    files, return_period, site, hazard_unit, investigation_time, max_distance_km = uhs_flags
+    if kind != "uhs" and (files or return_period or site or hazard_unit
+                          or investigation_time is not None or max_distance_km is not None):
+        raise ParameterError("hazard, return-period, site, hazard-unit, investigation-time "
+                             "and max-distance-km apply to --target uhs only")
+
+
+def _check_target(kind: str, target_unit, zeta: float, damping) -> None:
+    """``--target-unit`` with a table only, 5 % damping with ``uhs``, a table that exists."""
+    if kind in ("ec8", "uhs") and target_unit is not None:
+        raise ParameterError("target-unit applies to a target table (--target FILE.csv) "
+                             "only")
+    if kind == "uhs" and not math.isclose(zeta, 0.05):
+        raise ParameterError(f"damping must be 5% with --target uhs (hazard models give "
+                             f"5 %-damped SA), got {damping!r}")
+    if kind not in ("ec8", "uhs") and not Path(kind).is_file():
+        raise ParameterError(f"target must be ec8, uhs or a table file; no such file "
+                             f"{kind!r}")
+
+
+def _selection_periods(periods, specimen, params_set, width, height, alpha, p, mu):
+    """``(periods, period range description)``: ``--periods`` or the default range of the
+    block of the block flags (one of them)."""
+    from ..analysis.selection import default_periods
+
+    block_given = any(v is not None for v in (specimen, width, height, alpha)) \
+        or bool(mesh_flags())
+    if periods is not None and block_given:
+        raise ParameterError("periods: give --periods or a block (its default range), not "
+                             "both")
+    if periods is not None:
+        lo, hi, npts = period_range(periods)
+        T = np.geomspace(lo, hi, npts)
+        prange = {"source": "--periods", "text": str(periods),
+                  "why": "given (--periods)"}
+    elif block_given:
+        block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
+                                  allow_classical=True)
+        T = default_periods(block)
+        prange = {"source": "block", "block": {**binfo, "name": block.name, "p": block.p,
+                                               "alpha": block.alpha},
+                  "why": (f"default of the block {block.name} (p = {block.p:.4g} 1/s): "
+                          f"2 pi/(10 p) to 2 pi/p, the pulse periods that govern "
+                          f"overturning (omega_p/p from 1 to 10; "
+                          f"rocking.analysis.selection.default_periods)")}
+    else:
+        raise ParameterError("periods: give --periods TMIN:TMAX[:N] (s) or a block for its "
+                             "default range (--specimen N, --width W --height H, --alpha "
+                             "A --p P --mu MU, --mesh FILE)")
+    prange.update({"tmin_s": float(T[0]), "tmax_s": float(T[-1]), "n_periods": int(T.size)})
+    return T, prange
+
+
+@dataclasses.dataclass(frozen=True)
+class SelectRequest:
+    """``rocking motion select``'s options, read and checked before any file is read
+    (:meth:`from_options`); :func:`select_cmd` runs it."""
+
+    folder: str
+    target: str
+    """``ec8``, ``uhs`` or the path of a target table."""
+    count: str
+    """The text of ``--n`` (for messages)."""
+    n: int
+    max_scale: float
+    restarts: int
+    damping: float
+    units: str | None
+    dt: float | None
+    periods: np.ndarray
+    period_range: dict
+    periods_given: bool
+    ag: str | None
+    ground: str | None
+    stype: str | None
+    hazard_files: tuple[str, ...]
+    return_period: str | None
+    site: str | None
+    hazard_unit: str | None
+    investigation_time: float | None
+    max_distance_km: float | None
+    target_unit: str | None
+    out: str
+    no_plot: bool
+    as_json: bool
+
+    @classmethod
+    def from_options(cls, *, folder, target, count, max_scale, periods, specimen, params_set,
+                     width, height, alpha, p, mu, damping, units, dt, ag, ground, stype,
+                     hazard_files, return_period, site, hazard_unit, investigation_time,
+                     max_distance_km, target_unit, restarts, out, no_plot, as_json):
+        """The request of the command's options (click's values), checked in the order
+        of the flags' messages."""
+        from ..units import acceleration_unit
+
+        n = integer(count, "n", 1)
+        ms = _max_scale(max_scale)
+        k_restarts = integer(restarts, "restarts", 1, 1000)
+        zeta = _damping(damping)
+        if units is not None and acceleration_unit(units) is None:
+            raise ParameterError(f"units must be g, m/s^2, cm/s^2, gal or mm/s^2, got "
+                                 f"{units!r}")
+        step = _time(dt, "dt")
+        kind = _target_kind(target)
+        _check_target_flags(kind, (ag, ground, stype),
+                            (hazard_files, return_period, site, hazard_unit,
+                             investigation_time, max_distance_km))
+        inv_t = years_option(investigation_time)
+        dmax = km_option(max_distance_km)
+        _check_target(kind, target_unit, zeta, damping)
+        T, prange = _selection_periods(periods, specimen, params_set, width, height, alpha,
+                                       p, mu)
+        return cls(folder=folder, target=kind, count=count, n=n, max_scale=ms,
+                   restarts=k_restarts, damping=zeta, units=units, dt=step, periods=T,
+                   period_range=prange, periods_given=periods is not None, ag=ag,
+                   ground=ground, stype=stype, hazard_files=tuple(hazard_files),
+                   return_period=return_period, site=site, hazard_unit=hazard_unit,
+                   investigation_time=inv_t, max_distance_km=dmax, target_unit=target_unit,
+                   out=out, no_plot=no_plot, as_json=as_json)
+
+
+# ----------------------------------------------------------------------------- select steps
+def _ec8_target(req: SelectRequest):
+    """``(spectrum, description)`` of ``--target ec8``."""
+    spec, is_paper = _target(req.ag, req.ground, req.stype, req.damping)
+    return spec, {"kind": "ec8", "description": spec.describe(), "label": spec.name,
+                  "paper_target": is_paper, "ag": req.ag,
+                  "ground": (req.ground or "A").upper() if req.ag else None,
+                  "type": int(req.stype or 1) if req.ag else None}
+
+
+def _uhs_notes(files, curves, tr: float) -> list[str]:
+    """Notes on the hazard curves of a uniform hazard spectrum at ``tr`` years."""
+    notes = []
+    for f, c in zip(files, curves, strict=True):
+        if c.im_name.strip().upper() == "PGA":
+            notes.append(f"hazard {Path(f).name}: a PGA curve is not used (T = 0 "
+                         "has no log)")
+        elif not (c.rate[-1] <= 1.0 / tr <= c.rate[0]):
+            notes.append(f"hazard {Path(f).name}: 1/{tr:g} per year is beyond the "
+                         f"curve's rates: {c.im_name} extrapolated as a power law")
+        if c.approximate:
+            notes.append(f"hazard {Path(f).name}: an approximation ({c.label})")
+    return notes
+
+
+def _uhs_target(req: SelectRequest):
+    """``(periods, Sa, description, notes)`` of ``--target uhs``."""
+    from ..analysis.selection import uniform_hazard_spectrum
+
+    if not req.hazard_files:
+        raise ParameterError("hazard: --target uhs needs SA(T) hazard curves: "
+                             "--hazard FILE, repeatable (>= 2 periods)")
+    tr = _return_period(475.0 if req.return_period is None else req.return_period)
+    curves = [_hazard_curve(f, req.site, req.hazard_unit, req.investigation_time,
+                            req.max_distance_km) for f in req.hazard_files]
+    try:
+        tp, tv = uniform_hazard_spectrum(curves, tr)
+    except ParameterError as e:
+        raise ParameterError(f"hazard: {one_line(e)}") from None
+    used = [c for c in curves if c.im_name.strip().upper() != "PGA"]
+    notes = _uhs_notes(req.hazard_files, curves, tr)
+    desc = (f"uniform hazard spectrum at {tr:g} years (annual rate {1 / tr:.4g}) "
+            f"from {len(used)} SA curves, T = {tp[0]:g} to {tp[-1]:g} s, 5 % damping")
+    tinfo = {"kind": "uhs", "description": desc,
+             "label": f"uniform hazard spectrum, {tr:g} years", "return_period": tr,
+             "hazard": [{"file": str(f), "label": c.label, "im_name": c.im_name,
+                         "unit": c.unit, "approximate": c.approximate,
+                         "site_distance_km": getattr(c, "metadata", {}).get(
+                             "site_distance_km")}
+                        for f, c in zip(req.hazard_files, curves, strict=True)],
+             "uhs_period_s": tp.tolist(), "uhs_sa_ms2": tv.tolist()}
+    return tp, tv, tinfo, notes
+
+
+def _table_target(req: SelectRequest):
+    """``(periods, Sa, description, notes)`` of ``--target FILE``."""
+    tp, tv, tu, notes = read_target_table(req.target, req.target_unit)
+    name = Path(req.target).name
+    tinfo = {"kind": "table",
+             "description": f"table {name}: {tp.size} periods from {tp[0]:g} to "
+                            f"{tp[-1]:g} s, Sa in {tu}, {100 * req.damping:g} % damping",
+             "label": f"table {name}", "file": str(req.target), "unit": tu}
+    return tp, tv, tinfo, notes
+
+
+def _selection_target(req: SelectRequest):
+    """``(target of select_records, its description, notes)``; a tabulated target (uhs,
+    table) must cover the periods: it is not extrapolated."""
+    if req.target == "ec8":
+        spec, tinfo = _ec8_target(req)
+        return spec, tinfo, []
+    make = _uhs_target if req.target == "uhs" else _table_target
+    tp, tv, tinfo, notes = make(req)
+    T = req.periods
+    if T[0] < tp[0] * (1 - 1e-9) or T[-1] > tp[-1] * (1 + 1e-9):
+        what = "--periods" if req.periods_given else "the block's default range"
+        raise ParameterError(f"periods: {what} ({T[0]:.4g} to {T[-1]:.4g} s) reaches "
+                             f"beyond the target's periods ({tp[0]:.4g} to "
+                             f"{tp[-1]:.4g} s), which are not extrapolated: narrow "
+                             "--periods or extend the target")
+    return (tp, tv), tinfo, notes
+
+
+def _selection_candidates(req: SelectRequest):
+    """``(records, sources, files, skipped)`` of FOLDER (:func:`_read_candidates`), after
+    the checks of FOLDER and OUT; at least ``n`` records."""
+    folder = req.folder
+    src = Path(folder)
+    if not src.exists():
+        raise ParameterError(f"FOLDER: no such folder {folder!r}")
+    if not src.is_dir():
+        raise ParameterError(f"FOLDER: {folder!r} is not a folder (give the folder that "
+                             "holds the record files)")
+    dest = Path(req.out)
+    if dest.exists() and dest.resolve() == src.resolve():
+        raise ParameterError("out must not be FOLDER itself (the scaled records would "
+                             "become candidates of the next run)")
+    records, sources, files, skipped = _read_candidates(src, req.units, req.dt,
+                                                        float(req.periods[-1]))
+    if not records:
+        first = f"; e.g. {skipped[0][0]}: {skipped[0][1]}" if skipped else ""
+        raise ParameterError(f"FOLDER: no record file in {folder} ({len(files)} files, none "
+                             f"read{first})")
+    if req.n > len(records):
+        raise ParameterError(f"n must be <= the number of readable records in FOLDER "
+                             f"({len(records)} of {len(files)} files), got {req.count!r}")
+    return records, sources, files, skipped
+
+
+def _run_selection(req: SelectRequest, records, tfun):
+    """``(candidate spectra, SelectionResult)``: the spectra once per candidate, then
+    :func:`rocking.analysis.select_records` (its non-compliance warning is the command's
+    own; other warnings pass on)."""
+    from ..analysis.selection import candidate_spectra, select_records
+    from ..errors import PlausibilityWarning
+
+    S = candidate_spectra(records, req.periods, req.damping)  # once per candidate
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", PlausibilityWarning)
+        res = select_records(S, tfun, req.periods, n=req.n, max_scale=req.max_scale,
+                             damping=req.damping, restarts=req.restarts)
+    for w in caught:  # the non-compliance warning is ours below; others pass on
+        if not (issubclass(w.category, PlausibilityWarning)
+                and "NOT compliant" in str(w.message)):
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return S, res
+
+
+def _selection_rows(res, records, sources, n: int):
+    """``(rows of selection.csv, [(scaled record, file name, spectrum)])``, ranked by each
+    record's own misfit."""
+    from ..analysis.selection import log_misfit
+
+    per = [log_misfit(s, res.target) for s in res.spectra]
+    order = np.argsort(per, kind="stable")
+    width_ = max(2, len(str(n)))
+    rows, chosen = [], []
+    for rank, j in enumerate(order, 1):
+        i, s = int(res.indices[j]), float(res.scales[j])
+        rec = records[i].scaled(s)
+        stem = sources[i].stem
+        name = f"{rank:0{width_}d}_{stem}.csv"
+        ratio = res.spectra[j] / res.target
+        rows.append({"rank": rank, "file": name, "source": sources[i].name, "scale": s,
+                     "pga_ms2": rec.pga, "pga_g": rec.pga / G, "misfit": per[j],
+                     "min_ratio": float(ratio.min()), "max_ratio": float(ratio.max()),
+                     "dt_s": rec.dt, "npts": len(rec), "duration_s": rec.duration})
+        chosen.append((rec, name, res.spectra[j]))
+    return rows, chosen
+
+
+def _selection_figure(req: SelectRequest, res, label: str, path: Path) -> None:
+    """selection.png: the selection's spectra and the target, the period range marked."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(8.0, 5.0), layout="constrained")
+    ax = res.plot(ax=fig.add_subplot())
+    for x in (res.periods[0], res.periods[-1]):
+        ax.axvline(x, color="0.4", lw=0.8, ls=":")
+    ax.set_xlabel(f"period T (s): {res.periods[0]:.3g} to {res.periods[-1]:.3g} s, "
+                  + ("--periods" if req.periods_given else "the block's range "
+                     "2 pi/(10 p) to 2 pi/p"))
+    ax.set_ylabel(f"Sa (m/s^2), {100 * req.damping:g} % damping")
+    ax.set_title(f"{ax.get_title()}\ntarget: {label}", fontsize=10)
+    _save(fig, path)
+
+
+def _write_selection(req: SelectRequest, res, rows, chosen, summary: dict) -> None:
+    """OUT: the scaled records, selection.csv, selection_spectra.csv, selection.json and
+    (unless ``--no-plot``) selection.png."""
+    import pandas as pd
+
+    from ..analysis.selection import CODE_RATIO
+    from ..motions.io import write_csv
+
+    dest = Path(req.out)
+    try:
+        dest.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise click.ClickException(f"cannot create {dest}: {e.strerror or e}") from None
+    for rec, name, _ in chosen:
+        write_csv(rec, dest / name)
+    with atomic_path(dest / "selection.csv") as tmp:
+        pd.DataFrame(rows).to_csv(tmp, index=False, float_format="%.10g")
+    cols = {"period_s": res.periods, "target_ms2": res.target,
+            "target_90_ms2": CODE_RATIO * res.target, "mean_ms2": res.mean}
+    for _, name, s in chosen:
+        cols[f"{name[:-4]}_ms2"] = s
+    with atomic_path(dest / "selection_spectra.csv") as tmp:
+        pd.DataFrame(cols).to_csv(tmp, index=False, float_format="%.10g")
+    atomic_write(dest / "selection.json",
+                 json.dumps(summary, indent=2, default=json_default) + "\n")
+    if not req.no_plot:
+        _selection_figure(req, res, summary["target"]["label"], dest / "selection.png")
+
+
+def _echo_selection(req: SelectRequest, res, summary: dict) -> None:
+    """The terminal: the non-compliance warning (stderr), then selection.json (``--json``)
+    or the summary."""
+    n, ms, T = req.n, req.max_scale, req.periods
+    if not res.compliant:
+        click.echo(f"warning: the mean of the {n} selected records is "
+                   f"{100 * res.min_ratio:.1f} % of the target at worst (< 90 %, EN 1998-1 "
+                   f"3.2.3.1.2) with scale factors <= --max-scale {ms:g}: NOT compliant "
+                   "(compliant=false in selection.json)", err=True)
+    if req.as_json:
+        click.echo(json.dumps(summary, indent=2, default=json_default))
+        return
+    skipped = summary["skipped"]
+    click.echo(f"candidates  {summary['candidates']} records read in {summary['folder']} "
+               f"({summary['files']} files"
+               + (f", {len(skipped)} skipped)" if skipped else ")"))
+    for s in skipped[:SELECT_SHOWN_SKIPS]:
+        click.echo(f"skipped     {s['file']}: {s['reason']}")
+    if len(skipped) > SELECT_SHOWN_SKIPS:
+        click.echo(f"            ... {len(skipped) - SELECT_SHOWN_SKIPS} more "
+                   "(selection.json)")
+    click.echo(f"target      {summary['target']['description']}")
+    click.echo(f"periods     {T.size} from {T[0]:.4g} to {T[-1]:.4g} s: "
+               f"{req.period_range['why']}")
+    sc = res.scales
+    click.echo(f"selection   {n} records, scale factors {sc.min():.3g} to {sc.max():.3g} "
+               f"(max-scale {ms:g}), misfit {res.misfit:.3g} (RMS log ratio), mean >= "
+               f"{100 * res.min_ratio:.1f} % of the target: "
+               + ("compliant (>= 90 %)" if res.compliant else "NOT compliant (< 90 %)"))
+    click.echo(f"{'rank':>6}  {'scale':>7} {'PGA (g)':>8} {'misfit':>7} {'min ratio':>9}"
+               "  source")
+    for r in summary["records"]:
+        click.echo(f"{r['rank']:>6}  {r['scale']:7.3g} {r['pga_g']:8.3g} {r['misfit']:7.3g} "
+                   f"{r['min_ratio']:9.3g}  {r['source']}")
+    for note in summary["notes"]:
+        click.echo(f"note        {note}")
+    click.echo(f"wrote       {Path(req.out)}/: {n} records (CSV: t s, acc m/s^2; read back "
+               "with --units m/s^2), selection.csv, selection_spectra.csv, selection.json"
+               + ("" if req.no_plot else ", selection.png"))
+
+
 @motion.command("select")
 @click.argument("folder", metavar="FOLDER")
 @click.option("--target", "target", required=True, metavar="ec8|uhs|FILE",
@@ -945,10 +1476,7 @@ def same_motion_notes(spectra, indices, names, periods,
 @click.option("--no-plot", is_flag=True, help="Do not write selection.png.")
 @click.option("--json", "as_json", is_flag=True, help="Print selection.json instead of "
                                                       "the summary.")
-def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, width,
-               height, alpha, p, mu, damping, units, dt, ag, ground, stype, hazard_files,
-               return_period, site, hazard_unit, investigation_time, max_distance_km,
-               target_unit, restarts, out, no_plot, as_json):
+def select_cmd(**options):
     """Select N amplitude-scaled records from the files in FOLDER whose mean spectrum
     matches a target (EN 1998-1 3.2.3.1.2: the mean not below 90 % of the target at any
     period of the range; rocking.analysis.select_records).
@@ -988,259 +1516,25 @@ def select_cmd(folder, target, count, max_scale, periods, specimen, params_set, 
     it is the best the candidates allow, and the warning and the JSON say it is not
     compliant.
     """
-    from ..analysis.selection import (
-        CODE_RATIO,
-        candidate_spectra,
-        default_periods,
-        log_misfit,
-        select_records,
-        uniform_hazard_spectrum,
-    )
-    from ..errors import PlausibilityWarning
-    from ..motions.io import write_csv
-    from ..units import acceleration_unit
+    from ..analysis.selection import CODE_RATIO
 
-    # ---- options (all checked before the files are read)
-    n = integer(count, "n", 1)
-    try:
-        ms = as_float("max-scale", max_scale)
-    except ParameterError:
-        ms = math.nan
-    if not (math.isfinite(ms) and ms >= 1.0):
-        raise ParameterError(f"max-scale must be a number >= 1 (scale factors within "
-                             f"[1/F, F]), got {max_scale!r}")
-    k_restarts = integer(restarts, "restarts", 1, 1000)
-    zeta = _damping(damping)
-    if units is not None and acceleration_unit(units) is None:
-        raise ParameterError(f"units must be g, m/s^2, cm/s^2, gal or mm/s^2, got {units!r}")
-    step = _time(dt, "dt")
-    kind = str(target).strip()
-    kind = kind.lower() if kind.lower() in ("ec8", "uhs") else kind
-    if kind != "ec8" and (ag or ground or stype):
-        raise ParameterError("ag, ground and type apply to --target ec8 only")
-    if kind != "uhs" and (hazard_files or return_period or site or hazard_unit
-                          or investigation_time is not None or max_distance_km is not None):
-        raise ParameterError("hazard, return-period, site, hazard-unit, investigation-time "
-                             "and max-distance-km apply to --target uhs only")
-    inv_t = years_option(investigation_time)
-    dmax = km_option(max_distance_km)
-    if kind in ("ec8", "uhs") and target_unit is not None:
-        raise ParameterError("target-unit applies to a target table (--target FILE.csv) "
-                             "only")
-    if kind == "uhs" and not math.isclose(zeta, 0.05):
-        raise ParameterError(f"damping must be 5% with --target uhs (hazard models give "
-                             f"5 %-damped SA), got {damping!r}")
-    if kind not in ("ec8", "uhs") and not Path(kind).is_file():
-        raise ParameterError(f"target must be ec8, uhs or a table file; no such file "
-                             f"{kind!r}")
-    block_given = any(v is not None for v in (specimen, width, height, alpha)) \
-        or bool(mesh_flags())
-    if periods is not None and block_given:
-        raise ParameterError("periods: give --periods or a block (its default range), not "
-                             "both")
-    if periods is not None:
-        lo, hi, npts = period_range(periods)
-        T = np.geomspace(lo, hi, npts)
-        prange = {"source": "--periods", "text": str(periods),
-                  "why": "given (--periods)"}
-    elif block_given:
-        block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
-                                  allow_classical=True)
-        T = default_periods(block)
-        prange = {"source": "block", "block": {**binfo, "name": block.name, "p": block.p,
-                                               "alpha": block.alpha},
-                  "why": (f"default of the block {block.name} (p = {block.p:.4g} 1/s): "
-                          f"2 pi/(10 p) to 2 pi/p, the pulse periods that govern "
-                          f"overturning (omega_p/p from 1 to 10; "
-                          f"rocking.analysis.selection.default_periods)")}
-    else:
-        raise ParameterError("periods: give --periods TMIN:TMAX[:N] (s) or a block for its "
-                             "default range (--specimen N, --width W --height H, --alpha "
-                             "A --p P --mu MU, --mesh FILE)")
-    prange.update({"tmin_s": float(T[0]), "tmax_s": float(T[-1]), "n_periods": int(T.size)})
-
-    # ---- the target
-    notes: list[str] = []
-    tinfo: dict = {"kind": "ec8" if kind == "ec8" else "uhs" if kind == "uhs" else "table"}
-    if kind == "ec8":
-        spec, is_paper = _target(ag, ground, stype, zeta)
-        tfun = spec
-        tinfo.update({"description": spec.describe(), "label": spec.name,
-                      "paper_target": is_paper,
-                      "ag": ag, "ground": (ground or "A").upper() if ag else None,
-                      "type": int(stype or 1) if ag else None})
-    else:
-        if kind == "uhs":
-            if not hazard_files:
-                raise ParameterError("hazard: --target uhs needs SA(T) hazard curves: "
-                                     "--hazard FILE, repeatable (>= 2 periods)")
-            tr = _return_period(475.0 if return_period is None else return_period)
-            curves = [_hazard_curve(f, site, hazard_unit, inv_t, dmax)
-                      for f in hazard_files]
-            try:
-                tp, tv = uniform_hazard_spectrum(curves, tr)
-            except ParameterError as e:
-                raise ParameterError(f"hazard: {one_line(e)}") from None
-            used = [c for c in curves if c.im_name.strip().upper() != "PGA"]
-            for f, c in zip(hazard_files, curves, strict=True):
-                if c.im_name.strip().upper() == "PGA":
-                    notes.append(f"hazard {Path(f).name}: a PGA curve is not used (T = 0 "
-                                 "has no log)")
-                elif not (c.rate[-1] <= 1.0 / tr <= c.rate[0]):
-                    notes.append(f"hazard {Path(f).name}: 1/{tr:g} per year is beyond the "
-                                 f"curve's rates: {c.im_name} extrapolated as a power law")
-                if c.approximate:
-                    notes.append(f"hazard {Path(f).name}: an approximation ({c.label})")
-            desc = (f"uniform hazard spectrum at {tr:g} years (annual rate {1 / tr:.4g}) "
-                    f"from {len(used)} SA curves, T = {tp[0]:g} to {tp[-1]:g} s, 5 % damping")
-            tinfo.update({"description": desc, "label": f"uniform hazard spectrum, {tr:g} "
-                                                         "years", "return_period": tr,
-                          "hazard": [{"file": str(f), "label": c.label,
-                                      "im_name": c.im_name, "unit": c.unit,
-                                      "approximate": c.approximate,
-                                      "site_distance_km": getattr(c, "metadata", {}).get(
-                                          "site_distance_km")}
-                                     for f, c in zip(hazard_files, curves, strict=True)],
-                          "uhs_period_s": tp.tolist(), "uhs_sa_ms2": tv.tolist()})
-        else:
-            tp, tv, tu, tnotes = read_target_table(kind, target_unit)
-            notes += tnotes
-            tinfo.update({"description": f"table {Path(kind).name}: {tp.size} periods from "
-                                         f"{tp[0]:g} to {tp[-1]:g} s, Sa in {tu}, "
-                                         f"{100 * zeta:g} % damping",
-                          "label": f"table {Path(kind).name}", "file": str(kind),
-                          "unit": tu})
-        if T[0] < tp[0] * (1 - 1e-9) or T[-1] > tp[-1] * (1 + 1e-9):
-            what = "--periods" if periods is not None else "the block's default range"
-            raise ParameterError(f"periods: {what} ({T[0]:.4g} to {T[-1]:.4g} s) reaches "
-                                 f"beyond the target's periods ({tp[0]:.4g} to "
-                                 f"{tp[-1]:.4g} s), which are not extrapolated: narrow "
-                                 "--periods or extend the target")
-        tfun = (tp, tv)
-
-    # ---- the candidates
-    src = Path(folder)
-    if not src.exists():
-        raise ParameterError(f"FOLDER: no such folder {folder!r}")
-    if not src.is_dir():
-        raise ParameterError(f"FOLDER: {folder!r} is not a folder (give the folder that "
-                             "holds the record files)")
-    dest = Path(out)
-    if dest.exists() and dest.resolve() == src.resolve():
-        raise ParameterError("out must not be FOLDER itself (the scaled records would "
-                             "become candidates of the next run)")
-    records, sources, files, skipped = _read_candidates(src, units, step, float(T[-1]))
-    if not records:
-        first = f"; e.g. {skipped[0][0]}: {skipped[0][1]}" if skipped else ""
-        raise ParameterError(f"FOLDER: no record file in {folder} ({len(files)} files, none "
-                             f"read{first})")
-    if n > len(records):
-        raise ParameterError(f"n must be <= the number of readable records in FOLDER "
-                             f"({len(records)} of {len(files)} files), got {count!r}")
-    S = candidate_spectra(records, T, zeta)  # once per candidate
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", PlausibilityWarning)
-        res = select_records(S, tfun, T, n=n, max_scale=ms, damping=zeta,
-                             restarts=k_restarts)
-    for w in caught:  # the non-compliance warning is ours below; others pass on
-        if not (issubclass(w.category, PlausibilityWarning)
-                and "NOT compliant" in str(w.message)):
-            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    req = SelectRequest.from_options(**options)
+    tfun, tinfo, notes = _selection_target(req)
+    records, sources, files, skipped = _selection_candidates(req)
+    S, res = _run_selection(req, records, tfun)
     notes += res.notes
-    notes += same_motion_notes(S, res.indices, [p.name for p in sources], T)
-
-    # ---- rows, ranked by each record's own misfit
-    per = [log_misfit(s, res.target) for s in res.spectra]
-    order = np.argsort(per, kind="stable")
-    width_ = max(2, len(str(n)))
-    rows, chosen = [], []
-    for rank, j in enumerate(order, 1):
-        i, s = int(res.indices[j]), float(res.scales[j])
-        rec = records[i].scaled(s)
-        stem = sources[i].stem
-        name = f"{rank:0{width_}d}_{stem}.csv"
-        ratio = res.spectra[j] / res.target
-        rows.append({"rank": rank, "file": name, "source": sources[i].name, "scale": s,
-                     "pga_ms2": rec.pga, "pga_g": rec.pga / G, "misfit": per[j],
-                     "min_ratio": float(ratio.min()), "max_ratio": float(ratio.max()),
-                     "dt_s": rec.dt, "npts": len(rec), "duration_s": rec.duration})
-        chosen.append((rec, name, res.spectra[j]))
-
+    notes += same_motion_notes(S, res.indices, [p.name for p in sources], req.periods)
+    rows, chosen = _selection_rows(res, records, sources, req.n)
     summary = {
-        "folder": str(src), "files": len(files), "candidates": len(records),
+        "folder": str(Path(req.folder)), "files": len(files), "candidates": len(records),
         "skipped": [{"file": f, "reason": r} for f, r in skipped],
-        "target": tinfo, "period_range": prange, "damping": zeta, "n": n,
-        "max_scale": ms, "restarts": k_restarts, "misfit": res.misfit,
-        "min_ratio": res.min_ratio, "code_ratio": CODE_RATIO, "compliant": res.compliant,
-        "notes": notes, "records": rows, "records_units": "m/s^2",
-        "out": str(dest)}
-
-    # ---- files
-    try:
-        dest.mkdir(parents=True, exist_ok=True)
-    except OSError as e:
-        raise click.ClickException(f"cannot create {dest}: {e.strerror or e}") from None
-    import pandas as pd
-
-    for rec, name, _ in chosen:
-        write_csv(rec, dest / name)
-    with atomic_path(dest / "selection.csv") as tmp:
-        pd.DataFrame(rows).to_csv(tmp, index=False, float_format="%.10g")
-    cols = {"period_s": res.periods, "target_ms2": res.target,
-            "target_90_ms2": CODE_RATIO * res.target, "mean_ms2": res.mean}
-    for _, name, s in chosen:
-        cols[f"{name[:-4]}_ms2"] = s
-    with atomic_path(dest / "selection_spectra.csv") as tmp:
-        pd.DataFrame(cols).to_csv(tmp, index=False, float_format="%.10g")
-    atomic_write(dest / "selection.json",
-                 json.dumps(summary, indent=2, default=json_default) + "\n")
-    if not no_plot:
-        from matplotlib.figure import Figure
-
-        fig = Figure(figsize=(8.0, 5.0), layout="constrained")
-        ax = res.plot(ax=fig.add_subplot())
-        for x in (res.periods[0], res.periods[-1]):
-            ax.axvline(x, color="0.4", lw=0.8, ls=":")
-        ax.set_xlabel(f"period T (s): {res.periods[0]:.3g} to {res.periods[-1]:.3g} s, "
-                      + ("--periods" if periods is not None else "the block's range "
-                         "2 pi/(10 p) to 2 pi/p"))
-        ax.set_ylabel(f"Sa (m/s^2), {100 * zeta:g} % damping")
-        ax.set_title(f"{ax.get_title()}\ntarget: {tinfo['label']}", fontsize=10)
-        _save(fig, dest / "selection.png")
-
-    # ---- terminal
-    if not res.compliant:
-        click.echo(f"warning: the mean of the {n} selected records is "
-                   f"{100 * res.min_ratio:.1f} % of the target at worst (< 90 %, EN 1998-1 "
-                   f"3.2.3.1.2) with scale factors <= --max-scale {ms:g}: NOT compliant "
-                   "(compliant=false in selection.json)", err=True)
-    if as_json:
-        click.echo(json.dumps(summary, indent=2, default=json_default))
-        return
-    click.echo(f"candidates  {len(records)} records read in {src} ({len(files)} files"
-               + (f", {len(skipped)} skipped)" if skipped else ")"))
-    for f, r in skipped[:SELECT_SHOWN_SKIPS]:
-        click.echo(f"skipped     {f}: {r}")
-    if len(skipped) > SELECT_SHOWN_SKIPS:
-        click.echo(f"            ... {len(skipped) - SELECT_SHOWN_SKIPS} more "
-                   "(selection.json)")
-    click.echo(f"target      {tinfo['description']}")
-    click.echo(f"periods     {T.size} from {T[0]:.4g} to {T[-1]:.4g} s: {prange['why']}")
-    sc = res.scales
-    click.echo(f"selection   {n} records, scale factors {sc.min():.3g} to {sc.max():.3g} "
-               f"(max-scale {ms:g}), misfit {res.misfit:.3g} (RMS log ratio), mean >= "
-               f"{100 * res.min_ratio:.1f} % of the target: "
-               + ("compliant (>= 90 %)" if res.compliant else "NOT compliant (< 90 %)"))
-    click.echo(f"{'rank':>6}  {'scale':>7} {'PGA (g)':>8} {'misfit':>7} {'min ratio':>9}"
-               "  source")
-    for r in rows:
-        click.echo(f"{r['rank']:>6}  {r['scale']:7.3g} {r['pga_g']:8.3g} {r['misfit']:7.3g} "
-                   f"{r['min_ratio']:9.3g}  {r['source']}")
-    for note in notes:
-        click.echo(f"note        {note}")
-    click.echo(f"wrote       {dest}/: {n} records (CSV: t s, acc m/s^2; read back with "
-               "--units m/s^2), selection.csv, selection_spectra.csv, selection.json"
-               + ("" if no_plot else ", selection.png"))
+        "target": tinfo, "period_range": req.period_range, "damping": req.damping,
+        "n": req.n, "max_scale": req.max_scale, "restarts": req.restarts,
+        "misfit": res.misfit, "min_ratio": res.min_ratio, "code_ratio": CODE_RATIO,
+        "compliant": res.compliant, "notes": notes, "records": rows,
+        "records_units": "m/s^2", "out": str(Path(req.out))}
+    _write_selection(req, res, rows, chosen, summary)
+    _echo_selection(req, res, summary)
 
 
 __all__ = ["motion", "synth_cmd", "spectrum_cmd", "show_cmd", "floor_cmd", "floor_list",

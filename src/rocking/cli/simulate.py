@@ -489,6 +489,130 @@ def model_options(model: str, pairs, friction_angle=None, stiffness=None, dampin
     return opts
 
 
+# ----------------------------------------------------------------------------- request
+def _linear_option(model: str, linear: bool, options: dict) -> None:
+    """``--linear`` as the option ``linear=true`` (one way into the model's options)."""
+    if linear:
+        owners = models_with_option("linear")
+        if model not in owners:
+            raise ParameterError(f"linear applies to --model {' or '.join(owners)} only")
+        options["linear"] = True
+
+
+def _run_settings(dt_out, max_free_time, duration) -> dict:
+    """``dt_out`` and ``max_free_time`` of :func:`rocking.models.simulate`, where given
+    (``--max-free-time`` only without ``--duration``)."""
+    run = {}
+    if dt_out is not None:
+        run["dt_out"] = positive_quantity(dt_out, "time", "dt_out", "s", "s")
+    if max_free_time is not None:
+        if duration is not None:
+            raise ParameterError("max-free-time applies without --duration only (--duration "
+                                 "is the run's length exactly)")
+        mft = quantity(max_free_time, "time", "max-free-time", default_unit="s")
+        if not mft >= 0.0:
+            raise ParameterError(f"max-free-time must be >= 0 s, got {max_free_time!r}")
+        run["max_free_time"] = mft
+    return run
+
+
+@dataclasses.dataclass(frozen=True)
+class SimulateRequest:
+    """``rocking simulate``'s options, read and checked (:meth:`from_options`): the block,
+    the motion it stands on, the model with its options, the run's settings and where the
+    results go; :meth:`simulate` runs it."""
+
+    block: object
+    block_info: dict
+    motion: object
+    """The motion the block stands on (a FloorMotion with ``--building``), or None."""
+    motion_info: dict
+    floor_info: dict | None
+    duration: float | None
+    model: str
+    options: dict
+    linear: bool
+    theta0: float | None
+    omega0: float | None
+    run: dict
+    """``dt_out`` and ``max_free_time``, where given."""
+    out: str | None
+    as_json: bool
+
+    @classmethod
+    def from_options(cls, *, specimen, params_set, width, height, alpha, p, mu, model,
+                     model_opts, motion, freq, amp, tp, motion_params, duration,
+                     max_free_time, record, vertical, vertical_factor, units, dt, earthquake,
+                     load_factor, theta0, omega0, linear, dt_out, building, storeys,
+                     building_period, building_damping, building_params, floor,
+                     height_ratio, out, as_json, **model_flags):
+        """The request of the command's options (click's values; ``model_flags``: the
+        generated flags of the models' options)."""
+        block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
+                                  allow_classical=True)
+        mot, mdesc, sim_dur = make_motion(motion, freq, amp, tp, duration, record, units, dt,
+                                          load_factor, earthquake, vertical, vertical_factor,
+                                          params=motion_params)
+        mot, fdesc = on_floor(mot, {"kind": building, "storeys": storeys,
+                                    "period": building_period, "damping": building_damping,
+                                    "param": building_params}, floor, height_ratio)
+        options = model_options(model, model_opts, flags=model_flags_given(model_flags))
+        if mu is not None and model in models_with_option("mu"):
+            raise ParameterError(f"mu: --mu overrides the block's restitution, which --model "
+                                 f"{model} does not use (its option mu replaces it; default: "
+                                 "derived): give --option mu=VALUE")
+        _linear_option(model, linear, options)
+        th0 = quantity(theta0, "angle", "theta0", default_unit="rad")
+        om0 = number(omega0, "omega0", ("rad/s", "1/s"))
+        run = _run_settings(dt_out, max_free_time, sim_dur)
+        return cls(block=block, block_info=binfo, motion=mot, motion_info=mdesc,
+                   floor_info=fdesc, duration=sim_dur, model=model, options=options,
+                   linear=bool(options.get("linear", False)), theta0=th0, omega0=om0,
+                   run=run, out=out, as_json=as_json)
+
+    def simulate(self):
+        """The response of :func:`rocking.models.simulate`."""
+        from ..models import simulate  # lazy: the models import numba
+
+        return simulate(self.block, self.motion, model=self.model, duration=self.duration,
+                        theta0=0.0 if self.theta0 is None else self.theta0,
+                        omega0=0.0 if self.omega0 is None else self.omega0,
+                        **self.run, **self.options)
+
+
+def _summary(req: SimulateRequest, resp) -> dict:
+    """summary.json: the response's summary with the inputs of the run."""
+    block, binfo, fdesc = req.block, req.block_info, req.floor_info
+    summary = resp.summary()
+    inputs = {"block": {**binfo, "alpha": block.alpha, "p": block.p, "mu": block.mu,
+                        "R": block.R, "name": block.name},
+              "model": req.model, "linear": bool(req.linear), "motion": req.motion_info,
+              "theta0": req.theta0 or 0.0, "omega0": req.omega0 or 0.0}
+    if req.options:
+        inputs["options"] = req.options
+    inputs.update(req.run)
+    summary["specimen"] = binfo.get("specimen")
+    summary["params"] = binfo.get("params")
+    if fdesc is not None:  # where the block stands, also among the inputs
+        floor_keys = {k: v for k, v in fdesc.items() if k != "where"}
+        summary.update(floor_keys)
+        inputs.update(floor_keys)
+    summary["inputs"] = inputs
+    return summary
+
+
+def _write_outputs(req: SimulateRequest, resp, summary: dict) -> None:
+    """OUT: response.csv, summary.json and theta.png."""
+    folder = Path(req.out)
+    folder.mkdir(parents=True, exist_ok=True)
+    resp.to_csv(folder / "response.csv")
+    atomic_write(folder / "summary.json",
+                 json.dumps(summary, indent=2, default=json_default))
+    _theta_png(resp, req.block, req.motion_info, folder / "theta.png", req.floor_info)
+    if not req.as_json:
+        click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
+
+
 # ----------------------------------------------------------------------------- command
 @click.command("simulate", cls=ModelFlagsCommand, flag_help=FLAG_HELP,
                option_flags={"linear": "--linear"}, context_settings=CONTEXT)
@@ -542,88 +666,26 @@ def model_options(model: str, pairs, friction_angle=None, stiffness=None, dampin
               help="Write response.csv, summary.json and theta.png to this folder.")
 @click.option("--json", "as_json", is_flag=True,
               help="Print the summary (summary.json's content, SI units) as JSON.")
-def simulate_cmd(specimen, params_set, width, height, alpha, p, mu, model, model_opts, motion,
-                 freq, amp, tp, motion_params, duration, max_free_time, record, vertical,
-                 vertical_factor, units, dt, earthquake, load_factor, theta0, omega0, linear,
-                 dt_out, building, storeys, building_period, building_damping,
-                 building_params, floor, height_ratio, out, as_json, **model_flags):
+def simulate_cmd(**options):
     """Simulate one block under one base motion (on a floor of a building: --building)."""
-    from ..models import simulate  # lazy: the models import numba
-
-    block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
-                              allow_classical=True)
-    mot, mdesc, sim_dur = make_motion(motion, freq, amp, tp, duration, record, units, dt,
-                                      load_factor, earthquake, vertical, vertical_factor,
-                                      params=motion_params)
-    mot, fdesc = on_floor(mot, {"kind": building, "storeys": storeys,
-                                "period": building_period, "damping": building_damping,
-                                "param": building_params}, floor, height_ratio)
-    options = model_options(model, model_opts, flags=model_flags_given(model_flags))
-    if mu is not None and model in models_with_option("mu"):
-        raise ParameterError(f"mu: --mu overrides the block's restitution, which --model "
-                             f"{model} does not use (its option mu replaces it; default: "
-                             "derived): give --option mu=VALUE")
-    if linear:  # --linear is --option linear=true: one way into the model's options
-        owners = models_with_option("linear")
-        if model not in owners:
-            raise ParameterError(f"linear applies to --model {' or '.join(owners)} only")
-        options["linear"] = True
-    linear = bool(options.get("linear", False))
-    th0 = quantity(theta0, "angle", "theta0", default_unit="rad")
-    om0 = number(omega0, "omega0", ("rad/s", "1/s"))
-    run = {}
-    if dt_out is not None:
-        run["dt_out"] = positive_quantity(dt_out, "time", "dt_out", "s", "s")
-    if max_free_time is not None:
-        if sim_dur is not None:
-            raise ParameterError("max-free-time applies without --duration only (--duration "
-                                 "is the run's length exactly)")
-        mft = quantity(max_free_time, "time", "max-free-time", default_unit="s")
-        if not mft >= 0.0:
-            raise ParameterError(f"max-free-time must be >= 0 s, got {max_free_time!r}")
-        run["max_free_time"] = mft
-    resp = simulate(block, mot, model=model, duration=sim_dur,
-                    theta0=0.0 if th0 is None else th0, omega0=0.0 if om0 is None else om0,
-                    **run, **options)
-
-    summary = resp.summary()
-    inputs = {"block": {**binfo, "alpha": block.alpha, "p": block.p, "mu": block.mu,
-                        "R": block.R, "name": block.name},
-              "model": model, "linear": bool(linear), "motion": mdesc,
-              "theta0": th0 or 0.0, "omega0": om0 or 0.0}
-    if options:
-        inputs["options"] = options
-    inputs.update(run)
-    summary["specimen"] = binfo.get("specimen")
-    summary["params"] = binfo.get("params")
-    if fdesc is not None:  # where the block stands, also among the inputs
-        floor_keys = {k: v for k, v in fdesc.items() if k != "where"}
-        summary.update(floor_keys)
-        inputs.update(floor_keys)
-    summary["inputs"] = inputs
-
-    outputs = row_outputs(model_classes()[model], resp.info)
+    req = SimulateRequest.from_options(**options)
+    resp = req.simulate()
+    summary = _summary(req, resp)
+    outputs = row_outputs(model_classes()[req.model], resp.info)
     if outputs:
         summary["row_outputs"] = outputs
 
     if not resp.settled and not resp.lifted_off:
-        fix = "extend --duration" if sim_dur is not None else "raise --max-free-time"
+        fix = "extend --duration" if req.duration is not None else "raise --max-free-time"
         click.echo(f"warning: still rocking at the end (t = {resp.duration:.4g} s): the "
                    f"outcome may change; {fix}", err=True)
-    if as_json:
+    if req.as_json:
         click.echo(json.dumps(summary, indent=2, default=json_default))
     else:
-        click.echo("\n".join(_text_lines(resp, block, model, linear, mdesc, fdesc, outputs)))
-
-    if out is not None:
-        folder = Path(out)
-        folder.mkdir(parents=True, exist_ok=True)
-        resp.to_csv(folder / "response.csv")
-        atomic_write(folder / "summary.json",
-                     json.dumps(summary, indent=2, default=json_default))
-        _theta_png(resp, block, mdesc, folder / "theta.png", fdesc)
-        if not as_json:
-            click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
+        click.echo("\n".join(_text_lines(resp, req.block, req.model, req.linear,
+                                          req.motion_info, req.floor_info, outputs)))
+    if req.out is not None:
+        _write_outputs(req, resp, summary)
 
 
 def row_outputs(cls, info: dict) -> dict:
