@@ -60,7 +60,8 @@ from ..analysis.montecarlo import (
 )
 from ..blocks import Block
 from ..errors import ParameterError
-from ..models import MODELS, simulate_many
+from ..models import GENERIC_OUTPUTS, MODELS, PLANAR_OUTPUTS, simulate_many
+from ..models.base import empty_results
 from ..motions import GroundMotion, Motion, Record, catalog, sample
 from .spec import BuildingAxis, CampaignSpec, MotionAxis, nominal
 
@@ -95,6 +96,27 @@ def row_output_columns(models) -> dict:
         for o in MODELS[m].row_outputs:
             out.setdefault(o.name, o)
     return out
+
+
+SHARED_OUTPUTS = {o.name: o for o in GENERIC_OUTPUTS + PLANAR_OUTPUTS}
+"""The shared outputs of the models by name (:data:`rocking.models.GENERIC_OUTPUTS`,
+:data:`~rocking.models.PLANAR_OUTPUTS`): the declarations of the result columns."""
+
+
+def empty_columns(outputs, n: int) -> dict:
+    """``{name: array}``: ``n`` rows of each declared output at its "not reached" value
+    (NaN, 0 or False: :func:`rocking.models.base.empty_results`), as campaign columns.
+
+    Examples
+    --------
+    >>> from rocking.campaign.plan import SHARED_OUTPUTS, empty_columns
+    >>> cols = empty_columns([SHARED_OUTPUTS["overturned"], SHARED_OUTPUTS["n_impacts"]], 2)
+    >>> cols["overturned"], cols["n_impacts"]
+    (array([False, False]), array([0, 0]))
+    """
+    outputs = tuple(outputs)
+    res = empty_results(outputs, n)
+    return {o.name: np.ascontiguousarray(res[o.name]) for o in outputs}
 
 
 def column_units(models) -> dict:
@@ -456,15 +478,13 @@ class Campaign:
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         table, blocks, motions = self.inputs(ids)
         n = len(table)
-        out = {"max_abs_theta": np.full(n, np.nan), "overturned": np.zeros(n, bool),
-               "overturn_time": np.full(n, np.nan), "uplift_time": np.full(n, np.nan),
-               "n_impacts": np.zeros(n, np.int64), "settled": np.zeros(n, bool),
-               "status": np.zeros(n, np.int64)}
+        shared = ("max_abs_theta", "overturned", "overturn_time", "uplift_time", "n_impacts",
+                  "settled", "status") + (("lift_off_time",) if self.motions.kind.vertical
+                                          else ())
+        out = empty_columns([SHARED_OUTPUTS[k] for k in shared], n)
         if self.motions.kind.vertical:
-            out |= {"lift_off_time": np.full(n, np.nan), "lifted_off": np.zeros(n, bool)}
-        extra = row_output_columns(self.spec.run_models)
-        rows_out = {k: np.zeros(n, bool) if o.flag else np.full(n, np.nan)
-                    for k, o in extra.items()}
+            out["lifted_off"] = np.zeros(n, bool)
+        rows_out = empty_columns(row_output_columns(self.spec.run_models).values(), n)
         runs = self.spec.runs
         ri = np.unravel_index(ids, self.spec.shape)[0]
         theta0 = table["theta0"].to_numpy()
