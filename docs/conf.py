@@ -255,6 +255,22 @@ for _md in ("architecture", "cluster"):
     _write_if_changed(GENERATED / f"{_md}.rst",
                       docs_md.convert((HERE / f"{_md}.md").read_text(encoding="utf-8")))
 
+def _model_outputs_rst() -> str:
+    """Every registered model's states and declared outputs (``Model.outputs``), as a table."""
+    from rocking.models import MODELS
+
+    out = [".. list-table::", "   :header-rows: 1", "   :widths: 12 22 10 56", "",
+           "   * - model", "     - output", "     - unit", "     - meaning"]
+    for name, cls in MODELS.items():
+        for o in cls.outputs:
+            unit = "flag" if o.flag else ("count" if o.integer else (o.unit or "-"))
+            out += [f"   * - ``{name}``", f"     - ``{o.name}``", f"     - {unit}",
+                    f"     - {o.help}"]
+    return "\n".join(out) + "\n"
+
+
+_write_if_changed(GENERATED / "model_outputs.inc", _model_outputs_rst())
+
 # the verification manual: every case run at build time (``rocking verify`` prints the same)
 from rocking.verification import verification_rst  # noqa: E402
 

@@ -15,7 +15,15 @@ import rocking
 from rocking.models import register
 from rocking.motions import Rectangular, Sine
 
-register(Sliding)  # the one registry line
+
+@pytest.fixture(autouse=True, scope="module")
+def registered():
+    """Registered for this module's tests only (the other tests see the package's
+    models)."""
+    register(Sliding)  # the one registry line
+    yield
+    rocking.models.MODELS.pop("sliding")
+
 
 MU = 0.5
 BLOCK = rocking.specimen(3)

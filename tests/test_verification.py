@@ -158,9 +158,10 @@ def _flip_restitution(monkeypatch):
         return tuple(r)
 
     def kernel_params(self, dt_out, theta0, omega0):
-        r = list(params(self, dt_out, theta0, omega0))
+        mp = params(self, dt_out, theta0, omega0)
+        r = list(mp)
         r[2], r[9] = 1 / r[2], 1 / r[9]
-        return tuple(r)
+        return type(mp)(*r)  # the model's named tuple
 
     monkeypatch.setattr(Housner, "block_row", classmethod(block_row))
     monkeypatch.setattr(Housner, "kernel_params", kernel_params)

@@ -402,7 +402,8 @@ class DEMResponse(Response):
     :mod:`rocking.models.dem`."""
 
     def to_dataframe(self):
-        """``t``, ``theta``, ``omega``, ``x``, ``y`` (top block).
+        """``t``, ``theta``, ``omega``, ``x``, ``y`` (top block), then every state of the
+        model not among them (``x_cm``, ``y_cm``, ``vx_cm``, ``vy_cm``: the state vector).
 
         Examples
         --------
@@ -415,7 +416,7 @@ class DEMResponse(Response):
         >>> block = rocking.specimen(2)
         >>> r = rocking.simulate(block, theta0=0.5 * block.alpha, duration=0.5, model="dem")
         >>> df = r.to_dataframe()
-        >>> df.columns.tolist()
+        >>> df.columns.tolist()[:5]  # then the states not among them (x_cm, y_cm, ...)
         ['t', 'theta', 'omega', 'x', 'y']
         >>> a, R = block.alpha, block.R
         >>> round(float(df["x"][0]), 4), round(R * (math.sin(a / 2) - math.sin(a)), 4)
@@ -424,8 +425,8 @@ class DEMResponse(Response):
         (0.0054, 0.0054)
         """
         df = super().to_dataframe()
-        df["x"] = self.x
-        df["y"] = self.y
+        df.insert(3, "x", self.x)
+        df.insert(4, "y", self.y)
         return df
 
     def to_dict(self) -> dict:

@@ -40,7 +40,10 @@ def simulate_flags(ctx: click.Context | None = None) -> dict | None:
 def models_dict(flags: dict | None = None, names=None) -> list[dict]:
     """One dict per registered model (or per one of ``names``): ``name``, ``label``,
     ``options`` (describe(), with ``flag``: the flag of ``rocking simulate`` or None when
-    ``flags`` is given), ``row_outputs`` (``name``, ``unit``, ``flag``, ``help``)."""
+    ``flags`` is given), ``row_outputs`` (``name``, ``unit``, ``flag``, ``help``: the
+    model's own outputs), ``outputs`` (every declared output, ``Model.outputs``),
+    ``states`` (``Model.state_names``; ``"per body"`` where the bodies decide, as in the
+    DEM) and ``tags``."""
     out = []
     for name, cls in model_classes().items():
         if names is not None and name not in names:
@@ -51,7 +54,11 @@ def models_dict(flags: dict | None = None, names=None) -> list[dict]:
             for d in opts:
                 d["flag"] = flags.get(d["name"])
         rows = [dict(r._asdict()) for r in getattr(cls, "row_outputs", ())]
-        out.append({"name": name, "label": cls.label, "options": opts, "row_outputs": rows})
+        states = cls.state_names if isinstance(cls.state_names, tuple) else None
+        out.append({"name": name, "label": cls.label, "options": opts, "row_outputs": rows,
+                    "outputs": [dict(o._asdict()) for o in cls.outputs],
+                    "states": list(states) if states is not None else "per body",
+                    "tags": dict(cls.tags)})
     return out
 
 

@@ -181,10 +181,10 @@ class ModelOptions(Options):
 
 # ================================================================================ outputs
 Output = namedtuple("Output", ["name", "unit", "flag", "help", "integer"], defaults=(False,))
-"""A per-run output of a model (:attr:`Model.outputs`): its name (a result field, a batch
-array and a campaign column), its SI unit (``""`` if none), whether it is a flag (a bool),
-a one-line meaning, and whether it is an integer count (int64; otherwise float64, NaN
-where not reached). The kernel writes it as a field of its result record.
+Output.__doc__ = """A per-run output of a model (:attr:`Model.outputs`): its name (a result
+field, a batch array and a campaign column), its SI unit (``""`` if none), whether it is a
+flag (a bool), a one-line meaning, and whether it is an integer count (int64; otherwise
+float64, NaN where not reached). The kernel writes it as a field of its result record.
 
 Examples
 --------

@@ -312,8 +312,18 @@ def _initial(m: Model, motion, duration, theta0, omega0, state0, max_free_time):
 # ================================================================================= batch
 PackedMotions = namedtuple("PackedMotions", ["kinds", "prms", "samples", "nsamp", "t_ends",
                                              "h_scans", "t_quiets"])
-"""Motions packed for the batch kernels (:func:`pack_motions`): kind codes, parameters,
-padded samples and their counts, and each run's window (s) and scan step (s)."""
+PackedMotions.__doc__ = """Motions packed for the batch kernels (:func:`pack_motions`):
+kind codes, parameters, padded samples and their counts, and each run's window (s) and
+scan step (s).
+
+Examples
+--------
+>>> from rocking.models import pack_motions
+>>> from rocking.motions import OneSine
+>>> pm = pack_motions([OneSine(1.0, 0.5), OneSine(2.0, 0.25)], duration=2.0)
+>>> pm._fields[:4], pm.t_ends
+(('kinds', 'prms', 'samples', 'nsamp'), array([2., 2.]))
+"""
 
 
 def pack_motions(motions, duration=None, max_free_time=None) -> PackedMotions:
@@ -331,8 +341,9 @@ def pack_motions(motions, duration=None, max_free_time=None) -> PackedMotions:
     ...     [OneSine(1.0, 0.5), OneSine(2.0, 0.25)], duration=2.0)
     >>> kinds.shape, t_ends
     ((2,), array([2., 2.]))
-    >>> pack_motions([OneSine(1.0, 0.5)]).t_quiets  # the pulse's window, by name
-    array([2.5])
+    >>> pm = pack_motions([OneSine(1.0, 0.5)], duration=2.0)
+    >>> pm.t_ends, pm.t_quiets  # by name; an explicit duration: t_quiet = inf
+    (array([2.]), array([inf]))
     """
     if isinstance(motions, Motion):
         motions = [motions]
@@ -467,11 +478,21 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
             sub = Batch(*(a[idx] if isinstance(a, np.ndarray) else a for a in rows))
             mb = m if blocks[j] is blocks[0] else type(m)(blocks[j], m.options)
             if state0 is None and cls.initial_state is not Model.initial_state:
-                sub.y0[:] = mb.initial_state(t0, w0)  # the state of this block
+                y = mb.initial_state(t0, w0)  # the state of this block (its own size)
+                if y.size != ns:
+                    if return_histories:
+                        raise ParameterError(
+                            f"return_histories=True needs blocks with states of one size; "
+                            f"{blocks[0]!r} has {ns}, {blocks[j]!r} {y.size} (model "
+                            f"{cls.name!r}): run them in separate batches")
+                    sub = sub._replace(y0=np.empty((idx.size, y.size)),
+                                       states=np.empty((idx.size, 0, y.size)))
+                sub.y0[:] = y
             cls.batch_kernel(mb.kernel_params(dt_out, t0, w0), mb.extra_buffers(0), sub,
                              np.empty((idx.size, 0)))
             for name in BATCH_OUTPUTS:
-                getattr(rows, name)[idx] = getattr(sub, name)
+                if getattr(sub, name).shape[1:] == getattr(rows, name).shape[1:]:
+                    getattr(rows, name)[idx] = getattr(sub, name)
     out = result_arrays(cls.outputs, rows.res)
     status = out["status"]
     bad = np.flatnonzero(status)

@@ -141,9 +141,10 @@ class ModelStyle:
 
 
 def report_models() -> list[str]:
-    """Names of every registered model of the free-standing block, in registry order
-    (:data:`rocking.models.MODELS`; mitigation models, ``Model.mitigation``, are not
-    models of the paper's specimens and are left out).
+    """Names of every registered planar model of the free-standing block, in registry
+    order (:data:`rocking.models.MODELS`; mitigation models, ``Model.mitigation``, are not
+    models of the paper's specimens, and a model without a planar angle,
+    ``Model.tags["planar"]``, has none of the paper's quantities: both are left out).
 
     Examples
     --------
@@ -154,7 +155,8 @@ def report_models() -> list[str]:
     >>> sorted(set(available()) - set(report_models()))  # the mitigations
     ['anchored', 'isolated']
     """
-    return [name for name, cls in MODELS.items() if not cls.mitigation]
+    return [name for name, cls in MODELS.items()
+            if not cls.mitigation and cls.tags.get("planar")]
 
 
 def model_style(name: str) -> ModelStyle:
