@@ -271,6 +271,20 @@ def _model_outputs_rst() -> str:
 
 _write_if_changed(GENERATED / "model_outputs.inc", _model_outputs_rst())
 
+
+def _toy_model_source() -> str:
+    """The toy model of the guide's "How to add a model" (``tests/sliding_model.py`` of the
+    repository this ``rocking`` was imported from, or beside this folder)."""
+    import rocking
+
+    for tests in (Path(rocking.__file__).resolve().parents[2] / "tests", HERE.parent / "tests"):
+        if (tests / "sliding_model.py").is_file():
+            return (tests / "sliding_model.py").read_text(encoding="utf-8")
+    return "# tests/sliding_model.py: see the repository's tests folder\n"
+
+
+_write_if_changed(GENERATED / "sliding_model.py", _toy_model_source())
+
 # the verification manual: every case run at build time (``rocking verify`` prints the same)
 from rocking.verification import verification_rst  # noqa: E402
 
