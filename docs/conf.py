@@ -265,7 +265,7 @@ def _model_outputs_rst() -> str:
         for o in cls.outputs:
             unit = "flag" if o.flag else ("count" if o.integer else (o.unit or "-"))
             out += [f"   * - ``{name}``", f"     - ``{o.name}``", f"     - {unit}",
-                    f"     - {o.help}"]
+                    f"     - {o.help.replace('|', chr(92) + '|')}"]
     return "\n".join(out) + "\n"
 
 
