@@ -156,20 +156,20 @@ def _acc(th, t, s, alpha, p2, ka, kind, prm, samples):
 # ---- the model's part of the shared step loop (:func:`rocking.models._numerics.loop.run`);
 # ``mp = (alpha, p, mu, q, kappa, rigid, p2, c, th_b, rest_tol, free_rest_tol)``, its state
 # ``xs = (bp, bm, t_break_p, t_break_m, max_force)`` (bp, bm: the anchor +, - has broken)
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _ka(mp, xs, s):
     """The elastic anchor's stiffness on pivot ``s`` while it is intact, else 0."""
     intact_s = (not xs[0]) if s > 0.0 else (not xs[1])
     return mp[4] if (intact_s and not mp[5]) else 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _rhs_args(mp, xs, s, kind, prm, samples):
     """The arguments of :func:`_acc` on pivot ``s``."""
     return (s, mp[0], mp[6], _ka(mp, xs, s), kind, prm, samples)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _start(mp, resting, s, th0):
     """Already lifted: a rigid anchor on that side has given way, an elastic one if
     stretched to its strength."""
@@ -186,7 +186,7 @@ def _start(mp, resting, s, th0):
     return bp, bm, tbp, tbm, fmax
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _at_rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, out_om, t_up):
     """:func:`_rest`; at the uplift a rigid (or zero-strength) anchor on that side breaks."""
     q, rigid = mp[3], mp[5]
@@ -204,7 +204,7 @@ def _at_rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, ou
     return t, k, d, t_up, (bp, bm, tbp, tbm, fmax)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _cap(mp, xs, th, om, s, t, free_time, peak):
     """The cap of the free motion: decided by energy unless an elastic anchor is intact."""
     if (not mp[5]) and ((not xs[0]) or (not xs[1])):
@@ -213,7 +213,7 @@ def _cap(mp, xs, th, om, s, t, free_time, peak):
     return decided, decided, peak, t_end
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _inside(args, mp, xs, t, th, om, a0, th1, om1, a1, hh, s, dt_out, k, out_th, out_om):
     """The elastic anchor of this side reaches its strength inside the step."""
     th_b = mp[8]
@@ -236,12 +236,12 @@ def _inside(args, mp, xs, t, th, om, a0, th1, om1, a1, hh, s, dt_out, k, out_th,
     return 0, t, th, om, k, 0.0, hh, xs
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _impact_tol(mp, s):
     return 1e-15 * mp[0]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _after_impact(mp, xs, s, t, omc, pk, kind, prm, samples, t_quiet, hv):
     """Eq 4, the Zeno rule (at rest if no intact rigid anchor lets the ground lift the
     block) and the rigid anchor of the new side breaking: ``(rest, om, s, xs)``."""
@@ -266,7 +266,7 @@ def _after_impact(mp, xs, s, t, omc, pk, kind, prm, samples, t_quiet, hv):
     return False, om, s, (bp, bm, tbp, tbm, fmax)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _on_overturn(mp, xs, s):
     """An intact elastic anchor at pi/2 carries kappa sin(pi/2)."""
     if _ka(mp, xs, s) > 0.0:
@@ -274,7 +274,7 @@ def _on_overturn(mp, xs, s):
     return xs
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _on_segment(mp, xs, s, pk):
     """The elastic anchor's force at the segment's largest angle."""
     if _ka(mp, xs, s) > 0.0:

@@ -264,26 +264,26 @@ def free_cap_sides(th, om, s, alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, t, fr
 # ---- the model's part of the shared step loop (:func:`rocking.models._numerics.loop.run`);
 # ``mp = (alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, thr_p, thr_m,
 # rest_tol, free_rest_tol)``, no state of its own
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _rhs_args(mp, xs, s, kind, prm, samples):
     """The arguments of :func:`_acc` on pivot ``s`` (that side's ``alpha``, ``p^2``)."""
     alpha, p2 = (mp[0], mp[7]) if s > 0.0 else (mp[3], mp[8])
     return (s, alpha, p2, mp[6], kind, prm, samples)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _start(mp, resting, s, th0):
     return 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _at_rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, out_om, t_up):
     t, k, d, t_up = E.rest_advance_sides(kind, prm, samples, t, t_lim, h_scan, mp[11], mp[9],
                                          mp[12], mp[10], dt_out, k, out_th, out_om, t_up)
     return t, k, d, t_up, xs
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _cap(mp, xs, th, om, s, t, free_time, peak):
     """The cap of the free motion: the energy decides the outcome exactly."""
     decided, peak, t_end = free_cap_sides(th, om, s, mp[0], mp[1], mp[2], mp[3], mp[4], mp[5],
@@ -291,17 +291,17 @@ def _cap(mp, xs, th, om, s, t, free_time, peak):
     return decided, decided, peak, t_end
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _inside(args, mp, xs, t, th, om, a0, th1, om1, a1, h, s, dt_out, k, out_th, out_om):
     return 0, t, th, om, k, 0.0, h, xs
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _impact_tol(mp, s):
     return 1e-15 * (mp[0] if s > 0.0 else mp[3])
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _after_impact(mp, xs, s, t, omc, pk, kind, prm, samples, t_quiet, hv):
     """Eq 4 (rocking on side ``s`` ends) and the Zeno rule: ``(rest, om, s, xs)``."""
     alpha_p, mu_p, alpha_m, mu_m, lin, p2_p, p2_m = mp[0], mp[2], mp[3], mp[5], mp[6], mp[7], \
@@ -318,12 +318,12 @@ def _after_impact(mp, xs, s, t, omc, pk, kind, prm, samples, t_quiet, hv):
     return False, om, sn, xs
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _on_overturn(mp, xs, s):
     return xs
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _on_segment(mp, xs, s, pk):
     return xs
 
