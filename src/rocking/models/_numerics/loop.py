@@ -5,9 +5,13 @@ only continuous state is ``(theta, theta')``: the classical model
 One run: rest and uplift, Dormand-Prince steps (:func:`dopri.trial`), lift-off under a
 vertical motion, the impact located on the step (:func:`dopri.impact`) and the Zeno rule
 after it, overturning, the output and the peak of every segment, and the cap of the free
-motion. What a model adds is passed in as compiled functions (numba dispatchers; the
-loop is ``inline="always"`` so that they resolve at compile time in the model's own
-``integrate``, which numba caches with the model's file):
+motion. What a model adds is passed in as compiled functions (numba dispatchers). The
+loop and the models' functions are ``inline="always"``: they resolve at compile time
+into one function, the model's own ``integrate``, which numba caches with the model's
+file (as separate calls they cost 3-5 % of CPU time; a ``run`` cached on its own would
+not see a change in the model's file). A function that takes the right-hand side must
+name it, not receive it: a dispatcher passed on at run time to a function that is not
+inlined makes the kernel uncacheable ("dynamic globals"). The functions:
 
 * ``acc(theta, t, *args)``: the right-hand side, with ``args = rhs_args(mp, xs, s, kind,
   prm, samples)`` on pivot ``s``;
