@@ -41,6 +41,7 @@ LAST = {
     "bench_overturning.py": "mavroeidis_papageorgiou ",
     "bench_selection.py": "(goal < 5 s)",
     "bench_shapes.py": "total (goal < 2 s)",
+    "bench_step_loop.py": "min..max of pairs",
     "bench_stochastic.py": "records/s",
     "bench_vertical.py": "GroundMotion(h, v)",
     "study_rest_tol.py": "ccrr section:",

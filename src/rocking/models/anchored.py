@@ -55,6 +55,7 @@ from ..motions._kernel import (
 from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
+from ._numerics import loop as L
 from .base import (
     GENERIC_OUTPUTS,
     PLANAR_OUTPUTS,
@@ -155,156 +156,153 @@ def _acc(th, t, s, alpha, p2, ka, kind, prm, samples):
     return acc
 
 
-@njit(cache=True)
-def integrate(alpha, p, mu, q, kappa, rigid, kind, prm, samples, t_end, t_quiet, th0, om0,
-              rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th, out_om, imp,
-              anch):
-    """One simulation; ``anch`` (length >= 5, else ignored) receives ``[max force, t_break+,
-    t_break-, broken+, broken-]``. Returns the fields of :data:`KernelResult`."""
-    p2 = p * p
-    c = math.tan(alpha)
-    hv = has_vertical(prm)
-    # the elastic anchor breaks at kappa sin|theta| = q; never before pi/2 if q >= kappa
-    th_b = (math.asin(q / kappa) if q < kappa else math.inf) if not rigid else 0.0
-    atol_th, atol_om = D.abs_tols(rtol, alpha, p)
-    bp = bm = overturned = decided = False  # bp, bm: the anchor +, - has broken
-    tbp = tbm = t_over = t_lift = math.nan
+# ---- the model's part of the shared step loop (:func:`rocking.models._numerics.loop.run`);
+# ``mp = (alpha, p, mu, q, kappa, rigid, p2, c, th_b, rest_tol, free_rest_tol)``, its state
+# ``xs = (bp, bm, t_break_p, t_break_m, max_force)`` (bp, bm: the anchor +, - has broken)
+@njit(cache=True, inline="always")
+def _ka(mp, xs, s):
+    """The elastic anchor's stiffness on pivot ``s`` while it is intact, else 0."""
+    intact_s = (not xs[0]) if s > 0.0 else (not xs[1])
+    return mp[4] if (intact_s and not mp[5]) else 0.0
+
+
+@njit(cache=True, inline="always")
+def _rhs_args(mp, xs, s, kind, prm, samples):
+    """The arguments of :func:`_acc` on pivot ``s``."""
+    return (s, mp[0], mp[6], _ka(mp, xs, s), kind, prm, samples)
+
+
+@njit(cache=True, inline="always")
+def _start(mp, resting, s, th0):
+    """Already lifted: a rigid anchor on that side has given way, an elastic one if
+    stretched to its strength."""
+    q, kappa, rigid = mp[3], mp[4], mp[5]
+    bp = bm = False
+    tbp = tbm = math.nan
     fmax = 0.0
-    resting, s, t_up = E.initial_state(th0, om0)
-    t, th, om, peak = 0.0, th0, om0, abs(th0)
-    k = n_imp = n_steps = 0
-    # already lifted: a rigid anchor on that side has given way, an elastic one if stretched
-    # to its strength
     if not resting and (rigid or q == 0.0 or kappa * math.sin(abs(th0)) >= q):
         if s > 0.0:
             bp, tbp = True, 0.0
         else:
             bm, tbm = True, 0.0
         fmax = q
-    h = min(h_max, 0.01 / p)
-    a_cur = 0.0
-    need_a = True
-    free_time = t_end - t_quiet
-    extended = False
-    while True:
-        intact_s = (not bp) if s > 0.0 else (not bm)
-        ka = kappa if (intact_s and not rigid and not resting) else 0.0
-        if not t < t_end - 1e-12:
-            if resting or overturned or t_quiet > t_end or extended:
-                break
-            if (not rigid) and ((not bp) or (not bm)):
-                break  # an intact elastic anchor: no exact energy decision
-            decided, peak, t_end = free_cap(th, om, s, alpha, p, mu, False, t, free_time, peak)
-            if decided:
-                break
-            extended = True
-            continue
-        if resting:
-            if t >= t_quiet - 1e-12:
-                break
-            t, k, d, fmax = _rest(kind, prm, samples, t, min(t_end, t_quiet), h_scan, rigid,
-                                  q, bp, bm, c, dt_out, k, out_th, out_om, fmax)
-            if d == 0.0:
-                continue  # at rest through min(t_end, t_quiet): the tests above decide
-            if d == E.LIFT_OFF:
-                t_lift = t
-                break
-            resting, s, need_a, h = False, d, True, min(h_max, 0.01 / p)
-            if t_up != t_up:
-                t_up = t
-            if rigid or q == 0.0:
-                if s > 0.0 and not bp:
-                    bp, tbp, fmax = True, t, q
-                elif s < 0.0 and not bm:
-                    bm, tbm, fmax = True, t, q
-            continue
-        if need_a:
-            a_cur = _acc(th, t, s, alpha, p2, ka, kind, prm, samples)
-            need_a = False
-        args = (s, alpha, p2, ka, kind, prm, samples)
-        hh, hit_bp, th1, om1, a1, ok, h_next = D.trial(
-            _acc, args, t, th, om, a_cur, h, h_max, t_end, next_breakpoint(kind, prm, samples, t),
-            s, atol_th, atol_om, rtol)
-        n_steps += 1
-        if not ok:
-            h = h_next
-            continue
-        tc = E.first_lift_off(prm, samples, t, t + hh, h_scan) if hv else math.nan
-        if tc == tc:
-            stops, thc, omc, k, pk = D.stop_inside(_acc, args, t, th, om, a_cur, tc, s, dt_out,
-                                                   k, out_th, out_om, abs(th))
-            if stops:
-                t, th, om, peak, t_lift = tc, thc, omc, max(peak, pk), tc
-                break
-        # ---- the elastic anchor of this side reaches its strength inside the step
-        if ka > 0.0:
-            if s * th1 < th_b and D.seg_peak(th, om, a_cur, th1, om1, a1, hh, abs(th)) >= th_b:
-                h = 0.5 * hh  # the crossing is before an interior peak: a shorter step
-                continue
-            if s * th1 >= th_b:
-                sig, thc, omc, ac = D.locate(_acc, args, t, th, om, a_cur, th1, om1, a1, hh, s,
-                                             th_b, True, 1e-15 * alpha, 60)
-                tc = t + sig
-                k, pk = D.segment(t, th, om, a_cur, tc, thc, omc, ac, sig, dt_out, k, out_th,
-                                  out_om, abs(th))
-                peak = max(peak, pk)
-                if s > 0.0:
-                    bp, tbp = True, tc
-                else:
-                    bm, tbm = True, tc
-                fmax = q
-                t, th, om = tc, thc, omc
-                need_a = True
-                h = max(sig, 1e-6 / p)
-                continue
-        if s * th1 < 0.0:
-            t, sig, omc, k, pk, n_imp = D.impact(_acc, args, t, th, om, a_cur, th1, om1, a1, hh,
-                                                 s, 1e-15 * alpha, dt_out, k, out_th, out_om,
-                                                 abs(th), imp, n_imp)
-            peak = max(peak, pk)
-            if ka > 0.0:
-                fmax = max(fmax, kappa * math.sin(pk))
-            th = 0.0
-            om = mu * omc
-            ag = ground_acc(kind, prm, samples, t)
-            gf = 1.0 + vertical_acc(prm, samples, t) * INV_G if hv else 1.0
-            rt = rest_tol if t < t_quiet else max(rest_tol, free_rest_tol)
-            if om == 0.0 or amplitude_from_energy(om, alpha, p2 * gf, False) < rt * alpha:
-                if ag <= _thr(1.0, rigid, q, bp, bm, c, gf) and \
-                        -ag <= _thr(-1.0, rigid, q, bp, bm, c, gf):
-                    resting = True
-                    om = 0.0
-                    continue
-            s = E.rebound_side(om, ag)
-            if rigid or q == 0.0:  # an intact rigid anchor cannot stop the block
-                if s > 0.0 and not bp:
-                    bp, tbp, fmax = True, t, q
-                elif s < 0.0 and not bm:
-                    bm, tbm, fmax = True, t, q
-            intact_s = (not bp) if s > 0.0 else (not bm)
-            ka = kappa if (intact_s and not rigid) else 0.0
-            a_cur = _acc(0.0, t, s, alpha, p2, ka, kind, prm, samples)
-            need_a = False
-            h = D.rebound_length(hh, 1e-6 / p, h_max, om, a_cur)
-            continue
-        if abs(th1) >= D.HALF_PI:
-            t_over, k = D.overturn(t, th, om, a_cur, th1, om1, a1, hh, s, dt_out, k, out_th,
-                                   out_om)
-            t, overturned, peak = t_over, True, D.HALF_PI
-            if ka > 0.0:  # an intact elastic anchor at pi/2 carries kappa sin(pi/2)
-                fmax = max(fmax, kappa)
-            break
-        k, pk = D.segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th,
-                          out_om, abs(th))
-        peak = max(peak, pk)
-        if ka > 0.0:
-            fmax = max(fmax, kappa * math.sin(min(pk, D.HALF_PI)))
-        t = t + hh
-        th, om, a_cur = th1, om1, a1
-        if hit_bp:
-            need_a = True
-        h = h_next
-    settled = overturned or decided or (resting and t_lift != t_lift)
+    return bp, bm, tbp, tbm, fmax
+
+
+@njit(cache=True, inline="always")
+def _at_rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, out_om, t_up):
+    """:func:`_rest`; at the uplift a rigid (or zero-strength) anchor on that side breaks."""
+    q, rigid = mp[3], mp[5]
+    bp, bm, tbp, tbm, fmax = xs
+    t, k, d, fmax = _rest(kind, prm, samples, t, t_lim, h_scan, rigid, q, bp, bm, mp[7],
+                          dt_out, k, out_th, out_om, fmax)
+    if d != 0.0 and d != E.LIFT_OFF:
+        if t_up != t_up:
+            t_up = t
+        if rigid or q == 0.0:
+            if d > 0.0 and not bp:
+                bp, tbp, fmax = True, t, q
+            elif d < 0.0 and not bm:
+                bm, tbm, fmax = True, t, q
+    return t, k, d, t_up, (bp, bm, tbp, tbm, fmax)
+
+
+@njit(cache=True, inline="always")
+def _cap(mp, xs, th, om, s, t, free_time, peak):
+    """The cap of the free motion: decided by energy unless an elastic anchor is intact."""
+    if (not mp[5]) and ((not xs[0]) or (not xs[1])):
+        return True, False, peak, t  # an intact elastic anchor: no exact energy decision
+    decided, peak, t_end = free_cap(th, om, s, mp[0], mp[1], mp[2], False, t, free_time, peak)
+    return decided, decided, peak, t_end
+
+
+@njit(cache=True, inline="always")
+def _inside(args, mp, xs, t, th, om, a0, th1, om1, a1, hh, s, dt_out, k, out_th, out_om):
+    """The elastic anchor of this side reaches its strength inside the step."""
+    th_b = mp[8]
+    if args[3] > 0.0:
+        if s * th1 < th_b and D.seg_peak(th, om, a0, th1, om1, a1, hh, abs(th)) >= th_b:
+            return 1, t, th, om, k, 0.0, 0.5 * hh, xs  # crossed before an interior peak
+        if s * th1 >= th_b:
+            sig, thc, omc, ac = D.locate(_acc, args, t, th, om, a0, th1, om1, a1, hh, s, th_b,
+                                         True, 1e-15 * mp[0], 60)
+            tc = t + sig
+            k, pk = D.segment(t, th, om, a0, tc, thc, omc, ac, sig, dt_out, k, out_th, out_om,
+                              abs(th))
+            bp, bm, tbp, tbm, fmax = xs
+            if s > 0.0:
+                bp, tbp = True, tc
+            else:
+                bm, tbm = True, tc
+            fmax = mp[3]
+            return 2, tc, thc, omc, k, pk, max(sig, 1e-6 / mp[1]), (bp, bm, tbp, tbm, fmax)
+    return 0, t, th, om, k, 0.0, hh, xs
+
+
+@njit(cache=True, inline="always")
+def _impact_tol(mp, s):
+    return 1e-15 * mp[0]
+
+
+@njit(cache=True, inline="always")
+def _after_impact(mp, xs, s, t, omc, pk, kind, prm, samples, t_quiet, hv):
+    """Eq 4, the Zeno rule (at rest if no intact rigid anchor lets the ground lift the
+    block) and the rigid anchor of the new side breaking: ``(rest, om, s, xs)``."""
+    alpha, mu, q, kappa, rigid, p2, c = mp[0], mp[2], mp[3], mp[4], mp[5], mp[6], mp[7]
+    bp, bm, tbp, tbm, fmax = xs
+    if _ka(mp, xs, s) > 0.0:
+        fmax = max(fmax, kappa * math.sin(pk))
+    om = mu * omc
+    ag = ground_acc(kind, prm, samples, t)
+    gf = 1.0 + vertical_acc(prm, samples, t) * INV_G if hv else 1.0
+    rt = mp[9] if t < t_quiet else max(mp[9], mp[10])
+    if om == 0.0 or amplitude_from_energy(om, alpha, p2 * gf, False) < rt * alpha:
+        if ag <= _thr(1.0, rigid, q, bp, bm, c, gf) and -ag <= _thr(-1.0, rigid, q, bp, bm, c,
+                                                                     gf):
+            return True, 0.0, s, (bp, bm, tbp, tbm, fmax)
+    s = E.rebound_side(om, ag)
+    if rigid or q == 0.0:  # an intact rigid anchor cannot stop the block
+        if s > 0.0 and not bp:
+            bp, tbp, fmax = True, t, q
+        elif s < 0.0 and not bm:
+            bm, tbm, fmax = True, t, q
+    return False, om, s, (bp, bm, tbp, tbm, fmax)
+
+
+@njit(cache=True, inline="always")
+def _on_overturn(mp, xs, s):
+    """An intact elastic anchor at pi/2 carries kappa sin(pi/2)."""
+    if _ka(mp, xs, s) > 0.0:
+        return xs[0], xs[1], xs[2], xs[3], max(xs[4], mp[4])
+    return xs
+
+
+@njit(cache=True, inline="always")
+def _on_segment(mp, xs, s, pk):
+    """The elastic anchor's force at the segment's largest angle."""
+    if _ka(mp, xs, s) > 0.0:
+        return xs[0], xs[1], xs[2], xs[3], max(xs[4], mp[4] * math.sin(min(pk, D.HALF_PI)))
+    return xs
+
+
+@njit(cache=True)
+def integrate(alpha, p, mu, q, kappa, rigid, kind, prm, samples, t_end, t_quiet, th0, om0,
+              rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th, out_om, imp,
+              anch):
+    """One simulation; ``anch`` (length >= 5, else ignored) receives ``[max force, t_break+,
+    t_break-, broken+, broken-]``. Returns ``(n_out, n_impacts, peak, overturned,
+    t_over, t_up, n_steps, t_lift, settled)``."""
+    p2 = p * p
+    c = math.tan(alpha)
+    # the elastic anchor breaks at kappa sin|theta| = q; never before pi/2 if q >= kappa
+    th_b = (math.asin(q / kappa) if q < kappa else math.inf) if not rigid else 0.0
+    atol_th, atol_om = D.abs_tols(rtol, alpha, p)
+    mp = (alpha, p, mu, q, kappa, rigid, p2, c, th_b, rest_tol, free_rest_tol)
+    k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, xs = L.run(
+        _acc, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact,
+        _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,
+        atol_th, atol_om, p, h_max, h_scan, dt_out, out_th, out_om, imp)
+    bp, bm, tbp, tbm, fmax = xs
     if anch.shape[0] >= 5:
         anch[0] = fmax
         anch[1] = tbp

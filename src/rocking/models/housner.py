@@ -99,12 +99,12 @@ from ..motions._kernel import (
     ground_acc,
     ground_acc_hv,
     has_vertical,
-    next_breakpoint,
     vertical_acc,
 )
 from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
+from ._numerics import loop as L
 from .base import Model, ModelOptions, option, row_args, set_planar_result, store_row
 
 INV_G = 1.0 / G
@@ -262,6 +262,73 @@ def free_cap_sides(th, om, s, alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, t, fr
     return False, peak, t + max(free_time, 100.0 / min(p_p, p_m))
 
 
+# ---- the model's part of the shared step loop (:func:`rocking.models._numerics.loop.run`);
+# ``mp = (alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, thr_p, thr_m,
+# rest_tol, free_rest_tol)``, no state of its own
+@njit(cache=True, inline="always")
+def _rhs_args(mp, xs, s, kind, prm, samples):
+    """The arguments of :func:`_acc` on pivot ``s`` (that side's ``alpha``, ``p^2``)."""
+    alpha, p2 = (mp[0], mp[7]) if s > 0.0 else (mp[3], mp[8])
+    return (s, alpha, p2, mp[6], kind, prm, samples)
+
+
+@njit(cache=True, inline="always")
+def _start(mp, resting, s, th0):
+    return 0.0
+
+
+@njit(cache=True, inline="always")
+def _at_rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, out_om, t_up):
+    t, k, d, t_up = E.rest_advance_sides(kind, prm, samples, t, t_lim, h_scan, mp[11], mp[9],
+                                         mp[12], mp[10], dt_out, k, out_th, out_om, t_up)
+    return t, k, d, t_up, xs
+
+
+@njit(cache=True, inline="always")
+def _cap(mp, xs, th, om, s, t, free_time, peak):
+    """The cap of the free motion: the energy decides the outcome exactly."""
+    decided, peak, t_end = free_cap_sides(th, om, s, mp[0], mp[1], mp[2], mp[3], mp[4], mp[5],
+                                          mp[6], t, free_time, peak)
+    return decided, decided, peak, t_end
+
+
+@njit(cache=True, inline="always")
+def _inside(args, mp, xs, t, th, om, a0, th1, om1, a1, h, s, dt_out, k, out_th, out_om):
+    return 0, t, th, om, k, 0.0, h, xs
+
+
+@njit(cache=True, inline="always")
+def _impact_tol(mp, s):
+    return 1e-15 * (mp[0] if s > 0.0 else mp[3])
+
+
+@njit(cache=True, inline="always")
+def _after_impact(mp, xs, s, t, omc, pk, kind, prm, samples, t_quiet, hv):
+    """Eq 4 (rocking on side ``s`` ends) and the Zeno rule: ``(rest, om, s, xs)``."""
+    alpha_p, mu_p, alpha_m, mu_m, lin, p2_p, p2_m = mp[0], mp[2], mp[3], mp[5], mp[6], mp[7], \
+        mp[8]
+    om = (mu_p if s > 0.0 else mu_m) * omc  # rocking on side s ends
+    ag = ground_acc(kind, prm, samples, t)
+    sn = E.rebound_side(om, ag)
+    al_n, p2_n = (alpha_p, p2_p) if sn > 0.0 else (alpha_m, p2_m)
+    p2e = p2_n * (1.0 + vertical_acc(prm, samples, t) / G) if hv else p2_n
+    rt = mp[13] if t < t_quiet else max(mp[13], mp[14])
+    if om == 0.0 or amplitude_from_energy(om, al_n, p2e, lin) < rt * al_n:
+        if abs(ag) <= E.threshold_sides(ag, mp[11], mp[9], mp[12], mp[10], prm, samples, t):
+            return True, 0.0, s, xs
+    return False, om, sn, xs
+
+
+@njit(cache=True, inline="always")
+def _on_overturn(mp, xs, s):
+    return xs
+
+
+@njit(cache=True, inline="always")
+def _on_segment(mp, xs, s, pk):
+    return xs
+
+
 @njit(cache=True)
 def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t_end,
               t_quiet, th0, om0, rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th,
@@ -282,103 +349,14 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t
     p2_m = p_m * p_m
     c_p = alpha_p if lin else math.tan(alpha_p)
     c_m = alpha_m if lin else math.tan(alpha_m)
-    thr_p = G * c_p
-    thr_m = G * c_m
     p_hi = max(p_p, p_m)  # the step sizes follow the faster side
-    hv = has_vertical(prm)
     atol_th, atol_om = D.abs_tols(rtol, min(alpha_p, alpha_m), p_hi)
-    t, th, om, peak = 0.0, th0, om0, abs(th0)
-    k = n_imp = n_steps = 0
-    overturned = decided = False
-    t_over = t_lift = math.nan
-    resting, s, t_up = E.initial_state(th0, om0)
-    alpha, p2 = (alpha_p, p2_p) if s > 0.0 else (alpha_m, p2_m)  # the side rocked on
-    h = min(h_max, 0.01 / p_hi)
-    a_cur = 0.0
-    need_a = True
-    free_time = t_end - t_quiet  # the cap of the free motion (when t_quiet < t_end)
-    extended = False
-    while True:
-        if not t < t_end - 1e-12:
-            if resting or overturned or t_quiet > t_end or extended:
-                break
-            # the cap of the free motion: the energy decides the outcome exactly
-            decided, peak, t_end = free_cap_sides(th, om, s, alpha_p, p_p, mu_p, alpha_m, p_m,
-                                                  mu_m, lin, t, free_time, peak)
-            if decided:
-                break
-            extended = True  # it will overturn: follow it there
-            continue
-        if resting:
-            if t >= t_quiet - 1e-12:
-                break  # the ground is still: at rest for good
-            t, k, d, t_up = E.rest_advance_sides(kind, prm, samples, t, min(t_end, t_quiet),
-                                                 h_scan, thr_p, c_p, thr_m, c_m, dt_out, k,
-                                                 out_th, out_om, t_up)
-            if d == 0.0:
-                break
-            if d == E.LIFT_OFF:
-                t_lift = t
-                break
-            # uplift towards sign(a), with a fresh acceleration and step
-            resting, s, need_a, h = False, d, True, min(h_max, 0.01 / p_hi)
-            alpha, p2 = (alpha_p, p2_p) if s > 0.0 else (alpha_m, p2_m)
-            continue
-        if need_a:
-            a_cur = _acc(th, t, s, alpha, p2, lin, kind, prm, samples)
-            need_a = False
-        args = (s, alpha, p2, lin, kind, prm, samples)
-        hh, hit_bp, th1, om1, a1, ok, h_next = D.trial(
-            _acc, args, t, th, om, a_cur, h, h_max, t_end, next_breakpoint(kind, prm, samples, t),
-            s, atol_th, atol_om, rtol)
-        n_steps += 1
-        if not ok:  # too large an error, or two crossings hidden in the step: shorter
-            h = h_next
-            continue
-        # ---- accepted step: events
-        tc = E.first_lift_off(prm, samples, t, t + hh, h_scan) if hv else math.nan
-        if tc == tc:
-            # the base falls away (g + a_v <= 0): the model cannot represent flight
-            stops, thc, omc, k, pk = D.stop_inside(_acc, args, t, th, om, a_cur, tc, s, dt_out,
-                                                   k, out_th, out_om, peak)
-            if stops:
-                t, th, om, peak, t_lift = tc, thc, omc, pk, tc
-                break
-        if s * th1 < 0.0:
-            # impact inside the step: safeguarded Newton on the step length
-            t, sig, omc, k, peak, n_imp = D.impact(_acc, args, t, th, om, a_cur, th1, om1, a1,
-                                                   hh, s, 1e-15 * alpha, dt_out, k, out_th,
-                                                   out_om, peak, imp, n_imp)
-            th = 0.0
-            om = (mu_p if s > 0.0 else mu_m) * omc  # rocking on side s ends
-            ag = ground_acc(kind, prm, samples, t)
-            sn = E.rebound_side(om, ag)
-            al_n, p2_n = (alpha_p, p2_p) if sn > 0.0 else (alpha_m, p2_m)
-            p2e = p2_n * (1.0 + vertical_acc(prm, samples, t) / G) if hv else p2_n
-            rt = rest_tol if t < t_quiet else max(rest_tol, free_rest_tol)
-            if om == 0.0 or amplitude_from_energy(om, al_n, p2e, lin) < rt * al_n:
-                if abs(ag) <= E.threshold_sides(ag, thr_p, c_p, thr_m, c_m, prm, samples, t):
-                    resting = True
-                    om = 0.0
-                    continue
-            s, alpha, p2 = sn, al_n, p2_n
-            a_cur = _acc(0.0, t, s, alpha, p2, lin, kind, prm, samples)
-            need_a = False
-            h = D.rebound_length(hh, 1e-6 / p_hi, h_max, om, a_cur)
-            continue
-        if abs(th1) >= D.HALF_PI:
-            t_over, k = D.overturn(t, th, om, a_cur, th1, om1, a1, hh, s, dt_out, k, out_th,
-                                   out_om)
-            t, overturned, peak = t_over, True, D.HALF_PI
-            break
-        k, peak = D.segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th,
-                            out_om, peak)
-        t = t + hh
-        th, om, a_cur = th1, om1, a1
-        if hit_bp:
-            need_a = True  # the excitation has a kink or jump here
-        h = h_next
-    settled = overturned or decided or (resting and t_lift != t_lift)
+    mp = (alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, G * c_p, G * c_m,
+          rest_tol, free_rest_tol)
+    k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, _xs = L.run(
+        _acc, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact,
+        _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,
+        atol_th, atol_om, p_hi, h_max, h_scan, dt_out, out_th, out_om, imp)
     return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
 
 
