@@ -171,17 +171,7 @@ def vertical_acc(prm, samples, t):
     if not has_vertical(prm):
         return 0.0
     if prm[V_KIND] == RECORD:
-        s, dt, n, off = prm[V0], prm[V0 + 1], int(prm[V0 + 2]), int(prm[V_OFFSET])
-        if t < 0.0 or n == 0:
-            return 0.0
-        x = t / dt
-        i = int(math.floor(x))
-        if i >= n - 1:
-            if i == n - 1 and x - i < 1e-9:
-                return s * samples[off + n - 1]
-            return 0.0
-        f = x - i
-        return s * (samples[off + i] + f * (samples[off + i + 1] - samples[off + i]))
+        return _interp(samples, int(prm[V_OFFSET]), int(prm[V0 + 2]), prm[V0 + 1], prm[V0], t)
     return ground_acc(int(prm[V_KIND]), prm[V0:], samples[int(prm[V_OFFSET]):], t)
 
 
