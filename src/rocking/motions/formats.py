@@ -311,7 +311,7 @@ def read_esm(p: Path, lines: list[str], units: str | None, factor: float | None,
 
 def _esm_duration(p: Path, hdr: dict, where: dict, ndata: int, step: float) -> None:
     """``DURATION_S`` (if stated) against ``NDATA`` samples every ``SAMPLING_INTERVAL_S``:
-    ``NDATA dt`` or ``(NDATA - 1) dt`` within half a step and the rounding of the numbers as
+    ``NDATA dt`` or ``(NDATA - 1) dt`` within the rounding of the three numbers as
     written (a step in ms written as s, or a wrong count, is refused)."""
     text = hdr.get("DURATION_S", "")
     if not text:
@@ -319,7 +319,7 @@ def _esm_duration(p: Path, hdr: dict, where: dict, ndata: int, step: float) -> N
     ln = where["DURATION_S"]
     dur = _as_float(p, ln, text, "DURATION_S")
     step_s = hdr["SAMPLING_INTERVAL_S"]
-    tol = 0.5 * step + _half_ulp(text) + ndata * _half_ulp(step_s)
+    tol = _half_ulp(text) + ndata * _half_ulp(step_s) + 1e-12 * abs(dur)
     if math.isfinite(dur) and min(abs(dur - ndata * step),
                                   abs(dur - (ndata - 1) * step)) <= tol * (1 + 1e-9):
         return
@@ -565,11 +565,18 @@ def read_cosmos(p: Path, lines: list[str], units: str | None, factor: float | No
     vals, n = r["values"], r["npts"]
     if n < 2:
         raise RecordError(f"{p}, line {r['data_line']}: a record needs at least 2 samples")
-    if (length := rval(63)) is not None and \
-            min(abs(length - n * step), abs(length - (n - 1) * step)) > 0.5 * step + 1e-6:
-        raise RecordError(f"{p}: the COSMOS real header #63 states a series length of "
-                          f"{length:g} s but {n} points every {step:g} s last {n * step:g} s "
-                          "(the file looks cut or its time step is wrong)")
+    if (length := rval(63)) is not None:  # npts dt (or (npts - 1) dt) to their rounding
+        tol = _half_ulp(_field(lines, r["reals_start"], r["reals_fmt"], 62))
+        if dt_from == "file":
+            k = 61 if rval(62) is not None else 33
+            tol += n * _half_ulp(_field(lines, r["reals_start"], r["reals_fmt"], k)) * \
+                (1e-3 if k == 61 else 1.0)
+        if min(abs(length - n * step), abs(length - (n - 1) * step)) > tol * (1 + 1e-9) + \
+                1e-12 * abs(length):
+            raise RecordError(f"{p}, line {r['reals_start'] + 1 + 62 // 5}: the COSMOS real "
+                              f"header #63 states a series length of {length:g} s but {n} "
+                              f"points every {step:g} s ({where}) last {n * step:.9g} s "
+                              "(the file looks cut or its time step is wrong)")
     if r["approx"] is not None and not (
             math.floor((n - 1) * step) - 1.0 <= r["approx"] <= math.ceil(n * step) + 1.0):
         raise RecordError(f"{p}, line {r['data_line']}: the data header states approx "
