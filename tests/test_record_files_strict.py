@@ -14,6 +14,7 @@ writers come from tests/test_record_formats.py), never copied from the readers' 
 
 from __future__ import annotations
 
+import math
 import os
 import re
 import shutil
@@ -41,7 +42,7 @@ from rocking.testing import mesh_reference as ref
 
 NAME = "RSN948_NORTHR_CAM009"  # Northridge 1994, Arcadia: dt 0.01 s, PGA 0.09 g
 SRC = Path(__file__).resolve().parents[1] / "src" / "rocking"
-FUZZ = settings(max_examples=40, deadline=None, derandomize=True,
+FUZZ = settings(max_examples=150, deadline=None, derandomize=True,
                 suppress_health_check=list(HealthCheck))
 
 
@@ -494,3 +495,64 @@ def test_fuzz_csv(tmp_path_factory, at2):
     text = write_csv(Record(acc, dt, name="r"), path).read_text()
     _fuzz(tmp_path_factory, "f.csv", text, len("\n".join(text.split("\n")[:5])),
           units="m/s^2")
+
+
+BAD_VALUES = ["", "x", "nan", "-inf", "1e300", "1e150", "1e"]
+
+
+def _mesh_fuzz(tmp_path_factory, name: str, original: bytes, binary: bool = False):
+    """A mutated mesh file is refused with a ParameterError naming it, or read to the
+    original's volume and centre of mass. A duplicated line (an OBJ vertex shifts the
+    indices after it) or a changed byte (a digit) can make another valid solid: for those
+    the reader must refuse or read finite numbers, never raise anything else."""
+    path = tmp_path_factory.mktemp("mesh") / name
+    shape0 = load_shape(write(path, original), density=2000.0)
+
+    @FUZZ
+    @given(st.data())
+    def check(data):
+        op = data.draw(st.sampled_from(["flip", "truncate"] if binary else
+                                       ["drop", "dup", "alter", "truncate", "flip"]))
+        if op == "alter":
+            text = original.decode()
+            m = data.draw(st.sampled_from(list(_TOKEN.finditer(text))))
+            mutated = (text[:m.start()] + data.draw(st.sampled_from(BAD_VALUES))
+                       + text[m.end():]).encode()
+        elif op == "flip":
+            j = data.draw(st.integers(0, len(original) - 1))
+            mutated = original[:j] + bytes([data.draw(st.integers(0, 255))]) + \
+                original[j + 1:]
+        elif op == "truncate":
+            mutated = original[:data.draw(st.integers(1, len(original) - 1))]
+        else:
+            lines = original.split(b"\n")
+            i = data.draw(st.integers(0, len(lines) - 1))
+            mutated = b"\n".join(lines[:i] + lines[i:i + 1] * (2 if op == "dup" else 0)
+                                  + lines[i + 1:])
+        write(path, mutated)
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                shape = load_shape(path, density=2000.0)
+        except ParameterError as e:
+            assert str(path) in str(e) or "mesh" in str(e), e
+            return
+        same = math.isclose(shape.volume, shape0.volume, rel_tol=1e-9) and \
+            np.allclose(shape.com, shape0.com, rtol=0, atol=1e-9)
+        assert same or op in ("dup", "flip"), (op, shape.volume, shape0.volume)
+        assert math.isfinite(shape.volume) and np.isfinite(shape.com).all()
+
+    check()
+
+
+@pytest.mark.parametrize("file_type, kw", [("obj", {}), ("stl_ascii", {}),
+                                           ("ply", {"encoding": "ascii"})])
+def test_fuzz_text_meshes(tmp_path_factory, file_type, kw):
+    data = box_text(file_type, **kw)
+    data = data.encode() if isinstance(data, str) else data
+    _mesh_fuzz(tmp_path_factory, f"box.{file_type.split('_')[0]}", data)
+
+
+@pytest.mark.parametrize("file_type", ["stl", "ply"])
+def test_fuzz_binary_meshes(tmp_path_factory, file_type):
+    _mesh_fuzz(tmp_path_factory, f"box.{file_type}", box_text(file_type), binary=True)

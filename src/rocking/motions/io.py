@@ -98,6 +98,7 @@ _QUALIFIERS = {"in", "of", "ground", "horizontal", "vertical", "hor", "ver", "ve
                "x", "y", "z", "n", "e", "ns", "ew", "ud", "up", "h1", "h2", "component",
                "comp", "abs", "absolute", "input", "base", "table", "record", "value"}
 
+_AT2_MAX_DT = 1.0  # s: the longest time step of a PEER .AT2 file read (1 Hz)
 _DT_RTOL = 1e-6  # relative tolerance on time steps (uneven steps, dt disagreements)
 
 
@@ -395,6 +396,9 @@ def _read_at2(p: Path, lines: list[str], units: str, factor: float, dt: float | 
                           f"states NPTS={npts}")
     if not (math.isfinite(step) and step > 0.0):
         raise RecordError(f"{p}, line 4: DT must be > 0 s, got {step!r}")
+    if step > _AT2_MAX_DT:  # no other field to check it against: a bound
+        raise RecordError(f"{p}, line 4: DT = {step:g} s; an accelerogram is sampled every "
+                          f"{_AT2_MAX_DT:g} s or less (is DT in ms? write 'DT= {step:g} MSEC')")
     if dt is not None and not _close(dt, step):
         raise RecordError(f"{p}: dt={dt:g} s was passed but the header (line 4) states "
                           f"DT={step:g} s")

@@ -256,6 +256,9 @@ def _check_ply(path, data: bytes) -> None:
                                      f"<count>', got {line.strip()!r}")
             elements.append([toks[1], int(toks[2]), []])
         elif toks[0] == "property" and elements:
+            if any(toks[-1] == q for q, _ in elements[-1][2]):
+                raise ParameterError(f"mesh {path!r}, line {i}: the property {toks[-1]!r} of "
+                                     f"the element {elements[-1][0]!r} is declared twice")
             elements[-1][2].append((toks[-1], tuple(toks[1:-1])))
     names = [e[0] for e in elements]
     if "vertex" not in names:
