@@ -19,6 +19,7 @@ import importlib.abc
 import importlib.util
 import sys
 
+from ._numba_cache import ensure_numba_cache
 from .blocks import Block, Stack, housner_mu, specimen
 from .errors import (
     IdentificationError,
@@ -35,6 +36,9 @@ from .errors import (
 )
 from .results import BatchResponse, DEMResponse, Response
 from .units import G
+
+ensure_numba_cache()  # before any kernel is compiled: a cache numba can write, or none
+del ensure_numba_cache
 
 __version__ = "0.1.0"
 

@@ -395,6 +395,31 @@ def _refine(lt, S, idx, x0, lo, hi):
     return x if np.sum(resid(x) ** 2) <= np.sum(resid(x0) ** 2) else x0
 
 
+def _pinned_note(scales, max_scale: float, mean, target) -> str | None:
+    """A note when scale factors sit at a limit (``1/max_scale`` or ``max_scale``): the
+    match is then the limit's, not the target's (a target far below or above every
+    record). None when none does, or when ``max_scale`` is 1 (no scaling asked)."""
+    if max_scale <= 1.0:
+        return None
+    low = int(np.sum(scales <= (1.0 / max_scale) * (1 + 1e-9)))
+    high = int(np.sum(scales >= max_scale * (1 - 1e-9)))
+    if not (low or high):
+        return None
+    n = len(scales)
+    r = np.asarray(mean) / np.asarray(target)
+    parts = []
+    if low:
+        parts.append(f"{'all' if low == n else low} of the {n} scale factors at the lower "
+                     f"limit 1/max_scale = {1.0 / max_scale:.4g} (the records are stronger "
+                     "than the target even scaled down that far)")
+    if high:
+        parts.append(f"{'all' if high == n else high} of the {n} scale factors at the upper "
+                     f"limit max_scale = {max_scale:.4g} (the records are weaker than the "
+                     "target even scaled up that far)")
+    return ("; ".join(parts) + f": the mean is {r.min():.4g} to {r.max():.4g} times the "
+            "target, the match is limited by max_scale")
+
+
 def _search(lt, S, own, n, lo, hi, first=None):
     """Forward selection (from record ``first`` if given), then single swaps and joint
     refinement while they help; returns (indices, ln scales, cost)."""
@@ -674,6 +699,8 @@ def select_records(candidates, target_spectrum, periods=None, n: int = 11,
         mean = scales @ Ssel / n
         ratio = float(np.min(mean / target))
     compliant = bool(ratio >= CODE_RATIO * (1 - 1e-9))
+    if (note := _pinned_note(scales, max_scale, mean, target)) is not None:
+        notes.append(note)
     if not compliant:
         warnings.warn(f"select_records: the mean of the {n} selected records is "
                       f"{100 * ratio:.1f} % of the target at worst (< 90 %, EN 1998-1 "

@@ -166,12 +166,17 @@ def _half_ulp(text: str) -> float:
     return 0.5 * 10.0 ** (e - _decimals(t[:m.start()] if m else t))
 
 
+def _agree(stated: float, peak: float, tol: float) -> bool:
+    """Whether a stated peak and the data's agree within ``tol`` (their rounding)."""
+    return abs(abs(stated) - peak) <= tol * (1.0 + 1e-9) + 1e-12 * peak
+
+
 def _check_peak(p: Path, where: str, stated: float, peak: float, tol: float,
                 unit: str) -> None:
     """The peak a header states against the data's: within ``tol`` (the rounding of both
     numbers) they agree; within 1 % a warning; beyond, a RecordError."""
     diff = abs(abs(stated) - peak)
-    if diff <= tol * (1.0 + 1e-9) + 1e-12 * peak:
+    if _agree(stated, peak, tol):
         return
     msg = (f"{p}: {where} states a peak of {abs(stated):.15g} {unit} but the data's peak "
            f"is {peak:.15g} {unit}")
@@ -267,6 +272,7 @@ def read_esm(p: Path, lines: list[str], units: str | None, factor: float | None,
     bad = np.flatnonzero(~np.isfinite(vals))
     if bad.size:
         raise RecordError(f"{p}: NaN or infinite value at sample {bad[0]}")
+    _esm_duration(p, hdr, where, ndata, step)
 
     peak = float(np.max(np.abs(vals)))
     pga_key = next((k for k in hdr if k.startswith("PGA_")), None)
@@ -276,6 +282,11 @@ def read_esm(p: Path, lines: list[str], units: str | None, factor: float | None,
         s = hdr[pga_key]
         pga = _as_float(p, where[pga_key], s, pga_key)
         tol = _half_ulp(s) + _half_ulp(tokens[int(np.argmax(np.abs(vals)))])
+        if ACCELERATION[pga_unit] != ACCELERATION[key] and _agree(pga, peak, tol):
+            raise RecordError(f"{p}, line {where['UNITS']}: UNITS: {word} contradicts "
+                              f"{pga_key} (line {where[pga_key]}): the data's peak "
+                              f"{peak:.15g} is {pga_key}: {s} as a number, so the values are"
+                              f" in {pga_unit}, not in {key}; the file contradicts itself")
         _check_peak(p, f"the ESM header ({pga_key})",
                     pga * ACCELERATION[pga_unit] / ACCELERATION[key], peak, tol, key)
 
@@ -296,6 +307,31 @@ def read_esm(p: Path, lines: list[str], units: str | None, factor: float | None,
     if pga is not None:
         meta["pga_declared"] = pga
     return vals * f, step, meta
+
+
+def _esm_duration(p: Path, hdr: dict, where: dict, ndata: int, step: float) -> None:
+    """``DURATION_S`` (if stated) against ``NDATA`` samples every ``SAMPLING_INTERVAL_S``:
+    ``NDATA dt`` or ``(NDATA - 1) dt`` within the rounding of the three numbers as
+    written (a step in ms written as s, or a wrong count, is refused)."""
+    text = hdr.get("DURATION_S", "")
+    if not text:
+        return
+    ln = where["DURATION_S"]
+    dur = _as_float(p, ln, text, "DURATION_S")
+    step_s = hdr["SAMPLING_INTERVAL_S"]
+    tol = _half_ulp(text) + ndata * _half_ulp(step_s) + 1e-12 * abs(dur)
+    if math.isfinite(dur) and min(abs(dur - ndata * step),
+                                  abs(dur - (ndata - 1) * step)) <= tol * (1 + 1e-9):
+        return
+    hint = ""
+    if dur > 0 and math.isfinite(dur):
+        ratio = ndata * step / dur
+        if 500 <= ratio <= 2000:
+            hint = " (is SAMPLING_INTERVAL_S in ms?)"
+    raise RecordError(f"{p}, line {ln}: DURATION_S: {text} contradicts NDATA: {ndata} "
+                      f"(line {where['NDATA']}) and SAMPLING_INTERVAL_S: {step_s} (line "
+                      f"{where['SAMPLING_INTERVAL_S']}): {ndata} samples every {step:g} s "
+                      f"last {ndata * step:g} s{hint}; the file contradicts itself")
 
 
 def _esm_line(lines: list[str], first: int, k: int) -> int:
@@ -320,6 +356,8 @@ _APPROX = re.compile(r"approx\s+(\d+(?:\.\d*)?)\s*sec", re.I)
 _FORTRAN = re.compile(r"^\s*(\d*)\s*([IFEGD])\s*(\d+)(?:\.(\d+))?", re.I)
 _UNKNOWN = re.compile(r"unknown/unspecified\s*:\s*(-?\d+)\s*,?\s*(-?\d+\.?\d*)", re.I)
 _UNITS_CODE = re.compile(r"^(.*?)\s*\(\s*(\d+)\s*\)\s*$")
+_TEXT_MAX = re.compile(r"\bmax\s*=\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*"
+                       r"([^\s,;]+)", re.I)
 _END = re.compile(r"^\s*End[- ]of[- ]data", re.I)
 
 COSMOS_UNITS = {2: "g", 4: "cm/s^2", 10: "gal"}
@@ -501,6 +539,15 @@ def read_cosmos(p: Path, lines: list[str], units: str | None, factor: float | No
         raise RecordError(f"{p}, line {r['data_line']}: the units name and code disagree "
                           f"({r['units_text']}, integer header #3 = {c3})")
     key = sorted(keys, key=len)[-1]  # 'cm/s^2' over 'gal' for the same factor
+    for t, line in enumerate(r["text"]):  # 'Max = 88.923 cm/s^2 at ...' (text lines 10, 11)
+        for mm in _TEXT_MAX.finditer(line):
+            tk = acceleration_unit(mm[1])
+            if tk is not None and ACCELERATION[tk] != ACCELERATION[key]:
+                raise RecordError(f"{p}, line {r['line'] + t}: the text header states "
+                                  f"{mm[0].strip()!r} but the data header (line "
+                                  f"{r['data_line']}) states units={r['units_text']}"
+                                  + (f" and integer header #3 = {c3}" if c3 is not None
+                                     else "") + ": the file contradicts itself")
     f = _factor(p, key, f"COSMOS data header units={r['units_text']}", units, factor)
 
     # time step: real #62 (ms), else real #34 (s), else the caller's dt
@@ -518,11 +565,18 @@ def read_cosmos(p: Path, lines: list[str], units: str | None, factor: float | No
     vals, n = r["values"], r["npts"]
     if n < 2:
         raise RecordError(f"{p}, line {r['data_line']}: a record needs at least 2 samples")
-    if (length := rval(63)) is not None and \
-            min(abs(length - n * step), abs(length - (n - 1) * step)) > 0.5 * step + 1e-6:
-        raise RecordError(f"{p}: the COSMOS real header #63 states a series length of "
-                          f"{length:g} s but {n} points every {step:g} s last {n * step:g} s "
-                          "(the file looks cut or its time step is wrong)")
+    if (length := rval(63)) is not None:  # npts dt (or (npts - 1) dt) to their rounding
+        tol = _half_ulp(_field(lines, r["reals_start"], r["reals_fmt"], 62))
+        if dt_from == "file":
+            k = 61 if rval(62) is not None else 33
+            tol += n * _half_ulp(_field(lines, r["reals_start"], r["reals_fmt"], k)) * \
+                (1e-3 if k == 61 else 1.0)
+        if min(abs(length - n * step), abs(length - (n - 1) * step)) > tol * (1 + 1e-9) + \
+                1e-12 * abs(length):
+            raise RecordError(f"{p}, line {r['reals_start'] + 1 + 62 // 5}: the COSMOS real "
+                              f"header #63 states a series length of {length:g} s but {n} "
+                              f"points every {step:g} s ({where}) last {n * step:.9g} s "
+                              "(the file looks cut or its time step is wrong)")
     if r["approx"] is not None and not (
             math.floor((n - 1) * step) - 1.0 <= r["approx"] <= math.ceil(n * step) + 1.0):
         raise RecordError(f"{p}, line {r['data_line']}: the data header states approx "
@@ -567,6 +621,7 @@ def _cosmos_component(r: dict) -> str:
 # ------------------------------------------------------------------------------ K-NET
 _KNET_SCALE = re.compile(r"^Scale Factor\s+(\d+(?:\.\d*)?)\s*\(\s*([^)]*?)\s*\)\s*/\s*"
                          r"(\d+(?:\.\d*)?)\s*$")
+_KNET_MAX = re.compile(r"^Max\.?\s*Acc\.?\s*\(\s*([^)]*?)\s*\)")
 _KNET_HEADER_LINES = 17
 _KIKNET_SENSORS = {"1": "borehole", "2": "borehole", "3": "borehole",
                    "4": "surface", "5": "surface", "6": "surface"}
@@ -628,6 +683,12 @@ def read_knet(p: Path, lines: list[str], units: str | None, factor: float | None
     peak = float(np.max(np.abs(gal)))
     stated_s = hdr[14].split()[-1]
     stated = _as_float(p, 15, stated_s, "Max. Acc.")
+    if (mu := _KNET_MAX.match(hdr[14])) is not None:
+        k15 = _unit_key(p, mu[1], "line 15 (Max. Acc.)")
+        if ACCELERATION[k15] != ACCELERATION[key]:
+            raise RecordError(f"{p}, line 15: Max. Acc. is stated in ({mu[1]}) but line 14's "
+                              f"Scale Factor in ({word}): the file contradicts itself (which "
+                              "unit are the counts scaled to?)")
     _check_peak(p, "line 15 (Max. Acc., after subtracting the mean)", stated, peak,
                 0.5 * 10.0 ** -_decimals(stated_s), "gal")
     direction = hdr[12].split(None, 1)[1].strip() if len(hdr[12].split()) > 1 else ""

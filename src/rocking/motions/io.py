@@ -98,6 +98,7 @@ _QUALIFIERS = {"in", "of", "ground", "horizontal", "vertical", "hor", "ver", "ve
                "x", "y", "z", "n", "e", "ns", "ew", "ud", "up", "h1", "h2", "component",
                "comp", "abs", "absolute", "input", "base", "table", "record", "value"}
 
+_AT2_MAX_DT = 1.0  # s: the longest time step of a PEER .AT2 file read (1 Hz)
 _DT_RTOL = 1e-6  # relative tolerance on time steps (uneven steps, dt disagreements)
 
 
@@ -375,6 +376,14 @@ def _read_at2(p: Path, lines: list[str], units: str, factor: float, dt: float | 
     m_n, m_dt, m_alt = _AT2_NPTS.search(hdr), _AT2_DT.search(hdr), _AT2_ALT.match(hdr)
     if m_n and m_dt:
         npts, step = int(m_n[1]), _float(m_dt[1]) * _time_factor(p, 4, m_dt[2], "DT")
+        for m in _AT2_NPTS.finditer(hdr):  # stated twice: the statements must agree
+            if int(m[1]) != npts:
+                raise RecordError(f"{p}, line 4: NPTS={m[1]} contradicts NPTS={m_n[1]} on "
+                                  "the same line")
+        for m in _AT2_DT.finditer(hdr):
+            if not _close(_float(m[1]) * _time_factor(p, 4, m[2], "DT"), step):
+                raise RecordError(f"{p}, line 4: DT={m[1]} contradicts DT={m_dt[1]} on the "
+                                  "same line")
     elif m_alt:
         npts, step = int(m_alt[1]), _float(m_alt[2])
     else:
@@ -387,6 +396,9 @@ def _read_at2(p: Path, lines: list[str], units: str, factor: float, dt: float | 
                           f"states NPTS={npts}")
     if not (math.isfinite(step) and step > 0.0):
         raise RecordError(f"{p}, line 4: DT must be > 0 s, got {step!r}")
+    if step > _AT2_MAX_DT:  # no other field to check it against: a bound
+        raise RecordError(f"{p}, line 4: DT = {step:g} s; an accelerogram is sampled every "
+                          f"{_AT2_MAX_DT:g} s or less (is DT in ms? write 'DT= {step:g} MSEC')")
     if dt is not None and not _close(dt, step):
         raise RecordError(f"{p}: dt={dt:g} s was passed but the header (line 4) states "
                           f"DT={step:g} s")
@@ -498,27 +510,42 @@ def _header_statements(p: Path, lines: list[str], i: int, s: str, found: dict) -
     if _TITLE.match(s):
         return  # write_csv's title line holds the record's name, whatever it says
     ln = i + 1
-    m = _HDR_DT.search(s)
-    if m and "dt" not in found:
+    for m in _HDR_DT.finditer(s):
         pre, pre_b, num, post_b, post = m.groups()
         before, after = pre or pre_b, post_b if post_b is not None else post
         f_before = _time_factor(p, ln, before, "dt")
         f_after = _time_factor(p, ln, after, "dt")
         if before and after and not _close(f_before, f_after):
             raise RecordError(f"{p}, line {ln}: dt is stated in {before!r} and in {after!r}")
-        found["dt"] = (_float(num) * (f_before if before else f_after), ln)
-    m = _HDR_NPTS.search(s)
-    if m and "npts" not in found:
+        v = _float(num) * (f_before if before else f_after)
+        if "dt" in found:  # stated again: it must agree
+            if not _close(found["dt"][0], v):
+                raise RecordError(f"{p}, line {ln}: dt = {v:g} s contradicts dt = "
+                                  f"{found['dt'][0]:g} s stated on line {found['dt'][1]}")
+            continue
+        found["dt"] = (v, ln)
+    for m in _HDR_NPTS.finditer(s):
         if not m[1].isdigit():
             raise RecordError(f"{p}, line {ln}: npts must be a whole number, got {m[1]!r}")
+        if "npts" in found:
+            if found["npts"][0] != int(m[1]):
+                raise RecordError(f"{p}, line {ln}: npts = {m[1]} contradicts npts = "
+                                  f"{found['npts'][0]} stated on line {found['npts'][1]}")
+            continue
         found["npts"] = (int(m[1]), ln)
     m = _HDR_UNITS.match(s)
-    if m and "units" not in found:
+    if m:
         u = m[1]
         key = acceleration_unit(u)
         if key is None:
             raise RecordError(f"{p}, line {ln}: unknown units {u!r} stated in the header; "
                               f"use one of {', '.join(ACCELERATION_UNITS)}")
+        if "units" in found:
+            u0, key0, ln0 = found["units"]
+            if not _close(ACCELERATION[key], ACCELERATION[key0]):
+                raise RecordError(f"{p}, line {ln}: units {u!r} contradict units {u0!r} "
+                                  f"stated on line {ln0}")
+            return
         found["units"] = (u, key, ln)
 
 

@@ -24,12 +24,21 @@ welding made degenerate (two equal corners) and the unused vertices. A mesh of s
 closed parts is accepted as one rigid body, with a warning (a hollow body's inner surface,
 wound inwards, is one of them; floating debris of a scan is another).
 
+The file is checked before trimesh reads it (trimesh drops or reshapes what it does not
+understand): a vertex line without three numbers, a non-finite coordinate or one beyond
+``COORD_LIMIT`` (no block is that large; such numbers overflow the mass properties), a face
+of fewer than three vertices or one that indexes a vertex the file does not hold, a facet
+of an ASCII STL without three vertices, a binary STL whose size disagrees with its
+triangle count, are each refused in one line naming the file, the line (the triangle of a
+binary STL, the vertex of a binary PLY) and the defect.
+
 Only numpy and scipy are needed (trimesh's readers for STL, OBJ and PLY need numpy alone;
 nothing here calls the functions of trimesh that need networkx).
 """
 
 from __future__ import annotations
 
+import math
 import os
 
 import numpy as np
@@ -42,6 +51,10 @@ FORMATS = ("stl", "obj", "ply")
 
 UNITS = ("m", "cm", "mm")
 """Length units of a mesh file (scans often come in mm)."""
+
+
+COORD_LIMIT = 1e9
+"""Largest coordinate magnitude accepted (in the file's units, and in m for arrays)."""
 
 
 def unit_scale(units) -> float:
@@ -63,16 +76,259 @@ def read_mesh(path, units="m") -> tuple[np.ndarray, np.ndarray]:
         raise ParameterError(f"mesh file must be .stl, .obj or .ply, got {path!r}")
     if not os.path.isfile(path):
         raise ParameterError(f"mesh file {path!r} does not exist")
+    check_file(path, ext)
     try:
         mesh = trimesh.load(path, file_type=ext, force="mesh", process=False)
     except Exception as exc:  # a reader's own error: one line, with the file's name
         raise ParameterError(f"cannot read mesh {path!r}: {type(exc).__name__}: {exc}"
                              ) from None
-    vertices = np.asarray(getattr(mesh, "vertices", ()), dtype=np.float64).reshape(-1, 3)
-    faces = np.asarray(getattr(mesh, "faces", ()), dtype=np.int64).reshape(-1, 3)
+    vertices = np.asarray(getattr(mesh, "vertices", ()), dtype=np.float64)
+    faces = np.asarray(getattr(mesh, "faces", ()), dtype=np.int64)
+    if vertices.ndim != 2 or vertices.shape[1:] != (3,) or faces.ndim != 2 or \
+            faces.shape[1:] != (3,):
+        raise ParameterError(f"cannot read mesh {path!r}: not a triangle mesh (vertices "
+                             f"{vertices.shape}, faces {faces.shape})")
     if len(faces) == 0:
         raise ParameterError(f"mesh {path!r} has no triangles")
+    _check_arrays(vertices, faces, f"mesh {path!r}", COORD_LIMIT)
     return vertices * scale, faces
+
+
+def _check_arrays(v: np.ndarray, f: np.ndarray, what: str, limit: float) -> None:
+    """Refuse non-finite or too large coordinates and faces indexing missing vertices,
+    naming the first vertex or face (1-based)."""
+    bad = np.flatnonzero(~np.isfinite(v).all(axis=1))
+    if bad.size:
+        raise ParameterError(f"{what}: vertex {bad[0] + 1} has a non-finite coordinate "
+                             f"{v[bad[0]].tolist()}")
+    big = np.flatnonzero((np.abs(v) > limit).any(axis=1))
+    if big.size:
+        raise ParameterError(f"{what}: vertex {big[0] + 1} has a coordinate beyond "
+                             f"{limit:g} in magnitude {v[big[0]].tolist()} (no block is that "
+                             "large; such numbers overflow the mass properties)")
+    out = np.flatnonzero(((f < 0) | (f >= len(v))).any(axis=1)) if len(f) else []
+    if len(out):
+        raise ParameterError(f"{what}: face {out[0] + 1} indexes a vertex outside "
+                             f"1..{len(v)} ({(f[out[0]] + 1).tolist()}, 1-based)")
+
+
+def _number(path, ln: int, tok: str, what: str) -> float:
+    try:
+        x = float(tok)
+    except ValueError:
+        raise ParameterError(f"mesh {path!r}, line {ln}: non-numeric {what} {tok!r}"
+                             ) from None
+    if not math.isfinite(x):
+        raise ParameterError(f"mesh {path!r}, line {ln}: non-finite {what} {tok!r}")
+    if abs(x) > COORD_LIMIT:
+        raise ParameterError(f"mesh {path!r}, line {ln}: {what} {tok} beyond {COORD_LIMIT:g} "
+                             "in magnitude (no block is that large; such numbers overflow the "
+                             "mass properties)")
+    return x
+
+
+def _index(path, ln: int, tok: str, what: str) -> int:
+    try:
+        return int(tok)
+    except ValueError:
+        raise ParameterError(f"mesh {path!r}, line {ln}: {what} {tok!r} is not a whole "
+                             "number") from None
+
+
+def check_file(path, ext: str) -> None:
+    """Refuse a malformed STL, OBJ or PLY file in one line naming the file, the line (or
+    the binary record) and the defect (module doc); a file trimesh reads as it is passes."""
+    with open(path, "rb") as fh:
+        data = fh.read()
+    if ext == "obj":
+        _check_obj(path, data)
+    elif ext == "stl":
+        _check_stl(path, data)
+    else:
+        _check_ply(path, data)
+
+
+def _lines(data: bytes) -> list[str]:
+    return data.decode("utf-8", errors="replace").splitlines()
+
+
+def _check_obj(path, data: bytes) -> None:
+    lines = _lines(data)
+    nv = sum(1 for ln in lines if ln.lstrip().startswith(("v ", "v\t")))
+    seen = 0
+    for i, line in enumerate(lines, 1):
+        toks = line.split("#", 1)[0].split()
+        if not toks:
+            continue
+        if toks[0] == "v":
+            if len(toks) < 4:
+                raise ParameterError(f"mesh {path!r}, line {i}: a vertex line with "
+                                     f"{len(toks) - 1} coordinate(s); x y z needed")
+            for t, axis in zip(toks[1:4], "xyz", strict=True):
+                _number(path, i, t, f"{axis} coordinate")
+            seen += 1
+        elif toks[0] == "f":
+            if len(toks) < 4:
+                raise ParameterError(f"mesh {path!r}, line {i}: a face of {len(toks) - 1} "
+                                     "vertex index(es); a face needs at least 3")
+            for t in toks[1:]:
+                k = _index(path, i, t.split("/", 1)[0], "vertex index")
+                j = k if k > 0 else seen + k + 1  # negative: relative to the vertices so far
+                if k == 0 or not 1 <= j <= nv:
+                    raise ParameterError(f"mesh {path!r}, line {i}: vertex index {k} "
+                                         f"outside the file's {nv} vertices (1..{nv}, or "
+                                         "-1 back)")
+
+
+_STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("v", "<f4", (3, 3)), ("attr", "<u2")])
+
+
+def _check_stl(path, data: bytes) -> None:
+    if len(data) >= 84:
+        n = int(np.frombuffer(data, "<u4", 1, 80)[0])
+        if len(data) == 84 + 50 * n:  # binary
+            tri = np.frombuffer(data, _STL_RECORD, n, 84)["v"].astype(np.float64)
+            bad = np.flatnonzero(~(np.isfinite(tri) & (np.abs(tri) <= COORD_LIMIT))
+                                 .reshape(n, 9).all(axis=1))
+            if bad.size:
+                k = int(bad[0])
+                what = ("a non-finite coordinate" if not np.isfinite(tri[k]).all() else
+                        f"a coordinate beyond {COORD_LIMIT:g} in magnitude (no block is that "
+                        "large; such numbers overflow the mass properties)")
+                raise ParameterError(f"mesh {path!r}: binary STL triangle {k + 1} (byte "
+                                     f"{84 + 50 * k}) has {what}: {tri[k].tolist()}")
+            return
+        if not data.lstrip()[:5].lower() == b"solid":
+            raise ParameterError(f"mesh {path!r}: a binary STL's header states {n} "
+                                 f"triangles, i.e. 84 + 50 x {n} = {84 + 50 * n} bytes, but "
+                                 f"the file has {len(data)} bytes (the file looks cut or "
+                                 "corrupt)")
+    elif not data.lstrip()[:5].lower() == b"solid":
+        raise ParameterError(f"mesh {path!r}: {len(data)} bytes, neither an ASCII STL "
+                             "('solid ...') nor a binary one (84 bytes at least)")
+    corners, facet = 0, None
+    for i, line in enumerate(_lines(data), 1):
+        toks = line.split()
+        if not toks:
+            continue
+        word = toks[0].lower()
+        if word == "vertex":
+            if len(toks) != 4:
+                raise ParameterError(f"mesh {path!r}, line {i}: a vertex line with "
+                                     f"{len(toks) - 1} coordinate(s); x y z needed")
+            for t, axis in zip(toks[1:], "xyz", strict=True):
+                _number(path, i, t, f"{axis} coordinate")
+            corners += 1
+        elif word == "facet":
+            corners, facet = 0, i
+        elif word == "endfacet":
+            if corners != 3:
+                raise ParameterError(f"mesh {path!r}, line {facet or i}: a facet with "
+                                     f"{corners} vertices; a triangle needs 3")
+            facet = None
+    if facet is not None:
+        raise ParameterError(f"mesh {path!r}, line {facet}: the facet is not closed "
+                             "('endfacet' missing: the file looks cut)")
+
+
+_PLY_TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2",
+              "int16": "i2", "ushort": "u2", "uint16": "u2", "int": "i4", "int32": "i4",
+              "uint": "u4", "uint32": "u4", "float": "f4", "float32": "f4", "double": "f8",
+              "float64": "f8"}
+
+
+def _check_ply(path, data: bytes) -> None:
+    end = data.find(b"end_header")
+    if not data.startswith(b"ply") or end < 0:
+        raise ParameterError(f"mesh {path!r}: not a PLY file (it must start with 'ply' and "
+                             "have an 'end_header' line)")
+    head = data[:end].decode("ascii", errors="replace").splitlines()
+    fmt, elements = None, []  # [name, count, [(property, type or ('list', ctype, itype))]]
+    for i, line in enumerate(head, 1):
+        toks = line.split()
+        if not toks:
+            continue
+        if toks[0] == "format" and len(toks) > 1:
+            fmt = toks[1]
+        elif toks[0] == "element":
+            if len(toks) != 3 or not toks[2].isdigit():
+                raise ParameterError(f"mesh {path!r}, line {i}: expected 'element <name> "
+                                     f"<count>', got {line.strip()!r}")
+            elements.append([toks[1], int(toks[2]), []])
+        elif toks[0] == "property" and elements:
+            if any(toks[-1] == q for q, _ in elements[-1][2]):
+                raise ParameterError(f"mesh {path!r}, line {i}: the property {toks[-1]!r} of "
+                                     f"the element {elements[-1][0]!r} is declared twice")
+            elements[-1][2].append((toks[-1], tuple(toks[1:-1])))
+    names = [e[0] for e in elements]
+    if "vertex" not in names:
+        raise ParameterError(f"mesh {path!r}: the PLY header declares no vertex element")
+    nv = elements[names.index("vertex")][1]
+    body = data[end + len(b"end_header"):]
+    body = body[1:] if body.startswith(b"\n") else body[2:] if body.startswith(b"\r\n") \
+        else body
+    if fmt == "ascii":
+        rows = _lines(body)
+        first = len(head) + 2  # 1-based line of the first data row
+        r = 0
+        for name, count, props in elements:
+            for _ in range(count):
+                while r < len(rows) and not rows[r].split():
+                    r += 1
+                if r >= len(rows):
+                    raise ParameterError(f"mesh {path!r}: the header declares {count} "
+                                         f"{name} lines, the file ends before (the file "
+                                         "looks cut)")
+                _ply_row(path, first + r, rows[r].split(), name, props, nv)
+                r += 1
+    elif fmt in ("binary_little_endian", "binary_big_endian") and elements[0][0] == "vertex":
+        props = elements[0][2]
+        if all(len(t) == 1 and t[0] in _PLY_TYPES for _, t in props):
+            order = "<" if fmt == "binary_little_endian" else ">"
+            dt = np.dtype([(nm, order + _PLY_TYPES[t[0]]) for nm, t in props])
+            if len(body) < dt.itemsize * nv:
+                raise ParameterError(f"mesh {path!r}: the header declares {nv} vertices "
+                                     f"({dt.itemsize * nv} bytes), the file ends before "
+                                     "(the file looks cut)")
+            rec = np.frombuffer(body, dt, nv)
+            axes = [a for a in "xyz" if a in dt.names]
+            if len(axes) < 3:
+                raise ParameterError(f"mesh {path!r}: the PLY vertex element has no "
+                                     "x, y and z properties")
+            xyz = np.column_stack([rec[a].astype(np.float64) for a in axes])
+            _check_arrays(xyz, np.empty((0, 3), np.int64), f"mesh {path!r}", COORD_LIMIT)
+
+
+def _ply_row(path, ln: int, toks: list[str], name: str, props: list, nv: int) -> None:
+    """One row of an ASCII PLY element: the vertex's x y z, a face's index list."""
+    k = 0
+    for prop, typ in props:
+        if k >= len(toks):
+            raise ParameterError(f"mesh {path!r}, line {ln}: a {name} line with {len(toks)} "
+                                 f"value(s); the header declares {len(props)} properties")
+        if typ and typ[0] == "list":
+            c = _index(path, ln, toks[k], "list count")
+            vals = toks[k + 1:k + 1 + c]
+            if len(vals) < c:
+                raise ParameterError(f"mesh {path!r}, line {ln}: a list of {c} values holds "
+                                     f"{len(vals)}")
+            if name == "face" and prop in ("vertex_indices", "vertex_index"):
+                if c < 3:
+                    raise ParameterError(f"mesh {path!r}, line {ln}: a face of {c} vertex "
+                                         "index(es); a face needs at least 3")
+                for t in vals:
+                    j = _index(path, ln, t, "vertex index")
+                    if not 0 <= j < nv:
+                        raise ParameterError(f"mesh {path!r}, line {ln}: vertex index {j} "
+                                             f"outside the file's {nv} vertices (0..{nv - 1})")
+            k += 1 + c
+        else:
+            if name == "vertex" and prop in ("x", "y", "z"):
+                _number(path, ln, toks[k], f"{prop} coordinate")
+            k += 1
+    if k != len(toks):
+        raise ParameterError(f"mesh {path!r}, line {ln}: a {name} line with {len(toks)} "
+                             f"values; the header's properties take {k}")
 
 
 def as_arrays(vertices, faces) -> tuple[np.ndarray, np.ndarray]:
@@ -89,6 +345,7 @@ def as_arrays(vertices, faces) -> tuple[np.ndarray, np.ndarray]:
         raise ParameterError("the mesh has non-finite vertex coordinates")
     if f.min() < 0 or f.max() >= len(v):
         raise ParameterError(f"the mesh's faces index vertices outside 0..{len(v) - 1}")
+    _check_arrays(v, f, "the mesh", COORD_LIMIT)
     return v, f
 
 
