@@ -713,8 +713,14 @@ class HazardCurve:
         if not lines or not lines[0].lstrip().startswith("#"):
             raise ParameterError(f"{p.name}: not an OpenQuake hazard-curve export (no "
                                  "first comment line of metadata)")
-        meta = {k: v.strip().strip("\"'").strip() for k, v in
-                re.findall(r"(\w+)\s*=\s*'?([^,']*)'?", lines[0].lstrip("# "))}
+        pair = re.compile(r"(\w+)\s*=\s*(?:'([^']*)'|([^,'\"]*))")
+        first = lines[0].lstrip().removeprefix("#")
+        meta = {m.group(1): (m.group(2) if m.group(2) is not None else m.group(3)).strip()
+                for m in pair.finditer(first)}
+        rest = re.sub(r"[\s,\"]", "", pair.sub("", first))
+        if rest:
+            raise ParameterError(f"{p.name}, line 1: the metadata line holds {rest[:40]!r} "
+                                 "outside its key=value pairs")
         try:
             T = float(meta["investigation_time"])
         except (KeyError, ValueError):
@@ -740,6 +746,13 @@ class HazardCurve:
                                  f"columns), got {header[:4]}")
         ilon, ilat = header.index("lon"), header.index("lat")
         cols = [i for i, h in enumerate(header) if h.startswith("poe-")]
+        odd = [h for h in header if h not in ("lon", "lat", "depth") and not
+               h.startswith("poe-")]
+        if odd or len(set(header) & {"lon", "lat", "depth"}) != \
+                sum(h in ("lon", "lat", "depth") for h in header):
+            raise ParameterError(f"{p.name}, line {rows[0][0]}: the header holds lon, lat, "
+                                 f"depth (once each) and poe-<level> columns only, got "
+                                 f"{odd[0] if odd else 'a repeated lon, lat or depth'!r}")
         if not cols:
             raise ParameterError(f"{p.name}: no poe-<level> columns")
         for n, r in rows[1:]:
@@ -761,10 +774,10 @@ class HazardCurve:
             raise ParameterError(f"{p.name}: a poe-<level> column is repeated "
                                  f"({[header[i] for i in cols]})")
         for n, r in rows[1:]:
-            bad = next((r[i] for i in (ilon, ilat, *cols) if not _is_float(r[i])), None)
+            bad = next((c for c in r if not _is_float(c)), None)
             if bad is not None:
                 raise ParameterError(f"{p.name}, line {n}: {bad.strip()!r} is not a number "
-                                     "(lon, lat and every poe-<level> hold numbers)")
+                                     "(lon, lat, depth and every poe-<level> hold numbers)")
             lo, la = float(r[ilon]), float(r[ilat])
             if not (math.isfinite(lo) and -180 <= lo < 360 and math.isfinite(la)
                     and -90 <= la <= 90):
