@@ -102,47 +102,211 @@ RATE_WORDS = ("rate", "annual rate", "lambda", "AFE", "MAFE", "frequency", "1/yr
 PERIOD_WORDS = ("return period", "T_R", "Tr", "RP", "T", "years")
 POE_WORDS = ("poe", "prob", "probability")
 
+#: Days in a year of a hazard header's ``days`` (the Julian year); a month is 1/12 year.
+DAYS_PER_YEAR = 365.25
+#: Units of time of a hazard header, in years.
+TIME_UNITS = {**dict.fromkeys(("y", "yr", "yrs", "year", "years", "annum", "a"), 1.0),
+              **dict.fromkeys(("month", "months", "mo", "mon", "mos", "mth", "mths"),
+                              1.0 / 12.0),
+              **dict.fromkeys(("day", "days", "d"), 1.0 / DAYS_PER_YEAR)}
 _RATE_TOKENS = {"rate", "rates", "lambda", "afe", "mafe", "frequency", "freq"}
 _PERIOD_TOKENS = {"period", "periods", "return", "tr", "rp", "t"}
-_YEAR_TOKENS = {"y", "yr", "yrs", "year", "years"}
 _POE_TOKENS = {"poe", "poes", "prob", "probability", "probabilities", "ape"}
-_PER_YEAR = re.compile(r"1\s*/\s*(?:y|yr|yrs|year|years|a|annum)(?![a-z])"
-                       r"|/\s*(?:yr|year)(?![a-z])|per\s*[-_ ]?\s*(?:year|yr|annum)(?![a-z])"
-                       r"|(?:yr|year|y)\s*\^?\s*-\s*1(?![0-9])")
-_STATED_YEARS = re.compile(r"(\d+(?:\.\d+)?)\s*[-_ ]?\s*(?:y|yr|yrs|year|years)(?![a-z])")
+_ANNUAL_TOKENS = {"annual", "annually", "yearly"}
+_FILLER_TOKENS = {"of", "in", "exceedance", "exceedances", "exceeding", "mean", "the",
+                  "within", "average"}
+_SEPARATORS = set("()[]{},:;-")
+HEADER_UNITS = ("years, months or days (a return period: 'return period (months)'); per "
+                "year, month or day ('rate (1/month)', 'rate per day'); percent ('%/yr'); "
+                "a probability in T years ('probability of exceedance in 50 years')")
+"""What a hazard CSV's second header may say of its unit (shown in refusals)."""
 
 
-def column_kind(header: str):
-    """``(kind, stated_years)`` of a hazard CSV's second-column header: kind ``"rate"``
-    (rate words or a per-year unit), ``"period"`` (return-period words or a unit of
-    years), ``"poe"`` (a probability of exceedance, whatever else it says),
-    ``"ambiguous"`` (both rate and period words) or None (none of these);
-    ``stated_years``: the times a poe header states (``poe_50yr`` -> 50, ``annual`` -> 1).
+def _words_hint() -> str:
+    return (f"head it with an annual rate of exceedance ({', '.join(RATE_WORDS)}) or a "
+            f"return period ({', '.join(PERIOD_WORDS)}); a probability of exceedance "
+            f"({', '.join(POE_WORDS)}) needs investigation_time=; units: {HEADER_UNITS}")
+
+
+def _as_written(word: str, header: str) -> str:
+    """``word`` (lower case) as ``header`` spells it."""
+    m = re.search(r"(?<![a-z])" + re.escape(word) + r"(?![a-z])", header, re.I)
+    return m.group(0) if m else word
+
+
+def column_meaning(header: str) -> tuple[str, float, tuple]:
+    """``(kind, factor, stated_years)`` of a hazard CSV's second-column header, every word
+    of it understood or refused (:class:`~rocking.errors.ParameterError` naming the word).
+
+    ``kind``: ``"rate"`` (rate words, ``annual`` or a ``per`` unit of time), ``"period"``
+    (return-period words or a bare unit of time) or ``"poe"`` (a probability of
+    exceedance). ``factor`` takes a value to an annual rate (``rate (1/month)``: 12), a
+    return period in years (``return period (days)``: 1/365.25) or a probability
+    (``poe (%)``: 0.01). ``stated_years``: the times a poe header states, in years
+    (``poe_50yr`` -> 50, ``annual`` -> 1). Units: years, months (1/12 year), days
+    (1/:data:`DAYS_PER_YEAR` year), ``per`` / ``1/`` / ``^-1`` of these, ``%``.
 
     Examples
     --------
-    >>> from rocking.analysis.hazard import column_kind
-    >>> column_kind("annual rate (1/year)"), column_kind("T_R (years)")
-    (('rate', ()), ('period', ()))
-    >>> column_kind("poe_50yr"), column_kind("value")
-    (('poe', (50.0,)), (None, ()))
+    >>> from rocking.analysis.hazard import column_meaning
+    >>> column_meaning("annual rate (1/year)"), column_meaning("return period (months)")
+    (('rate', 1.0, ()), ('period', 0.08333333333333333, ()))
+    >>> column_meaning("exceedance rate (%/yr)"), column_meaning("poe_50yr")
+    (('rate', 0.01, ()), ('poe', 1.0, (50.0,)))
+    >>> try:
+    ...     column_meaning("frequency (Hz)")
+    ... except ValueError as e:
+    ...     print(str(e)[:60])
+    the second column's header 'frequency (Hz)': 'Hz' is not a w
     """
-    low = str(header).strip().lower()
-    words = set(re.findall(r"[a-z]+", low))
-    if words & _POE_TOKENS or re.search(r"(?<![a-z0-9])p[\s_]*\(?\s*(?:im\s*)?>", low):
-        stated = {float(v) for v in _STATED_YEARS.findall(low)}
-        if words & {"annual", "yearly", "ape"}:
-            stated.add(1.0)
-        return "poe", tuple(sorted(stated))
-    per_year = _PER_YEAR.search(low) is not None
-    rest = _PER_YEAR.sub(" ", low)
-    rest = re.sub(r"(?<![a-z0-9])t[\s_-]?r(?![a-z0-9])", " tr ", rest)
-    tokens = set(re.findall(r"[a-z]+", rest))
-    rate = bool(tokens & _RATE_TOKENS) or per_year
-    period = bool(tokens & _PERIOD_TOKENS) or bool(tokens & _YEAR_TOKENS)
-    if rate and period:
-        return "ambiguous", ()
-    return ("rate" if rate else "period" if period else None), ()
+    head = str(header).strip()
+    low = head.lower()
+    low = re.sub(r"(?<![a-z0-9])p\s*\(\s*(?:im|x|iml)?\s*>\s*[a-z0-9.]*\s*\)", " poe ", low)
+    low = re.sub(r"(?<![a-z0-9])t[\s_-]?r(?![a-z0-9])", " tr ", low)
+    low = low.replace("_", " ")
+    low = re.sub(r"(?<![\d.])1\s*/\s*", " per ", low)
+    low = low.replace("/", " per ")
+    low = re.sub(r"([a-z]+)\s*\^\s*-\s*1(?![\d.])|([a-z]+)\s*-\s*1(?![\d.])",
+                 lambda m: f" per {m.group(1) or m.group(2)} ", low)
+    low = low.replace("%", " percent ")
+    low = re.sub(r"(\d)([a-z])", r"\1 \2", low)
+    toks = re.findall(r"[a-z]+|\d+(?:\.\d+)?|\S", low)
+    where = f"the second column's header {head!r}"
+
+    def unknown(word):
+        shown = _as_written(word, head)
+        raise ParameterError(f"{where}: {shown!r} is not a word of a hazard header; "
+                             + _words_hint())
+
+    kinds, per, bare, stated = set(), [], [], []
+    percent = annual = False
+    i = 0
+    while i < len(toks):
+        w = toks[i]
+        nxt = toks[i + 1] if i + 1 < len(toks) else None
+        if w in _SEPARATORS:
+            pass
+        elif w == "per":
+            if nxt is None or nxt not in TIME_UNITS:
+                unknown(nxt if nxt is not None and nxt not in _SEPARATORS else "per")
+            per.append(nxt)
+            i += 1
+        elif w[0].isdigit():
+            if nxt is None or nxt not in TIME_UNITS:
+                raise ParameterError(
+                    f"{where}: the number {w} must be a time with its unit ('in 50 years', "
+                    f"'poe_50yr'); " + _words_hint())
+            stated.append(float(w) * TIME_UNITS[nxt])
+            i += 1
+        elif w in TIME_UNITS and w != "a":
+            bare.append(w)
+        elif w == "percent":
+            percent = True
+        elif w in _ANNUAL_TOKENS:
+            annual = True
+        elif w in _RATE_TOKENS:
+            kinds.add("rate")
+        elif w in _PERIOD_TOKENS:
+            kinds.add("period")
+        elif w in _POE_TOKENS:
+            kinds.add("poe")
+            annual = annual or w == "ape"
+        elif w not in _FILLER_TOKENS:
+            unknown(w)
+        i += 1
+    scale = 0.01 if percent else 1.0
+    if "poe" in kinds:
+        if kinds - {"poe"} or per:
+            raise ParameterError(f"{where} names a probability of exceedance and a "
+                                 f"{'rate' if 'rate' in kinds or per else 'return period'}:"
+                                 " keep one")
+        if bare:
+            raise ParameterError(f"{where}: a probability of exceedance has no unit of "
+                                 f"time ({_as_written(bare[0], head)!r}); state the years "
+                                 "it refers to as 'poe in 50 years'")
+        if annual:
+            stated.append(1.0)
+        return "poe", scale, tuple(sorted(set(stated)))
+    if stated:
+        raise ParameterError(f"{where}: a time ('{stated[0]:g} years') belongs to a "
+                             "probability of exceedance only; " + _words_hint())
+    rate = bool(kinds & {"rate"}) or bool(per) or annual
+    if rate and ("period" in kinds or bare):
+        raise ParameterError(f"{where} names both a rate and a return period (in "
+                             f"{_as_written((bare or ['years'])[0], head)}): keep one")
+    if rate:
+        units = {TIME_UNITS[u] for u in per} | ({1.0} if annual else set())
+        if len(units) > 1:
+            raise ParameterError(f"{where} states two units of time "
+                                 f"({', '.join(sorted({*per, *(['annual'] if annual else [])}))})"
+                                 ": keep one")
+        return "rate", scale / (units.pop() if units else 1.0), ()
+    if "period" in kinds or bare:
+        units = {TIME_UNITS[u] for u in bare}
+        if len(units) > 1:
+            raise ParameterError(f"{where} states two units of time ({', '.join(bare)}): "
+                                 "keep one")
+        if percent:
+            raise ParameterError(f"{where}: a return period is not a percentage (%); "
+                                 + _words_hint())
+        return "period", (units.pop() if units else 1.0), ()
+    raise ParameterError(f"{where} does not say what it holds: " + _words_hint())
+
+
+def _text(p: Path) -> str:
+    """The text of hazard file ``p`` (UTF-8, a BOM allowed); a binary or UTF-16 file is
+    refused naming it."""
+    try:
+        data = p.read_bytes()
+    except OSError as e:
+        raise ParameterError(f"{p.name}: cannot read it ({e.strerror or e})") from None
+    if data[:2] in (b"\xff\xfe", b"\xfe\xff"):
+        raise ParameterError(f"{p.name} is UTF-16 text: save it as UTF-8 (a CSV in UTF-8)")
+    nul = data.find(b"\x00")
+    if nul >= 0:
+        raise ParameterError(f"{p.name} is not a text file (a NUL byte at offset {nul}: "
+                             "binary or UTF-16): a hazard file is a CSV in UTF-8")
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as e:
+        raise ParameterError(f"{p.name} is not UTF-8 text (byte 0x{data[e.start]:02x} at "
+                             f"offset {e.start}): save it as UTF-8") from None
+
+
+def _csv_row(line: str, name: str, n: int) -> list[str]:
+    try:
+        return next(csv.reader([line]))
+    except (csv.Error, StopIteration) as e:
+        raise ParameterError(f"{name}, line {n}: not a CSV row ({e})") from None
+
+
+#: IM headers that name no IM (the ``im_name`` given names it).
+GENERIC_IM_NAMES = ("im", "iml", "imls", "intensity", "intensitymeasure", "level", "levels",
+                    "x")
+
+
+def _im_key(name: str) -> str:
+    return re.sub(r"[\s_]", "", str(name)).lower()
+
+
+def same_im(a: str, b: str) -> bool:
+    """Whether two IM names are the same IM: case, blanks and underscores aside, and
+    ``SA(1)`` the same as ``SA(1.0)``.
+
+    Examples
+    --------
+    >>> from rocking.analysis.hazard import same_im
+    >>> same_im("PGA", "pga"), same_im("SA(1)", "Sa(1.0)"), same_im("SA(1.0)", "PGA")
+    (True, True, False)
+    """
+    ka, kb = _im_key(a), _im_key(b)
+    if ka == kb:
+        return True
+    ma, mb = (re.fullmatch(r"sa\(([0-9.]+)s?\)", k) for k in (ka, kb))
+    try:
+        return bool(ma and mb and float(ma.group(1)) == float(mb.group(1)))
+    except ValueError:
+        return False
 
 
 def probability_in(t_years, annual_frequency):
@@ -167,6 +331,26 @@ def probability_in(t_years, annual_frequency):
                              f"{annual_frequency!r}")
     p = -np.expm1(-lam * t)
     return float(p) if p.ndim == 0 else p
+
+
+def _is_float(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+_KEYS_FIRST = re.compile(r"(path|site|im_name|unit|investigation_time|max_distance_km|"
+                         r"label)\b")
+
+
+def _in_file(msg: str, name: str) -> str:
+    """``msg`` naming the file ``name``: as it is if it does, else ``name: msg`` (or
+    ``msg (name)`` where it starts with an argument's name)."""
+    if name in msg:
+        return msg
+    return f"{msg} ({name})" if _KEYS_FIRST.match(msg) else f"{name}: {msg}"
 
 
 class HazardCurve:
@@ -359,14 +543,22 @@ class HazardCurve:
     @classmethod
     def from_csv(cls, path, *, im_name: str | None = None, unit: str | None = None,
                  label: str = "", investigation_time=None):
-        """A CSV with two columns: the IM and, by the second header (:func:`column_kind`),
-        the annual rate of exceedance (``rate``, ``annual rate``, ``lambda``, ``AFE``,
-        ``MAFE``, ``frequency``, ``1/yr``, ``per year``) or the return period (``return
-        period``, ``T_R``, ``Tr``, ``RP``, ``T``, ``years``). A probability of exceedance
-        (``poe``, ``probability``) is read only with ``investigation_time`` T (years):
-        ``rate = -ln(1 - poe) / T`` (Poisson, as for OpenQuake); any other header is
-        refused. The IM unit is taken from the first header (``pga_g``, ``PGA (g)``,
-        ``PGA [m/s^2]``) unless given as ``unit``; lines starting with ``#`` are skipped.
+        """A CSV with two columns: the IM and, by the second header
+        (:func:`column_meaning`), the annual rate of exceedance (``rate``, ``annual rate``,
+        ``lambda``, ``AFE``, ``MAFE``, ``frequency``, ``1/yr``, ``per year``) or the return
+        period (``return period``, ``T_R``, ``Tr``, ``RP``, ``T``, ``years``), in the unit
+        it states: ``return period (months)``, ``T_R (days)``, ``rate (1/month)``,
+        ``rate per day``, ``exceedance rate (%/yr)`` (a month is 1/12 year, a day
+        1/365.25 year); any other word is refused, naming it. A probability of exceedance
+        (``poe``, ``probability``, ``probability of exceedance in 50 years``, ``poe (%)``)
+        is read only with ``investigation_time`` T (years), which must agree with the time
+        the header states: ``rate = -ln(1 - poe) / T`` (Poisson, as for OpenQuake). The IM
+        and its unit are taken from the first header (``pga_g``, ``PGA (g)``,
+        ``SA(1.0) [m/s^2]``) unless given as ``im_name`` and ``unit``, which must then
+        agree with it (an ``im_name`` names a header such as ``IM (g)``). Lines starting
+        with ``#`` and blank lines are skipped; a row of another length than the header,
+        or a value that is not a finite number, is refused with its line number; the file
+        must be UTF-8 text.
 
         Examples
         --------
@@ -378,36 +570,54 @@ class HazardCurve:
         HazardCurve('hazard.csv', PGA in g, 3 points 0.1..0.4)
         >>> curve.rate.tolist(), round(curve.im_at_return_period(1000), 6)  # rate = 1 / T
         ([0.01, 0.001, 0.0001], 0.2)
+        >>> with open("months.csv", "w") as f:  # the same curve, return periods in months
+        ...     _ = f.write("PGA (g),return period (months)\\n0.1,1200\\n0.2,12000\\n0.4,120000\\n")
+        >>> HazardCurve.from_csv("months.csv").rate.tolist()
+        [0.01, 0.001, 0.0001]
         """
         p = Path(path)
         if not p.is_file():
             raise ParameterError(f"path: no such hazard-curve file {str(path)!r}")
-        rows = [r for r in csv.reader(line for line in p.read_text().splitlines()
-                                      if line.strip() and not line.lstrip().startswith("#"))]
-        if len(rows) < 3 or len(rows[0]) < 2:
+        try:
+            return cls._from_csv(p, im_name, unit, label, investigation_time)
+        except ParameterError as e:
+            raise ParameterError(_in_file(str(e), p.name)) from None
+
+    @classmethod
+    def _from_csv(cls, p: Path, im_name, unit, label, investigation_time):
+        rows = [(n, _csv_row(line, p.name, n))
+                for n, line in enumerate(_text(p).splitlines(), 1)
+                if line.strip() and not line.lstrip().startswith("#")]
+        if len(rows) < 3 or len(rows[0][1]) < 2:
             raise ParameterError(f"{p.name}: a header and at least 2 rows of two columns "
                                  "(IM, annual rate or return period) are needed")
-        h_im, h_y = rows[0][0].strip(), rows[0][1].strip()
-        m = re.match(r"^\s*([A-Za-z][\w().]*?)\s*(?:[\[(]\s*([^\])]+)\s*[\])]|_(g|mps2|"
-                     r"m/s\^?2|cm/s\^?2|gal))?\s*$", h_im)
-        name = im_name or (m.group(1) if m else h_im) or "IM"
+        header = rows[0][1]
+        h_im, h_y = header[0].strip(), header[1].strip()
+        m = re.match(r"^\s*([A-Za-z][\w.]*?(?:\(\s*[0-9.]+\s*s?\s*\))?)\s*(?:[\[(]\s*"
+                     r"([^\])]+?)\s*[\])]|_(g|mps2|m/s\^?2|cm/s\^?2|gal))?\s*$", h_im)
+        head_name = m.group(1) if m else None
+        if im_name is not None:
+            if not isinstance(im_name, str) or not im_name.strip():
+                raise ParameterError(f"im_name must be a non-empty string such as 'PGA', "
+                                     f"got {im_name!r}")
+            if head_name and _im_key(head_name) not in GENERIC_IM_NAMES \
+                    and not same_im(head_name, im_name):
+                raise ParameterError(
+                    f"im_name: the IM asked for is {im_name!r} and {p.name}'s header "
+                    f"{h_im!r} is of {head_name}: they must be the same IM (a curve of "
+                    "one IM is not a curve of another)")
+        name = im_name or head_name or h_im or "IM"
         head_unit = (m.group(2) or m.group(3)) if m else None
         if unit is None and head_unit is None:
             raise ParameterError(f"unit: {p.name}'s IM header {h_im!r} states no unit; "
-                                 "give unit='g' or write it as 'PGA (g)'")
+                                 f"give unit='g' or write it as '{head_name or 'PGA'} (g)'")
+        if head_unit is not None and _unit_factor(head_unit.strip()) is None:
+            raise ParameterError(f"unit: {p.name}'s IM header {h_im!r} states the unit "
+                                 f"{head_unit!r}, not one of {sorted(IM_UNITS)}")
         u = (unit or head_unit).strip()
         if unit and head_unit and _unit_factor(head_unit) != _unit_factor(unit):
             raise ParameterError(f"unit={unit!r} contradicts the header {h_im!r}")
-        kind, stated = column_kind(h_y)
-        if kind is None:
-            raise ParameterError(
-                f"{p.name}: the second column's header {h_y!r} does not say what it holds: "
-                f"head it with an annual rate of exceedance ({', '.join(RATE_WORDS)}) or a "
-                f"return period ({', '.join(PERIOD_WORDS)}); a probability of exceedance "
-                f"({', '.join(POE_WORDS)}) needs investigation_time=")
-        if kind == "ambiguous":
-            raise ParameterError(f"{p.name}: the second column's header {h_y!r} names both "
-                                 "a rate and a return period: keep one")
+        kind, factor, stated = column_meaning(h_y)
         if kind == "poe" and investigation_time is None:
             hint = (f"{stated[0]:g} (the years it refers to)" if len(stated) == 1
                     else "T (the years it refers to, e.g. 50)")
@@ -419,14 +629,31 @@ class HazardCurve:
         if kind != "poe" and investigation_time is not None:
             raise ParameterError(f"investigation_time applies to a probability-of-"
                                  f"exceedance column only; {p.name}'s {h_y!r} is a {kind}")
-        try:
-            data = np.array([[float(r[0]), float(r[1])] for r in rows[1:]])
-        except (ValueError, IndexError):
-            raise ParameterError(f"{p.name}: every row must hold two numbers") from None
-        v = data[:, 1]
+        width = len(header)
+        data, lines = [], []
+        for n, r in rows[1:]:
+            if len(r) != width:
+                raise ParameterError(
+                    f"{p.name}, line {n}: {len(r)} values where the header has {width} "
+                    f"({', '.join(repr(h.strip()) for h in header)}): a value missing or "
+                    "one too many")
+            try:
+                xy = [float(r[0]), float(r[1])]
+            except ValueError:
+                bad = next(c for c in r[:2] if not _is_float(c))
+                raise ParameterError(f"{p.name}, line {n}: {bad.strip()!r} is not a number "
+                                     "(every row holds the IM and its value)") from None
+            if not all(math.isfinite(v) for v in xy):
+                raise ParameterError(f"{p.name}, line {n}: values must be finite numbers, "
+                                     f"got {', '.join(c.strip() for c in r[:2])}")
+            data.append(xy)
+            lines.append(n)
+        data = np.array(data)
+        v = data[:, 1] * factor
         if kind == "period":
             if np.any(~(v > 0)):
-                raise ParameterError(f"{p.name}: return periods must be > 0")
+                n = lines[int(np.flatnonzero(~(v > 0))[0])]
+                raise ParameterError(f"{p.name}, line {n}: return periods must be > 0")
             y = 1.0 / v
         elif kind == "poe":
             T = _positive("investigation_time", investigation_time)
@@ -475,40 +702,88 @@ class HazardCurve:
         p = Path(path)
         if not p.is_file():
             raise ParameterError(f"path: no such OpenQuake file {str(path)!r}")
-        lines = p.read_text().splitlines()
+        try:
+            return cls._from_openquake(p, site, label, max_distance_km)
+        except ParameterError as e:
+            raise ParameterError(_in_file(str(e), p.name)) from None
+
+    @classmethod
+    def _from_openquake(cls, p: Path, site, label, max_distance_km):
+        lines = _text(p).splitlines()
         if not lines or not lines[0].lstrip().startswith("#"):
             raise ParameterError(f"{p.name}: not an OpenQuake hazard-curve export (no "
                                  "first comment line of metadata)")
-        meta = {k: v.strip().strip("\"'").strip() for k, v in
-                re.findall(r"(\w+)\s*=\s*'?([^,']*)'?", lines[0].lstrip("# "))}
+        pair = re.compile(r"(\w+)\s*=\s*(?:'([^']*)'|([^,'\"]*))")
+        first = lines[0].lstrip().removeprefix("#")
+        meta = {m.group(1): (m.group(2) if m.group(2) is not None else m.group(3)).strip()
+                for m in pair.finditer(first)}
+        rest = re.sub(r"[\s,\"]", "", pair.sub("", first))
+        if rest:
+            raise ParameterError(f"{p.name}, line 1: the metadata line holds {rest[:40]!r} "
+                                 "outside its key=value pairs")
         try:
             T = float(meta["investigation_time"])
         except (KeyError, ValueError):
             raise ParameterError(f"{p.name}: the metadata line states no "
                                  "investigation_time") from None
+        if not (math.isfinite(T) and T > 0):
+            raise ParameterError(f"{p.name}: the metadata line's investigation_time must be "
+                                 f"a finite number of years > 0, got "
+                                 f"{meta['investigation_time']!r}")
         imt = meta.get("imt", "").strip()
         if not imt:
             mt = re.search(r"hazard_curve-[^-]+-(.+?)_\d+\.csv$", p.name)
             imt = mt.group(1) if mt else ""
         if not re.fullmatch(r"PGA|SA\([0-9.]+\)", imt):
             raise ParameterError(f"{p.name}: IMT {imt!r} is not PGA or SA(T) (in g)")
-        rows = list(csv.reader(lines[1:]))
-        header = [h.strip() for h in rows[0]]
+        rows = [(n, _csv_row(line, p.name, n)) for n, line in enumerate(lines[1:], 2)
+                if line.strip()]
+        if not rows:
+            raise ParameterError(f"{p.name}: no header line after the metadata line")
+        header = [h.strip() for h in rows[0][1]]
         if "lon" not in header or "lat" not in header:
             raise ParameterError(f"{p.name}: header must hold lon,lat (and poe-<level> "
                                  f"columns), got {header[:4]}")
         ilon, ilat = header.index("lon"), header.index("lat")
         cols = [i for i, h in enumerate(header) if h.startswith("poe-")]
+        odd = [h for h in header if h not in ("lon", "lat", "depth") and not
+               h.startswith("poe-")]
+        if odd or len(set(header) & {"lon", "lat", "depth"}) != \
+                sum(h in ("lon", "lat", "depth") for h in header):
+            raise ParameterError(f"{p.name}, line {rows[0][0]}: the header holds lon, lat, "
+                                 f"depth (once each) and poe-<level> columns only, got "
+                                 f"{odd[0] if odd else 'a repeated lon, lat or depth'!r}")
         if not cols:
             raise ParameterError(f"{p.name}: no poe-<level> columns")
-        data = [r for r in rows[1:] if r]
+        for n, r in rows[1:]:
+            if len(r) != len(header):
+                raise ParameterError(
+                    f"{p.name}, line {n}: {len(r)} values where the header has "
+                    f"{len(header)} (lon, lat, depth and {len(cols)} poe-<level>): a value "
+                    "missing or one too many would shift every later level")
+        data = [r for _, r in rows[1:]]
         try:
             levels = np.array([float(header[i][4:]) for i in cols])
-            for r in data:
-                [float(r[i]) for i in (ilon, ilat, *cols)]
-        except (ValueError, IndexError):
-            raise ParameterError(f"{p.name}: the poe-<level> header and every site row "
-                                 "must hold numbers") from None
+        except ValueError:
+            raise ParameterError(f"{p.name}: the poe-<level> headers must hold numbers, "
+                                 f"got {[header[i] for i in cols]}") from None
+        if not (np.all(np.isfinite(levels)) and np.all(levels > 0)):
+            raise ParameterError(f"{p.name}: the poe-<level> levels must be finite and "
+                                 f"> 0 (g), got {[header[i] for i in cols]}")
+        if np.unique(levels).size != levels.size:
+            raise ParameterError(f"{p.name}: a poe-<level> column is repeated "
+                                 f"({[header[i] for i in cols]})")
+        for n, r in rows[1:]:
+            bad = next((c for c in r if not _is_float(c)), None)
+            if bad is not None:
+                raise ParameterError(f"{p.name}, line {n}: {bad.strip()!r} is not a number "
+                                     "(lon, lat, depth and every poe-<level> hold numbers)")
+            lo, la = float(r[ilon]), float(r[ilat])
+            if not (math.isfinite(lo) and -180 <= lo < 360 and math.isfinite(la)
+                    and -90 <= la <= 90):
+                raise ParameterError(f"{p.name}, line {n}: lon {r[ilon].strip()}, lat "
+                                     f"{r[ilat].strip()} is not a site (lon in [-180, 360), "
+                                     "lat in [-90, 90] degrees)")
         if not data:
             raise ParameterError(f"{p.name}: no site rows")
         dist = None
@@ -542,7 +817,10 @@ class HazardCurve:
         row = data[idx]
         poe = np.array([float(row[i]) for i in cols])
         if np.any(~np.isfinite(poe)) or np.any(poe < 0) or np.any(poe > 1):
-            raise ParameterError(f"{p.name}: poe must be in [0, 1]")
+            bad = next(row[i].strip() for i, v in zip(cols, poe, strict=True)
+                       if not 0 <= v <= 1)
+            raise ParameterError(f"{p.name}, line {rows[idx + 1][0]}: poe must be in [0, 1], "
+                                 f"got {bad}")
         order = np.argsort(levels, kind="stable")
         lv, pv = levels[order], poe[order]
         rise = np.flatnonzero(np.diff(pv) > 0)
@@ -604,10 +882,6 @@ class Risk:
         return probability_in(t_years, self.annual_frequency)
 
 
-def _im_key(name: str) -> str:
-    return re.sub(r"[\s_]", "", str(name)).lower()
-
-
 def _fit_factor(fit, curve: HazardCurve) -> float:
     """Factor taking the curve's IM into the fit's unit; refuses a mismatch."""
     own = getattr(fit, "im_unit", None)
@@ -616,7 +890,7 @@ def _fit_factor(fit, curve: HazardCurve) -> float:
                              "so that its IM can be checked against the hazard curve's "
                              f"({curve.im_name} in {curve.unit})")
     name = getattr(fit, "im_name", "im")
-    if _im_key(name) != _im_key(curve.im_name):
+    if not same_im(name, curve.im_name):
         raise ParameterError(f"the fit's IM is {name!r} and the hazard curve's is "
                              f"{curve.im_name!r}: they must be the same IM (fit with "
                              f"im_name={curve.im_name.lower()!r} if it is)")

@@ -55,6 +55,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import sys
 from dataclasses import dataclass, field
 
 from .._validate import as_float, in_range, non_negative, positive, warn_implausible
@@ -320,6 +321,14 @@ class Block:
         if thickness is not None:
             thickness = positive("thickness", thickness, "m")
         b, h = width / 2.0, height / 2.0
+        tiny, huge = sys.float_info.min, sys.float_info.max
+        if not all(tiny < v < huge for v in (width * height, b * b + h * h,
+                                             3.0 * G / (4.0 * math.hypot(b, h)))):
+            raise ParameterError(
+                f"width and height: a {width:g} m x {height:g} m block is too "
+                f"{'large' if max(width, height) > 1.0 else 'small'} for floating point (its "
+                "area, R^2 or p = sqrt(3 g / 4 R) leave the range of a float): give the sizes "
+                "in m, e.g. width=0.17, height=1.0")
         c = non_negative("corner_cut", corner_cut, "m")
         if c > 0.0:
             if not (c < b and c < height):

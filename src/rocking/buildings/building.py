@@ -155,7 +155,7 @@ def _positive_values(name: str, values, n: int, what: str) -> np.ndarray:
 
 def _heights(heights, n_floors: int) -> np.ndarray:
     """Height ratios ``z/H`` of levels 0..n_floors (``n_floors`` values: floors 1..N, the
-    ground 0 is added), increasing in [0, 1]."""
+    ground 0 is added), increasing in [0, 1] and rising to 1 (the top floor)."""
     try:
         h = np.asarray(heights, dtype=float).ravel()
     except (TypeError, ValueError):
@@ -168,6 +168,11 @@ def _heights(heights, n_floors: int) -> np.ndarray:
         raise ParameterError(f"heights must be {n_floors} increasing height ratios z/H in "
                              f"(0, 1] (floors 1..{n_floors}; the ground, 0, may lead), got "
                              f"{heights!r}")
+    if abs(h[-1] - 1.0) > 1e-9:
+        raise ParameterError(f"heights must rise to 1 (z/H of the top floor, {n_floors}: H is "
+                             f"the building's height), got {heights!r} ending at {h[-1]:g}; "
+                             "divide the floors' heights by the top floor's")
+    h[-1] = 1.0
     return h
 
 
@@ -437,7 +442,8 @@ class Building:
         ``damping`` (one ratio or one per mode), ``shapes`` ``(n_floors, n_modes)`` at
         floors 1..N (the ground row is added) and ``participation`` ``Gamma_j`` (with the
         same normalisation of the shapes); ``heights``, optional, the height ratios ``z/H``
-        of floors 1..N (increasing, in (0, 1]) for ``modal_factors(height_ratio=...)``.
+        of floors 1..N (increasing, in (0, 1], the last 1: the top floor is at ``H``) for
+        ``modal_factors(height_ratio=...)``.
 
         Examples
         --------

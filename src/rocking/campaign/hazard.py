@@ -45,12 +45,14 @@ MAX_T_YEARS = 1e4
 HAZARD_KEYS = {
     "file": "a hazard-curve file, relative to the spec: an OpenQuake engine export "
             "(`hazard_curve-<kind>-<IMT>_<id>.csv`) or a CSV of IM and annual rate or "
-            "return period (header `PGA (g)`, `rate` or `return period`); or give pga_475",
+            "return period (header `PGA (g)`, `rate` or `return period`, in years unless it "
+            "says `(months)`, `(days)`, `1/month`, `%/yr`); or give pga_475",
     "format": f"{', '.join(FORMATS)} (default auto: an OpenQuake export by its first line)",
     "site": "OpenQuake: the site, a row index (default 0) or [lon, lat] (the nearest)",
     "max_distance_km": "OpenQuake, with site = [lon, lat]: refuse a nearest site farther "
                        f"than this, km, > 0; default {MAX_SITE_DISTANCE_KM:g}",
-    "im": "CSV: the IM's name if the header's is not it (e.g. \"PGA\")",
+    "im": "CSV: the IM's name (e.g. \"PGA\") where the header names none (`IM (g)`); "
+          "one that names another IM is refused",
     "unit": "CSV: the IM's unit if the header states none (g, m/s^2, ...)",
     "investigation_time": "CSV of a probability of exceedance (header `poe`): the years T "
                           "it refers to, > 0; read as rate = -ln(1 - poe)/T",
@@ -152,6 +154,8 @@ def read_hazard(path, *, format: str = "auto", site=None, im=None, unit=None,
                 src["investigation_time"] = float(investigation_time)
     except ParameterError as e:
         msg = str(e)
+        if msg.startswith("im_name"):  # from_csv's im_name is this im
+            msg = "im" + msg.removeprefix("im_name")
         if not re.match(r"(site|im|unit|format|investigation_time|max_distance_km)\b", msg):
             msg = "file: " + msg.removeprefix("path: ")
         raise ParameterError(msg) from None

@@ -258,6 +258,16 @@ def _table(key: str, v) -> dict:
     return v
 
 
+def _printable(key: str, name: str) -> str:
+    """``name`` if it prints on one line (no newline, tab or other control character: it
+    heads the report's tables and rows), else refused naming ``key``."""
+    bad = next((ch for ch in name if not ch.isprintable()), None)
+    if bad is not None:
+        _fail(key, f"must print on one line (it holds {bad!r}: a newline or other control "
+                   f"character breaks the report's tables); got {name!r}")
+    return name
+
+
 def _known(key: str, table: dict, allowed) -> None:
     unknown = sorted(set(table) - set(allowed))
     if unknown:
@@ -547,12 +557,40 @@ def _blocks(raw: dict, base_dir=".") -> tuple[tuple, tuple]:
         _fail("blocks", "missing (one [[blocks]] table per block)")
     if not isinstance(raw["blocks"], list) or not raw["blocks"]:
         _fail("blocks", "must be one or more [[blocks]] tables")
-    blocks, digests = [], []
+    blocks, digests, named = [], [], {}
     for i, b in enumerate(raw["blocks"]):
+        if isinstance(b, dict) and isinstance(b.get("name"), str):
+            key = f"blocks[{i}].name"
+            if not b["name"].strip():
+                _fail(key, "must not be blank (it names the block in the table and report)")
+            _printable(key, b["name"])
+            if b["name"].strip() in named:
+                _fail(key, f"{b['name']!r} is already the name of "
+                           f"blocks[{named[b['name'].strip()]}] (names are unique: the "
+                           "report, risk.csv and pelicun.csv group the runs by them)")
+            named[b["name"].strip()] = i
         bs, ds = _block(i, b, base_dir)
         blocks += bs
         digests += ds
-    return tuple(blocks), tuple(digests)
+    return tuple(_unique_names(blocks, raw["blocks"])), tuple(digests)
+
+
+def _unique_names(blocks: list, tables: list) -> list:
+    """``blocks`` with names made unique: a name already taken, by another table or by a
+    direction that prints alike (``direction = [0, 0]``), gets ``#2``, ``#3`` ... (a name
+    given twice is refused before: :func:`_blocks`)."""
+    taken = {b.name.strip() for b in blocks}
+    seen, out = set(), []
+    for b in blocks:
+        name = b.name
+        if name.strip() in seen:
+            k = 2
+            while f"{name} #{k}".strip() in seen or f"{name} #{k}".strip() in taken:
+                k += 1
+            b = factory.renamed(b, f"{name} #{k}")
+        seen.add(b.name.strip())
+        out.append(b)
+    return out
 
 
 # ------------------------------------------------------------------------------ motions
@@ -759,6 +797,16 @@ def _checked(kind: catalog.MotionKind, t: dict, axis: _Axis, ctx: catalog.Contex
             out["values"] = tuple(getattr(p, axis.param) for p in ps)
     if "values" in out and len(set(out["values"])) != n:
         _fail(axis.key, "has repeated values (one motion each)")
+    ids: dict[str, str] = {}
+    for p, w in zip(ps, where, strict=False):  # one per motion (the index alone: one)
+        label = kind.label(p)
+        if label in ids:
+            digits = ("; make the values differ in their first 6 significant digits"
+                      if isinstance(getattr(p, axis.param or "", None), float) else "")
+            _fail(w, f"gives the motion id {label!r} as {ids[label]} does (motion ids are "
+                     f"unique: the table and the report name the motions by them){digits}")
+        _printable(w, label)
+        ids[label] = w
     read = ([_read(kind, p, ctx, w, axis.param) for p, w in zip(ps, where, strict=True)]
             if kind.files else [])
     if any(d for d, _ in read):  # record files (not a built-in set)
@@ -1385,10 +1433,11 @@ def _mitigation_entries(raw: dict, c: dict) -> list[tuple[str, str, dict, bool]]
         if not name.strip() or len(name) > MAX_NAME:
             _fail(f"{key}.name", f"must be 1 to {MAX_NAME} characters, not blank; got "
                                  f"{name!r}")
-        if name in seen:
-            _fail(f"{key}.name", f"{name!r} is already the name of mitigation[{seen[name]}] "
-                                 "(names are unique)")
-        seen[name] = i
+        _printable(f"{key}.name", name)
+        if name.strip() in seen:
+            _fail(f"{key}.name", f"{name!r} is already the name of "
+                                 f"mitigation[{seen[name.strip()]}] (names are unique)")
+        seen[name.strip()] = i
         model = (_string(f"{key}.model", e["model"], tuple(MODELS)) if "model" in e
                  else c["models"][0])
         own = {k: v for k, v in e.items() if k not in ("name", "model")}
