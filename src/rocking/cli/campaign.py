@@ -55,6 +55,52 @@ def campaign():
     """Campaigns: a study declared in a TOML spec, run by chunks into a resumable store."""
 
 
+@dataclasses.dataclass(frozen=True)
+class RunRequest:
+    """``rocking campaign run``'s options, read and checked (:meth:`from_options`): the spec
+    read first, then (unless ``--dry-run``) the store and the executor's options."""
+
+    spec: object
+    """The :class:`~rocking.campaign.Spec` read from SPEC."""
+    out: str | None
+    executor: str | None
+    """``local`` or ``dask`` (with ``--dry-run``: as given, not checked)."""
+    scheduler: str | None
+    dask_local: int | None
+    window: int | None
+    dry_run: bool
+    quiet: bool
+
+    @classmethod
+    def from_options(cls, *, spec, out, executor, scheduler, dask_local, window, dry_run,
+                     quiet):
+        """The request of the command's options (click's values): the spec is read before
+        the executor's options are checked, and ``--dry-run`` checks none of them."""
+        from ..campaign import read_spec
+
+        s = read_spec(spec)
+        if not dry_run:
+            executor = _executor(out, executor, scheduler, dask_local, window)
+        return cls(spec=s, out=out, executor=executor, scheduler=scheduler,
+                   dask_local=dask_local, window=window, dry_run=dry_run, quiet=quiet)
+
+
+def _executor(out, executor, scheduler, dask_local, window) -> str:
+    """The executor of a run (``--executor``, else ``dask`` with ``--scheduler`` or
+    ``--dask-local``), its options checked."""
+    if out is None:
+        raise ParameterError("--out is required: the store directory")
+    if executor is None:
+        executor = "dask" if (scheduler or dask_local) else "local"
+    if executor == "local" and (scheduler or dask_local):
+        raise ParameterError("--scheduler and --dask-local need --executor dask")
+    if dask_local is not None and not 1 <= dask_local <= 1024:
+        raise ParameterError(f"--dask-local must be in [1, 1024] workers, got {dask_local}")
+    if window is not None and window < 1:
+        raise ParameterError(f"--window must be >= 1, got {window}")
+    return executor
+
+
 @campaign.command("run", context_settings=CONTEXT)
 @click.argument("spec", type=click.Path(dir_okay=False))
 @click.option("--out", "out", default=None, metavar="STORE",
@@ -72,12 +118,13 @@ def campaign():
               help="Print the number of simulations, chunks and an estimated time; run "
                    "nothing.")
 @click.option("--quiet", is_flag=True, help="No progress bar.")
-def run_cmd(spec, out, executor, scheduler, dask_local, window, dry_run, quiet):
+def run_cmd(**options):
     """Run the campaign SPEC (TOML) into the store --out."""
     try:
-        return _run(spec, out, executor, scheduler, dask_local, window, dry_run, quiet)
+        req = RunRequest.from_options(**options)
+        return _dry_run(req) if req.dry_run else _run(req)
     except KeyboardInterrupt:
-        return _interrupted(out)
+        return _interrupted(options["out"])
 
 
 def _interrupted(out) -> int:
@@ -96,51 +143,62 @@ def _interrupted(out) -> int:
     return 130
 
 
-def _run(spec, out, executor, scheduler, dask_local, window, dry_run, quiet):
-    from ..campaign import estimate, read_spec, run, status
-    s = read_spec(spec)
-    if dry_run:
-        e = estimate(s)
-        shape = " x ".join(f"{v} {k}" for k, v in e["shape"].items())
-        click.echo(f"{s.name}: {e['n_sims']} simulations ({shape}) in {e['n_chunks']} "
-                   f"chunks of {e['chunk_size']}")
-        click.echo(f"estimated time with the local executor: "
-                   f"{_duration(e['estimated_seconds'])} (from {e['sampled']} sample runs)")
-        if s.hazard is not None:
-            h = s.hazard
-            click.echo(f"hazard: {h['label']} ({h['im_name']} in {h['unit']}, {len(h['im'])} "
-                       f"points); service life {h['t_years']:g} years (for the report)")
-        if out is not None and Path(out, "manifest.json").is_file():
-            st = status(out)
-            click.echo(f"store {out}: {st['sims_done']} done, {st['sims_remaining']} to run")
-            for p in st["problems"]:
-                click.echo(f"  {p}")
-        return 0
-    if out is None:
-        raise ParameterError("--out is required: the store directory")
-    if executor is None:
-        executor = "dask" if (scheduler or dask_local) else "local"
-    if executor == "local" and (scheduler or dask_local):
-        raise ParameterError("--scheduler and --dask-local need --executor dask")
-    if dask_local is not None and not 1 <= dask_local <= 1024:
-        raise ParameterError(f"--dask-local must be in [1, 1024] workers, got {dask_local}")
-    if window is not None and window < 1:
-        raise ParameterError(f"--window must be >= 1, got {window}")
-    st = run(s, out, executor=executor, scheduler=scheduler, dask_local=dask_local,
-             window=window, progress=not quiet, log=lambda m: click.echo(m, err=True))
-    click.echo(f"{st['name']}: {st['sims_done']} of {st['n_sims']} simulations done "
-               f"({st['chunks_done']} chunks) in {out}")
+def _dry_run(req: RunRequest) -> int:
+    """``--dry-run``: the size of the campaign, an estimated time, the store's state."""
+    from ..campaign import estimate, status
+    s, out = req.spec, req.out
+    e = estimate(s)
+    shape = " x ".join(f"{v} {k}" for k, v in e["shape"].items())
+    click.echo(f"{s.name}: {e['n_sims']} simulations ({shape}) in {e['n_chunks']} "
+               f"chunks of {e['chunk_size']}")
+    click.echo(f"estimated time with the local executor: "
+               f"{_duration(e['estimated_seconds'])} (from {e['sampled']} sample runs)")
+    if s.hazard is not None:
+        h = s.hazard
+        click.echo(f"hazard: {h['label']} ({h['im_name']} in {h['unit']}, {len(h['im'])} "
+                   f"points); service life {h['t_years']:g} years (for the report)")
+    if out is not None and Path(out, "manifest.json").is_file():
+        st = status(out)
+        click.echo(f"store {out}: {st['sims_done']} done, {st['sims_remaining']} to run")
+        for p in st["problems"]:
+            click.echo(f"  {p}")
     return 0
+
+
+def _run(req: RunRequest) -> int:
+    """Run the campaign into its store."""
+    from ..campaign import run
+    st = run(req.spec, req.out, executor=req.executor, scheduler=req.scheduler,
+             dask_local=req.dask_local, window=req.window, progress=not req.quiet,
+             log=lambda m: click.echo(m, err=True))
+    click.echo(f"{st['name']}: {st['sims_done']} of {st['n_sims']} simulations done "
+               f"({st['chunks_done']} chunks) in {req.out}")
+    return 0
+
+
+@dataclasses.dataclass(frozen=True)
+class StoreRequest:
+    """The options of ``rocking campaign status``, ``verify`` and ``upgrade``
+    (:meth:`from_options`): the store and whether to print JSON."""
+
+    store: str
+    as_json: bool = False
+
+    @classmethod
+    def from_options(cls, *, store, as_json=False):
+        """The request of the command's options (click's values)."""
+        return cls(store=store, as_json=as_json)
 
 
 @campaign.command("status", context_settings=CONTEXT)
 @click.argument("store", type=click.Path(file_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable output.")
-def status_cmd(store, as_json):
+def status_cmd(**options):
     """How many simulations of STORE are done (verified) and how many remain."""
     from ..campaign import status
-    st = status(store)
-    if as_json:
+    req = StoreRequest.from_options(**options)
+    st = status(req.store)
+    if req.as_json:
         click.echo(json.dumps(st, indent=1, default=json_default))
         return 0
     pct = 100.0 * st["sims_done"] / st["n_sims"] if st["n_sims"] else 100.0
@@ -162,32 +220,45 @@ def status_cmd(store, as_json):
 @campaign.command("verify", context_settings=CONTEXT)
 @click.argument("store", type=click.Path(file_okay=False))
 @click.option("--json", "as_json", is_flag=True, help="Machine-readable output.")
-def verify_cmd(store, as_json):
+def verify_cmd(**options):
     """Check every chunk of STORE against its record (size, sha256, Parquet, rows, sim_id
     range) and the manifest. Exit 0 if all is well (complete or not), 1 on any problem
     (each named), 2 if STORE is not a store."""
-    from ..campaign.store import ManifestError, Store
-    s = Store(store)
+    from ..campaign.store import Store
+    req = StoreRequest.from_options(**options)
+    s = Store(req.store)
     if not s.path.is_dir() or not s.exists():
-        raise StoreError(f"{store} is not a campaign store (no manifest.json)")
+        raise StoreError(f"{req.store} is not a campaign store (no manifest.json)")
     try:
         c = s.check(deep=True)
     except StoreError as e:  # damaged manifest, or a store of format 1
-        msg = one_line(e)
-        if as_json:
-            click.echo(json.dumps({"store": str(store), "ok": False, "problems": [msg]},
-                                  indent=1))
-        else:
-            click.echo(msg)
-            if isinstance(e, ManifestError):
-                click.echo("`rocking campaign run SPEC --out STORE` rewrites it when the "
-                           "store's spec.toml or chunk records match SPEC")
-        return 1
+        return _unreadable(req, e)
     st = s.status(c)
-    if as_json:
+    if req.as_json:
         click.echo(json.dumps({**st, "ok": not c.problems, "adopted": c.adopted}, indent=1,
                               default=json_default))
         return 1 if c.problems else 0
+    _echo_check(req.store, c, st)
+    return 1 if c.problems else 0
+
+
+def _unreadable(req: StoreRequest, e: StoreError) -> int:
+    """``verify`` of a store whose manifest cannot be checked: the reason, exit code 1."""
+    from ..campaign.store import ManifestError
+    msg = one_line(e)
+    if req.as_json:
+        click.echo(json.dumps({"store": str(req.store), "ok": False, "problems": [msg]},
+                              indent=1))
+    else:
+        click.echo(msg)
+        if isinstance(e, ManifestError):
+            click.echo("`rocking campaign run SPEC --out STORE` rewrites it when the "
+                       "store's spec.toml or chunk records match SPEC")
+    return 1
+
+
+def _echo_check(store, c, st: dict) -> None:
+    """``verify``'s text: each problem, the summary line, the remedy."""
     for p in c.problems:
         click.echo(str(p))
     n_rows = st["sims_done"]
@@ -203,18 +274,17 @@ def verify_cmd(store, as_json):
     if c.problems:
         click.echo(f"{len(c.problems)} problem(s): `rocking campaign run SPEC --out {store}` "
                    "moves these files into quarantine/ and recomputes the chunks concerned")
-        return 1
-    return 0
 
 
 @campaign.command("upgrade", context_settings=CONTEXT)
 @click.argument("store", type=click.Path(file_okay=False))
-def upgrade_cmd(store):
+def upgrade_cmd(**options):
     """Upgrade a store of format 1 (written before chunk records): adopt the chunks that
     pass the structural checks (Parquet, rows, sim_id range), move the others aside."""
     from ..campaign.store import Store
-    res = Store(store).upgrade(log=lambda m: click.echo(m, err=True))
-    click.echo(f"{store}: upgraded to format 2: {res['adopted']} chunks recorded (values "
+    req = StoreRequest.from_options(**options)
+    res = Store(req.store).upgrade(log=lambda m: click.echo(m, err=True))
+    click.echo(f"{req.store}: upgraded to format 2: {res['adopted']} chunks recorded (values "
                f"written before the upgrade are not proven by a checksum), "
                f"{len(res['quarantined'])} moved into quarantine/")
     return 0

@@ -13,6 +13,7 @@ default, unit, range, help).
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import click
@@ -71,12 +72,29 @@ def _echo(items: list[dict], as_json: bool, title, rows: str, head: str, footer:
     click.echo("\n" + footer)
 
 
+@dataclasses.dataclass(frozen=True)
+class CatalogRequest:
+    """The options of ``rocking motions``, ``blocks`` and ``buildings``
+    (:meth:`from_options`): the one entry to list (or None: all) and whether to print
+    JSON."""
+
+    name: str | None
+    """KIND or FORM, as given."""
+    as_json: bool
+
+    @classmethod
+    def from_options(cls, *, as_json, kind=None, form=None):
+        """The request of the command's options (click's values: ``kind`` or ``form``)."""
+        return cls(name=form if kind is None else kind, as_json=as_json)
+
+
 @click.command("motions", context_settings=CONTEXT)
 @click.argument("kind", required=False)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def motions_cmd(kind, as_json):
+def motions_cmd(**options):
     """List the motion kinds and their parameters (or those of KIND)."""
-    _echo(motions_dict(kind), as_json,
+    req = CatalogRequest.from_options(**options)
+    _echo(motions_dict(req.name), req.as_json,
           lambda k: f"{k['name']}: {k['summary']}"
           + (f" (old spelling: {', '.join(k['aliases'])})" if k["aliases"] else ""),
           "parameters", "parameter",
@@ -89,9 +107,10 @@ def motions_cmd(kind, as_json):
 @click.command("blocks", context_settings=CONTEXT)
 @click.argument("form", required=False)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def blocks_cmd(form, as_json):
+def blocks_cmd(**options):
     """List the block forms and their keys (or those of FORM)."""
-    _echo(blocks_dict(form), as_json,
+    req = CatalogRequest.from_options(**options)
+    _echo(blocks_dict(req.name), req.as_json,
           lambda f: f"{f['name']}: {f['summary']} (told by the key {f['key']})", "keys", "key",
           "simulate/params: --specimen N, --width W --height H or --alpha A --p P --mu MU; a "
           "campaign spec: [[blocks]] with the keys by name")
@@ -100,9 +119,10 @@ def blocks_cmd(form, as_json):
 @click.command("buildings", context_settings=CONTEXT)
 @click.argument("kind", required=False)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def buildings_cmd(kind, as_json):
+def buildings_cmd(**options):
     """List the building kinds and their keys (or those of KIND)."""
-    _echo(buildings_dict(kind), as_json, lambda k: f"{k['name']}: {k['summary']}", "keys",
+    req = CatalogRequest.from_options(**options)
+    _echo(buildings_dict(req.name), req.as_json, lambda k: f"{k['name']}: {k['summary']}", "keys",
           "key",
           "simulate --building KIND: --storeys is storeys, --building-period period, "
           "--building-damping damping_ratio, --building-param KEY=VALUE any key (a list as "

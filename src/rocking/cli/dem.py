@@ -13,6 +13,7 @@ The command is registered in :mod:`rocking.cli`. Bad input raises
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import click
@@ -83,6 +84,25 @@ def _lines(d: dict) -> list[str]:
     return out
 
 
+@dataclasses.dataclass(frozen=True)
+class DemParamsRequest:
+    """``rocking dem-params``'s options, read and checked (:meth:`from_options`): the
+    specimen and the Table II parameter sets."""
+
+    specimen: int
+    sets: tuple[str, ...]
+    """``theoretical`` and/or ``experimental``."""
+    calibrate: bool
+    as_json: bool
+
+    @classmethod
+    def from_options(cls, *, specimen, params_set, calibrate, as_json):
+        """The request of the command's options (click's values)."""
+        n = specimen_number(specimen)
+        sets = ("theoretical", "experimental") if params_set == "both" else (params_set,)
+        return cls(specimen=n, sets=sets, calibrate=calibrate, as_json=as_json)
+
+
 @click.command("dem-params", context_settings=CONTEXT)
 @click.option("--specimen", "specimen", required=True, metavar="N", help="Specimen 1-4.")
 @click.option("--params", "params_set", type=click.Choice(["theoretical", "experimental",
@@ -93,12 +113,11 @@ def _lines(d: dict) -> list[str]:
               help="Also give our DEM's default stiffness and calibrated damping "
                    "(runs a few short DEM simulations).")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (SI units).")
-def dem_params(specimen, params_set, calibrate, as_json):
+def dem_params(**options):
     """Table III: the DEM parameters from the classical ones (Eqs 14-22), ours vs printed."""
-    n = specimen_number(specimen)
-    sets = ["theoretical", "experimental"] if params_set == "both" else [params_set]
-    ds = [dem_params_dict(n, s, calibrate) for s in sets]
-    if as_json:
+    req = DemParamsRequest.from_options(**options)
+    ds = [dem_params_dict(req.specimen, s, req.calibrate) for s in req.sets]
+    if req.as_json:
         click.echo(json.dumps(ds if len(ds) > 1 else ds[0], indent=2))
         return
     click.echo("\n\n".join("\n".join(_lines(d)) for d in ds))

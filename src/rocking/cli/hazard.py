@@ -15,6 +15,7 @@ and the IM exceeded at 475 and 2475 years (rate 1/475, 1/2475). Bad input: one l
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import click
@@ -36,6 +37,25 @@ def hazard():
     """Seismic hazard curves (OpenQuake exports, CSV of IM and rate or return period)."""
 
 
+@dataclasses.dataclass(frozen=True)
+class HazardShowRequest:
+    """``rocking hazard show``'s options, read and checked (:meth:`from_options`): the
+    curve read from FILE."""
+
+    file: str
+    site: str | None
+    """``--site`` as given (for the distance line)."""
+    curve: HazardCurve
+    as_json: bool
+
+    @classmethod
+    def from_options(cls, *, file, site, unit, investigation_time, max_distance_km,
+                     as_json):
+        """The request of the command's options (click's values)."""
+        curve = read_curve(file, site, unit, investigation_time, max_distance_km)
+        return cls(file=file, site=site, curve=curve, as_json=as_json)
+
+
 @hazard.command("show", context_settings=CONTEXT)
 @click.argument("file", metavar="FILE")
 @click.option("--site", default=None, help="OpenQuake: site index or LON,LAT (nearest).")
@@ -47,13 +67,14 @@ def hazard():
               f"--site LON,LAT farther than this from every site (default "
               f"{MAX_SITE_DISTANCE_KM:g} km).")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-def show_cmd(file, site, unit, investigation_time, max_distance_km, as_json):
+def show_cmd(**options):
     """The hazard curve in FILE, its IM and unit, and the IM at 475 and 2475 years."""
-    c = read_curve(file, site, unit, investigation_time, max_distance_km)
+    req = HazardShowRequest.from_options(**options)
+    c, site = req.curve, req.site
     meta = getattr(c, "metadata", {})
     at = {int(T): c.im_at_return_period(T) for T in RETURN_PERIODS}
     outside = {int(T): not (c.rate[-1] <= 1 / T <= c.rate[0]) for T in RETURN_PERIODS}
-    if as_json:
+    if req.as_json:
         click.echo(json.dumps({
             "label": c.label, "im_name": c.im_name, "unit": c.unit,
             "approximate": c.approximate, "im": c.im.tolist(), "rate": c.rate.tolist(),

@@ -15,6 +15,7 @@ its own shows ``--option NAME=``.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import click
@@ -72,21 +73,40 @@ def _row_output_lines(cls) -> list[str]:
         for r in rows)]
 
 
+@dataclasses.dataclass(frozen=True)
+class ModelsRequest:
+    """``rocking models``'s options, read and checked (:meth:`from_options`): the models to
+    list and the flags of ``rocking simulate``."""
+
+    classes: dict
+    """``{name: model class}``: every registered model, or the one NAME."""
+    flags: dict | None
+    """``{option name: flag}`` of ``rocking simulate`` (:func:`simulate_flags`)."""
+    as_json: bool
+
+    @classmethod
+    def from_options(cls, *, name, as_json):
+        """The request of the command's options (click's values), in the current click
+        context (for the flags)."""
+        classes = model_classes()
+        if name is not None:
+            key = name.strip().lower()
+            if key not in classes:
+                raise ParameterError(f"model must be one of {', '.join(classes)}; got "
+                                     f"{name!r}")
+            classes = {key: classes[key]}
+        return cls(classes=classes, flags=simulate_flags(), as_json=as_json)
+
+
 @click.command("models", context_settings=CONTEXT)
 @click.argument("name", required=False)
 @click.option("--json", "as_json", is_flag=True, help="Print JSON.")
-@click.pass_context
-def models_cmd(ctx, name, as_json):
+def models_cmd(**options):
     """List the rocking models (or model NAME), their options and the flags of
     simulate that set them."""
-    classes = model_classes()
-    if name is not None:
-        key = name.strip().lower()
-        if key not in classes:
-            raise ParameterError(f"model must be one of {', '.join(classes)}; got {name!r}")
-        classes = {key: classes[key]}
-    flags = simulate_flags(ctx)
-    if as_json:
+    req = ModelsRequest.from_options(**options)
+    classes, flags = req.classes, req.flags
+    if req.as_json:
         click.echo(json.dumps(models_dict(flags, list(classes)), indent=2,
                               default=json_default))
         return

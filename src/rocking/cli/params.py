@@ -8,6 +8,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 
@@ -40,13 +41,30 @@ def block_lines(block) -> list[str]:
     return lines
 
 
+@dataclasses.dataclass(frozen=True)
+class ParamsRequest:
+    """``rocking params``'s options, read and checked (:meth:`from_options`): the block."""
+
+    block: object
+    block_info: dict
+    """How the block was given (``specimen``, ``params``, ...: :func:`make_block`)."""
+    as_json: bool
+
+    @classmethod
+    def from_options(cls, *, specimen, params_set, width, height, mass, as_json):
+        """The request of the command's options (click's values)."""
+        block, info = make_block(specimen, params_set, width, height, mass)
+        return cls(block=block, block_info=info, as_json=as_json)
+
+
 @click.command("params", context_settings=CONTEXT)
 @block_options(mass=True)
 @click.option("--json", "as_json", is_flag=True, help="Print a JSON object (SI units).")
-def params_cmd(specimen, params_set, width, height, mass, as_json):
+def params_cmd(**options):
     """Classical parameters alpha, p, mu, R of a block (Eqs 2-4)."""
-    block, info = make_block(specimen, params_set, width, height, mass)
-    if as_json:
+    req = ParamsRequest.from_options(**options)
+    block, info = req.block, req.block_info
+    if req.as_json:
         d = {k: (None if v is None else float(v)) for k, v in block.params().items()}
         d.update(
             alpha_deg=math.degrees(block.alpha),

@@ -7,6 +7,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import click
@@ -15,28 +16,54 @@ from ..errors import ParameterError
 from .common import CONTEXT
 
 
+@dataclasses.dataclass(frozen=True)
+class ReproduceRequest:
+    """``rocking reproduce``'s options (:meth:`from_options`): the report's folder and how
+    much to run."""
+
+    out: str
+    quick: bool
+    full: bool
+
+    @classmethod
+    def from_options(cls, *, out, quick, full):
+        """The request of the command's options (click's values)."""
+        return cls(out=out, quick=quick, full=full)
+
+    @property
+    def folder(self) -> Path:
+        """The report's folder."""
+        return Path(self.out)
+
+    def make_folder(self) -> None:
+        """Create the folder before any section runs: one line naming ``--out``, not a raw
+        errno at the end."""
+        try:
+            self.folder.mkdir(parents=True, exist_ok=True)
+        except OSError as e:
+            raise ParameterError(f"--out {self.out}: cannot create the folder "
+                                 f"({e.strerror or type(e).__name__})") from None
+
+
 @click.command("reproduce", context_settings=CONTEXT)
 @click.option("--out", default="results", show_default=True, type=click.Path(file_okay=False),
               help="Output folder of the report.")
 @click.option("--quick", is_flag=True, help="Fewer, shorter simulations (for a smoke test).")
 @click.option("--full", is_flag=True, help="Also the slow sections.")
-def reproduce_cmd(out, quick, full):
+def reproduce_cmd(**options):
     """Reproduce the paper's tables and figures into OUT/index.html."""
+    req = ReproduceRequest.from_options(**options)
     try:  # lazy: the report imports matplotlib, pandas and every model
         from .. import report
     except ImportError as e:
         raise click.ClickException(f"the report module is not available ({e})") from None
 
-    folder = Path(out)
-    try:  # before any section runs: one line naming --out, not a raw errno at the end
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as e:
-        raise ParameterError(f"--out {out}: cannot create the folder "
-                             f"({e.strerror or type(e).__name__})") from None
+    req.make_folder()
     report_error = getattr(report, "ReportError", ())
-    extra = {"full": True} if full else {}  # only when asked: older report.reproduce lacks it
+    # only when asked: an older report.reproduce lacks it
+    extra = {"full": True} if req.full else {}
     try:
-        index = report.reproduce(Path(out), quick=quick, **extra)
+        index = report.reproduce(req.folder, quick=req.quick, **extra)
     except report_error as e:  # some sections failed; the page was still written
         click.echo(str(e.path))
         raise click.ClickException(str(e)) from None  # exit code 1

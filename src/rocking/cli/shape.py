@@ -22,6 +22,7 @@ with exit code 2.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 from pathlib import Path
@@ -103,6 +104,49 @@ def _lines(s: dict, text_table) -> list[str]:
     return lines
 
 
+@dataclasses.dataclass(frozen=True)
+class ShapeRequest:
+    """``rocking shape``'s options, read and checked (:meth:`from_options`): the mesh file
+    and how to read it, the directions and where the results go; :meth:`load` reads the
+    shape."""
+
+    path: str
+    density: float | None
+    mass: float | None
+    up: str
+    units: str
+    repair: str | None
+    directions: int
+    every: float
+    """Step (deg) of the printed table."""
+    out: str | None
+    as_json: bool
+
+    @classmethod
+    def from_options(cls, *, path, density, mass, up, units, repair, directions, every, out,
+                     as_json):
+        """The request of the command's options (click's values)."""
+        rho = check_positive(number(density, "density", ("kg/m^3", "kg/m3")), "density",
+                             "kg/m^3")
+        m = check_positive(number(mass, "mass", ("kg",)), "mass", "kg")
+        if (rho is None) == (m is None):
+            raise ParameterError("density or mass: give exactly one (--density RHO in kg/m^3 "
+                                 "or --mass M in kg)" + ("" if rho is None else ", not both"))
+        n = integer(directions, "directions", lo=1, hi=100_000)
+        step = check_positive(number(every, "every", ("deg",)), "every", "deg")
+        if not step <= 360.0:
+            raise ParameterError(f"every must be in (0, 360] deg, got {every!r}")
+        return cls(path=path, density=rho, mass=m, up=up, units=units, repair=repair,
+                   directions=n, every=step, out=out, as_json=as_json)
+
+    def load(self):
+        """The :class:`rocking.shapes.Shape` of the mesh."""
+        from ..shapes import load_shape
+
+        return load_shape(self.path, density=self.density, mass=self.mass, up=self.up,
+                          repair=self.repair, units=self.units)
+
+
 @click.command("shape", context_settings=CONTEXT)
 @click.argument("path", metavar="FILE")
 @click.option("--density", metavar="RHO", help="Density (kg/m^3); or --mass.")
@@ -121,39 +165,37 @@ def _lines(s: dict, text_table) -> list[str]:
 @click.option("--out", type=click.Path(file_okay=False),
               help="Write directions.csv, polar.png and shape.json to this folder.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (SI units, angles in rad).")
-def shape_cmd(path, density, mass, up, units, repair, directions, every, out, as_json):
+def shape_cmd(**options):
     """Mass properties and rocking parameters of a 3-D mesh (STL, OBJ, PLY) in every
     direction of horizontal shaking; the weakest and strongest directions."""
-    from ..shapes import directional_parameters, load_shape, plot_directional
+    from ..shapes import directional_parameters
 
-    rho = check_positive(number(density, "density", ("kg/m^3", "kg/m3")), "density",
-                         "kg/m^3")
-    m = check_positive(number(mass, "mass", ("kg",)), "mass", "kg")
-    if (rho is None) == (m is None):
-        raise ParameterError("density or mass: give exactly one (--density RHO in kg/m^3 or "
-                             "--mass M in kg)" + ("" if rho is None else ", not both"))
-    n = integer(directions, "directions", lo=1, hi=100_000)
-    step = check_positive(number(every, "every", ("deg",)), "every", "deg")
-    if not step <= 360.0:
-        raise ParameterError(f"every must be in (0, 360] deg, got {every!r}")
-    shape = load_shape(path, density=rho, mass=m, up=up, repair=repair, units=units)
-    s = shape_summary(shape, n)
+    req = ShapeRequest.from_options(**options)
+    shape = req.load()
+    s = shape_summary(shape, req.directions)
     table = s.pop("table")
     s["directions"] = table.to_dict(orient="records")
-    if out is not None:
-        d = Path(out)
-        d.mkdir(parents=True, exist_ok=True)
-        table.to_csv(d / "directions.csv", index=False)
-        fig = plot_directional(table, title=f"{shape.name}: {shape.mass:.4g} kg")
-        fig.savefig(d / "polar.png", dpi=120)
-        (d / "shape.json").write_text(json.dumps(s, indent=1, default=json_default))
-    if as_json:
+    if req.out is not None:
+        _write(req, shape, s, table)
+    if req.as_json:
         click.echo(json.dumps(s, indent=1, default=json_default))
         return
-    text = directional_parameters(shape, np.radians(np.arange(0.0, 360.0 - 1e-9, step)))
+    text = directional_parameters(shape, np.radians(np.arange(0.0, 360.0 - 1e-9, req.every)))
     click.echo("\n".join(_lines(s, text)))
-    if out is not None:
-        click.echo(f"\nwrote {Path(out) / 'directions.csv'}, polar.png, shape.json")
+    if req.out is not None:
+        click.echo(f"\nwrote {Path(req.out) / 'directions.csv'}, polar.png, shape.json")
+
+
+def _write(req: ShapeRequest, shape, s: dict, table) -> None:
+    """OUT: directions.csv, polar.png and shape.json."""
+    from ..shapes import plot_directional
+
+    d = Path(req.out)
+    d.mkdir(parents=True, exist_ok=True)
+    table.to_csv(d / "directions.csv", index=False)
+    fig = plot_directional(table, title=f"{shape.name}: {shape.mass:.4g} kg")
+    fig.savefig(d / "polar.png", dpi=120)
+    (d / "shape.json").write_text(json.dumps(s, indent=1, default=json_default))
 
 
 __all__ = ["shape_cmd", "shape_summary"]

@@ -20,12 +20,35 @@ does (a failing verification is not bad input), 2 for an unknown case name (one 
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from pathlib import Path
 
 import click
 
 from .common import CONTEXT, json_default
+
+
+@dataclasses.dataclass(frozen=True)
+class VerifyRequest:
+    """``rocking verify``'s options, read and checked (:meth:`from_options`): the cases
+    selected and what to print or write."""
+
+    cases: tuple
+    """The :class:`rocking.verification` cases selected (all by default)."""
+    as_json: bool
+    markdown: Path | None
+    list_only: bool
+
+    @classmethod
+    def from_options(cls, *, cases, quick, as_json, markdown, list_only):
+        """The request of the command's options (click's values); an unknown case name is
+        a :class:`~rocking.errors.ParameterError` (exit code 2)."""
+        from ..verification import get_cases
+
+        selected = get_cases(list(cases), quick)
+        return cls(cases=tuple(selected), as_json=as_json, markdown=markdown,
+                   list_only=list_only)
 
 
 @click.command("verify", context_settings=CONTEXT)
@@ -39,7 +62,7 @@ from .common import CONTEXT, json_default
                                  "derivation as Markdown to this file.")
 @click.option("--list", "list_only", is_flag=True,
               help="List the cases (name, group, what) without running them.")
-def verify_cmd(cases, quick, as_json, markdown, list_only):
+def verify_cmd(**options):
     """Run the verification cases and print the table: case, source, what the reference
     is (printed, equation, textbook, derived, cross-check), reference value, computed
     value, tolerance, pass (PASS; KNOWN: a disagreement with a documented reason
@@ -47,11 +70,12 @@ def verify_cmd(cases, quick, as_json, markdown, list_only):
 
     CASES: names of cases to run (all by default; see --list).
     """
-    from ..verification import get_cases, run_cases
+    from ..verification import run_cases
 
-    selected = get_cases(list(cases), quick)  # an unknown name: ParameterError, exit 2
-    if list_only:
-        if as_json:
+    req = VerifyRequest.from_options(**options)  # an unknown name: ParameterError, exit 2
+    selected, markdown = req.cases, req.markdown
+    if req.list_only:
+        if req.as_json:
             click.echo(json.dumps([{"case": c.name, "group": c.group, "source": c.source,
                                     "what": c.what, "slow": c.slow} for c in selected],
                                   indent=2))
@@ -64,7 +88,7 @@ def verify_cmd(cases, quick, as_json, markdown, list_only):
     if markdown is not None:
         markdown.parent.mkdir(parents=True, exist_ok=True)
         markdown.write_text(table.to_markdown())
-    if as_json:
+    if req.as_json:
         click.echo(json.dumps({"passed": table.passed, "n_cases": len(table.rows),
                                "n_failed": len(table.failed), "cases": table.to_dicts()},
                               indent=2, default=json_default))
