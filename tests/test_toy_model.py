@@ -96,3 +96,40 @@ load_factors = [2.0, 8.0]
 
 def test_check_model_passes_for_the_toy_model():
     rocking.testing.check_model(Sliding)
+
+
+def test_a_model_outside_the_package_leaves_the_package_cache_usable(tmp_path):
+    """A batch of the toy model, then the DEM's batches (which share `same_block`) in a
+    fresh process without the toy's module: the package's numba cache must not have
+    recorded the toy's parameter type (it did: ModuleNotFoundError: sliding_model)."""
+    import subprocess
+    import sys
+    rocking.simulate_many(BLOCK, [Sine.from_acceleration(2.0, 1.3 * MU * rocking.G, 0.5)],
+                          model="sliding")
+    code = ("import rocking; from rocking.motions import OneSine; "
+            "r = rocking.simulate_many(rocking.specimen(2), [OneSine(3.0, 0.5)], model='dem', "
+            "duration=0.3); print(bool(r.max_abs_theta[0] > 0))")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       cwd=tmp_path, timeout=600)
+    assert p.returncode == 0, p.stderr[-2000:]
+    assert p.stdout.strip().splitlines()[-1] == "True"
+
+
+def test_analyses_of_the_planar_angle_refuse_the_toy_model_by_name():
+    from rocking.analysis import ida, monte_carlo
+    from rocking.motions import sample
+    recs = [sample(Sine.from_acceleration(2.0, 1.3 * MU * rocking.G, 1.0), 0.01)]
+    with pytest.raises(rocking.ParameterError, match="'sliding' has no planar angle"):
+        ida(BLOCK, recs, levels=[1.0, 2.0], model="sliding")
+    with pytest.raises(rocking.ParameterError, match="'sliding' has no planar angle"):
+        monte_carlo(BLOCK, recs, {"p": {"dist": "normal", "cov": 0.02}}, n=4, model="sliding")
+
+
+def test_the_plot_of_a_model_without_a_planar_angle_draws_its_states():
+    import matplotlib.pyplot as plt
+    r = rocking.simulate(BLOCK, None, model="sliding", state0=[0.0, 0.8], duration=0.5)
+    ax = r.plot()
+    assert [ln.get_label() for ln in ax.lines] == ["x", "v"]
+    np.testing.assert_array_equal(ax.lines[1].get_ydata(), r.state("v"))
+    assert "n_impacts" not in r.summary() and "max_abs_theta" not in r.summary()
+    plt.close("all")

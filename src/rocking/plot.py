@@ -150,10 +150,20 @@ def plot_response(resp, ax=None, deg: bool = True, label: str | None = None, *,
         Passed to ``Axes.plot`` (``color``, ``linewidth``, ...).
 
     Overturning is marked with a red cross at ``|theta| = 90 deg`` and annotated with its
-    time. Returns the Axes.
+    time. A model without a planar angle (``Response.theta`` None) draws each of its
+    states against time instead. Returns the Axes.
     """
     if ax is None:
         _, ax = new_axes()
+    if resp.theta is None:  # no planar angle: the states (Response.state_names)
+        for j, name in enumerate(resp.state_names):
+            ax.plot(resp.t, resp.states[:, j], color=PALETTE[j % len(PALETTE)], label=name,
+                    **kw)
+        style_axes(ax, "time t (s)", "state (SI units)")
+        ax.legend(frameon=False, fontsize=9)
+        if title:
+            ax.set_title(title)
+        return ax
     color = kw.pop("color", PALETTE[0])
     _draw_response(ax, resp, deg, label, color, True, **kw)
     block = getattr(resp, "block", None)

@@ -237,7 +237,8 @@ class Response:
             "overturned": bool(self.overturned),
             "overturn_time": self.overturn_time,
             "uplift_time": self.uplift_time,
-            "n_impacts": int(self.n_impacts),
+            **({"n_impacts": int(self.n_impacts)}
+               if not self.outputs or "n_impacts" in self.outputs else {}),
             "lifted_off": self.lifted_off,
             "lift_off_time": self.lift_off_time,
             "settled": bool(self.settled),

@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import ParameterError
-from ..models import simulate_many
+from ..models import require_planar, simulate_many
 from ..motions import Record
 from ..plot import figure, im_label, style_axes
 from .damage import DEFAULT_THRESHOLDS, damage_state, state_labels
@@ -89,6 +89,7 @@ def ida(block, records, im: str = "pga", levels=None, model="housner",
         raise ParameterError(f"levels must be a non-empty sequence of IM values > 0, "
                              f"got {levels!r}")
     state_labels(thresholds)  # checks the thresholds before any simulation
+    require_planar(model, "an IDA's damage states")
     base = np.array([intensity(r, im, block) for r in recs])
     if not np.all(base > 0):
         raise ParameterError(f"every record must have {im} > 0 to be scaled")

@@ -51,7 +51,7 @@ import pandas as pd
 from .._validate import in_range
 from ..blocks import Block, Stack
 from ..errors import ParameterError
-from ..models import simulate_many
+from ..models import require_planar, simulate_many
 from ..motions import Motion, Record, sample
 from ..plot import figure, style_axes
 from ..results import jsonable
@@ -510,6 +510,7 @@ def monte_carlo(block: Block, motions, uncertain: dict | None = None, n: int = 1
         raise ParameterError(f"block must be a rocking.Block, got {type(block).__name__}")
     uncertain = dict(uncertain or {})
     distributions(block, uncertain)  # every distribution checked before any run
+    require_planar(model, "a Monte Carlo study")
     parts = []
     for start in range(0, n, chunk):
         table, blocks, ms = draw_samples(block, motions, uncertain, min(chunk, n - start),

@@ -77,7 +77,7 @@ columns); after them, the models' own outputs (:func:`row_output_columns`). A mo
 without a planar angle leaves ``max_abs_theta`` and its ratio NaN, ``n_impacts`` 0 when
 it declares none, and ``damage_state`` -1."""
 INPUT_UNITS = {"alpha": "rad", "p": "1/s", "mu": "", "theta0": "rad", "pga": "m/s^2",
-               "floor_pga": "m/s^2", "load_factor": "", "amplitude": "", "noise": "",
+               "floor_pga": "m/s^2", "load_factor": "", "amplitude": "", "noise": "m/s^2",
                "max_abs_theta_over_alpha": "", "damage_state": "", "lifted_off": ""}
 """The units of the campaign's input and derived columns (SI; ``""``: none), written with
 the models' declared output units into the Parquet schema (:func:`column_units`)."""
@@ -98,7 +98,7 @@ def row_output_columns(models) -> dict:
     return out
 
 
-SHARED_OUTPUTS = {o.name: o for o in GENERIC_OUTPUTS + PLANAR_OUTPUTS}
+OUTPUTS_BY_NAME = {o.name: o for o in GENERIC_OUTPUTS + PLANAR_OUTPUTS}
 """The shared outputs of the models by name (:data:`rocking.models.GENERIC_OUTPUTS`,
 :data:`~rocking.models.PLANAR_OUTPUTS`): the declarations of the result columns."""
 
@@ -109,8 +109,8 @@ def empty_columns(outputs, n: int) -> dict:
 
     Examples
     --------
-    >>> from rocking.campaign.plan import SHARED_OUTPUTS, empty_columns
-    >>> cols = empty_columns([SHARED_OUTPUTS["overturned"], SHARED_OUTPUTS["n_impacts"]], 2)
+    >>> from rocking.campaign.plan import OUTPUTS_BY_NAME, empty_columns
+    >>> cols = empty_columns([OUTPUTS_BY_NAME["overturned"], OUTPUTS_BY_NAME["n_impacts"]], 2)
     >>> cols["overturned"], cols["n_impacts"]
     (array([False, False]), array([0, 0]))
     """
@@ -139,20 +139,15 @@ def column_units(models) -> dict:
     return units
 
 
-def _pga(mo: Motion) -> float | None:
-    """The motion's own PGA (:attr:`Motion.pga`: exact where the kind states it, else the
-    motion sampled at ``min(scan_step, 0.005)``, as below)."""
-    return mo.pga
-
-
 def motion_im(mo: Motion, im: str, block: Block | None = None) -> float:
     """The intensity measure ``im`` of ``mo``; a ground motion's is its horizontal
-    component's."""
+    component's; the PGA is the motion's own (:attr:`rocking.motions.Motion.pga`: exact
+    where the kind states it, else the motion sampled at ``min(scan_step, 0.005)``, as the
+    other IMs here)."""
     if isinstance(mo, GroundMotion):
         mo = mo.horizontal if mo.scale == 1.0 else mo.horizontal.scaled(mo.scale)
-    pga = _pga(mo) if im == "pga" else None
-    if pga is not None:
-        return pga
+    if im == "pga":
+        return mo.pga
     rec = mo if isinstance(mo, Record) else sample(mo, min(mo.scan_step, 0.005))
     return intensity(rec, im, block)
 
@@ -478,10 +473,10 @@ class Campaign:
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         table, blocks, motions = self.inputs(ids)
         n = len(table)
-        shared = ("max_abs_theta", "overturned", "overturn_time", "uplift_time", "n_impacts",
-                  "settled", "status") + (("lift_off_time",) if self.motions.kind.vertical
-                                          else ())
-        out = empty_columns([SHARED_OUTPUTS[k] for k in shared], n)
+        shared = [k for k in RESULT_COLUMNS if k in OUTPUTS_BY_NAME]
+        if self.motions.kind.vertical:
+            shared.append("lift_off_time")
+        out = empty_columns([OUTPUTS_BY_NAME[k] for k in shared], n)
         if self.motions.kind.vertical:
             out["lifted_off"] = np.zeros(n, bool)
         rows_out = empty_columns(row_output_columns(self.spec.run_models).values(), n)

@@ -89,6 +89,7 @@ from ..analysis.damage import state_labels
 from ..analysis.fragility import fit_or_bounds
 from ..analysis.hazard import HazardCurve, probability_in, risk
 from ..errors import ParameterError, SimulationError
+from ..models import require_planar
 from ..models.registry import MODELS
 from ..plot import PALETTE, figure, im_label, save_figure, style_axes, unit_label
 from ..units import G
@@ -155,6 +156,10 @@ def _check(table, manifest) -> tuple[pd.DataFrame, dict, tuple]:
         raise ParameterError("table is empty: the store holds no simulation (run the "
                              "campaign first)")
     im = _im_of(table, manifest)
+    if "model" in table.columns:  # damage states need max |theta| / alpha
+        for name in dict.fromkeys(table["model"].tolist()):
+            if name in MODELS:
+                require_planar(name, "the campaign report (damage states and fragility)")
     t = table.copy()
     for col in ("alpha", "load_factor", "pga", "max_abs_theta", "max_abs_theta_over_alpha",
                 *(["im"] if "im" in t else [])):

@@ -720,19 +720,21 @@ def row_output_text(d: dict) -> str:
 def _text_lines(resp, block, model: str, linear: bool, mdesc: dict, fdesc, outputs: dict):
     """The text report of one run: block, motion, max angle, outcome, the model's row
     outputs."""
-    th = float(resp.max_abs_theta)
+    th = resp.max_abs_theta
     on = "" if fdesc is None else (
         f" on {fdesc['where']} of the {fdesc['building']['name']} (peak floor acceleration "
         f"{fdesc['floor_pga'] / G:.3g} g)")
     lines = [f"block       {block!r}",
              f"motion      {mdesc.get('repr', 'free rocking')}{on}  [{model}"
              f"{', linear' if linear else ''}]",
-             f"max |theta| {math.degrees(th):.4g} deg ({th:.6g} rad, "
-             f"{th / block.alpha:.3g} alpha)",
+             (f"max |theta| {math.degrees(th):.4g} deg ({th:.6g} rad, "
+              f"{th / block.alpha:.3g} alpha)" if th is not None
+              else f"states      {', '.join(resp.state_names)} (no planar angle)"),
              f"overturned  yes, at t = {resp.overturn_time:.4g} s" if resp.overturned
              else "overturned  no"]
     up = "-" if math.isnan(resp.uplift_time) else f"t = {resp.uplift_time:.4g} s"
-    lines += [f"uplift      {up}", f"impacts     {resp.n_impacts}"]
+    lines += [f"uplift      {up}"] + ([f"impacts     {resp.n_impacts}"]
+                                      if "n_impacts" in resp.outputs else [])
     if "vertical" in mdesc:
         lo = ("-" if not resp.lifted_off else f"yes, at t = {resp.lift_off_time:.4g} s: "
               "g + a_v <= 0, the block leaves the ground and the run stops there")

@@ -27,9 +27,16 @@ from .base import (
     store_row,
 )
 from .registry import MODELS, available, register
-from .run import PackedMotions, get_model, pack_motions, simulate, simulate_many
+from .run import (
+    PackedMotions,
+    get_model,
+    pack_motions,
+    require_planar,
+    simulate,
+    simulate_many,
+)
 
 __all__ = ["Model", "ModelOptions", "option", "row_args", "same_block", "store_row",
            "set_planar_result", "Output", "GENERIC_OUTPUTS", "PLANAR_OUTPUTS", "Batch",
-           "MODELS", "available", "register", "get_model", "pack_motions", "PackedMotions",
-           "simulate", "simulate_many"]
+           "MODELS", "available", "register", "get_model", "require_planar", "pack_motions",
+           "PackedMotions", "simulate", "simulate_many"]

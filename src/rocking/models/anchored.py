@@ -157,26 +157,35 @@ def _acc(th, t, s, alpha, p2, ka, kind, prm, samples):
 
 
 # ---- the model's part of the shared step loop (:func:`rocking.models._numerics.loop.run`);
-# ``mp = (alpha, p, mu, q, kappa, rigid, p2, c, th_b, rest_tol, free_rest_tol)``, its state
+# its parameters ``mp`` are an :data:`AnchorLoopParams`, its state
 # ``xs = (bp, bm, t_break_p, t_break_m, max_force)`` (bp, bm: the anchor +, - has broken)
+AnchorLoopParams = namedtuple("AnchorLoopParams", [
+    "alpha", "p", "mu", "q", "kappa", "rigid", "p2", "c", "th_b", "rest_tol",
+    "free_rest_tol"])
+"""The parameters of the anchored model's hooks in the shared step loop: the block's
+``alpha``, ``p``, ``mu``, ``p^2``, ``c = tan(alpha)``, the anchors' ``q``, ``kappa``,
+rigid or elastic and the angle ``th_b`` at which an elastic anchor breaks, and the rest
+tolerances."""
+
+
 @njit(cache=True, inline="always")
 def _ka(mp, xs, s):
     """The elastic anchor's stiffness on pivot ``s`` while it is intact, else 0."""
     intact_s = (not xs[0]) if s > 0.0 else (not xs[1])
-    return mp[4] if (intact_s and not mp[5]) else 0.0
+    return mp.kappa if (intact_s and not mp.rigid) else 0.0
 
 
 @njit(cache=True, inline="always")
 def _rhs_args(mp, xs, s, kind, prm, samples):
     """The arguments of :func:`_acc` on pivot ``s``."""
-    return (s, mp[0], mp[6], _ka(mp, xs, s), kind, prm, samples)
+    return (s, mp.alpha, mp.p2, _ka(mp, xs, s), kind, prm, samples)
 
 
 @njit(cache=True, inline="always")
 def _start(mp, resting, s, th0):
     """Already lifted: a rigid anchor on that side has given way, an elastic one if
     stretched to its strength."""
-    q, kappa, rigid = mp[3], mp[4], mp[5]
+    q, kappa, rigid = mp.q, mp.kappa, mp.rigid
     bp = bm = False
     tbp = tbm = math.nan
     fmax = 0.0
@@ -192,9 +201,9 @@ def _start(mp, resting, s, th0):
 @njit(cache=True, inline="always")
 def _at_rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, out_om, t_up):
     """:func:`_rest`; at the uplift a rigid (or zero-strength) anchor on that side breaks."""
-    q, rigid = mp[3], mp[5]
+    q, rigid = mp.q, mp.rigid
     bp, bm, tbp, tbm, fmax = xs
-    t, k, d, fmax = _rest(kind, prm, samples, t, t_lim, h_scan, rigid, q, bp, bm, mp[7],
+    t, k, d, fmax = _rest(kind, prm, samples, t, t_lim, h_scan, rigid, q, bp, bm, mp.c,
                           dt_out, k, out_th, out_om, fmax)
     if d != 0.0 and d != E.LIFT_OFF:
         if t_up != t_up:
@@ -210,22 +219,22 @@ def _at_rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, ou
 @njit(cache=True, inline="always")
 def _cap(mp, xs, th, om, s, t, free_time, peak):
     """The cap of the free motion: decided by energy unless an elastic anchor is intact."""
-    if (not mp[5]) and ((not xs[0]) or (not xs[1])):
+    if (not mp.rigid) and ((not xs[0]) or (not xs[1])):
         return True, False, peak, t  # an intact elastic anchor: no exact energy decision
-    decided, peak, t_end = free_cap(th, om, s, mp[0], mp[1], mp[2], False, t, free_time, peak)
+    decided, peak, t_end = free_cap(th, om, s, mp.alpha, mp.p, mp.mu, False, t, free_time, peak)
     return decided, decided, peak, t_end
 
 
 @njit(cache=True, inline="always")
 def _inside(args, mp, xs, t, th, om, a0, th1, om1, a1, hh, s, dt_out, k, out_th, out_om):
     """The elastic anchor of this side reaches its strength inside the step."""
-    th_b = mp[8]
+    th_b = mp.th_b
     if args[3] > 0.0:
         if s * th1 < th_b and D.seg_peak(th, om, a0, th1, om1, a1, hh, abs(th)) >= th_b:
             return 1, t, th, om, k, 0.0, 0.5 * hh, xs  # crossed before an interior peak
         if s * th1 >= th_b:
             sig, thc, omc, ac = D.locate(_acc, args, t, th, om, a0, th1, om1, a1, hh, s, th_b,
-                                         True, 1e-15 * mp[0], 60)
+                                         True, 1e-15 * mp.alpha, 60)
             tc = t + sig
             k, pk = D.segment(t, th, om, a0, tc, thc, omc, ac, sig, dt_out, k, out_th, out_om,
                               abs(th))
@@ -234,28 +243,28 @@ def _inside(args, mp, xs, t, th, om, a0, th1, om1, a1, hh, s, dt_out, k, out_th,
                 bp, tbp = True, tc
             else:
                 bm, tbm = True, tc
-            fmax = mp[3]
-            return 2, tc, thc, omc, k, pk, max(sig, 1e-6 / mp[1]), (bp, bm, tbp, tbm, fmax)
+            fmax = mp.q
+            return 2, tc, thc, omc, k, pk, max(sig, 1e-6 / mp.p), (bp, bm, tbp, tbm, fmax)
     return 0, t, th, om, k, 0.0, hh, xs
 
 
 @njit(cache=True, inline="always")
 def _impact_tol(mp, s):
-    return 1e-15 * mp[0]
+    return 1e-15 * mp.alpha
 
 
 @njit(cache=True, inline="always")
 def _after_impact(mp, xs, s, t, omc, pk, kind, prm, samples, t_quiet, hv):
     """Eq 4, the Zeno rule (at rest if no intact rigid anchor lets the ground lift the
     block) and the rigid anchor of the new side breaking: ``(rest, om, s, xs)``."""
-    alpha, mu, q, kappa, rigid, p2, c = mp[0], mp[2], mp[3], mp[4], mp[5], mp[6], mp[7]
+    alpha, mu, q, kappa, rigid, p2, c = mp.alpha, mp.mu, mp.q, mp.kappa, mp.rigid, mp.p2, mp.c
     bp, bm, tbp, tbm, fmax = xs
     if _ka(mp, xs, s) > 0.0:
         fmax = max(fmax, kappa * math.sin(pk))
     om = mu * omc
     ag = ground_acc(kind, prm, samples, t)
     gf = 1.0 + vertical_acc(prm, samples, t) * INV_G if hv else 1.0
-    rt = mp[9] if t < t_quiet else max(mp[9], mp[10])
+    rt = mp.rest_tol if t < t_quiet else max(mp.rest_tol, mp.free_rest_tol)
     if om == 0.0 or amplitude_from_energy(om, alpha, p2 * gf, False) < rt * alpha:
         if ag <= _thr(1.0, rigid, q, bp, bm, c, gf) and -ag <= _thr(-1.0, rigid, q, bp, bm, c,
                                                                      gf):
@@ -273,7 +282,7 @@ def _after_impact(mp, xs, s, t, omc, pk, kind, prm, samples, t_quiet, hv):
 def _on_overturn(mp, xs, s):
     """An intact elastic anchor at pi/2 carries kappa sin(pi/2)."""
     if _ka(mp, xs, s) > 0.0:
-        return xs[0], xs[1], xs[2], xs[3], max(xs[4], mp[4])
+        return xs[0], xs[1], xs[2], xs[3], max(xs[4], mp.kappa)
     return xs
 
 
@@ -281,7 +290,7 @@ def _on_overturn(mp, xs, s):
 def _on_segment(mp, xs, s, pk):
     """The elastic anchor's force at the segment's largest angle."""
     if _ka(mp, xs, s) > 0.0:
-        return xs[0], xs[1], xs[2], xs[3], max(xs[4], mp[4] * math.sin(min(pk, D.HALF_PI)))
+        return xs[0], xs[1], xs[2], xs[3], max(xs[4], mp.kappa * math.sin(min(pk, D.HALF_PI)))
     return xs
 
 
@@ -297,7 +306,7 @@ def integrate(alpha, p, mu, q, kappa, rigid, kind, prm, samples, t_end, t_quiet,
     # the elastic anchor breaks at kappa sin|theta| = q; never before pi/2 if q >= kappa
     th_b = (math.asin(q / kappa) if q < kappa else math.inf) if not rigid else 0.0
     atol_th, atol_om = D.abs_tols(rtol, alpha, p)
-    mp = (alpha, p, mu, q, kappa, rigid, p2, c, th_b, rest_tol, free_rest_tol)
+    mp = AnchorLoopParams(alpha, p, mu, q, kappa, rigid, p2, c, th_b, rest_tol, free_rest_tol)
     k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, xs = L.run(
         _acc, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact,
         _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,

@@ -669,9 +669,11 @@ def row_args(i, rows):
             np.empty(0))
 
 
-@njit(cache=True)
+@njit(inline="always")
 def same_block(mp, b):
-    """``with_block`` of a model whose batches take one block: ``mp`` unchanged.
+    """``with_block`` of a model whose batches take one block: ``mp`` unchanged (inlined
+    and not cached: a model outside the package passes its own parameter type, which a
+    cache of this file must not record).
 
     Examples
     --------

@@ -263,13 +263,20 @@ def free_cap_sides(th, om, s, alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, t, fr
 
 
 # ---- the model's part of the shared step loop (:func:`rocking.models._numerics.loop.run`);
-# ``mp = (alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, thr_p, thr_m,
-# rest_tol, free_rest_tol)``, no state of its own
+# its parameters ``mp`` are a :data:`SideParams`, no state of its own
+SideParams = namedtuple("SideParams", [
+    "alpha_p", "p_p", "mu_p", "alpha_m", "p_m", "mu_m", "lin", "p2_p", "p2_m", "c_p", "c_m",
+    "thr_p", "thr_m", "rest_tol", "free_rest_tol"])
+"""The parameters of the classical model's hooks in the shared step loop: both sides'
+``alpha``, ``p``, ``mu``, ``p^2``, uplift ratios ``c`` (``tan alpha``; ``alpha`` when
+linear) and thresholds ``g c``, the ``linear`` flag and the rest tolerances."""
+
+
 @njit(cache=True, inline="always")
 def _rhs_args(mp, xs, s, kind, prm, samples):
     """The arguments of :func:`_acc` on pivot ``s`` (that side's ``alpha``, ``p^2``)."""
-    alpha, p2 = (mp[0], mp[7]) if s > 0.0 else (mp[3], mp[8])
-    return (s, alpha, p2, mp[6], kind, prm, samples)
+    alpha, p2 = (mp.alpha_p, mp.p2_p) if s > 0.0 else (mp.alpha_m, mp.p2_m)
+    return (s, alpha, p2, mp.lin, kind, prm, samples)
 
 
 @njit(cache=True, inline="always")
@@ -279,16 +286,16 @@ def _start(mp, resting, s, th0):
 
 @njit(cache=True, inline="always")
 def _at_rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, out_om, t_up):
-    t, k, d, t_up = E.rest_advance_sides(kind, prm, samples, t, t_lim, h_scan, mp[11], mp[9],
-                                         mp[12], mp[10], dt_out, k, out_th, out_om, t_up)
+    t, k, d, t_up = E.rest_advance_sides(kind, prm, samples, t, t_lim, h_scan, mp.thr_p, mp.c_p,
+                                         mp.thr_m, mp.c_m, dt_out, k, out_th, out_om, t_up)
     return t, k, d, t_up, xs
 
 
 @njit(cache=True, inline="always")
 def _cap(mp, xs, th, om, s, t, free_time, peak):
     """The cap of the free motion: the energy decides the outcome exactly."""
-    decided, peak, t_end = free_cap_sides(th, om, s, mp[0], mp[1], mp[2], mp[3], mp[4], mp[5],
-                                          mp[6], t, free_time, peak)
+    decided, peak, t_end = free_cap_sides(th, om, s, mp.alpha_p, mp.p_p, mp.mu_p, mp.alpha_m,
+                                          mp.p_m, mp.mu_m, mp.lin, t, free_time, peak)
     return decided, decided, peak, t_end
 
 
@@ -299,22 +306,22 @@ def _inside(args, mp, xs, t, th, om, a0, th1, om1, a1, h, s, dt_out, k, out_th, 
 
 @njit(cache=True, inline="always")
 def _impact_tol(mp, s):
-    return 1e-15 * (mp[0] if s > 0.0 else mp[3])
+    return 1e-15 * (mp.alpha_p if s > 0.0 else mp.alpha_m)
 
 
 @njit(cache=True, inline="always")
 def _after_impact(mp, xs, s, t, omc, pk, kind, prm, samples, t_quiet, hv):
     """Eq 4 (rocking on side ``s`` ends) and the Zeno rule: ``(rest, om, s, xs)``."""
-    alpha_p, mu_p, alpha_m, mu_m, lin, p2_p, p2_m = mp[0], mp[2], mp[3], mp[5], mp[6], mp[7], \
-        mp[8]
+    alpha_p, mu_p, alpha_m, mu_m, lin, p2_p, p2_m = (mp.alpha_p, mp.mu_p, mp.alpha_m, mp.mu_m,
+                                                     mp.lin, mp.p2_p, mp.p2_m)
     om = (mu_p if s > 0.0 else mu_m) * omc  # rocking on side s ends
     ag = ground_acc(kind, prm, samples, t)
     sn = E.rebound_side(om, ag)
     al_n, p2_n = (alpha_p, p2_p) if sn > 0.0 else (alpha_m, p2_m)
     p2e = p2_n * (1.0 + vertical_acc(prm, samples, t) / G) if hv else p2_n
-    rt = mp[13] if t < t_quiet else max(mp[13], mp[14])
+    rt = mp.rest_tol if t < t_quiet else max(mp.rest_tol, mp.free_rest_tol)
     if om == 0.0 or amplitude_from_energy(om, al_n, p2e, lin) < rt * al_n:
-        if abs(ag) <= E.threshold_sides(ag, mp[11], mp[9], mp[12], mp[10], prm, samples, t):
+        if abs(ag) <= E.threshold_sides(ag, mp.thr_p, mp.c_p, mp.thr_m, mp.c_m, prm, samples, t):
             return True, 0.0, s, xs
     return False, om, sn, xs
 
@@ -351,8 +358,8 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t
     c_m = alpha_m if lin else math.tan(alpha_m)
     p_hi = max(p_p, p_m)  # the step sizes follow the faster side
     atol_th, atol_om = D.abs_tols(rtol, min(alpha_p, alpha_m), p_hi)
-    mp = (alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, G * c_p, G * c_m,
-          rest_tol, free_rest_tol)
+    mp = SideParams(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, G * c_p,
+                    G * c_m, rest_tol, free_rest_tol)
     k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, _xs = L.run(
         _acc, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact,
         _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,

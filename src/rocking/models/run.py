@@ -79,6 +79,24 @@ def get_model(model) -> type[Model]:
                              f"rocking.models.Model subclass; got {model!r}") from None
 
 
+def require_planar(model, what: str) -> type[Model]:
+    """The model class of ``model`` if it has a planar angle (``Model.tags["planar"]``),
+    else a ParameterError saying that ``what`` works on ``max |theta| / alpha``.
+
+    Examples
+    --------
+    >>> from rocking.models import require_planar
+    >>> require_planar("housner", "fragility").name
+    'housner'
+    """
+    cls = get_model(model)
+    if not cls.tags.get("planar"):
+        raise ParameterError(f"model {cls.name!r} has no planar angle (Model.tags['planar'] "
+                             f"is False): {what} works on max |theta| / alpha of a planar "
+                             "model")
+    return cls
+
+
 def _make(model, block, linear: bool, options: dict) -> Model:
     cls = get_model(model)
     if check_linear(linear):
@@ -547,7 +565,9 @@ def _batch_states(m: Model, n: int, theta0, omega0, state0):
         y0 = np.column_stack((th0, om0)) if m.planar_shorthand() else np.zeros(
             (n, len(m.state_names)))
     else:
-        made = {}
-        y0 = np.array([made.setdefault((a, b), m.initial_state(a, b))
-                       for a, b in zip(th0.tolist(), om0.tolist(), strict=True)])
+        made: dict = {}
+        for a, b in zip(th0.tolist(), om0.tolist(), strict=True):
+            if (a, b) not in made:
+                made[a, b] = m.initial_state(a, b)
+        y0 = np.array([made[a, b] for a, b in zip(th0.tolist(), om0.tolist(), strict=True)])
     return np.ascontiguousarray(y0, dtype=np.float64), th0, om0
