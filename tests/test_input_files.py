@@ -406,3 +406,21 @@ def test_fuzz_mutations_are_not_all_read_the_same(tmp_path):
     f.write_text(f.read_text().replace(f"{float(x[1])!r},", "", 1))
     with pytest.raises(ParameterError, match=r"a\.csv, line 3"):
         HazardCurve.from_csv(f)
+
+
+def test_a_full_disk_names_the_file_being_written(tmp_path, monkeypatch):
+    """Issue 32: 'a full disk gives no path' (ENOSPC from os.write names no file)."""
+    import errno
+    import os
+
+    from rocking._atomic import atomic_write
+
+    def full(fd, data):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr(os, "write", full)
+    target = tmp_path / "chunk-000001.parquet"
+    with pytest.raises(OSError) as info:
+        atomic_write(target, b"rows")
+    assert info.value.errno == errno.ENOSPC and str(target) in str(info.value)
+    assert list(tmp_path.iterdir()) == []  # no temporary file left

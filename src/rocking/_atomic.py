@@ -85,6 +85,11 @@ def atomic_path(path) -> Iterator[Path]:
         yield tmp
         fsync_file(tmp)
         replace(tmp, path)
+    except OSError as e:
+        tmp.unlink(missing_ok=True)
+        if e.filename is None:  # a write (a full disk) names no file: name the one written
+            raise OSError(e.errno, e.strerror, str(path)) from e
+        raise
     except BaseException:
         tmp.unlink(missing_ok=True)
         raise
