@@ -24,8 +24,12 @@ Runs alternate 1 and 2 threads (``numba.set_num_threads``), ``--repeat`` pairs (
 each into a fresh store; the best of each is kept. The serial fraction ``s`` is the share
 of the 1-thread run outside the kernels; Amdahl's law predicts the speed-up
 ``1 / (s + (1 - s) / N)`` on ``N`` cores (2, to compare with the measured 2-thread ratio,
-16 and 64), and its limit ``1 / s``. On a machine shared with other jobs the 2-thread
-figure is noisy (the load average is printed before each run).
+16 and 64), and its limit ``1 / s``. That ``s`` is an upper bound: the records' generation
+has parallel (``prange``) kernels of its own (:mod:`rocking.motions.stochastic`); each
+stage's 1-thread / 2-thread time ratio is printed too, and the ``s`` that Amdahl's law
+fits to the measured 2-thread speed-up ``S2`` (``s = 2 / S2 - 1``). On a machine shared
+with other jobs the 2-thread figures are noisy (the load average is printed before each
+run).
 
 ``--quick``: 4 records x 10 load factors, chunks of 20, one pair: seconds, not figures::
 
@@ -186,13 +190,16 @@ def main(argv=None) -> int:
                     best[th] = (total, t)
 
         print(f"\n{'stage':<14}" + "".join(f"{f'{th} thread(s) s':>16}{'share':>7}"
-                                            for th in threads) + f"{'us/run (1)':>12}")
+                                            for th in threads) + f"{'us/run (1)':>12}"
+              + (f"{'1/2 thr':>8}" if 2 in best else ""))
         for stage in STAGES:
             line = f"{stage:<14}"
             for th in threads:
                 total, t = best[th]
                 line += f"{t[stage]:16.3f}{t[stage] / total:7.1%}"
-            print(line + f"{1e6 * best[1][1][stage] / n:12.1f}")
+            ratio = (f"{best[1][1][stage] / best[2][1][stage]:8.2f}"
+                     if 2 in best and best[2][1][stage] > 0 else "")
+            print(line + f"{1e6 * best[1][1][stage] / n:12.1f}" + ratio)
         line = f"{'total':<14}"
         for th in threads:
             line += f"{best[th][0]:16.3f}{1:7.0%}"
@@ -203,8 +210,11 @@ def main(argv=None) -> int:
         print(f"\nserial fraction s (1 thread, all but the kernels): {s:.3f}; biggest serial "
               f"stage: {biggest} ({t1[biggest]:.3f} s, {t1[biggest] / total1:.1%})")
         if 2 in best:
-            print(f"measured speed-up at 2 threads: {total1 / best[2][0]:.2f} "
-                  f"(Amdahl predicts {amdahl(s, 2):.2f})")
+            s2 = total1 / best[2][0]
+            print(f"measured speed-up at 2 threads: {s2:.2f} (Amdahl predicts "
+                  f"{amdahl(s, 2):.2f}); the s it fits: {2 / s2 - 1:.3f}"
+                  + (f", N=16: {amdahl(2 / s2 - 1, 16):.1f}, N=64: {amdahl(2 / s2 - 1, 64):.1f}"
+                     if 0 < 2 / s2 - 1 < 1 else " (outside (0, 1): noise)"))
         print("Amdahl's law, speed-up on N cores over 1: "
               + ", ".join(f"N={m}: {amdahl(s, m):.1f}" for m in (2, 16, 64))
               + f"; limit 1/s = {1 / s:.1f}")
