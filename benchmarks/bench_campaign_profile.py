@@ -31,10 +31,13 @@ fits to the measured 2-thread speed-up ``S2`` (``s = 2 / S2 - 1``). On a machine
 with other jobs the 2-thread figures are noisy (the load average is printed before each
 run).
 
+``--uncertain``: the same campaign with ``alpha``, ``p`` and ``mu`` uncertain (those of
+``examples/fragility.toml``): each row draws its block (the plan stage grows).
+
 ``--quick``: 4 records x 10 load factors, chunks of 20, one pair: seconds, not figures::
 
-    .venv/bin/python benchmarks/bench_campaign_profile.py [--quick] [--records 80]
-        [--levels 250] [--repeat 2]
+    .venv/bin/python benchmarks/bench_campaign_profile.py [--quick] [--uncertain]
+        [--records 80] [--levels 250] [--repeat 2]
 """
 
 from __future__ import annotations
@@ -52,7 +55,16 @@ STAGES = ("records", "plan", "batch setup", "kernels", "results", "writing", "bo
 SERIAL = tuple(s for s in STAGES if s != "kernels")
 
 
-def stochastic_spec(n, num, chunk_size):
+UNCERTAIN = """
+[uncertain]
+alpha = {dist = "normal", cov = 0.015}
+p = {dist = "normal", cov = 0.03}
+mu = {dist = "normal", std = 0.0075}
+"""
+"""``--uncertain``: the uncertain parameters of ``examples/fragility.toml``."""
+
+
+def stochastic_spec(n, num, chunk_size, uncertain=False):
     return f"""
 [campaign]
 name = "bench-campaign-profile"
@@ -70,6 +82,7 @@ duration = 20.0
 dt = 0.01
 load_factors = {{start = 0.25, stop = 2.5, num = {num}}}
 
+{UNCERTAIN if uncertain else ""}
 [run]
 chunk_size = {chunk_size}
 """
@@ -150,6 +163,8 @@ def main(argv=None) -> int:
     ap.add_argument("--levels", type=int, default=250, help="load factors")
     ap.add_argument("--chunk", type=int, default=2000, help="chunk_size")
     ap.add_argument("--repeat", type=int, default=2, help="pairs of runs (1 and 2 threads)")
+    ap.add_argument("--uncertain", action="store_true",
+                    help="alpha, p, mu uncertain (as in examples/fragility.toml)")
     args = ap.parse_args(argv)
     if args.quick:
         args.records, args.levels, args.chunk, args.repeat = 4, 10, 20, 1
@@ -169,11 +184,13 @@ def main(argv=None) -> int:
         campaign.run(warm, root / "warm-store", progress=False)
         print(f"warm-up (numba cache, imports): {time.perf_counter() - t0:.2f} s, not timed")
         spec_path = root / "spec.toml"
-        spec_path.write_text(stochastic_spec(args.records, args.levels, args.chunk))
+        spec_path.write_text(stochastic_spec(args.records, args.levels, args.chunk,
+                                             args.uncertain))
         spec = campaign.read_spec(spec_path)
         n = spec.n_sims
+        unc = " (alpha, p, mu uncertain)" if args.uncertain else ""
         print(f"\n{n:,} runs: specimen 2 x {args.records} stochastic records (20 s, 100 Hz) x "
-              f"{args.levels} load factors, chunk_size {spec.chunk_size} ({spec.n_chunks} "
+              f"{args.levels} load factors{unc}, chunk_size {spec.chunk_size} ({spec.n_chunks} "
               f"chunks), housner, local executor; {args.repeat} pair(s), 1 and 2 threads "
               "alternating, best of each")
         best: dict[int, tuple[float, dict]] = {}
