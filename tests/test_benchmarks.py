@@ -27,6 +27,7 @@ TIMEOUT = 300  # s: a cold numba cache compiles the kernels first (minutes on 2 
 # a line printed by each script's last section (its figures were printed)
 LAST = {
     "bench_campaign.py": "== summary",
+    "bench_campaign_profile.py": "Amdahl's law, speed-up without",
     "bench_ccrr.py": "record by record",
     "bench_contract.py": "goal: >= 0.97",
     "bench_dem.py": "goal (20 s of motion",

@@ -151,3 +151,26 @@ def test_ida_scales_records_to_the_levels_and_runs_them(paper_set):
         ida(blk, recs, im="sa", levels=[1.0])
     with pytest.raises(ParameterError, match="levels"):
         ida(blk, recs, levels=[-1.0])
+
+
+def test_draws_are_those_of_scipy_rvs_bit_for_bit():
+    """The one-draw functions made once per distribution (issue 33: scipy's per-call
+    checks were most of a campaign row's time) give ``dist.rvs(random_state=rng)`` bit for
+    bit and leave the generator in the same state."""
+    from rocking.analysis.distributions import _sampler, frozen
+
+    cases = [("alpha", {"dist": "normal", "cov": 0.015}, 0.2),
+             ("theta0", {"dist": "normal", "mean": 0.0, "std": 0.001745}, 0.0),
+             ("mu", {"dist": "lognormal", "median": 0.93, "beta": 0.05}, 0.93),
+             ("noise", {"dist": "uniform", "low": 0.0, "high": 0.05}, 0.0),
+             ("amplitude", {"dist": "fixed", "value": 1.1}, 1.0)]
+    for name, spec, nominal in cases:
+        d = frozen(name, spec, nominal)
+        one = _sampler(d)
+        assert _sampler(d) is one  # made once
+        for seed in range(200):
+            r1, r2 = np.random.default_rng(seed), np.random.default_rng(seed)
+            for _ in range(3):
+                a, b = float(d.rvs(random_state=r1)), one(r2)
+                assert np.float64(a).tobytes() == np.float64(b).tobytes(), (spec, seed)
+            assert r1.bit_generator.state == r2.bit_generator.state

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import weakref
 
 import numpy as np
 from scipy import stats
@@ -166,12 +167,48 @@ def check_mass(where: str, dist, lo: float, hi: float, what: str = "") -> None:
                              f"at most {_pct(MAX_OUTSIDE)} may{hint}")
 
 
+_SAMPLERS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+"""Frozen distribution -> its one-draw function (:func:`_sampler`), made once."""
+
+
+def _sampler(dist):
+    """``f(rng)``: one draw of ``dist``, the very value of ``dist.rvs(random_state=rng)``.
+
+    A scipy.stats frozen continuous distribution checks and broadcasts its parameters at
+    every ``rvs`` call (most of a campaign row's time with uncertain parameters); here
+    that is done once, and each draw is the distribution's own ``_rvs`` with the same
+    arguments, then ``vals * scale + loc`` as in ``rv_generic.rvs``: the same arithmetic,
+    the same generator consumption. Anything else (``_Fixed``, invalid parameters, which
+    ``rvs`` refuses) draws through ``rvs``."""
+    try:
+        return _SAMPLERS[dist]
+    except (KeyError, TypeError):
+        pass
+    f = None
+    gen = getattr(dist, "dist", None)
+    if isinstance(gen, stats.rv_continuous) and isinstance(getattr(dist, "kwds", None), dict):
+        args, loc, scale, size = gen._parse_args_rvs(*dist.args, **dist.kwds)
+        if (np.all(np.logical_and(gen._argcheck(*args), scale >= 0))
+                and not np.all(scale == 0)):
+            def f(rng, _rvs=gen._rvs, args=args, loc=loc, scale=scale, size=size):
+                return float(_rvs(*args, size=size, random_state=rng) * scale + loc)
+    if f is None:
+        def f(rng, dist=dist):
+            return float(dist.rvs(random_state=rng))
+    try:
+        _SAMPLERS[dist] = f
+    except TypeError:  # not weakly referenceable: not kept
+        pass
+    return f
+
+
 def draw_counted(dist, rng, lo: float = -math.inf, hi: float = math.inf, name: str = "",
                  tries: int = 1000) -> tuple[float, int]:
     """One draw of ``dist`` inside ``(lo, hi)`` by rejection (the distribution truncated to
     the interval), and the number of draws rejected on the way."""
+    one = _sampler(dist)
     for k in range(tries):
-        x = float(dist.rvs(random_state=rng))
+        x = one(rng)
         if lo < x < hi:
             return x, k
     raise ParameterError(f"uncertain[{name!r}] almost never falls inside its range "

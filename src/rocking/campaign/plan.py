@@ -350,38 +350,53 @@ class Campaign:
         if ids.size and not (ids.min() >= 0 and ids.max() < self.n_sims):
             raise ParameterError(f"sim ids must lie in [0, {self.n_sims - 1}]")
         ri, bi, fi, ji, li, si = np.unravel_index(ids, s.shape)
-        draws = self.draw_ids(ids)
         self.motions.prepare(ji)
         self.motions.prepare_floors(fi, ji)
         n = ids.size
-        vals = {k: np.empty(n) for k in PARAMETERS}
-        lf, pga, truncated = np.empty(n), np.empty(n), np.zeros(n, bool)
-        floor_pga = np.empty(n)
-        blocks, motions = [], []
-        uncertain = len(s.uncertain_parameters) > 0
-        for r in range(n):
-            b, j, f = int(bi[r]), int(ji[r]), int(fi[r])
-            block = s.blocks[b]
-            nom = nominal(block)
-            scale = self._scale(j, int(li[r]), b)
-            lf[r] = scale
-            if uncertain:
+        # what rows share is computed once: the nominal values of each block, the scale
+        # of each (motion, level, block), the PGA and id of each motion
+        scales: dict = {}
+        keys = zip(ji.tolist(), li.tolist(), bi.tolist(), strict=True)
+        lf = np.array([scales[k] if k in scales else scales.setdefault(k, self._scale(*k))
+                       for k in keys], dtype=float).reshape(n)
+        truncated = np.zeros(n, bool)
+        if len(s.uncertain_parameters) > 0:
+            vals = {k: np.empty(n) for k in PARAMETERS}
+            draws = self.draw_ids(ids).tolist()
+            blocks, motions = [], []
+            for r, (b, j, f) in enumerate(
+                    zip(bi.tolist(), ji.tolist(), fi.tolist(), strict=True)):
+                block = s.blocks[b]
                 rng = np.random.default_rng(np.random.SeedSequence(
-                    s.seed, spawn_key=(STREAM, int(draws[r]))))
-                v, truncated[r] = draw_parameters(nom, self._dists[b], rng)
-                block = sample_block(block, v, self._dists[b])
-                mo = perturbed(self.motions.on_floor(f, j).scaled(scale), v["amplitude"],
-                               v["noise"], rng)
-            else:
-                v = {k: PARAMETERS[k][0](nom) for k in PARAMETERS}
-                mo = self.motions.on_floor(f, j).scaled(scale)
-            for k in PARAMETERS:
-                vals[k][r] = v[k]
-            pga[r] = self.motions.im(j, "pga") * abs(scale * v["amplitude"])
-            if s.building_axis is not None:
-                floor_pga[r] = self.motions.floor_pga(f, j) * abs(scale * v["amplitude"])
-            blocks.append(block)
-            motions.append(mo)
+                    s.seed, spawn_key=(STREAM, draws[r])))
+                v, truncated[r] = draw_parameters(nominal(block), self._dists[b], rng)
+                blocks.append(sample_block(block, v, self._dists[b]))
+                motions.append(perturbed(self.motions.on_floor(f, j).scaled(float(lf[r])),
+                                         v["amplitude"], v["noise"], rng))
+                for k in PARAMETERS:
+                    vals[k][r] = v[k]
+        else:  # the nominal values; a motion object per (floor, motion, scale)
+            noms = [nominal(b) for b in s.blocks]
+            vals = {k: np.array([float(f(nom)) for nom in noms], dtype=float)[bi]
+                    for k, (f, _) in PARAMETERS.items()}
+            blocks = [s.blocks[b] for b in bi.tolist()]
+            scaled: dict = {}
+            motions = []
+            for f, j, x in zip(fi.tolist(), ji.tolist(), lf.tolist(), strict=True):
+                mo = scaled.get((f, j, x))
+                if mo is None:
+                    mo = scaled[f, j, x] = self.motions.on_floor(f, j).scaled(x)
+                motions.append(mo)
+        uj, jinv = np.unique(ji, return_inverse=True)
+        amp = np.abs(lf * vals["amplitude"])
+        pga = np.array([self.motions.im(j, "pga") for j in uj.tolist()], dtype=float)[
+            jinv.reshape(n)] * amp
+        floor_pga = np.empty(n)
+        if s.building_axis is not None:
+            floor_pga = np.array([self.motions.floor_pga(f, j) for f, j in
+                                  zip(fi.tolist(), ji.tolist(), strict=True)],
+                                 dtype=float) * amp
+        motion_ids = np.array([self.motions.id(j) for j in uj.tolist()], dtype=object)
         runs = s.runs
         table = pd.DataFrame({
             "sim_id": ids, "model": np.array([m for m, _ in runs], dtype=object)[ri],
@@ -392,7 +407,7 @@ class Campaign:
             **self._floor_columns(fi),
             "alpha": vals["alpha"], "p": vals["p"], "mu": vals["mu"],
             "motion": ji.astype(np.int64),
-            "motion_id": [self.motions.id(int(j)) for j in ji],
+            "motion_id": motion_ids[jinv.reshape(n)].tolist(),
             "level": li.astype(np.int64), "load_factor": lf,
             **({"im": self.levels[li]} if s.im else {}),
             "sample": si.astype(np.int64),

@@ -15,6 +15,7 @@ from collections import namedtuple
 import numba
 import numpy as np
 
+from .._compile_notice import compile_notice
 from .._validate import as_float, as_int, in_range, non_negative, positive, sequence_of
 from ..blocks import Block, Stack
 from ..errors import OutputTooLargeError, ParameterError, SimulationError
@@ -275,8 +276,8 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     extra = m.extra_buffers(n_out)
     res = empty_results(cls.outputs, 1)
     mp = m.kernel_params(dt_out, theta0, omega0)
-    cls.kernel(mp, kind, prm, samples, duration, t_quiet, h_scan, y0, dt_out, hist, imp,
-               res[0], extra)
+    compile_notice(cls.kernel)(mp, kind, prm, samples, duration, t_quiet, h_scan, y0, dt_out,
+                               hist, imp, res[0], extra)
     values = result_values(cls.outputs, res[0])
     k = values["n_out"]
     if values["status"] != 0:
@@ -484,7 +485,8 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     per_state = not cls.batch_initial_state and (th0.any() or om0.any())
     if (nb or len({id(b) for b in blocks}) == 1) and not per_state:
         bp = np.array([cls.block_row(b) for b in blocks], dtype=np.float64).reshape(n, nb)
-        cls.batch_kernel(m.kernel_params(dt_out, 0.0, 0.0), m.extra_buffers(0), rows, bp)
+        compile_notice(cls.batch_kernel)(m.kernel_params(dt_out, 0.0, 0.0), m.extra_buffers(0),
+                                         rows, bp)
     else:  # one batch per distinct block (DEM) and initial state: results in place
         first: dict = {}
         groups: dict = {}
@@ -506,8 +508,8 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
                     sub = sub._replace(y0=np.empty((idx.size, y.size)),
                                        states=np.empty((idx.size, 0, y.size)))
                 sub.y0[:] = y
-            cls.batch_kernel(mb.kernel_params(dt_out, t0, w0), mb.extra_buffers(0), sub,
-                             np.empty((idx.size, 0)))
+            compile_notice(cls.batch_kernel)(mb.kernel_params(dt_out, t0, w0),
+                                             mb.extra_buffers(0), sub, np.empty((idx.size, 0)))
             for name in BATCH_OUTPUTS:
                 if getattr(sub, name).shape[1:] == getattr(rows, name).shape[1:]:
                     getattr(rows, name)[idx] = getattr(sub, name)
