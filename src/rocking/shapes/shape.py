@@ -171,6 +171,34 @@ class Shape:
         """
         return cls.from_arrays(np.asarray(mesh.vertices), np.asarray(mesh.faces), **kwargs)
 
+    @classmethod
+    def box(cls, lx, ly, lz, *, density=None, mass=None, name="box") -> Shape:
+        """A rectangular box ``lx`` x ``ly`` x ``lz`` (m; ``lz`` vertical) standing on its
+        ``lx`` x ``ly`` face, centred on the origin in plan (the 8 corners and 12
+        outward triangles; the mass properties follow exactly from them:
+        ``I_xx = m (ly^2 + lz^2) / 12``, ...). Exactly one of ``density`` (kg/m^3) and
+        ``mass`` (kg).
+
+        Examples
+        --------
+        >>> from rocking.shapes import Shape
+        >>> b = Shape.box(0.4, 0.6, 2.0, mass=960.0)
+        >>> round(b.density, 6), round(b.h, 6), b.contact_points, len(b.hull_points())
+        (2000.0, 1.0, 4, 8)
+        >>> np.round(np.diag(b.inertia_local), 6).tolist()  # m (ly^2 + lz^2) / 12, ...
+        [348.8, 332.8, 41.6]
+        """
+        from .._validate import positive
+
+        a = 0.5 * positive("lx", lx, "m")
+        b = 0.5 * positive("ly", ly, "m")
+        c = positive("lz", lz, "m")
+        v = np.array([[-a, -b, 0.0], [a, -b, 0.0], [a, b, 0.0], [-a, b, 0.0],
+                      [-a, -b, c], [a, -b, c], [a, b, c], [-a, b, c]])
+        f = np.array([[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
+                      [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]])
+        return cls.from_arrays(v, f, density=density, mass=mass, name=name)
+
     def __post_init__(self):
         for name in ("vertices", "faces", "com", "inertia", "frame", "local_vertices",
                      "inertia_local", "support"):
