@@ -510,6 +510,22 @@ class Model:
         """
         return ()
 
+    def motion_spec(self, motion) -> tuple:
+        """The spec ``(kind, prm, samples)`` of ``motion`` that the kernel reads: the planar
+        spec ``motion.spec()`` (default); a 3-D model returns ``motion.spec3(...)``
+        (:func:`~rocking.motions._kernel.ground_acc3` reads it).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.motions import OneSine
+        >>> m = rocking.MODELS["housner"](rocking.Block.rectangular(0.2, 1.0))
+        >>> pulse = OneSine(2.0, 0.5)
+        >>> all((a == b).all() for a, b in zip(m.motion_spec(pulse), pulse.spec()))
+        True
+        """
+        return motion.spec()
+
     @property
     def result_name(self) -> str:
         """The ``model`` field of the results."""

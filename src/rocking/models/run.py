@@ -248,7 +248,7 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     if motion is None:
         kind, prm, samples, h_scan = 0, np.zeros(NPRM), np.empty(0), max(duration, 1.0)
     else:
-        (kind, prm, samples), h_scan = motion.spec(), motion.scan_step
+        (kind, prm, samples), h_scan = m.motion_spec(motion), motion.scan_step
     n_out = _n_out(duration, dt_out)
     ns = y0.size
     _guard(ns * n_out + int(cap), m.extra_bytes(n_out), dt_out, duration)
@@ -326,12 +326,13 @@ Examples
 """
 
 
-def pack_motions(motions, duration=None, max_free_time=None) -> PackedMotions:
+def pack_motions(motions, duration=None, max_free_time=None, spec=None) -> PackedMotions:
     """Pack motions into padded arrays for the batch kernels.
 
     Returns a :data:`PackedMotions` (by name, or unpacked in the order ``kinds, prms,
     samples, nsamp, t_ends, h_scans, t_quiets``; the window of each run:
-    :func:`run_window`).
+    :func:`run_window`). ``spec``: the function that gives a motion's spec (default
+    ``Motion.spec``; a model's :meth:`~rocking.models.Model.motion_spec`).
 
     Examples
     --------
@@ -348,7 +349,7 @@ def pack_motions(motions, duration=None, max_free_time=None) -> PackedMotions:
     if isinstance(motions, Motion):
         motions = [motions]
     motions = sequence_of("motions", motions, Motion, "rocking.motions.Motion")
-    specs = [mo.spec() for mo in motions]
+    specs = [mo.spec() if spec is None else spec(mo) for mo in motions]
     n = len(motions)
     nsamp = np.array([s[2].size for s in specs], dtype=np.int64)
     samples = np.zeros((n, max(1, int(nsamp.max()))))
@@ -451,6 +452,8 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     blocks = _blocks(cls, block, n)
     m = _make(model, blocks[0], linear, options)
     m.check_batch()
+    if cls.motion_spec is not Model.motion_spec:  # a 3-D model: three components
+        pm = pack_motions(motions, duration, max_free_time, spec=m.motion_spec)
     dt_out = positive("dt_out", dt_out, "s")
     y0, th0, om0 = _batch_states(m, n, theta0, omega0, state0)
     ns = y0.shape[1]
