@@ -162,14 +162,13 @@ def _mtv(A, x0, x1, x2):
 
 
 @njit(cache=True)
-def _solve_contacts(mp, n_act, rho, un_minus, P, vf, Lf, Jinv, dv, dL, wnn, wt):
-    """Projected Gauss-Seidel on the contacts ``0..n_act-1`` (lever arms ``rho``, pre-step
-    normal velocities ``un_minus``, impulses ``P`` warm-started and updated in place), for
+def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt):
+    """Projected Gauss-Seidel on the contacts ``0..n_act-1`` (lever arms ``rho``, normal
+    laws ``U_n+ + bias >= 0 _|_ P_n >= 0``, impulses ``P`` warm-started and updated in place), for
     the free velocities ``vf`` and momentum ``Lf``: the velocity change ``dv`` and momentum
     change ``dL`` (in place). Returns the number of sweeps."""
     m_inv = 1.0 / mp.mass
     mu = mp.friction
-    e = mp.restitution
     # diagonal Delassus terms W_ii = 1/m + [rho]x^T Jinv [rho]x: the normal one, and the
     # largest eigenvalue of the tangential 2 x 2 block
     scale = 0.0
@@ -186,7 +185,7 @@ def _solve_contacts(mp, n_act, rho, un_minus, P, vf, Lf, Jinv, dv, dL, wnn, wt):
         wnn[i] = m_inv + (jx * ry - jy * rx)
         b_ = 0.5 * (w01 + w10)
         wt[i] = 0.5 * (w00 + w11) + math.sqrt(0.25 * (w00 - w11) ** 2 + b_ * b_)
-        scale += abs(un_minus[i]) / wnn[i]
+        scale += abs(bias[i]) / wnn[i]
     scale += mp.mass * math.sqrt(vf[0] ** 2 + vf[1] ** 2 + vf[2] ** 2) + 1e-300
     dv[0] = dv[1] = dv[2] = 0.0
     dL[0] = dL[1] = dL[2] = 0.0
@@ -212,7 +211,7 @@ def _solve_contacts(mp, n_act, rho, un_minus, P, vf, Lf, Jinv, dv, dL, wnn, wt):
                 uz = vf[2] + dv[2] + wx * ry - wy * rx
                 px, py, pz = P[i, 0], P[i, 1], P[i, 2]
                 if part == 0:
-                    target = uz + e * min(un_minus[i], 0.0)
+                    target = uz + bias[i]
                     nz = max(0.0, pz - target / wnn[i])
                     nx, ny = px, py
                     lim = mu * nz
@@ -264,6 +263,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     rho = np.empty((nv, 3))
     idx = np.empty(nv, dtype=np.int64)
     un_minus = np.empty(nv)
+    bias = np.empty(nv)
     wnn = np.empty(nv)
     wt = np.empty(nv)
     P = np.zeros((nv, 3))
@@ -341,12 +341,20 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         wwx, wwy, wwz = _mv(Jinv, L0, L1, L2)
         # 2. contacts
         n_act = 0
+        vfz = vz - h * (G + az)
         for i in range(nv):
             rx, ry, rz = _mv(RM, mp.verts[i, 0], mp.verts[i, 1], mp.verts[i, 2])
             now_active[i] = False
-            if zm + rz <= mp.gap_tol:
+            gm = zm + rz
+            un = vz + wwx * ry - wwy * rx
+            if gm <= mp.gap_tol or (was_active[i] and gm + 0.5 * h * min(un + vfz - vz, 0.0)
+                                    <= mp.gap_tol):
                 rho[n_act, 0], rho[n_act, 1], rho[n_act, 2] = rx, ry, rz
-                un_minus[n_act] = vz + wwx * ry - wwy * rx
+                un_minus[n_act] = un
+                if was_active[i] and gm > 0.0:  # a lasting contact closes its drift gap
+                    bias[n_act] = 2.0 * gm / h
+                else:  # Newton's law
+                    bias[n_act] = mp.restitution * min(un, 0.0)
                 idx[n_act] = i
                 P[n_act, 0] = P_prev[i, 0]
                 P[n_act, 1] = P_prev[i, 1]
@@ -361,7 +369,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         dv[0] = dv[1] = dv[2] = 0.0
         dL[0] = dL[1] = dL[2] = 0.0
         if n_act > 0:
-            _solve_contacts(mp, n_act, rho, un_minus, P, vf, Lf, Jinv, dv, dL, wnn, wt)
+            _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt)
         impact = False
         for i in range(nv):
             P_prev[i, 0] = P_prev[i, 1] = P_prev[i, 2] = 0.0
