@@ -40,7 +40,8 @@ quaternion, ``I`` the inertia tensor in the body's frame):
    (maximal dissipation), solved by projected Gauss-Seidel over the contacts (the normal
    impulse by its diagonal Delassus term, the tangential one by a projected gradient step
    on the disc ``|P_t| <= mu P_n``, whose fixed points are exactly Coulomb's law), warm
-   started from the previous step's impulses, to a relative change ``tol``;
+   started from the previous step's impulses, until the contact laws hold in velocity to
+   ``tol`` times the free velocity;
 4. end: ``x+ = x_M + h/2 v+``, ``q+ = q_M exp(h/2 w+)`` with ``w+ = R_M^T J_M^-1 L+``
    (the quaternion renormalised), and the state's ``w = I^-1 R+^T L+``.
 
@@ -169,9 +170,9 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt):
     change ``dL`` (in place). Returns the number of sweeps."""
     m_inv = 1.0 / mp.mass
     mu = mp.friction
-    # diagonal Delassus terms W_ii = 1/m + [rho]x^T Jinv [rho]x: the normal one, and the
-    # largest eigenvalue of the tangential 2 x 2 block
-    scale = 0.0
+    # diagonal Delassus terms W_ii = 1/m + [rho]x^T Jinv [rho]x: the normal one, the
+    # largest eigenvalue of the tangential 2 x 2 block and that block's inverse
+    vscale = 0.0
     for i in range(n_act):
         rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
         # W e_x: (Jinv (rho x e_x)) x rho + e_x / m, rho x e_x = (0, rz, -ry)
@@ -184,9 +185,11 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt):
         jx, jy, jz = _mv(Jinv, ry, -rx, 0.0)  # rho x e_z
         wnn[i] = m_inv + (jx * ry - jy * rx)
         b_ = 0.5 * (w01 + w10)
-        wt[i] = 0.5 * (w00 + w11) + math.sqrt(0.25 * (w00 - w11) ** 2 + b_ * b_)
-        scale += abs(bias[i]) / wnn[i]
-    scale += mp.mass * math.sqrt(vf[0] ** 2 + vf[1] ** 2 + vf[2] ** 2) + 1e-300
+        wt[i, 0] = 0.5 * (w00 + w11) + math.sqrt(0.25 * (w00 - w11) ** 2 + b_ * b_)
+        det = w00 * w11 - b_ * b_
+        wt[i, 1], wt[i, 2], wt[i, 3] = w11 / det, -b_ / det, w00 / det  # W_tt^-1
+        vscale += abs(bias[i])
+    vscale += math.sqrt(vf[0] ** 2 + vf[1] ** 2 + vf[2] ** 2) + 1e-300
     dv[0] = dv[1] = dv[2] = 0.0
     dL[0] = dL[1] = dL[2] = 0.0
     for i in range(n_act):  # the warm start's effect
@@ -201,7 +204,6 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt):
     sweeps = 0
     while sweeps < mp.max_iter:
         sweeps += 1
-        change = 0.0
         for i in range(n_act):
             rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
             for part in range(2):  # 0: normal, 1: tangential
@@ -221,13 +223,16 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt):
                         nx, ny = nx * f, ny * f
                 else:
                     nz = pz
-                    nx = px - ux / wt[i]
-                    ny = py - uy / wt[i]
                     lim = mu * nz
-                    tn = math.sqrt(nx * nx + ny * ny)
-                    if tn > lim:
-                        f = lim / tn
-                        nx, ny = nx * f, ny * f
+                    nx = px - (wt[i, 1] * ux + wt[i, 2] * uy)  # sticking: u_t+ = 0
+                    ny = py - (wt[i, 2] * ux + wt[i, 3] * uy)
+                    if nx * nx + ny * ny > lim * lim:  # slipping: a projected gradient step
+                        nx = px - ux / wt[i, 0]
+                        ny = py - uy / wt[i, 0]
+                        tn = math.sqrt(nx * nx + ny * ny)
+                        if tn > lim:
+                            f = lim / tn
+                            nx, ny = nx * f, ny * f
                 ddx, ddy, ddz = nx - px, ny - py, nz - pz
                 if ddx == 0.0 and ddy == 0.0 and ddz == 0.0:
                     continue
@@ -238,8 +243,28 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt):
                 dL[0] += ry * ddz - rz * ddy
                 dL[1] += rz * ddx - rx * ddz
                 dL[2] += rx * ddy - ry * ddx
-                change = max(change, abs(ddx), abs(ddy), abs(ddz))
-        if change <= mp.tol * scale:
+        # the residual of the contact laws in velocity (impulses in a null space of W
+        # do not count: an indeterminate support converges in velocity, not in impulse)
+        wx, wy, wz = _mv(Jinv, Lf[0] + dL[0], Lf[1] + dL[1], Lf[2] + dL[2])
+        resid = 0.0
+        for i in range(n_act):
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            ux = vf[0] + dv[0] + wy * rz - wz * ry
+            uy = vf[1] + dv[1] + wz * rx - wx * rz
+            un = vf[2] + dv[2] + wx * ry - wy * rx + bias[i]
+            pn = P[i, 2]
+            r = abs(un) if pn > 0.0 else max(0.0, -un)
+            ut = math.sqrt(ux * ux + uy * uy)
+            pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
+            if pn <= 0.0 or mu == 0.0:
+                pass  # no normal impulse: no friction, any slip
+            elif pt < mu * pn * (1.0 - 1e-12):
+                r = max(r, ut)  # sticking: no slip
+            else:  # slipping: the friction impulse opposes the slip
+                r = max(r, math.sqrt((ux + ut * P[i, 0] / pt) ** 2
+                                     + (uy + ut * P[i, 1] / pt) ** 2))
+            resid = max(resid, r)
+        if resid <= mp.tol * vscale:
             break
     return sweeps
 
@@ -265,7 +290,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     un_minus = np.empty(nv)
     bias = np.empty(nv)
     wnn = np.empty(nv)
-    wt = np.empty(nv)
+    wt = np.empty((nv, 4))
     P = np.zeros((nv, 3))
     P_prev = np.zeros((nv, 3))
     was_active = np.zeros(nv, dtype=np.bool_)
@@ -499,9 +524,10 @@ class Rigid3dOptions(ModelOptions):
                           help="initial tilt (rad) about the horizontal axis normal to "
                                "direction, on the support's extreme point: positive leans the "
                                "up axis towards -direction, as theta > 0 of the planar models")
-    tol: float = option(1e-10, lo=0.0, hi=1e-3,
-                        help="relative tolerance of the contact solver (Gauss-Seidel)")
-    max_iter: int = option(500, kind=int, lo=1, hi=100000, lo_open=False,
+    tol: float = option(1e-8, lo=0.0, hi=1e-3,
+                        help="tolerance of the contact solver: the contact laws hold in "
+                             "velocity to tol times the free velocity")
+    max_iter: int = option(2000, kind=int, lo=1, hi=10 ** 6, lo_open=False,
                            help="largest number of Gauss-Seidel sweeps per step")
     v_impact: float = option(1e-3, unit="m/s", lo=0.0, hi=10.0, lo_open=False,
                              help="approach speed (m/s) above which a landing vertex "
@@ -568,6 +594,12 @@ class Rigid3d(Model):
         raise ParameterError(f"block must be a rocking.shapes.Shape (or a rectangular "
                              f"rocking.Block) for model 'rigid3d', got {type(block).__name__}")
 
+    def __init__(self, block, options=None):
+        super().__init__(block, options)
+        self._geom = self._geometry()  # the hull, once (kernel_params changes nothing)
+        pts = self._geom[0]
+        self._size = float(np.max(np.linalg.norm(pts[:, None, :] - pts[None, :, :], axis=2)))
+
     def motion_spec(self, motion):
         """The three-component spec: a single motion along ``direction`` (deg from the
         body's x axis); a :class:`~rocking.motions.HorizontalPair` at ``heading``."""
@@ -589,12 +621,11 @@ class Rigid3d(Model):
 
     def size(self) -> float:
         """The body's size (m): the largest distance between two hull vertices."""
-        pts = self.block.hull_points()
-        return float(np.max(np.linalg.norm(pts[:, None, :] - pts[None, :, :], axis=2)))
+        return self._size
 
     def kernel_params(self, dt_out, theta0, omega0):
         o = self.options
-        verts, is_base, base_point = self._geometry()
+        verts, is_base, base_point = self._geom
         inertia = np.array(self.block.inertia_local, dtype=np.float64)
         n = max(1, int(math.ceil(dt_out / o.step - 1e-9)))
         size = self.size()
@@ -618,7 +649,7 @@ class Rigid3d(Model):
             raise ParameterError("state0: the quaternion q0..q3 must not be zero")
         y = y.copy()
         y[3:7] /= qn
-        verts, _, _ = self._geometry()
+        verts = self._geom[0]
         from scipy.spatial.transform import Rotation
 
         R = Rotation.from_quat([y[4], y[5], y[6], y[3]]).as_matrix()
@@ -626,6 +657,30 @@ class Rigid3d(Model):
         if zmin < -1e-6 * self.size():
             raise ParameterError(f"state0: the body is {-zmin:.3g} m below the ground")
         return y
+
+    @staticmethod
+    def rotate_state(y, beta: float) -> np.ndarray:
+        """The state ``y`` turned by ``beta`` (rad) counter-clockwise about the vertical
+        (looking down): positions and velocities turned, the quaternion pre-multiplied by
+        the turn, the body's angular velocity unchanged.
+
+        Examples
+        --------
+        >>> import math
+        >>> from rocking.models.rigid3d import Rigid3d
+        >>> y = Rigid3d.rotate_state([1.0, 0, 0.5, 1, 0, 0, 0, 0, 2.0, 0, 0, 0, 0], math.pi / 2)
+        >>> np.round(y[[0, 1, 3, 6, 7, 8]], 12).tolist()
+        [0.0, 1.0, 0.707106781187, 0.707106781187, -2.0, 0.0]
+        """
+        y = np.array(y, dtype=np.float64)
+        c, s = math.cos(beta), math.sin(beta)
+        out = y.copy()
+        for i in (0, 7):
+            out[i], out[i + 1] = c * y[i] - s * y[i + 1], s * y[i] + c * y[i + 1]
+        r0, r3 = math.cos(0.5 * beta), math.sin(0.5 * beta)
+        a0, a1, a2, a3 = y[3:7]
+        out[3:7] = (r0 * a0 - r3 * a3, r0 * a1 - r3 * a2, r0 * a2 + r3 * a1, r0 * a3 + r3 * a0)
+        return out
 
     def info(self, dt_out=None):
         out = super().info(dt_out)
