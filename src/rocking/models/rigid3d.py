@@ -84,8 +84,16 @@ from numba import njit, prange
 from ..errors import ParameterError
 from ..motions._kernel import ground_acc3
 from ..units import G
-from .base import GENERIC_OUTPUTS, Model, ModelOptions, Output, option, row_args, same_block
-from .base import store_row
+from .base import (
+    GENERIC_OUTPUTS,
+    Model,
+    ModelOptions,
+    Output,
+    option,
+    row_args,
+    same_block,
+    store_row,
+)
 
 Rigid3dParams = namedtuple("Rigid3dParams", [
     "mass", "inertia", "inv_inertia", "verts", "is_base", "base_point", "friction",
@@ -163,11 +171,162 @@ def _mtv(A, x0, x1, x2):
 
 
 @njit(cache=True)
-def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt):
+def _effect(mp, n_act, rho, P, dv, dL):
+    """``dv = sum P_i / m`` and ``dL = sum rho_i x P_i`` (in place)."""
+    m_inv = 1.0 / mp.mass
+    dv[0] = dv[1] = dv[2] = 0.0
+    dL[0] = dL[1] = dL[2] = 0.0
+    for i in range(n_act):
+        px, py, pz = P[i, 0], P[i, 1], P[i, 2]
+        dv[0] += px * m_inv
+        dv[1] += py * m_inv
+        dv[2] += pz * m_inv
+        rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+        dL[0] += ry * pz - rz * py
+        dL[1] += rz * px - rx * pz
+        dL[2] += rx * py - ry * px
+
+
+@njit(cache=True)
+def _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL):
+    """The largest violation (m/s) of the contact laws by the impulses ``P``: Signorini-
+    Newton on the normal, Coulomb (stick inside the cone, slip opposed on its boundary) on
+    the tangent. Impulses in a null space of the Delassus matrix do not count: an
+    indeterminate support converges in velocity, not in impulse."""
+    mu = mp.friction
+    wx, wy, wz = _mv(Jinv, Lf[0] + dL[0], Lf[1] + dL[1], Lf[2] + dL[2])
+    resid = 0.0
+    for i in range(n_act):
+        rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+        ux = vf[0] + dv[0] + wy * rz - wz * ry
+        uy = vf[1] + dv[1] + wz * rx - wx * rz
+        un = vf[2] + dv[2] + wx * ry - wy * rx + bias[i]
+        pn = P[i, 2]
+        if pn < 0.0:
+            return math.inf
+        r = abs(un) if pn > 0.0 else max(0.0, -un)
+        ut = math.sqrt(ux * ux + uy * uy)
+        pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
+        if pt > mu * pn * (1.0 + 1e-12):
+            return math.inf  # outside the cone
+        if pn == 0.0 or mu == 0.0:
+            pass  # no normal impulse: no friction, any slip
+        elif pt < mu * pn * (1.0 - 1e-12):
+            r = max(r, ut)  # sticking: no slip
+        else:  # slipping: the friction impulse opposes the slip
+            r = max(r, math.sqrt((ux + ut * P[i, 0] / pt) ** 2
+                                 + (uy + ut * P[i, 1] / pt) ** 2))
+        resid = max(resid, r)
+    return resid
+
+
+@njit(cache=True)
+def _chol_solve(S, b, n):
+    """Solve ``S x = b`` in place of ``b`` for a symmetric positive definite ``S`` (n, n)
+    by Cholesky (``S`` overwritten); False if ``S`` is singular (a pivot below 1e-12 of
+    the largest diagonal term)."""
+    big = 0.0
+    for i in range(n):
+        big = max(big, S[i, i])
+    for j in range(n):
+        d = S[j, j]
+        for k in range(j):
+            d -= S[j, k] * S[j, k]
+        if not d > 1e-12 * big:
+            return False
+        d = math.sqrt(d)
+        S[j, j] = d
+        for i in range(j + 1, n):
+            x = S[i, j]
+            for k in range(j):
+                x -= S[i, k] * S[j, k]
+            S[i, j] = x / d
+    for i in range(n):  # L y = b
+        x = b[i]
+        for k in range(i):
+            x -= S[i, k] * b[k]
+        b[i] = x / S[i, i]
+    for i in range(n - 1, -1, -1):  # L^T x = y
+        x = b[i]
+        for k in range(i + 1, n):
+            x -= S[k, i] * b[k]
+        b[i] = x / S[i, i]
+    return True
+
+
+@njit(cache=True)
+def _stick(mp, n_act, rho, bias, vf, Lf, Jinv, P, S, y):
+    """The impulses ``P`` (in place) if every contact sticks; False if the contacts do not
+    fix the body (fewer than three, or collinear). With ``H_i`` the map from the body's
+    velocity ``(v, w)`` to contact ``i``'s (``v + w x rho_i``) and ``S = sum H_i^T H_i``
+    (6 x 6): the body's velocity that stops every contact, ``U_i + bias_i e_z = 0``, is
+    ``S^-1 sum H_i^T (-bias_i e_z)`` (0 without bias); the generalized impulse ``Lam``
+    that brings the free motion there (``m dv``, ``J dw``) is spread over the contacts with
+    the least norm, ``P_i = H_i S^-1 Lam``. A candidate only: the caller checks it against
+    the contact laws (:func:`_residual`). ``S``, ``y``: work arrays (6, 6), (6,)."""
+    if n_act < 3:
+        return False
+    for a in range(6):
+        y[a] = 0.0
+        for b in range(6):
+            S[a, b] = 0.0
+    for i in range(n_act):
+        rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+        r2 = rx * rx + ry * ry + rz * rz
+        # H_i^T H_i = [[I, -[r]x], [[r]x, |r|^2 I - r r^T]]
+        S[0, 0] += 1.0
+        S[1, 1] += 1.0
+        S[2, 2] += 1.0
+        # -[r]x in the upper right block: -[[0, -rz, ry], [rz, 0, -rx], [-ry, rx, 0]]
+        S[0, 4] += rz
+        S[0, 5] -= ry
+        S[1, 3] -= rz
+        S[1, 5] += rx
+        S[2, 3] += ry
+        S[2, 4] -= rx
+        S[3, 3] += r2 - rx * rx
+        S[4, 4] += r2 - ry * ry
+        S[5, 5] += r2 - rz * rz
+        S[3, 4] -= rx * ry
+        S[3, 5] -= rx * rz
+        S[4, 5] -= ry * rz
+        # right-hand side: -H_i^T (bias_i e_z) = -(b e_z ; b rho x e_z)
+        b = bias[i]
+        y[2] -= b
+        y[3] -= b * ry
+        y[4] += b * rx
+    for a in range(6):  # the symmetric lower triangle
+        for b in range(a):
+            S[a, b] = S[b, a]
+    S2 = S.copy()
+    if not _chol_solve(S, y, 6):
+        return False
+    # the generalized impulse: m (v+ - vf), J w+ - L (J = Jinv^-1)
+    J = np.linalg.inv(Jinv)
+    wx, wy, wz = _mv(J, y[3], y[4], y[5])
+    y[0] = mp.mass * (y[0] - vf[0])
+    y[1] = mp.mass * (y[1] - vf[1])
+    y[2] = mp.mass * (y[2] - vf[2])
+    y[3], y[4], y[5] = wx - Lf[0], wy - Lf[1], wz - Lf[2]
+    _chol_solve(S2, y, 6)
+    for i in range(n_act):  # P_i = H_i y = y_v + y_w x rho_i
+        rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+        P[i, 0] = y[0] + y[4] * rz - y[5] * ry
+        P[i, 1] = y[1] + y[5] * rx - y[3] * rz
+        P[i, 2] = y[2] + y[3] * ry - y[4] * rx
+    return True
+
+
+@njit(cache=True)
+def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt, Pw, S, y6):
     """Projected Gauss-Seidel on the contacts ``0..n_act-1`` (lever arms ``rho``, normal
-    laws ``U_n+ + bias >= 0 _|_ P_n >= 0``, impulses ``P`` warm-started and updated in place), for
-    the free velocities ``vf`` and momentum ``Lf``: the velocity change ``dv`` and momentum
-    change ``dL`` (in place). Returns the number of sweeps."""
+    laws ``U_n+ + bias >= 0 _|_ P_n >= 0``, impulses ``P`` warm-started and updated in
+    place), for the free velocities ``vf`` and momentum ``Lf``: the velocity change ``dv``
+    and momentum change ``dL`` (in place; ``wnn``, ``wt``, ``Pw``, ``S``, ``y6``: work
+    arrays). With three contacts or more, the solution with every contact sticking
+    (:func:`_stick`) is tried first: exact when it satisfies the laws (a body held still
+    by its support converges slowly in Gauss-Seidel). Returns the number of sweeps (0:
+    the sticking solution held)."""
     m_inv = 1.0 / mp.mass
     mu = mp.friction
     # diagonal Delassus terms W_ii = 1/m + [rho]x^T Jinv [rho]x: the normal one, the
@@ -190,17 +349,16 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt):
         wt[i, 1], wt[i, 2], wt[i, 3] = w11 / det, -b_ / det, w00 / det  # W_tt^-1
         vscale += abs(bias[i])
     vscale += math.sqrt(vf[0] ** 2 + vf[1] ** 2 + vf[2] ** 2) + 1e-300
-    dv[0] = dv[1] = dv[2] = 0.0
-    dL[0] = dL[1] = dL[2] = 0.0
-    for i in range(n_act):  # the warm start's effect
-        px, py, pz = P[i, 0], P[i, 1], P[i, 2]
-        dv[0] += px * m_inv
-        dv[1] += py * m_inv
-        dv[2] += pz * m_inv
-        rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
-        dL[0] += ry * pz - rz * py
-        dL[1] += rz * px - rx * pz
-        dL[2] += rx * py - ry * px
+    if n_act >= 3:  # a support that may hold the body still: try every contact sticking
+        for i in range(n_act):
+            Pw[i, 0], Pw[i, 1], Pw[i, 2] = P[i, 0], P[i, 1], P[i, 2]
+        if _stick(mp, n_act, rho, bias, vf, Lf, Jinv, P, S, y6):
+            _effect(mp, n_act, rho, P, dv, dL)
+            if _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL) <= mp.tol * vscale:
+                return 0
+        for i in range(n_act):  # not a solution: Gauss-Seidel from the warm start
+            P[i, 0], P[i, 1], P[i, 2] = Pw[i, 0], Pw[i, 1], Pw[i, 2]
+    _effect(mp, n_act, rho, P, dv, dL)  # the warm start's effect
     sweeps = 0
     while sweeps < mp.max_iter:
         sweeps += 1
@@ -243,27 +401,7 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt):
                 dL[0] += ry * ddz - rz * ddy
                 dL[1] += rz * ddx - rx * ddz
                 dL[2] += rx * ddy - ry * ddx
-        # the residual of the contact laws in velocity (impulses in a null space of W
-        # do not count: an indeterminate support converges in velocity, not in impulse)
-        wx, wy, wz = _mv(Jinv, Lf[0] + dL[0], Lf[1] + dL[1], Lf[2] + dL[2])
-        resid = 0.0
-        for i in range(n_act):
-            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
-            ux = vf[0] + dv[0] + wy * rz - wz * ry
-            uy = vf[1] + dv[1] + wz * rx - wx * rz
-            un = vf[2] + dv[2] + wx * ry - wy * rx + bias[i]
-            pn = P[i, 2]
-            r = abs(un) if pn > 0.0 else max(0.0, -un)
-            ut = math.sqrt(ux * ux + uy * uy)
-            pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
-            if pn <= 0.0 or mu == 0.0:
-                pass  # no normal impulse: no friction, any slip
-            elif pt < mu * pn * (1.0 - 1e-12):
-                r = max(r, ut)  # sticking: no slip
-            else:  # slipping: the friction impulse opposes the slip
-                r = max(r, math.sqrt((ux + ut * P[i, 0] / pt) ** 2
-                                     + (uy + ut * P[i, 1] / pt) ** 2))
-            resid = max(resid, r)
+        resid = _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL)
         if resid <= mp.tol * vscale:
             break
     return sweeps
@@ -275,7 +413,6 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     module docstring)."""
     h = mp.step
     nv = mp.verts.shape[0]
-    m = mp.mass
     n_out = hist.shape[0]
     n_imp_cap = imp.shape[0]
     every = int(round(dt_out / h))
@@ -291,6 +428,9 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     bias = np.empty(nv)
     wnn = np.empty(nv)
     wt = np.empty((nv, 4))
+    Pw = np.empty((nv, 3))
+    S6 = np.empty((6, 6))
+    y6 = np.empty(6)
     P = np.zeros((nv, 3))
     P_prev = np.zeros((nv, 3))
     was_active = np.zeros(nv, dtype=np.bool_)
@@ -394,7 +534,8 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         dv[0] = dv[1] = dv[2] = 0.0
         dL[0] = dL[1] = dL[2] = 0.0
         if n_act > 0:
-            _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt)
+            _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt, Pw, S6,
+                            y6)
         impact = False
         for i in range(nv):
             P_prev[i, 0] = P_prev[i, 1] = P_prev[i, 2] = 0.0

@@ -44,7 +44,7 @@ def solve_contacts(W, u_free, bias, mu, P0, tol, max_iter, vscale, trace=None):
     Returns ``P``."""
     n = len(bias)
     P = P0.copy()
-    for sweep in range(max_iter):
+    for _sweep in range(max_iter):
         for i in range(n):
             a = 3 * i
             # normal
