@@ -61,7 +61,9 @@ Outputs
 another face): the run stops there (``overturn_time``; ``overturn_azimuth``, deg, the
 bearing of the fall counter-clockwise from the ground's ``x`` axis: where the tilted up
 axis points); ``uplift_time`` when the body first left its rest position (a base vertex
-above the ground, a slide or a twist beyond ``1e-6`` of its size); ``n_impacts`` the steps
+above the ground, a slide or a twist beyond ``1e-6`` of its size, or a velocity relative to
+the ground above ``1e3 tol g h``, a thousand times the contact solver's noise: a body
+held by its support has none, to rounding); ``n_impacts`` the steps
 at which a vertex lands with an approach speed above ``v_impact``; ``max_slide`` and
 ``residual_slide`` the horizontal distance of the base point (the centroid of the support
 at rest, carried with the body) from where it started; ``max_twist`` (largest absolute)
@@ -97,11 +99,13 @@ from .base import (
 
 Rigid3dParams = namedtuple("Rigid3dParams", [
     "mass", "inertia", "inv_inertia", "verts", "is_base", "base_point", "friction",
-    "restitution", "step", "tol", "max_iter", "gap_tol", "lift_tol", "v_rest", "v_impact"])
+    "restitution", "step", "tol", "max_iter", "gap_tol", "lift_tol", "v_rest", "v_impact",
+    "v_up"])
 Rigid3dParams.__doc__ = """The kernel parameters of :class:`Rigid3d` (SI): mass, the
 inertia tensor about the centre of mass in the body's frame and its inverse, the hull's
 vertices relative to the centre of mass (n, 3), 1.0 for the vertices of the base, the base
-point (3,), the options and the tolerances (m, m/s)."""
+point (3,), the options and the tolerances (m, m/s; ``v_up``: the speed that marks an
+uplift, :mod:`rocking.models.rigid3d`)."""
 
 STATUS_NONFINITE = 1
 """The state became non-finite."""
@@ -592,11 +596,11 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         if t_lift != t_lift and zmin > mp.lift_tol:
             t_lift = t1
         size = mp.lift_tol * 1e6
-        if t_up != t_up and (base_up or slide > mp.lift_tol
-                             or abs(twist) * size > mp.lift_tol):
-            t_up = t1
         vn = math.sqrt(vx * vx + vy * vy + vz * vz)
         wn = math.sqrt(wx * wx + wy * wy + wz * wz)
+        if t_up != t_up and (vn + wn * size > mp.v_up or base_up or slide > mp.lift_tol
+                             or abs(twist) * size > mp.lift_tol):
+            t_up = t1
         at_rest = not base_up and vn <= mp.v_rest and wn * size <= mp.v_rest
         if n_out > 0 and k % every == 0 and k_out < n_out:
             hist[k_out, 0], hist[k_out, 1], hist[k_out, 2] = x, y, z
@@ -774,7 +778,7 @@ class Rigid3d(Model):
             float(self.block.mass), inertia, np.linalg.inv(inertia), verts, is_base,
             base_point, float(o.friction), float(o.restitution), float(dt_out / n),
             float(o.tol), int(o.max_iter), 1e-9 * size, 1e-6 * size, float(o.v_rest),
-            float(o.v_impact))
+            float(o.v_impact), 1e3 * float(o.tol) * G * float(dt_out / n))
 
     def initial_state(self, theta0=0.0, omega0=0.0):
         if theta0 or omega0:
