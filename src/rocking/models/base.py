@@ -526,6 +526,9 @@ class Model:
         >>> len(rocking.MODELS["rigid3d"](m.block).motion_spec(pulse)[1]) > len(pulse.spec()[1])
         True
         """
+        if not hasattr(motion, "spec"):  # a HorizontalPair: two components
+            raise ParameterError(f"model {self.name!r} is planar: give it a pair's motion "
+                                 "on a plane, pair.on_plane(phi, heading)")
         return motion.spec()
 
     @property

@@ -18,7 +18,7 @@ import numpy as np
 from .._validate import as_float, as_int, in_range, non_negative, positive, sequence_of
 from ..blocks import Block, Stack
 from ..errors import OutputTooLargeError, ParameterError, SimulationError
-from ..motions import Motion
+from ..motions import HorizontalPair, Motion
 from ..motions._kernel import NPRM
 from ..results import DEFAULT_DT_OUT, BatchResponse
 from .base import (
@@ -134,9 +134,9 @@ def check_run(motion, duration, theta0, omega0, max_free_time=None
               ) -> tuple[float, float, float, float]:
     """Validated ``(t_end, t_quiet, theta0, omega0)`` of a single run
     (:func:`run_window`)."""
-    if motion is not None and not isinstance(motion, Motion):
-        raise ParameterError(f"motion must be a rocking.motions.Motion or None, "
-                             f"got {type(motion).__name__}")
+    if motion is not None and not isinstance(motion, Motion | HorizontalPair):
+        raise ParameterError(f"motion must be a rocking.motions.Motion (a HorizontalPair "
+                             f"for a 3-D model) or None, got {type(motion).__name__}")
     t_end, t_quiet = run_window(motion, duration, max_free_time)
     theta0 = in_range("theta0", theta0, -HALF_PI, HALF_PI, shown="(-pi/2, pi/2) rad")
     omega0 = as_float("omega0", omega0)
@@ -346,9 +346,10 @@ def pack_motions(motions, duration=None, max_free_time=None, spec=None) -> Packe
     >>> pm.t_ends, pm.t_quiets  # by name; an explicit duration: t_quiet = inf
     (array([2.]), array([inf]))
     """
-    if isinstance(motions, Motion):
+    if isinstance(motions, Motion | HorizontalPair):
         motions = [motions]
-    motions = sequence_of("motions", motions, Motion, "rocking.motions.Motion")
+    motions = sequence_of("motions", motions, Motion | HorizontalPair,
+                          "rocking.motions.Motion (or HorizontalPair)")
     specs = [mo.spec() if spec is None else spec(mo) for mo in motions]
     n = len(motions)
     nsamp = np.array([s[2].size for s in specs], dtype=np.int64)
