@@ -326,6 +326,15 @@ Examples
 """
 
 
+def motion_list(motions) -> tuple:
+    """``motions`` (one motion or a sequence) as a checked tuple of motions
+    (:class:`~rocking.motions.HorizontalPair` objects too, for a 3-D model)."""
+    if isinstance(motions, Motion | HorizontalPair):
+        motions = [motions]
+    return sequence_of("motions", motions, Motion | HorizontalPair,
+                       "rocking.motions.Motion (or HorizontalPair)")
+
+
 def pack_motions(motions, duration=None, max_free_time=None, spec=None) -> PackedMotions:
     """Pack motions into padded arrays for the batch kernels.
 
@@ -346,10 +355,7 @@ def pack_motions(motions, duration=None, max_free_time=None, spec=None) -> Packe
     >>> pm.t_ends, pm.t_quiets  # by name; an explicit duration: t_quiet = inf
     (array([2.]), array([inf]))
     """
-    if isinstance(motions, Motion | HorizontalPair):
-        motions = [motions]
-    motions = sequence_of("motions", motions, Motion | HorizontalPair,
-                          "rocking.motions.Motion (or HorizontalPair)")
+    motions = motion_list(motions)
     specs = [mo.spec() if spec is None else spec(mo) for mo in motions]
     n = len(motions)
     nsamp = np.array([s[2].size for s in specs], dtype=np.int64)
@@ -447,13 +453,18 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     if not isinstance(return_histories, bool | np.bool_):
         raise ParameterError(f"return_histories must be True or False, "
                              f"got {return_histories!r}")
-    pm = pack_motions(motions, duration, max_free_time)
-    n = pm.kinds.size
     cls = get_model(model)
+    planar_specs = cls.motion_spec is Model.motion_spec
+    if planar_specs:
+        pm = pack_motions(motions, duration, max_free_time)
+        n = pm.kinds.size
+    else:  # a 3-D model: its specs (three components) need the model's options
+        motions = motion_list(motions)
+        n = len(motions)
     blocks = _blocks(cls, block, n)
     m = _make(model, blocks[0], linear, options)
     m.check_batch()
-    if cls.motion_spec is not Model.motion_spec:  # a 3-D model: three components
+    if not planar_specs:
         pm = pack_motions(motions, duration, max_free_time, spec=m.motion_spec)
     dt_out = positive("dt_out", dt_out, "s")
     y0, th0, om0 = _batch_states(m, n, theta0, omega0, state0)
