@@ -270,3 +270,21 @@ def test_horizontal_pair_turned_with_the_body_changes_nothing(box):
     np.testing.assert_allclose(c.states, d.states, atol=1e-9)
     with pytest.raises(ParameterError, match="planar"):
         rocking.simulate(rocking.Block.rectangular(LX, LZ), pair, duration=1.0)
+
+
+@pytest.mark.parametrize("e", [0.0, 0.5, 1.0])
+def test_flat_drop_bounces_with_newtons_restitution(e):
+    """A box dropped flat from 5 cm lands on its four corners at once: Newton's law sends
+    it back up at e times its landing speed (to O(g h)), with no rotation."""
+    body = Shape.box(0.4, 0.3, 0.6, density=2000.0)
+    y0 = rest_state(body)
+    y0[2] += 0.05
+    h = 1e-4
+    r = rocking.simulate(body, None, model="rigid3d", duration=0.15, state0=y0,
+                         restitution=e, dt_out=h, step=h)
+    v_land = math.sqrt(2 * G * 0.05)
+    k = int(round(r.impact_times[0] / h))
+    assert r.impact_times[0] == pytest.approx(math.sqrt(2 * 0.05 / G), abs=2 * h)
+    assert r.states[k, 9] == pytest.approx(e * v_land, abs=2 * G * h)
+    assert np.max(np.abs(r.states[:, 10:])) < 1e-9 and r.max_tilt < 1e-9
+    assert r.lifted_off and r.n_impacts == 1
