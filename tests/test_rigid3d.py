@@ -288,3 +288,27 @@ def test_flat_drop_bounces_with_newtons_restitution(e):
     assert r.states[k, 9] == pytest.approx(e * v_land, abs=2 * G * h)
     assert np.max(np.abs(r.states[:, 10:])) < 1e-9 and r.max_tilt < 1e-9
     assert r.lifted_off and r.n_impacts == 1
+
+
+def test_wobbling_dissipates_and_converges(box):
+    """Released tilted on a corner and spinning, the box wobbles, twists and slips (friction
+    0.7): the energy never grows but by the O(h^2) error of a free step, the impacts
+    dissipate it, and the twist and the slide converge as h shrinks."""
+    out = {}
+    for h in (1e-4, 5e-5):
+        y0 = rest_state(box, 0.15, math.radians(30.0))
+        y0[10:13] = (0.2, -0.5, 1.5)
+        r = rocking.simulate(box, None, model="rigid3d", duration=3.0, state0=y0, dt_out=h,
+                             step=h, friction=0.7)
+        s = r.states
+        energy = (0.5 * box.mass * np.sum(s[:, 7:10] ** 2, axis=1)
+                  + 0.5 * np.einsum("ij,jk,ik->i", s[:, 10:], box.inertia_local, s[:, 10:])
+                  + box.mass * G * (s[:, 2] - box.h))
+        d = np.diff(energy)
+        assert d.max() < 1e-7 * (h / 1e-4) ** 2 * energy[0]  # per step: O(h^2)
+        assert energy[-1] < 0.1 * energy[0] and r.n_impacts > 10
+        out[h] = (r.residual_twist, r.residual_slide, d[d > 0].sum() / energy[0])
+    (tw1, sl1, up1), (tw2, sl2, up2) = out[1e-4], out[5e-5]
+    assert tw1 > 0.1 and sl1 > 0.01  # it twisted and slid
+    assert abs(tw1 - tw2) < 1e-3 * tw1 and abs(sl1 - sl2) < 1e-3 * sl1
+    assert up1 < 5e-4 and up2 < 0.7 * up1
