@@ -76,7 +76,7 @@ def test_planar_limit_free_rocking_converges_to_housner(box):
         np.testing.assert_allclose(r.impact_times, ref.impact_times[:r.n_impacts],
                                    atol=10 * h)
         assert abs(r.max_twist) < 1e-9 and np.max(np.abs(r.states[:, 1])) < 1e-9
-        assert not r.lifted_off and not r.overturned
+        assert not r.lifted_off and not r.overturned and r.unconverged_steps == 0
     assert errors[0] > errors[1] > errors[2]
     assert errors[2] < 3e-4 and errors[0] / errors[2] > 3.0, errors
 
@@ -101,6 +101,7 @@ def test_planar_limit_forced(box):
     r = rocking.simulate(box, motion, model="rigid3d", duration=1.5, friction=2.0,
                          dt_out=1e-3, step=5e-5)
     assert r.uplift_time == pytest.approx(ref.uplift_time, abs=2 * 5e-5)  # within 2 steps
+    assert r.unconverged_steps == 0
     assert r.max_tilt == pytest.approx(ref.max_abs_theta, rel=2e-3)
     assert np.max(np.abs(tilt_of(r.states) - np.abs(ref.theta))) < 5e-3 * ref.max_abs_theta
 
@@ -136,7 +137,7 @@ def test_sliding_above_friction_sticking_below():
         np.testing.assert_allclose(r.states[:, 1], s * math.sin(d), atol=1e-12)
         assert r.max_tilt < 1e-12 and np.ptp(r.states[:, 2]) < 1e-12
         assert r.residual_slide == pytest.approx(abs(s[-1]), abs=1e-12)
-        assert math.isnan(r.uplift_time) == (a <= mu * G)
+        assert math.isnan(r.uplift_time) == (a <= mu * G) and r.unconverged_steps == 0
 
 
 def test_twisting_stops_as_friction_torque_says():
@@ -152,7 +153,7 @@ def test_twisting_stops_as_friction_torque_says():
     torque = mu * sq.mass * G * math.hypot(0.3, 0.3)
     assert r.residual_twist == pytest.approx(w0**2 * izz / (2 * torque), rel=1e-3)
     assert r.max_twist == pytest.approx(r.residual_twist, rel=1e-12)
-    assert r.residual_slide < 1e-12 and r.settled
+    assert r.residual_slide < 1e-12 and r.settled and r.unconverged_steps == 0
 
 
 def test_free_flight_conserves_momenta():
@@ -238,6 +239,7 @@ def test_kernel_matches_the_plain_reference(box):
     assert want.shape == r.states.shape
     np.testing.assert_allclose(r.states, want, rtol=0, atol=1e-9)
     assert np.ptp(r.states[:, 12]) > 0.1 and r.n_impacts >= 1  # it wobbled and landed
+    assert r.unconverged_steps == 0
 
 
 def test_rotation_check_catches_a_frame_error():
@@ -309,6 +311,7 @@ def test_wobbling_dissipates_and_converges(box):
         d = np.diff(energy)
         assert d.max() < 1e-7 * (h / 1e-4) ** 2 * energy[0]  # per step: O(h^2)
         assert energy[-1] < 0.1 * energy[0] and r.n_impacts > 10
+        assert r.unconverged_steps == 0
         out[h] = (r.residual_twist, r.residual_slide, d[d > 0].sum() / energy[0])
     (tw1, sl1, up1), (tw2, sl2, up2) = out[1e-4], out[5e-5]
     assert tw1 > 0.1 and sl1 > 0.01  # it twisted and slid

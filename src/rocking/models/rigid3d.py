@@ -71,7 +71,11 @@ and ``residual_twist`` (signed, counter-clockwise looking down) the rotation abo
 vertical (the twist of the swing-twist decomposition, followed continuously);
 ``lifted_off`` whether the body left the ground entirely (``lift_off_time``: when it first
 did; the run goes on, flight is modelled); ``settled`` at rest on its base (once the
-ground is still; the run stops) or overturned.
+ground is still; the run stops) or overturned; ``unconverged_steps`` (a diagnostic) the
+steps whose contact problem did not reach ``tol`` in ``max_iter`` sweeps (their impulses
+are the last sweep's: projected Gauss-Seidel on Coulomb's non-associated law has no
+convergence guarantee; it is slow where many contacts share an indeterminate load while
+slipping, a flat base of many vertices, a rim).
 """
 
 from __future__ import annotations
@@ -312,12 +316,53 @@ def _stick(mp, n_act, rho, bias, vf, Lf, Jinv, P, S, y):
     y[1] = mp.mass * (y[1] - vf[1])
     y[2] = mp.mass * (y[2] - vf[2])
     y[3], y[4], y[5] = wx - Lf[0], wy - Lf[1], wz - Lf[2]
+    lam = y.copy()
     _chol_solve(S2, y, 6)
     for i in range(n_act):  # P_i = H_i y = y_v + y_w x rho_i
         rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
         P[i, 0] = y[0] + y[4] * rz - y[5] * ry
         P[i, 1] = y[1] + y[5] * rx - y[3] * rz
         P[i, 2] = y[2] + y[3] * ry - y[4] * rx
+    # the least norm spreads friction evenly, also where the load is light: spread it in
+    # proportion to the normal impulses instead (a weighted least norm, P_i = W_i H_i y
+    # with S_w = sum H_i^T W_i H_i), which fits in the cones whenever an even utilisation
+    # of friction does
+    H = np.zeros((3, 6))
+    W = np.empty(n_act)
+    for _ in range(3):
+        pn_mean = 0.0
+        fits = True
+        for i in range(n_act):
+            pn_mean += max(P[i, 2], 0.0) / n_act
+            pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
+            if P[i, 2] < 0.0 or pt > mp.friction * P[i, 2]:
+                fits = False
+        if fits or not pn_mean > 0.0:
+            break
+        for a in range(6):
+            for b in range(6):
+                S[a, b] = 0.0
+        for i in range(n_act):
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            H[0, 0], H[1, 1], H[2, 2] = 1.0, 1.0, 1.0
+            H[0, 4], H[0, 5] = rz, -ry
+            H[1, 3], H[1, 5] = -rz, rx
+            H[2, 3], H[2, 4] = ry, -rx
+            wt = max(P[i, 2], 1e-6 * pn_mean) / pn_mean
+            for a in range(6):
+                for b in range(6):
+                    S[a, b] += wt * (H[0, a] * H[0, b] + H[1, a] * H[1, b]) \
+                        + H[2, a] * H[2, b]
+            W[i] = wt
+        for a in range(6):
+            y[a] = lam[a]
+        if not _chol_solve(S, y, 6):
+            return True
+        for i in range(n_act):
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            P[i, 0] = W[i] * (y[0] + y[4] * rz - y[5] * ry)
+            P[i, 1] = W[i] * (y[1] + y[5] * rx - y[3] * rz)
+            P[i, 2] = y[2] + y[3] * ry - y[4] * rx
     return True
 
 
@@ -330,7 +375,8 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt, Pw, 
     arrays). With three contacts or more, the solution with every contact sticking
     (:func:`_stick`) is tried first: exact when it satisfies the laws (a body held still
     by its support converges slowly in Gauss-Seidel). Returns the number of sweeps (0:
-    the sticking solution held)."""
+    the sticking solution held; -1: not converged in ``max_iter`` sweeps, the impulses
+    are the last sweep's)."""
     m_inv = 1.0 / mp.mass
     mu = mp.friction
     # diagonal Delassus terms W_ii = 1/m + [rho]x^T Jinv [rho]x: the normal one, the
@@ -407,8 +453,8 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt, Pw, 
                 dL[2] += rx * ddy - ry * ddx
         resid = _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL)
         if resid <= mp.tol * vscale:
-            break
-    return sweeps
+            return sweeps
+    return -1
 
 
 @njit(cache=True)
@@ -485,6 +531,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         t_up = 0.0
     k = 0
     k_out = 0
+    n_unconv = 0
     if n_out > 0:
         hist[0, 0], hist[0, 1], hist[0, 2] = x, y, z
         hist[0, 3], hist[0, 4], hist[0, 5], hist[0, 6] = q[0], q[1], q[2], q[3]
@@ -538,8 +585,9 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         dv[0] = dv[1] = dv[2] = 0.0
         dL[0] = dL[1] = dL[2] = 0.0
         if n_act > 0:
-            _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt, Pw, S6,
-                            y6)
+            if _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt, Pw,
+                               S6, y6) < 0:
+                n_unconv += 1
         impact = False
         for i in range(nv):
             P_prev[i, 0] = P_prev[i, 1] = P_prev[i, 2] = 0.0
@@ -633,6 +681,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     res.max_twist = max_twist
     res.residual_twist = twist
     res.lifted_off = t_lift == t_lift
+    res.unconverged_steps = n_unconv
 
 
 @njit(cache=True, parallel=True)
@@ -725,6 +774,8 @@ class Rigid3d(Model):
         Output("residual_twist", "rad", False, "rotation about the vertical at the end "
                                                "(counter-clockwise looking down)"),
         Output("lifted_off", "", True, "the body left the ground entirely"),
+        Output("unconverged_steps", "", False, "steps whose contact problem missed tol in "
+                                               "max_iter sweeps (a diagnostic)", True),
     )
 
     @classmethod
