@@ -510,6 +510,27 @@ class Model:
         """
         return ()
 
+    def motion_spec(self, motion) -> tuple:
+        """The spec ``(kind, prm, samples)`` of ``motion`` that the kernel reads: the planar
+        spec ``motion.spec()`` (default); a 3-D model returns ``motion.spec3(...)``
+        (:func:`~rocking.motions._kernel.ground_acc3` reads it).
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.motions import OneSine
+        >>> m = rocking.MODELS["housner"](rocking.Block.rectangular(0.2, 1.0))
+        >>> pulse = OneSine(2.0, 0.5)
+        >>> all(np.array_equal(a, b) for a, b in zip(m.motion_spec(pulse), pulse.spec()))
+        True
+        >>> len(rocking.MODELS["rigid3d"](m.block).motion_spec(pulse)[1]) > len(pulse.spec()[1])
+        True
+        """
+        if not hasattr(motion, "spec"):  # a HorizontalPair: two components
+            raise ParameterError(f"model {self.name!r} is planar: give it a pair's motion "
+                                 "on a plane, pair.on_plane(phi, heading)")
+        return motion.spec()
+
     @property
     def result_name(self) -> str:
         """The ``model`` field of the results."""

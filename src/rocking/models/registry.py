@@ -8,8 +8,10 @@ from .ccrr import CCRR
 from .dem import DEM
 from .housner import Housner
 from .isolated import Isolated
+from .rigid3d import Rigid3d
 
-MODELS: dict[str, type[Model]] = {cls.name: cls for cls in (Housner, CCRR, DEM, Anchored, Isolated)}
+MODELS: dict[str, type[Model]] = {cls.name: cls for cls in (Housner, CCRR, DEM, Anchored, Isolated,
+                                                     Rigid3d)}
 """Registered models by name, in the order the CLI and the report list them."""
 
 
@@ -20,7 +22,7 @@ def available() -> tuple[str, ...]:
     --------
     >>> from rocking.models import available
     >>> available()
-    ('housner', 'ccrr', 'dem', 'anchored', 'isolated')
+    ('housner', 'ccrr', 'dem', 'anchored', 'isolated', 'rigid3d')
     """
     return tuple(MODELS)
 

@@ -19,7 +19,7 @@ from .._compile_notice import compile_notice
 from .._validate import as_float, as_int, in_range, non_negative, positive, sequence_of
 from ..blocks import Block, Stack
 from ..errors import OutputTooLargeError, ParameterError, SimulationError
-from ..motions import Motion
+from ..motions import HorizontalPair, Motion
 from ..motions._kernel import NPRM
 from ..results import DEFAULT_DT_OUT, BatchResponse
 from .base import (
@@ -153,9 +153,9 @@ def check_run(motion, duration, theta0, omega0, max_free_time=None
               ) -> tuple[float, float, float, float]:
     """Validated ``(t_end, t_quiet, theta0, omega0)`` of a single run
     (:func:`run_window`)."""
-    if motion is not None and not isinstance(motion, Motion):
-        raise ParameterError(f"motion must be a rocking.motions.Motion or None, "
-                             f"got {type(motion).__name__}")
+    if motion is not None and not isinstance(motion, Motion | HorizontalPair):
+        raise ParameterError(f"motion must be a rocking.motions.Motion (a HorizontalPair "
+                             f"for a 3-D model) or None, got {type(motion).__name__}")
     t_end, t_quiet = run_window(motion, duration, max_free_time)
     theta0 = in_range("theta0", theta0, -HALF_PI, HALF_PI, shown="(-pi/2, pi/2) rad")
     omega0 = as_float("omega0", omega0)
@@ -267,7 +267,7 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     if motion is None:
         kind, prm, samples, h_scan = 0, np.zeros(NPRM), np.empty(0), max(duration, 1.0)
     else:
-        (kind, prm, samples), h_scan = motion.spec(), motion.scan_step
+        (kind, prm, samples), h_scan = m.motion_spec(motion), motion.scan_step
     n_out = _n_out(duration, dt_out)
     ns = y0.size
     _guard(ns * n_out + int(cap), m.extra_bytes(n_out), dt_out, duration)
@@ -345,12 +345,22 @@ Examples
 """
 
 
-def pack_motions(motions, duration=None, max_free_time=None) -> PackedMotions:
+def motion_list(motions) -> tuple:
+    """``motions`` (one motion or a sequence) as a checked tuple of motions
+    (:class:`~rocking.motions.HorizontalPair` objects too, for a 3-D model)."""
+    if isinstance(motions, Motion | HorizontalPair):
+        motions = [motions]
+    return sequence_of("motions", motions, Motion | HorizontalPair,
+                       "rocking.motions.Motion (or HorizontalPair)")
+
+
+def pack_motions(motions, duration=None, max_free_time=None, spec=None) -> PackedMotions:
     """Pack motions into padded arrays for the batch kernels.
 
     Returns a :data:`PackedMotions` (by name, or unpacked in the order ``kinds, prms,
     samples, nsamp, t_ends, h_scans, t_quiets``; the window of each run:
-    :func:`run_window`).
+    :func:`run_window`). ``spec``: the function that gives a motion's spec (default
+    ``Motion.spec``; a model's :meth:`~rocking.models.Model.motion_spec`).
 
     Examples
     --------
@@ -364,10 +374,8 @@ def pack_motions(motions, duration=None, max_free_time=None) -> PackedMotions:
     >>> pm.t_ends, pm.t_quiets  # by name; an explicit duration: t_quiet = inf
     (array([2.]), array([inf]))
     """
-    if isinstance(motions, Motion):
-        motions = [motions]
-    motions = sequence_of("motions", motions, Motion, "rocking.motions.Motion")
-    specs = [mo.spec() for mo in motions]
+    motions = motion_list(motions)
+    specs = [mo.spec() if spec is None else spec(mo) for mo in motions]
     n = len(motions)
     nsamp = np.array([s[2].size for s in specs], dtype=np.int64)
     samples = np.zeros((n, max(1, int(nsamp.max()))))
@@ -464,12 +472,19 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
     if not isinstance(return_histories, bool | np.bool_):
         raise ParameterError(f"return_histories must be True or False, "
                              f"got {return_histories!r}")
-    pm = pack_motions(motions, duration, max_free_time)
-    n = pm.kinds.size
     cls = get_model(model)
+    planar_specs = cls.motion_spec is Model.motion_spec
+    if planar_specs:
+        pm = pack_motions(motions, duration, max_free_time)
+        n = pm.kinds.size
+    else:  # a 3-D model: its specs (three components) need the model's options
+        motions = motion_list(motions)
+        n = len(motions)
     blocks = _blocks(cls, block, n)
     m = _make(model, blocks[0], linear, options)
     m.check_batch()
+    if not planar_specs:
+        pm = pack_motions(motions, duration, max_free_time, spec=m.motion_spec)
     dt_out = positive("dt_out", dt_out, "s")
     y0, th0, om0 = _batch_states(m, n, theta0, omega0, state0)
     ns = y0.shape[1]

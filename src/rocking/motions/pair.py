@@ -234,6 +234,36 @@ class HorizontalPair:
         return np.arange(self.n) * self.dt
 
     @property
+    def scan_step(self) -> float:
+        """A time step that resolves the pair (s): its sampling step (and the vertical
+        component's scan step, if finer); what a 3-D model's run reads, as a motion's.
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair
+        >>> HorizontalPair.builtin("rinaldi", vertical=False).scan_step
+        0.01
+        """
+        return min(self.dt, self.vertical.scan_step) if self.vertical is not None \
+            else self.dt
+
+    @property
+    def quiet_time(self) -> float:
+        """From this time (s) the ground is still: the end of the records (and of the
+        vertical component).
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair
+        >>> pair = HorizontalPair.builtin("rinaldi", vertical=False)
+        >>> pair.quiet_time == pair.duration
+        True
+        """
+        if self.vertical is None:
+            return self.duration
+        return max(self.duration, self.vertical.duration, self.vertical.quiet_time)
+
+    @property
     def azimuths_deg(self) -> tuple | None:
         return None if self.azimuths is None else tuple(math.degrees(a) for a in self.azimuths)
 

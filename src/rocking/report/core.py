@@ -152,8 +152,8 @@ def report_models() -> list[str]:
     >>> from rocking.report import report_models
     >>> report_models()
     ['housner', 'ccrr', 'dem']
-    >>> sorted(set(available()) - set(report_models()))  # the mitigations
-    ['anchored', 'isolated']
+    >>> sorted(set(available()) - set(report_models()))  # the mitigations, the 3-D body
+    ['anchored', 'isolated', 'rigid3d']
     """
     return [name for name, cls in MODELS.items()
             if not cls.mitigation and cls.tags.get("planar")]

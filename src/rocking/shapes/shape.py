@@ -171,6 +171,73 @@ class Shape:
         """
         return cls.from_arrays(np.asarray(mesh.vertices), np.asarray(mesh.faces), **kwargs)
 
+    @classmethod
+    def box(cls, lx, ly, lz, *, density=None, mass=None, name="box") -> Shape:
+        """A rectangular box ``lx`` x ``ly`` x ``lz`` (m; ``lz`` vertical) standing on its
+        ``lx`` x ``ly`` face, centred on the origin in plan (the 8 corners and 12
+        outward triangles; the mass properties follow exactly from them:
+        ``I_xx = m (ly^2 + lz^2) / 12``, ...). Exactly one of ``density`` (kg/m^3) and
+        ``mass`` (kg).
+
+        Examples
+        --------
+        >>> from rocking.shapes import Shape
+        >>> b = Shape.box(0.4, 0.6, 2.0, mass=960.0)
+        >>> round(b.density, 6), round(b.h, 6), b.contact_points, len(b.hull_points())
+        (2000.0, 1.0, 4, 8)
+        >>> np.round(np.diag(b.inertia_local), 6).tolist()  # m (ly^2 + lz^2) / 12, ...
+        [348.8, 332.8, 41.6]
+        """
+        from .._validate import positive
+
+        a = 0.5 * positive("lx", lx, "m")
+        b = 0.5 * positive("ly", ly, "m")
+        c = positive("lz", lz, "m")
+        v = np.array([[-a, -b, 0.0], [a, -b, 0.0], [a, b, 0.0], [-a, b, 0.0],
+                      [-a, -b, c], [a, -b, c], [a, b, c], [-a, b, c]])
+        f = np.array([[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
+                      [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]])
+        return cls.from_arrays(v, f, density=density, mass=mass, name=name)
+
+    @classmethod
+    def cylinder(cls, radius, height, *, segments=64, density=None, mass=None,
+                 name="cylinder") -> Shape:
+        """A circular cylinder standing on an end, as the regular prism of ``segments``
+        sides inscribed in it (its mass properties are the prism's, exact: the volume is
+        ``n/2 r^2 sin(2 pi/n) H``, ``I_zz = m r^2 (2 + cos(2 pi/n)) / 6``; both tend to the
+        cylinder's, ``pi r^2 H`` and ``m r^2 / 2``, as ``1 - O(n^-2)``). Exactly one of
+        ``density`` (kg/m^3) and ``mass`` (kg).
+
+        Examples
+        --------
+        >>> import math
+        >>> from rocking.shapes import Shape
+        >>> c = Shape.cylinder(0.3, 1.0, segments=128, mass=100.0)
+        >>> izz = 100.0 * 0.3**2 * (2 + math.cos(2 * math.pi / 128)) / 6  # the prism's
+        >>> bool(abs(c.inertia_local[2, 2] / izz - 1) < 1e-12), round(c.h, 6)
+        (True, 0.5)
+        >>> round(float(c.inertia_local[2, 2]) / (100.0 * 0.3**2 / 2), 4)  # the cylinder's
+        0.9996
+        >>> len(c.hull_points()), c.contact_points  # the rims; the base's rim and centre
+        (256, 129)
+        """
+        from .._validate import as_int, positive
+
+        r = positive("radius", radius, "m")
+        c = positive("height", height, "m")
+        n = as_int("segments", segments, 3, 100000)
+        a = 2.0 * np.pi * np.arange(n) / n
+        ring = np.column_stack([r * np.cos(a), r * np.sin(a)])
+        v = np.vstack([np.column_stack([ring, np.zeros(n)]),
+                       np.column_stack([ring, np.full(n, c)]),
+                       [[0.0, 0.0, 0.0], [0.0, 0.0, c]]])
+        bot, top = 2 * n, 2 * n + 1
+        f = []
+        for i in range(n):
+            j = (i + 1) % n
+            f += [[bot, j, i], [top, n + i, n + j], [i, j, n + j], [i, n + j, n + i]]
+        return cls.from_arrays(v, np.array(f), density=density, mass=mass, name=name)
+
     def __post_init__(self):
         for name in ("vertices", "faces", "com", "inertia", "frame", "local_vertices",
                      "inertia_local", "support"):

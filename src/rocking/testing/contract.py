@@ -61,6 +61,10 @@ The checks
 ``check_motion_symmetry``
     The same for a motion and its negation ``-motion``, over the motion's duration, to
     :data:`MOTION_SYMMETRY_TOL` ``alpha``.
+``check_rotation_equivariance``
+    With the ``"rotation"`` tag (3-D models): the body and the motion turned together
+    about the vertical (``rotate_state`` of the initial state, the option ``direction``)
+    give the same outputs and the turned history, to :data:`ROTATION_TOL`.
 
 Exactness. Batch rows and chunks must be equal bit for bit: nothing excuses a row that
 depends on its batch. Symmetry is checked to a tolerance: a kernel written with the sign
@@ -609,16 +613,16 @@ def check_blocks_per_row(cls, plan):
 def _state0(cls, plan, f: float, w: float, sign: float = 1.0) -> dict:
     """The initial state of a free run, as keywords: the planar shorthand ``theta0 = f
     alpha``, ``omega0 = w``; for another model ``state0`` with its first two states
-    ``(f alpha, w)`` (times ``sign``)."""
+    shifted by ``(f alpha, w)`` (times ``sign``) from its rest state
+    (:meth:`Model.initial_state`)."""
     x = min(f * plan.block.alpha, 0.49 * math.pi)
     if _planar(cls):
         return {"theta0": sign * x, "omega0": sign * w}
-    n = len(cls.from_kwargs(plan.block).state_names)
-    y = np.zeros(n)
-    y[0] = x
-    if n > 1:
-        y[1] = w
-    return {"state0": sign * y}
+    y = np.array(cls.from_kwargs(plan.block).initial_state(), dtype=np.float64)
+    y[0] += sign * x  # from the model's rest state (a quaternion is not 0)
+    if y.size > 1:
+        y[1] += sign * w
+    return {"state0": y}
 
 
 @_check
@@ -704,6 +708,61 @@ def check_motion_symmetry(cls, plan):
         a = simulate(plan.block, m, model=cls, **kw)
         b = simulate(plan.block, -m, model=cls, **kw)
         _mirror(f"{_describe(m)} and its negation", a, b, MOTION_SYMMETRY_TOL, plan.block)
+
+
+ROTATION_TOL = 1e-4
+"""Rotation equivariance: largest difference of a scalar output between a run and the
+same run turned about the vertical (fraction of its scale: ``alpha`` for angles, the
+body's height for lengths, ``1 / p`` for times): the contact solver's tolerance (its
+default, ``rigid3d``) moves ``max_tilt`` by ~1e-5 ``alpha`` between the two runs; a frame
+error moves it by the order of ``alpha``."""
+ROTATION_HISTORY_TOL = 1e-3
+"""Rotation equivariance of the state history: largest difference (fraction of the
+body's height times ``p``, a velocity; positions and quaternions are held to the same
+number). The contact solver's tolerance, amplified by the impacts, separates the two runs
+by ~1e-5 of it (``rigid3d``, 3 s of rocking); a frame error is of the order of 1."""
+
+
+@_check
+def check_rotation_equivariance(cls, plan):
+    """With the ``"rotation"`` tag, turning the body (its initial state, by the model's
+    ``rotate_state(y, beta)``) and the motion (the option ``direction``, deg) together
+    about the vertical changes nothing: the same scalar outputs (``overturn_azimuth``
+    turned by ``beta``) and the state history turned by ``beta``."""
+    if cls.tags.get("symmetry") != "rotation":
+        return
+    model = cls.from_kwargs(plan.block)
+    y0 = model.initial_state()
+    size = float(getattr(plan.block, "height", None) or 1.0)
+    for m in plan.motions[:3]:
+        kw = {**plan.run, "duration": m.duration}
+        kw.pop("max_free_time", None)
+        a = simulate(plan.block, m, model=cls, **kw)
+        for beta_deg in (37.0, -120.0):
+            beta = math.radians(beta_deg)
+            b = simulate(plan.block, m, model=cls, state0=model.rotate_state(y0, beta),
+                         direction=beta_deg, **kw)
+            label = f"{_describe(m)} turned by {beta_deg:g} deg"
+            for o in cls.outputs:
+                if o.name in ("n_out", "n_steps"):
+                    continue
+                x, y = a.outputs[o.name], b.outputs[o.name]
+                if o.name == "overturn_azimuth" and not math.isnan(x):
+                    y = (y - beta_deg - x + 180.0) % 360.0 - 180.0 + x
+                if o.flag or o.integer:
+                    _expect_same(f"{label}: {o.name}", y, x, "turned", "original")
+                    continue
+                scale = {"rad": plan.block.alpha, "m": size, "s": 1.0 / plan.block.p,
+                         "deg": math.degrees(plan.block.alpha)}.get(o.unit, 1.0)
+                if not (_same(x, y) or abs(x - y) <= ROTATION_TOL * scale):
+                    raise AssertionError(f"{label}: {o.name} {y!r} (turned) != {x!r} "
+                                         "(original)")
+            back = np.array([model.rotate_state(s, -beta) for s in b.states])
+            n = min(len(back), len(a.states))
+            d = float(np.max(np.abs(back[:n] - a.states[:n]), initial=0.0))
+            if len(back) != len(a.states) or d > ROTATION_HISTORY_TOL * size * plan.block.p:
+                raise AssertionError(f"{label}: the turned state history differs by {d:.3g} "
+                                     f"(lengths {len(back)}, {len(a.states)})")
 
 
 @_check

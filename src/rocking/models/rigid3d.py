@@ -1,0 +1,934 @@
+r"""A rigid body on a rigid ground plane that moves with three components of acceleration
+(issue 30): unilateral contact, an isotropic Coulomb cone, impacts with Newton's law.
+Rocking, wobbling, rolling, sliding, twisting, flight and landing all emerge from them.
+
+Model
+-----
+The body is a :class:`rocking.shapes.Shape` (a mesh; :meth:`rocking.shapes.Shape.box` for a
+box); its contact points are the vertices of its convex hull (a box: its 8 corners), which
+is exact for a convex polyhedron on a plane (a plane touches a convex polyhedron at a
+vertex, an edge or a face, and the forces on an edge or a face are equivalent to forces at
+its vertices). A rectangular :class:`rocking.Block` with its ``width``, ``height`` (and
+``thickness``: the depth; its width if not given) is taken as that box.
+
+Frame: the ground's frame, which translates with the ground (it never rotates): ``x``, ``y``
+horizontal, the body's axes at rest (the motion's components reach the body through
+:meth:`rocking.motions.Motion.spec3`, heading ``-direction``), ``z`` up. In it the body
+feels, per unit mass, ``(-a_x, -a_y, -(g + a_z))`` (``a_z`` positive upwards: gravity is
+``g + a_v``), applied at the centre of mass: no torque.
+
+State (13): ``x, y, z`` the centre of mass relative to the ground (m; at rest ``z = h``),
+the quaternion ``q0..q3`` (body to ground; 1, 0, 0, 0 at rest), ``vx, vy, vz`` the centre
+of mass's velocity relative to the ground (m/s) and ``wx, wy, wz`` the angular velocity in
+the body's frame (rad/s).
+
+Scheme (Moreau-Jean, midpoint, fixed step ``h``; Jean 1999, "The non-smooth contact
+dynamics method", Comput. Methods Appl. Mech. Engrg. 177:235-257; Acary and Brogliato
+2008, "Numerical methods for nonsmooth dynamical systems", Ch. 10). With ``L = R I w`` the
+angular momentum about the centre of mass in the ground's frame (``R`` the rotation of the
+quaternion, ``I`` the inertia tensor in the body's frame):
+
+1. midpoint: ``x_M = x + h/2 v``, ``q_M = q exp(h/2 w)`` (the exact rotation of the body
+   angular velocity ``w = I^-1 R^T L`` over ``h/2``), ``t_M = t + h/2``;
+2. contacts: the hull's vertices whose height ``z_i = z_M + (R_M r_i)_z`` is at most
+   ``gap_tol`` (1e-9 of the body's size);
+3. impulses: with ``rho_i = R_M r_i`` and ``J_M^-1 = R_M I^-1 R_M^T``,
+   ``v+ = v + h f(t_M) + sum P_i / m``, ``L+ = L + sum rho_i x P_i``; the velocity of
+   contact ``i`` is ``U_i = v + (J_M^-1 L) x rho_i``. Newton's law on the normal,
+   ``U_n+ + e min(U_n-, 0) >= 0 _|_ P_n >= 0``, and Coulomb's law on the tangential
+   impulse, ``|P_t| <= mu P_n`` with ``P_t = -mu P_n U_t+ / |U_t+|`` when it slips
+   (maximal dissipation), solved by projected Gauss-Seidel over the contacts (the normal
+   impulse by its diagonal Delassus term, the tangential one by a projected gradient step
+   on the disc ``|P_t| <= mu P_n``, whose fixed points are exactly Coulomb's law), warm
+   started from the previous step's impulses, until the contact laws hold in velocity to
+   ``tol`` times the free velocity;
+4. end: ``x+ = x_M + h/2 v+``, ``q+ = q_M exp(h/2 w+)`` with ``w+ = R_M^T J_M^-1 L+``
+   (the quaternion renormalised), and the state's ``w = I^-1 R+^T L+``.
+
+In flight the momentum and the angular momentum ``L`` are kept exactly (to rounding) and a
+constant acceleration is integrated exactly; the scheme is first order at impacts and
+stick-slip transitions (Moreau-Jean is). Newton's law with ``e = 0`` (the default) makes
+each impact plastic: the velocity jump is the one that minimises the kinetic energy under
+the contact constraints, which in the planar limit (a box rocking about one edge onto the
+other, friction sticking) conserves the angular momentum about the new edge: Housner's
+Eq 4, ``mu = 1 - 1.5 sin^2(alpha)``, emerges with no parameter to calibrate
+(``tests/test_rigid3d.py`` checks it).
+
+Outputs
+-------
+``max_tilt`` the largest angle of the body's initial up axis from the vertical; an
+*overturn* is the body landing on a hull vertex that is not on its base (it fell onto
+another face): the run stops there (``overturn_time``; ``overturn_azimuth``, deg, the
+bearing of the fall counter-clockwise from the ground's ``x`` axis: where the tilted up
+axis points); ``uplift_time`` when the body first left its rest position (a base vertex
+above the ground, a slide or a twist beyond ``1e-6`` of its size, or a velocity relative to
+the ground above ``1e3 tol g h``, a thousand times the contact solver's noise: a body
+held by its support has none, to rounding); ``n_impacts`` the steps
+at which a vertex lands with an approach speed above ``v_impact``; ``max_slide`` and
+``residual_slide`` the horizontal distance of the base point (the centroid of the support
+at rest, carried with the body) from where it started; ``max_twist`` (largest absolute)
+and ``residual_twist`` (signed, counter-clockwise looking down) the rotation about the
+vertical (the twist of the swing-twist decomposition, followed continuously);
+``lifted_off`` whether the body left the ground entirely (``lift_off_time``: when it first
+did; the run goes on, flight is modelled); ``settled`` at rest on its base (once the
+ground is still; the run stops) or overturned; ``unconverged_steps`` (a diagnostic) the
+steps whose contact problem did not reach ``tol`` in ``max_iter`` sweeps (their impulses
+are the last sweep's: projected Gauss-Seidel on Coulomb's non-associated law has no
+convergence guarantee; it is slow where many contacts share an indeterminate load while
+slipping, a flat base of many vertices, a rim).
+"""
+
+from __future__ import annotations
+
+import math
+from collections import namedtuple
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit, prange
+
+from ..errors import ParameterError
+from ..motions._kernel import ground_acc3
+from ..units import G
+from .base import (
+    GENERIC_OUTPUTS,
+    Model,
+    ModelOptions,
+    Output,
+    option,
+    row_args,
+    same_block,
+    store_row,
+)
+
+Rigid3dParams = namedtuple("Rigid3dParams", [
+    "mass", "inertia", "inv_inertia", "verts", "is_base", "base_point", "friction",
+    "restitution", "step", "tol", "max_iter", "gap_tol", "lift_tol", "v_rest", "v_impact",
+    "v_up"])
+Rigid3dParams.__doc__ = """The kernel parameters of :class:`Rigid3d` (SI): mass, the
+inertia tensor about the centre of mass in the body's frame and its inverse, the hull's
+vertices relative to the centre of mass (n, 3), 1.0 for the vertices of the base, the base
+point (3,), the options and the tolerances (m, m/s; ``v_up``: the speed that marks an
+uplift, :mod:`rocking.models.rigid3d`)."""
+
+STATUS_NONFINITE = 1
+"""The state became non-finite."""
+
+
+# ================================================================ compiled helpers
+@njit(cache=True, inline="always")
+def _rot(q0, q1, q2, q3, out):
+    """The rotation matrix of a unit quaternion into ``out`` (3, 3)."""
+    out[0, 0] = 1.0 - 2.0 * (q2 * q2 + q3 * q3)
+    out[0, 1] = 2.0 * (q1 * q2 - q0 * q3)
+    out[0, 2] = 2.0 * (q1 * q3 + q0 * q2)
+    out[1, 0] = 2.0 * (q1 * q2 + q0 * q3)
+    out[1, 1] = 1.0 - 2.0 * (q1 * q1 + q3 * q3)
+    out[1, 2] = 2.0 * (q2 * q3 - q0 * q1)
+    out[2, 0] = 2.0 * (q1 * q3 - q0 * q2)
+    out[2, 1] = 2.0 * (q2 * q3 + q0 * q1)
+    out[2, 2] = 1.0 - 2.0 * (q1 * q1 + q2 * q2)
+
+
+@njit(cache=True, inline="always")
+def _advance(q, wx, wy, wz, dt):
+    """``q exp(dt w)``: the quaternion ``q`` (4,) turned in place by the body angular
+    velocity ``w`` over ``dt``, renormalised."""
+    wn = math.sqrt(wx * wx + wy * wy + wz * wz)
+    ang = 0.5 * wn * dt
+    if wn > 0.0:
+        s = math.sin(ang) / wn
+        c = math.cos(ang)
+    else:
+        s = 0.5 * dt
+        c = 1.0
+    r0, r1, r2, r3 = c, s * wx, s * wy, s * wz
+    a0, a1, a2, a3 = q[0], q[1], q[2], q[3]
+    b0 = a0 * r0 - a1 * r1 - a2 * r2 - a3 * r3
+    b1 = a0 * r1 + a1 * r0 + a2 * r3 - a3 * r2
+    b2 = a0 * r2 - a1 * r3 + a2 * r0 + a3 * r1
+    b3 = a0 * r3 + a1 * r2 - a2 * r1 + a3 * r0
+    n = math.sqrt(b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3)
+    q[0], q[1], q[2], q[3] = b0 / n, b1 / n, b2 / n, b3 / n
+
+
+@njit(cache=True)
+def _world_inv_inertia(R, Iinv, out):
+    """``R Iinv R^T`` into ``out``."""
+    for i in range(3):
+        for j in range(3):
+            s = 0.0
+            for k in range(3):
+                for m in range(3):
+                    s += R[i, k] * Iinv[k, m] * R[j, m]
+            out[i, j] = s
+
+
+@njit(cache=True, inline="always")
+def _mv(A, x0, x1, x2):
+    return (A[0, 0] * x0 + A[0, 1] * x1 + A[0, 2] * x2,
+            A[1, 0] * x0 + A[1, 1] * x1 + A[1, 2] * x2,
+            A[2, 0] * x0 + A[2, 1] * x1 + A[2, 2] * x2)
+
+
+@njit(cache=True, inline="always")
+def _mtv(A, x0, x1, x2):
+    return (A[0, 0] * x0 + A[1, 0] * x1 + A[2, 0] * x2,
+            A[0, 1] * x0 + A[1, 1] * x1 + A[2, 1] * x2,
+            A[0, 2] * x0 + A[1, 2] * x1 + A[2, 2] * x2)
+
+
+@njit(cache=True)
+def _effect(mp, n_act, rho, P, dv, dL):
+    """``dv = sum P_i / m`` and ``dL = sum rho_i x P_i`` (in place)."""
+    m_inv = 1.0 / mp.mass
+    dv[0] = dv[1] = dv[2] = 0.0
+    dL[0] = dL[1] = dL[2] = 0.0
+    for i in range(n_act):
+        px, py, pz = P[i, 0], P[i, 1], P[i, 2]
+        dv[0] += px * m_inv
+        dv[1] += py * m_inv
+        dv[2] += pz * m_inv
+        rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+        dL[0] += ry * pz - rz * py
+        dL[1] += rz * px - rx * pz
+        dL[2] += rx * py - ry * px
+
+
+@njit(cache=True)
+def _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL):
+    """The largest violation (m/s) of the contact laws by the impulses ``P``: Signorini-
+    Newton on the normal, Coulomb (stick inside the cone, slip opposed on its boundary) on
+    the tangent. Impulses in a null space of the Delassus matrix do not count: an
+    indeterminate support converges in velocity, not in impulse."""
+    mu = mp.friction
+    wx, wy, wz = _mv(Jinv, Lf[0] + dL[0], Lf[1] + dL[1], Lf[2] + dL[2])
+    resid = 0.0
+    for i in range(n_act):
+        rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+        ux = vf[0] + dv[0] + wy * rz - wz * ry
+        uy = vf[1] + dv[1] + wz * rx - wx * rz
+        un = vf[2] + dv[2] + wx * ry - wy * rx + bias[i]
+        pn = P[i, 2]
+        if pn < 0.0:
+            return math.inf
+        r = abs(un) if pn > 0.0 else max(0.0, -un)
+        ut = math.sqrt(ux * ux + uy * uy)
+        pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
+        if pt > mu * pn * (1.0 + 1e-12):
+            return math.inf  # outside the cone
+        if pn == 0.0 or mu == 0.0:
+            pass  # no normal impulse: no friction, any slip
+        elif pt < mu * pn * (1.0 - 1e-12):
+            r = max(r, ut)  # sticking: no slip
+        else:  # slipping: the friction impulse opposes the slip
+            r = max(r, math.sqrt((ux + ut * P[i, 0] / pt) ** 2
+                                 + (uy + ut * P[i, 1] / pt) ** 2))
+        resid = max(resid, r)
+    return resid
+
+
+@njit(cache=True)
+def _chol_solve(S, b, n):
+    """Solve ``S x = b`` in place of ``b`` for a symmetric positive definite ``S`` (n, n)
+    by Cholesky (``S`` overwritten); False if ``S`` is singular (a pivot below 1e-12 of
+    the largest diagonal term)."""
+    big = 0.0
+    for i in range(n):
+        big = max(big, S[i, i])
+    for j in range(n):
+        d = S[j, j]
+        for k in range(j):
+            d -= S[j, k] * S[j, k]
+        if not d > 1e-12 * big:
+            return False
+        d = math.sqrt(d)
+        S[j, j] = d
+        for i in range(j + 1, n):
+            x = S[i, j]
+            for k in range(j):
+                x -= S[i, k] * S[j, k]
+            S[i, j] = x / d
+    for i in range(n):  # L y = b
+        x = b[i]
+        for k in range(i):
+            x -= S[i, k] * b[k]
+        b[i] = x / S[i, i]
+    for i in range(n - 1, -1, -1):  # L^T x = y
+        x = b[i]
+        for k in range(i + 1, n):
+            x -= S[k, i] * b[k]
+        b[i] = x / S[i, i]
+    return True
+
+
+@njit(cache=True)
+def _stick(mp, n_act, rho, bias, vf, Lf, Jinv, P, S, y):
+    """The impulses ``P`` (in place) if every contact sticks; False if the contacts do not
+    fix the body (fewer than three, or collinear). With ``H_i`` the map from the body's
+    velocity ``(v, w)`` to contact ``i``'s (``v + w x rho_i``) and ``S = sum H_i^T H_i``
+    (6 x 6): the body's velocity that stops every contact, ``U_i + bias_i e_z = 0``, is
+    ``S^-1 sum H_i^T (-bias_i e_z)`` (0 without bias); the generalized impulse ``Lam``
+    that brings the free motion there (``m dv``, ``J dw``) is spread over the contacts with
+    the least norm, ``P_i = H_i S^-1 Lam``. A candidate only: the caller checks it against
+    the contact laws (:func:`_residual`). ``S``, ``y``: work arrays (6, 6), (6,)."""
+    if n_act < 3:
+        return False
+    for a in range(6):
+        y[a] = 0.0
+        for b in range(6):
+            S[a, b] = 0.0
+    for i in range(n_act):
+        rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+        r2 = rx * rx + ry * ry + rz * rz
+        # H_i^T H_i = [[I, -[r]x], [[r]x, |r|^2 I - r r^T]]
+        S[0, 0] += 1.0
+        S[1, 1] += 1.0
+        S[2, 2] += 1.0
+        # -[r]x in the upper right block: -[[0, -rz, ry], [rz, 0, -rx], [-ry, rx, 0]]
+        S[0, 4] += rz
+        S[0, 5] -= ry
+        S[1, 3] -= rz
+        S[1, 5] += rx
+        S[2, 3] += ry
+        S[2, 4] -= rx
+        S[3, 3] += r2 - rx * rx
+        S[4, 4] += r2 - ry * ry
+        S[5, 5] += r2 - rz * rz
+        S[3, 4] -= rx * ry
+        S[3, 5] -= rx * rz
+        S[4, 5] -= ry * rz
+        # right-hand side: -H_i^T (bias_i e_z) = -(b e_z ; b rho x e_z)
+        b = bias[i]
+        y[2] -= b
+        y[3] -= b * ry
+        y[4] += b * rx
+    for a in range(6):  # the symmetric lower triangle
+        for b in range(a):
+            S[a, b] = S[b, a]
+    S2 = S.copy()
+    if not _chol_solve(S, y, 6):
+        return False
+    # the generalized impulse: m (v+ - vf), J w+ - L (J = Jinv^-1)
+    J = np.linalg.inv(Jinv)
+    wx, wy, wz = _mv(J, y[3], y[4], y[5])
+    y[0] = mp.mass * (y[0] - vf[0])
+    y[1] = mp.mass * (y[1] - vf[1])
+    y[2] = mp.mass * (y[2] - vf[2])
+    y[3], y[4], y[5] = wx - Lf[0], wy - Lf[1], wz - Lf[2]
+    lam = y.copy()
+    _chol_solve(S2, y, 6)
+    for i in range(n_act):  # P_i = H_i y = y_v + y_w x rho_i
+        rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+        P[i, 0] = y[0] + y[4] * rz - y[5] * ry
+        P[i, 1] = y[1] + y[5] * rx - y[3] * rz
+        P[i, 2] = y[2] + y[3] * ry - y[4] * rx
+    # the least norm spreads friction evenly, also where the load is light: spread it in
+    # proportion to the normal impulses instead (a weighted least norm, P_i = W_i H_i y
+    # with S_w = sum H_i^T W_i H_i), which fits in the cones whenever an even utilisation
+    # of friction does
+    H = np.zeros((3, 6))
+    W = np.empty(n_act)
+    for _ in range(3):
+        pn_mean = 0.0
+        fits = True
+        for i in range(n_act):
+            pn_mean += max(P[i, 2], 0.0) / n_act
+            pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
+            if P[i, 2] < 0.0 or pt > mp.friction * P[i, 2]:
+                fits = False
+        if fits or not pn_mean > 0.0:
+            break
+        for a in range(6):
+            for b in range(6):
+                S[a, b] = 0.0
+        for i in range(n_act):
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            H[0, 0], H[1, 1], H[2, 2] = 1.0, 1.0, 1.0
+            H[0, 4], H[0, 5] = rz, -ry
+            H[1, 3], H[1, 5] = -rz, rx
+            H[2, 3], H[2, 4] = ry, -rx
+            wt = max(P[i, 2], 1e-6 * pn_mean) / pn_mean
+            for a in range(6):
+                for b in range(6):
+                    S[a, b] += wt * (H[0, a] * H[0, b] + H[1, a] * H[1, b]) \
+                        + H[2, a] * H[2, b]
+            W[i] = wt
+        for a in range(6):
+            y[a] = lam[a]
+        if not _chol_solve(S, y, 6):
+            return True
+        for i in range(n_act):
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            P[i, 0] = W[i] * (y[0] + y[4] * rz - y[5] * ry)
+            P[i, 1] = W[i] * (y[1] + y[5] * rx - y[3] * rz)
+            P[i, 2] = y[2] + y[3] * ry - y[4] * rx
+    return True
+
+
+@njit(cache=True)
+def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt, Pw, S, y6):
+    """Projected Gauss-Seidel on the contacts ``0..n_act-1`` (lever arms ``rho``, normal
+    laws ``U_n+ + bias >= 0 _|_ P_n >= 0``, impulses ``P`` warm-started and updated in
+    place), for the free velocities ``vf`` and momentum ``Lf``: the velocity change ``dv``
+    and momentum change ``dL`` (in place; ``wnn``, ``wt``, ``Pw``, ``S``, ``y6``: work
+    arrays). With three contacts or more, the solution with every contact sticking
+    (:func:`_stick`) is tried first: exact when it satisfies the laws (a body held still
+    by its support converges slowly in Gauss-Seidel). Returns the number of sweeps (0:
+    the sticking solution held; -1: not converged in ``max_iter`` sweeps, the impulses
+    are the last sweep's)."""
+    m_inv = 1.0 / mp.mass
+    mu = mp.friction
+    # diagonal Delassus terms W_ii = 1/m + [rho]x^T Jinv [rho]x: the normal one, the
+    # largest eigenvalue of the tangential 2 x 2 block and that block's inverse
+    vscale = 0.0
+    for i in range(n_act):
+        rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+        # W e_x: (Jinv (rho x e_x)) x rho + e_x / m, rho x e_x = (0, rz, -ry)
+        jx, jy, jz = _mv(Jinv, 0.0, rz, -ry)
+        w00 = m_inv + (jy * rz - jz * ry)
+        w10 = jz * rx - jx * rz
+        jx, jy, jz = _mv(Jinv, -rz, 0.0, rx)  # rho x e_y
+        w01 = jy * rz - jz * ry
+        w11 = m_inv + (jz * rx - jx * rz)
+        jx, jy, jz = _mv(Jinv, ry, -rx, 0.0)  # rho x e_z
+        wnn[i] = m_inv + (jx * ry - jy * rx)
+        b_ = 0.5 * (w01 + w10)
+        wt[i, 0] = 0.5 * (w00 + w11) + math.sqrt(0.25 * (w00 - w11) ** 2 + b_ * b_)
+        det = w00 * w11 - b_ * b_
+        wt[i, 1], wt[i, 2], wt[i, 3] = w11 / det, -b_ / det, w00 / det  # W_tt^-1
+        vscale += abs(bias[i])
+    vscale += math.sqrt(vf[0] ** 2 + vf[1] ** 2 + vf[2] ** 2) + 1e-300
+    if n_act >= 3:  # a support that may hold the body still: try every contact sticking
+        for i in range(n_act):
+            Pw[i, 0], Pw[i, 1], Pw[i, 2] = P[i, 0], P[i, 1], P[i, 2]
+        if _stick(mp, n_act, rho, bias, vf, Lf, Jinv, P, S, y6):
+            _effect(mp, n_act, rho, P, dv, dL)
+            if _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL) <= mp.tol * vscale:
+                return 0
+        for i in range(n_act):  # not a solution: Gauss-Seidel from the warm start
+            P[i, 0], P[i, 1], P[i, 2] = Pw[i, 0], Pw[i, 1], Pw[i, 2]
+    _effect(mp, n_act, rho, P, dv, dL)  # the warm start's effect
+    sweeps = 0
+    while sweeps < mp.max_iter:
+        sweeps += 1
+        for i in range(n_act):
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            for part in range(2):  # 0: normal, 1: tangential
+                wx, wy, wz = _mv(Jinv, Lf[0] + dL[0], Lf[1] + dL[1], Lf[2] + dL[2])
+                ux = vf[0] + dv[0] + wy * rz - wz * ry
+                uy = vf[1] + dv[1] + wz * rx - wx * rz
+                uz = vf[2] + dv[2] + wx * ry - wy * rx
+                px, py, pz = P[i, 0], P[i, 1], P[i, 2]
+                if part == 0:
+                    target = uz + bias[i]
+                    nz = max(0.0, pz - target / wnn[i])
+                    nx, ny = px, py
+                    lim = mu * nz
+                    tn = math.sqrt(nx * nx + ny * ny)
+                    if tn > lim:  # the cone shrank with the normal impulse
+                        f = lim / tn if tn > 0.0 else 0.0
+                        nx, ny = nx * f, ny * f
+                else:
+                    nz = pz
+                    lim = mu * nz
+                    nx = px - (wt[i, 1] * ux + wt[i, 2] * uy)  # sticking: u_t+ = 0
+                    ny = py - (wt[i, 2] * ux + wt[i, 3] * uy)
+                    if nx * nx + ny * ny > lim * lim:  # slipping: a projected gradient step
+                        nx = px - ux / wt[i, 0]
+                        ny = py - uy / wt[i, 0]
+                        tn = math.sqrt(nx * nx + ny * ny)
+                        if tn > lim:
+                            f = lim / tn
+                            nx, ny = nx * f, ny * f
+                ddx, ddy, ddz = nx - px, ny - py, nz - pz
+                if ddx == 0.0 and ddy == 0.0 and ddz == 0.0:
+                    continue
+                P[i, 0], P[i, 1], P[i, 2] = nx, ny, nz
+                dv[0] += ddx * m_inv
+                dv[1] += ddy * m_inv
+                dv[2] += ddz * m_inv
+                dL[0] += ry * ddz - rz * ddy
+                dL[1] += rz * ddx - rx * ddz
+                dL[2] += rx * ddy - ry * ddx
+        resid = _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL)
+        if resid <= mp.tol * vscale:
+            return sweeps
+    return -1
+
+
+@njit(cache=True)
+def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp, res, extra):
+    """One run (the kernel contract of :mod:`rocking.models.base`; the scheme of the
+    module docstring)."""
+    h = mp.step
+    nv = mp.verts.shape[0]
+    n_out = hist.shape[0]
+    n_imp_cap = imp.shape[0]
+    every = int(round(dt_out / h))
+    n_total = int(math.floor(t_end / h + 1e-9))
+    Iinv = mp.inv_inertia
+    I = mp.inertia
+    R = np.empty((3, 3))
+    RM = np.empty((3, 3))
+    Jinv = np.empty((3, 3))
+    rho = np.empty((nv, 3))
+    idx = np.empty(nv, dtype=np.int64)
+    un_minus = np.empty(nv)
+    bias = np.empty(nv)
+    wnn = np.empty(nv)
+    wt = np.empty((nv, 4))
+    Pw = np.empty((nv, 3))
+    S6 = np.empty((6, 6))
+    y6 = np.empty(6)
+    P = np.zeros((nv, 3))
+    P_prev = np.zeros((nv, 3))
+    was_active = np.zeros(nv, dtype=np.bool_)
+    now_active = np.zeros(nv, dtype=np.bool_)
+    vf = np.empty(3)
+    Lf = np.empty(3)
+    dv = np.empty(3)
+    dL = np.empty(3)
+    # state
+    x, y, z = y0[0], y0[1], y0[2]
+    q = np.empty(4)
+    qn = math.sqrt(y0[3] ** 2 + y0[4] ** 2 + y0[5] ** 2 + y0[6] ** 2)
+    for i in range(4):
+        q[i] = y0[3 + i] / qn
+    vx, vy, vz = y0[7], y0[8], y0[9]
+    _rot(q[0], q[1], q[2], q[3], R)
+    iw0, iw1, iw2 = _mv(I, y0[10], y0[11], y0[12])
+    L0, L1, L2 = _mv(R, iw0, iw1, iw2)
+    bpx, bpy, bpz = mp.base_point[0], mp.base_point[1], mp.base_point[2]
+    b0x = x + R[0, 0] * bpx + R[0, 1] * bpy + R[0, 2] * bpz
+    b0y = y + R[1, 0] * bpx + R[1, 1] * bpy + R[1, 2] * bpz
+    tw_prev = 2.0 * math.atan2(q[3], q[0])
+    twist = 0.0
+    # outputs
+    max_tilt = math.atan2(math.sqrt(R[0, 2] ** 2 + R[1, 2] ** 2), R[2, 2])
+    max_slide = 0.0
+    max_twist = 0.0
+    slide = 0.0
+    t_up = math.nan
+    t_lift = math.nan
+    t_over = math.nan
+    az_over = math.nan
+    over = False
+    at_rest = False
+    n_imp = 0
+    status = 0
+    # is the initial state at rest on its base?
+    v0n = math.sqrt(vx * vx + vy * vy + vz * vz)
+    w0n = math.sqrt(y0[10] ** 2 + y0[11] ** 2 + y0[12] ** 2)
+    moving = v0n > mp.v_rest or w0n * mp.lift_tol * 1e6 > mp.v_rest
+    for i in range(nv):
+        if mp.is_base[i] > 0.0:
+            zi = z + R[2, 0] * mp.verts[i, 0] + R[2, 1] * mp.verts[i, 1] \
+                + R[2, 2] * mp.verts[i, 2]
+            if zi > mp.lift_tol:
+                moving = True
+    if moving:
+        t_up = 0.0
+    k = 0
+    k_out = 0
+    n_unconv = 0
+    if n_out > 0:
+        hist[0, 0], hist[0, 1], hist[0, 2] = x, y, z
+        hist[0, 3], hist[0, 4], hist[0, 5], hist[0, 6] = q[0], q[1], q[2], q[3]
+        hist[0, 7], hist[0, 8], hist[0, 9] = vx, vy, vz
+        hist[0, 10], hist[0, 11], hist[0, 12] = y0[10], y0[11], y0[12]
+        k_out = 1
+    while k < n_total:
+        t = k * h
+        if t >= t_quiet - 1e-12 and at_rest:
+            break
+        tm = t + 0.5 * h
+        ax, ay, az = ground_acc3(kind, prm, samples, tm)
+        # 1. midpoint
+        _rot(q[0], q[1], q[2], q[3], R)
+        bx, by, bz = _mtv(R, L0, L1, L2)
+        wbx, wby, wbz = _mv(Iinv, bx, by, bz)
+        xm = x + 0.5 * h * vx
+        ym = y + 0.5 * h * vy
+        zm = z + 0.5 * h * vz
+        _advance(q, wbx, wby, wbz, 0.5 * h)
+        _rot(q[0], q[1], q[2], q[3], RM)
+        _world_inv_inertia(RM, Iinv, Jinv)
+        wwx, wwy, wwz = _mv(Jinv, L0, L1, L2)
+        # 2. contacts
+        n_act = 0
+        vfz = vz - h * (G + az)
+        for i in range(nv):
+            rx, ry, rz = _mv(RM, mp.verts[i, 0], mp.verts[i, 1], mp.verts[i, 2])
+            now_active[i] = False
+            gm = zm + rz
+            un = vz + wwx * ry - wwy * rx
+            if gm <= mp.gap_tol or (was_active[i] and gm + 0.5 * h * min(un + vfz - vz, 0.0)
+                                    <= mp.gap_tol):
+                rho[n_act, 0], rho[n_act, 1], rho[n_act, 2] = rx, ry, rz
+                un_minus[n_act] = un
+                if was_active[i] and gm > 0.0:  # a lasting contact closes its drift gap
+                    bias[n_act] = 2.0 * gm / h
+                else:  # Newton's law
+                    bias[n_act] = mp.restitution * min(un, 0.0)
+                idx[n_act] = i
+                P[n_act, 0] = P_prev[i, 0]
+                P[n_act, 1] = P_prev[i, 1]
+                P[n_act, 2] = P_prev[i, 2]
+                now_active[i] = True
+                n_act += 1
+        # 3. impulses
+        vf[0] = vx - h * ax
+        vf[1] = vy - h * ay
+        vf[2] = vz - h * (G + az)
+        Lf[0], Lf[1], Lf[2] = L0, L1, L2
+        dv[0] = dv[1] = dv[2] = 0.0
+        dL[0] = dL[1] = dL[2] = 0.0
+        if n_act > 0:
+            if _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, wnn, wt, Pw,
+                               S6, y6) < 0:
+                n_unconv += 1
+        impact = False
+        for i in range(nv):
+            P_prev[i, 0] = P_prev[i, 1] = P_prev[i, 2] = 0.0
+        for c in range(n_act):
+            i = idx[c]
+            P_prev[i, 0], P_prev[i, 1], P_prev[i, 2] = P[c, 0], P[c, 1], P[c, 2]
+            if not was_active[i] and un_minus[c] < -mp.v_impact:
+                impact = True
+            if mp.is_base[i] == 0.0:
+                over = True
+        for i in range(nv):
+            was_active[i] = now_active[i]
+        vx, vy, vz = vf[0] + dv[0], vf[1] + dv[1], vf[2] + dv[2]
+        L0, L1, L2 = Lf[0] + dL[0], Lf[1] + dL[1], Lf[2] + dL[2]
+        # 4. end of the step
+        x = xm + 0.5 * h * vx
+        y = ym + 0.5 * h * vy
+        z = zm + 0.5 * h * vz
+        wx, wy, wz = _mv(Jinv, L0, L1, L2)
+        bx, by, bz = _mtv(RM, wx, wy, wz)
+        _advance(q, bx, by, bz, 0.5 * h)
+        _rot(q[0], q[1], q[2], q[3], R)
+        k += 1
+        t1 = k * h
+        if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(z)
+                and math.isfinite(L0 + L1 + L2 + vx + vy + vz)):
+            status = STATUS_NONFINITE
+            break
+        if impact:
+            if n_imp < n_imp_cap:
+                imp[n_imp] = t1
+            n_imp += 1
+        # outputs of the step
+        tilt = math.atan2(math.sqrt(R[0, 2] ** 2 + R[1, 2] ** 2), R[2, 2])
+        max_tilt = max(max_tilt, tilt)
+        sx = x + R[0, 0] * bpx + R[0, 1] * bpy + R[0, 2] * bpz - b0x
+        sy = y + R[1, 0] * bpx + R[1, 1] * bpy + R[1, 2] * bpz - b0y
+        slide = math.sqrt(sx * sx + sy * sy)
+        max_slide = max(max_slide, slide)
+        tw = 2.0 * math.atan2(q[3], q[0])
+        d = tw - tw_prev
+        d -= 2.0 * math.pi * math.floor((d + math.pi) / (2.0 * math.pi))
+        twist += d
+        tw_prev = tw
+        max_twist = max(max_twist, abs(twist))
+        zmin = math.inf
+        base_up = False
+        for i in range(nv):
+            zi = z + R[2, 0] * mp.verts[i, 0] + R[2, 1] * mp.verts[i, 1] \
+                + R[2, 2] * mp.verts[i, 2]
+            zmin = min(zmin, zi)
+            if mp.is_base[i] > 0.0 and zi > mp.lift_tol:
+                base_up = True
+        if t_lift != t_lift and zmin > mp.lift_tol:
+            t_lift = t1
+        size = mp.lift_tol * 1e6
+        vn = math.sqrt(vx * vx + vy * vy + vz * vz)
+        wn = math.sqrt(wx * wx + wy * wy + wz * wz)
+        if t_up != t_up and (vn + wn * size > mp.v_up or base_up or slide > mp.lift_tol
+                             or abs(twist) * size > mp.lift_tol):
+            t_up = t1
+        at_rest = not base_up and vn <= mp.v_rest and wn * size <= mp.v_rest
+        if n_out > 0 and k % every == 0 and k_out < n_out:
+            hist[k_out, 0], hist[k_out, 1], hist[k_out, 2] = x, y, z
+            hist[k_out, 3], hist[k_out, 4] = q[0], q[1]
+            hist[k_out, 5], hist[k_out, 6] = q[2], q[3]
+            hist[k_out, 7], hist[k_out, 8], hist[k_out, 9] = vx, vy, vz
+            ox, oy, oz = _mtv(R, L0, L1, L2)
+            ox, oy, oz = _mv(Iinv, ox, oy, oz)
+            hist[k_out, 10], hist[k_out, 11], hist[k_out, 12] = ox, oy, oz
+            k_out += 1
+        if over:
+            t_over = t1
+            az_over = math.degrees(math.atan2(R[1, 2], R[0, 2]))
+            if t_up != t_up:
+                t_up = t1
+            break
+    res.n_out = k_out
+    res.n_steps = k
+    res.status = status
+    res.settled = over or at_rest
+    res.overturned = over
+    res.overturn_time = t_over
+    res.uplift_time = t_up
+    res.lift_off_time = t_lift
+    res.max_tilt = max_tilt
+    res.overturn_azimuth = az_over
+    res.n_impacts = n_imp
+    res.max_slide = max_slide
+    res.residual_slide = slide
+    res.max_twist = max_twist
+    res.residual_twist = twist
+    res.lifted_off = t_lift == t_lift
+    res.unconverged_steps = n_unconv
+
+
+@njit(cache=True, parallel=True)
+def batch_kernel(mp, extra0, rows, blocks):
+    """The batch kernel (the same lines in every model)."""
+    for i in prange(rows.kinds.shape[0]):
+        kernel(same_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+        store_row(i, rows)
+
+
+# ================================================================ options and class
+@dataclass(frozen=True)
+class Rigid3dOptions(ModelOptions):
+    """Options of the 3-D rigid body (:mod:`rocking.models.rigid3d`)."""
+
+    friction: float = option(
+        0.7, lo=0.0, hi=10.0,
+        help="Coulomb friction coefficient of the isotropic cone (default 0.7: dry stone on "
+             "stone, within Byerlee's 0.6-0.85, Byerlee 1978, 'Friction of rocks', Pure "
+             "Appl. Geophys. 116:615-626)")
+    restitution: float = option(
+        0.0, lo=0.0, hi=1.0, lo_open=False,
+        help="Newton's normal coefficient of restitution (default 0: plastic impacts, "
+             "which give Housner's Eq 4 in the planar limit)")
+    step: float = option(1e-4, unit="s", lo=0.0, hi=0.01,
+                         help="time step h (s); made to divide dt_out")
+    direction: float = option(0.0, unit="deg", lo=-360.0, hi=360.0, lo_open=False,
+                              help="direction (deg) along which a single horizontal motion "
+                                   "acts, counter-clockwise from the body's x axis")
+    heading: float = option(0.0, unit="deg", lo=-360.0, hi=360.0, lo_open=False,
+                            help="for a HorizontalPair: the body's x axis, deg "
+                                 "counter-clockwise from the first component")
+    tilt0: float = option(0.0, unit="rad", lo=-1.5, hi=1.5,
+                          help="initial tilt (rad) about the horizontal axis normal to "
+                               "direction, on the support's extreme point: positive leans the "
+                               "up axis towards -direction, as theta > 0 of the planar models")
+    tol: float = option(1e-8, lo=0.0, hi=1e-3,
+                        help="tolerance of the contact solver: the contact laws hold in "
+                             "velocity to tol times the free velocity")
+    max_iter: int = option(2000, kind=int, lo=1, hi=10 ** 6, lo_open=False,
+                           help="largest number of Gauss-Seidel sweeps per step")
+    v_impact: float = option(1e-3, unit="m/s", lo=0.0, hi=10.0, lo_open=False,
+                             help="approach speed (m/s) above which a landing vertex "
+                                  "counts as an impact")
+    v_rest: float = option(1e-5, unit="m/s", lo=0.0, hi=1.0,
+                           help="speed (m/s; rotations times the body's size) below which "
+                                "a body flat on its base is at rest once the ground is "
+                                "still")
+
+
+def box_of(block):
+    """The :class:`~rocking.shapes.Shape` of a rectangular :class:`~rocking.Block`: the box
+    ``width`` x ``thickness`` (its width if not given) x ``height`` (mass: the block's, or
+    a density of 1000 kg/m^3; the motion does not depend on it)."""
+    from ..shapes import Shape
+
+    if block.width is None or block.height is None:
+        raise ParameterError("model 'rigid3d' takes a rocking.shapes.Shape, or a rectangular "
+                             f"rocking.Block with width and height; got {block!r}")
+    depth = block.thickness if block.thickness is not None else block.width
+    kw = {"mass": block.mass} if block.mass else {"density": 1000.0}
+    return Shape.box(block.width, depth, block.height, name=block.name or "box", **kw)
+
+
+class Rigid3d(Model):
+    """A 3-D rigid body on a moving rigid ground: contact, Coulomb friction, Newton
+    impacts (module docstring)."""
+
+    name = "rigid3d"
+    label = "3-D rigid body (Moreau-Jean)"
+    Options = Rigid3dOptions
+    kernel = kernel
+    batch_kernel = batch_kernel
+    state_names = ("x", "y", "z", "q0", "q1", "q2", "q3", "vx", "vy", "vz", "wx", "wy", "wz")
+    state_units = ("m", "m", "m", "", "", "", "", "m/s", "m/s", "m/s", "rad/s", "rad/s",
+                   "rad/s")
+    tags = {"planar": False, "symmetry": "rotation"}
+    append_overturn = False
+    outputs = GENERIC_OUTPUTS + (
+        Output("max_tilt", "rad", False, "largest angle of the body's initial up axis from "
+                                         "the vertical"),
+        Output("overturn_azimuth", "deg", False, "bearing of the fall, counter-clockwise "
+                                                 "from x (NaN: never)"),
+        Output("n_impacts", "", False, "steps at which a vertex landed faster than "
+                                       "v_impact", True),
+        Output("max_slide", "m", False, "largest horizontal displacement of the base point"),
+        Output("residual_slide", "m", False, "horizontal displacement of the base point at "
+                                             "the end"),
+        Output("max_twist", "rad", False, "largest |rotation about the vertical|"),
+        Output("residual_twist", "rad", False, "rotation about the vertical at the end "
+                                               "(counter-clockwise looking down)"),
+        Output("lifted_off", "", True, "the body left the ground entirely"),
+        Output("unconverged_steps", "", False, "steps whose contact problem missed tol in "
+                                               "max_iter sweeps (a diagnostic)", True),
+    )
+
+    @classmethod
+    def check_block(cls, block):
+        from ..blocks import Block
+        from ..shapes import Shape
+
+        if isinstance(block, Shape):
+            return block
+        if isinstance(block, Block):
+            return box_of(block)
+        raise ParameterError(f"block must be a rocking.shapes.Shape (or a rectangular "
+                             f"rocking.Block) for model 'rigid3d', got {type(block).__name__}")
+
+    def __init__(self, block, options=None):
+        super().__init__(block, options)
+        self._geom = self._geometry()  # the hull, once (kernel_params changes nothing)
+        pts = self._geom[0]
+        self._size = float(np.max(np.linalg.norm(pts[:, None, :] - pts[None, :, :], axis=2)))
+
+    def motion_spec(self, motion):
+        """The three-component spec: a single motion along ``direction`` (deg from the
+        body's x axis); a :class:`~rocking.motions.HorizontalPair` at ``heading``."""
+        from ..motions import HorizontalPair
+
+        if isinstance(motion, HorizontalPair):
+            return motion.spec3(math.radians(self.options.heading))
+        return motion.spec3(-math.radians(self.options.direction))
+
+    def _geometry(self):
+        shape = self.block
+        pts = np.asarray(shape.hull_points(), dtype=np.float64)
+        verts = pts - np.array([0.0, 0.0, shape.h])
+        is_base = (pts[:, 2] <= shape.tol).astype(np.float64)
+        sup = np.asarray(shape.support)
+        cx, cy = polygon_centroid(sup)
+        base_point = np.array([cx, cy, -shape.h])
+        return verts, is_base, base_point
+
+    def size(self) -> float:
+        """The body's size (m): the largest distance between two hull vertices."""
+        return self._size
+
+    def kernel_params(self, dt_out, theta0, omega0):
+        o = self.options
+        verts, is_base, base_point = self._geom
+        inertia = np.array(self.block.inertia_local, dtype=np.float64)
+        n = max(1, int(math.ceil(dt_out / o.step - 1e-9)))
+        size = self.size()
+        return Rigid3dParams(
+            float(self.block.mass), inertia, np.linalg.inv(inertia), verts, is_base,
+            base_point, float(o.friction), float(o.restitution), float(dt_out / n),
+            float(o.tol), int(o.max_iter), 1e-9 * size, 1e-6 * size, float(o.v_rest),
+            float(o.v_impact), 1e3 * float(o.tol) * G * float(dt_out / n))
+
+    def initial_state(self, theta0=0.0, omega0=0.0):
+        if theta0 or omega0:
+            raise ParameterError("model 'rigid3d' has no planar angle: give its initial tilt "
+                                 "as the option tilt0 (rad) or its state as state0")
+        return rest_state(self.block, self.options.tilt0,
+                          math.radians(self.options.direction))
+
+    def check_state(self, y0):
+        y = super().check_state(y0)
+        qn = float(np.linalg.norm(y[3:7]))
+        if not qn > 0.0:
+            raise ParameterError("state0: the quaternion q0..q3 must not be zero")
+        y = y.copy()
+        y[3:7] /= qn
+        verts = self._geom[0]
+        from scipy.spatial.transform import Rotation
+
+        R = Rotation.from_quat([y[4], y[5], y[6], y[3]]).as_matrix()
+        zmin = float(np.min(y[2] + verts @ R[2]))
+        if zmin < -1e-6 * self.size():
+            raise ParameterError(f"state0: the body is {-zmin:.3g} m below the ground")
+        return y
+
+    @staticmethod
+    def rotate_state(y, beta: float) -> np.ndarray:
+        """The state ``y`` turned by ``beta`` (rad) counter-clockwise about the vertical
+        (looking down): positions and velocities turned, the quaternion pre-multiplied by
+        the turn, the body's angular velocity unchanged.
+
+        Examples
+        --------
+        >>> import math
+        >>> from rocking.models.rigid3d import Rigid3d
+        >>> y = Rigid3d.rotate_state([1.0, 0, 0.5, 1, 0, 0, 0, 0, 2.0, 0, 0, 0, 0], math.pi / 2)
+        >>> np.round(y[[0, 1, 3, 6, 7, 8]], 12).tolist()
+        [0.0, 1.0, 0.707106781187, 0.707106781187, -2.0, 0.0]
+        """
+        y = np.array(y, dtype=np.float64)
+        c, s = math.cos(beta), math.sin(beta)
+        out = y.copy()
+        for i in (0, 7):
+            out[i], out[i + 1] = c * y[i] - s * y[i + 1], s * y[i] + c * y[i + 1]
+        r0, r3 = math.cos(0.5 * beta), math.sin(0.5 * beta)
+        a0, a1, a2, a3 = y[3:7]
+        out[3:7] = (r0 * a0 - r3 * a3, r0 * a1 - r3 * a2, r0 * a2 + r3 * a1, r0 * a3 + r3 * a0)
+        return out
+
+    def info(self, dt_out=None):
+        out = super().info(dt_out)
+        if dt_out is not None:
+            out["step_used"] = self.kernel_params(dt_out, 0.0, 0.0).step
+        return out
+
+    def failure(self, status, t, dt_out=None):
+        if status == STATUS_NONFINITE:
+            return f"model 'rigid3d': the state became non-finite near t = {t:.4g} s"
+        return super().failure(status, t, dt_out)
+
+
+def polygon_centroid(xy) -> tuple[float, float]:
+    """The area centroid of a counter-clockwise polygon (k, 2) (its vertex if k < 3)."""
+    xy = np.asarray(xy, dtype=np.float64)
+    if len(xy) < 3:
+        c = xy.mean(axis=0)
+        return float(c[0]), float(c[1])
+    x, y = xy[:, 0], xy[:, 1]
+    x1, y1 = np.roll(x, -1), np.roll(y, -1)
+    cr = x * y1 - x1 * y
+    a = 0.5 * cr.sum()
+    return float(((x + x1) * cr).sum() / (6 * a)), float(((y + y1) * cr).sum() / (6 * a))
+
+
+def rest_state(shape, tilt0: float = 0.0, direction: float = 0.0) -> np.ndarray:
+    """The state (13) of ``shape`` standing on its base, tilted by ``tilt0`` (rad) about the
+    horizontal axis normal to ``direction`` (rad, counter-clockwise from x): the up axis
+    leans towards ``-direction`` for ``tilt0 > 0`` (the body rotates about the support's
+    extreme point on that side, which stays in place), at rest."""
+    y = np.zeros(13)
+    y[2] = shape.h
+    y[3] = 1.0
+    if tilt0 == 0.0:
+        return y
+    c, s = math.cos(direction), math.sin(direction)
+    sign = 1.0 if tilt0 > 0 else -1.0
+    # axis of rotation: tilting the up axis towards -sign*e_d, about n = e_z x (-sign e_d)
+    ed = np.array([c, s, 0.0])
+    axis = np.cross(np.array([0.0, 0.0, 1.0]), -sign * ed)
+    half = 0.5 * abs(tilt0)
+    q = np.array([math.cos(half), *(math.sin(half) * axis)])
+    pts = np.asarray(shape.hull_points()) - np.array([0.0, 0.0, shape.h])
+    base = pts[pts[:, 2] <= -shape.h + shape.tol]
+    pivot = base[np.argmin(base @ (sign * ed))]  # the support's extreme point towards -sign e_d
+    from scipy.spatial.transform import Rotation
+
+    R = Rotation.from_quat([q[1], q[2], q[3], q[0]]).as_matrix()
+    # the pivot stays where it was: com + R pivot = pivot0 = (0, 0, h) + pivot
+    com = np.array([0.0, 0.0, shape.h]) + pivot - R @ pivot
+    com[2] -= float(np.min(com[2] + pts @ R[2]))  # the lowest point on the ground
+    y[:3] = com
+    y[3:7] = q
+    return y
