@@ -588,6 +588,18 @@ class Model:
         """
         return {o.name: values[o.name] for o in self.row_outputs}
 
+    def check_results(self, out: dict) -> None:
+        """Look at a batch's outputs (``{name: array}``) after the run, to warn or flag
+        what a model knows to be unverified; default: nothing.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> m = rocking.MODELS["housner"](rocking.Block.rectangular(0.2, 1.0))
+        >>> m.check_results({}) is None
+        True
+        """
+
     def check_batch(self) -> None:
         """Refuse options that a batch cannot honour (raise ParameterError); default: none.
 

@@ -87,6 +87,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange
 
+from .._validate import warn_implausible
 from ..errors import ParameterError
 from ..motions._kernel import ground_acc3
 from ..units import G
@@ -693,6 +694,17 @@ def batch_kernel(mp, extra0, rows, blocks):
 
 
 # ================================================================ options and class
+def warn_unconverged(steps: int, runs: int) -> None:
+    """Warn that ``steps`` time steps of ``runs`` run(s) ended with a contact problem that
+    missed the solver's tolerance (``unconverged_steps``): those results are not verified."""
+    if steps > 0:
+        warn_implausible(
+            f"model 'rigid3d': {steps} time step(s) of {runs} run(s) ended with a contact "
+            "problem that missed tol (output unconverged_steps); such results depend on "
+            "max_iter and are not verified (boxes are; many-vertex supports such as "
+            "scanned meshes not yet): raise max_iter or use a box")
+
+
 @dataclass(frozen=True)
 class Rigid3dOptions(ModelOptions):
     """Options of the 3-D rigid body (:mod:`rocking.models.rigid3d`)."""
@@ -795,6 +807,19 @@ class Rigid3d(Model):
         self._geom = self._geometry()  # the hull, once (kernel_params changes nothing)
         pts = self._geom[0]
         self._size = float(np.max(np.linalg.norm(pts[:, None, :] - pts[None, :, :], axis=2)))
+
+    def result_info(self, values: dict) -> dict:
+        """The model's own outputs; a run whose contact problems did not all converge is
+        flagged with a warning (its outputs depend on ``max_iter``: verified for boxes,
+        not yet for many-vertex supports such as scanned meshes)."""
+        warn_unconverged(values["unconverged_steps"], 1)
+        return super().result_info(values)
+
+    def check_results(self, out: dict) -> None:
+        """Warn where runs of a batch had contact problems that did not converge."""
+        bad = out["unconverged_steps"] > 0
+        if bad.any():
+            warn_unconverged(int(out["unconverged_steps"][bad].sum()), int(bad.sum()))
 
     def motion_spec(self, motion):
         """The three-component spec: a single motion along ``direction`` (deg from the

@@ -529,6 +529,7 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
                 if getattr(sub, name).shape[1:] == getattr(rows, name).shape[1:]:
                     getattr(rows, name)[idx] = getattr(sub, name)
     out = result_arrays(cls.outputs, rows.res)
+    m.check_results(out)
     status = out["status"]
     bad = np.flatnonzero(status)
     if bad.size:
