@@ -53,7 +53,8 @@ Options WITHOUT a flag, since theirs is already a flag of this command (set them
 (isolated's restitution: ``--mu`` overrides the block's, which that model does not use, so
 ``--mu`` with it is refused), ``linear`` (housner: ``--linear`` is that option
 already) and ``direction`` (rigid3d's direction of a single horizontal motion, deg:
-``--direction`` is a mesh's direction of the planar analysis; issue 30 joins them). ``ModelFlagsCommand.skipped()`` lists them; a test checks this list against it.
+``--direction`` is a mesh's direction of the planar analysis; issue 30 joins them).
+``ModelFlagsCommand.skipped()`` lists them; a test checks this list against it.
 
 Models with row outputs (:attr:`rocking.models.base.Model.row_outputs`: the isolated
 base's ``max_base_displacement``, ``max_plate_acceleration``, ``clearance_exceeded``,
