@@ -226,38 +226,13 @@ class Ricker(Motion):
         return self.tc + 2.0 / self.fp
 
 
-@functools.lru_cache(maxsize=256)
-def _mp_peak(gamma: float, nu: float) -> float:
-    """Peak of ``|g(u)|`` over ``|u| <= pi gamma``, where the acceleration of the M&P pulse
-    of velocity amplitude ``A`` is ``-(A w / 2) g(w tau)`` (``w = 2 pi fp``)."""
+def _peak_abs(f, gamma: float) -> float:
+    """Peak of ``|f(u)|`` over ``|u| <= pi gamma``: the largest of >= 256 samples per
+    oscillation, refined by a bounded search around it."""
     from scipy.optimize import minimize_scalar
-
-    def g(u):
-        return np.sin(u / gamma) * np.cos(u + nu) / gamma + (1.0 + np.cos(u / gamma)) * np.sin(
-            u + nu)
 
     half = math.pi * gamma
     n = max(4097, int(512 * gamma) + 1)  # >= 256 points per oscillation
-    u = np.linspace(-half, half, n)
-    i = int(np.argmax(np.abs(g(u))))
-    h = u[1] - u[0]
-    lo, hi = max(-half, u[i] - h), min(half, u[i] + h)
-    res = minimize_scalar(lambda x: -abs(float(g(x))), bounds=(lo, hi), method="bounded",
-                          options={"xatol": 1e-12})
-    return max(abs(float(g(u[i]))), -float(res.fun))
-
-
-@functools.lru_cache(maxsize=256)
-def _mp_velocity_peak(gamma: float, nu: float) -> float:
-    """Peak of ``|(1 + cos(u / gamma)) / 2 cos(u + nu)|`` over ``|u| <= pi gamma``: the
-    PGV of the M&P pulse over its velocity amplitude ``A``."""
-    from scipy.optimize import minimize_scalar
-
-    def f(u):
-        return 0.5 * (1.0 + np.cos(u / gamma)) * np.cos(u + nu)
-
-    half = math.pi * gamma
-    n = max(4097, int(512 * gamma) + 1)
     u = np.linspace(-half, half, n)
     i = int(np.argmax(np.abs(f(u))))
     h = u[1] - u[0]
@@ -265,6 +240,29 @@ def _mp_velocity_peak(gamma: float, nu: float) -> float:
     res = minimize_scalar(lambda x: -abs(float(f(x))), bounds=(lo, hi), method="bounded",
                           options={"xatol": 1e-12})
     return max(abs(float(f(u[i]))), -float(res.fun))
+
+
+@functools.lru_cache(maxsize=256)
+def _mp_peak(gamma: float, nu: float) -> float:
+    """Peak of ``|g(u)|`` over ``|u| <= pi gamma``, where the acceleration of the M&P pulse
+    of velocity amplitude ``A`` is ``-(A w / 2) g(w tau)`` (``w = 2 pi fp``)."""
+
+    def g(u):
+        return np.sin(u / gamma) * np.cos(u + nu) / gamma + (1.0 + np.cos(u / gamma)) * np.sin(
+            u + nu)
+
+    return _peak_abs(g, gamma)
+
+
+@functools.lru_cache(maxsize=256)
+def _mp_velocity_peak(gamma: float, nu: float) -> float:
+    """Peak of ``|(1 + cos(u / gamma)) / 2 cos(u + nu)|`` over ``|u| <= pi gamma``: the
+    PGV of the M&P pulse over its velocity amplitude ``A``."""
+
+    def f(u):
+        return 0.5 * (1.0 + np.cos(u / gamma)) * np.cos(u + nu)
+
+    return _peak_abs(f, gamma)
 
 
 @dataclass(frozen=True)
