@@ -281,3 +281,16 @@ def test_dem_rocks_an_asymmetric_mesh_block_like_the_classical_model():
         simulate(blk.with_params(mu=0.95), None, model="dem", duration=0.1, theta0=0.01)
     simulate(blk.with_params(mu=0.95), None, model="dem", duration=0.1, theta0=0.01,
              damping=1e-4)
+
+
+def test_make_blocks_gives_repeated_directions_unique_names():
+    """Issue 32: a mesh block with ``direction = [0, 0]`` built directly (not through a
+    spec) gets two names, so results grouped by name keep both."""
+    from rocking.blocks.factory import make_blocks
+    from rocking.shapes.example import example_mesh_path
+
+    blocks = make_blocks({"mesh": str(example_mesh_path()), "density": 2600,
+                          "direction": [0, 0, 90]}, name="statue")
+    names = [b.name for b in blocks]
+    assert len(set(names)) == 3, names
+    assert blocks[0].alpha == blocks[1].alpha

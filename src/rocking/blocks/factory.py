@@ -7,7 +7,7 @@ help; ``rocking blocks`` and the README's spec-key table are made from them)::
 
     >>> from rocking.blocks.factory import make_block
     >>> make_block({"width": "170mm", "height": 0.75}).alpha
-    0.22296...
+    0.22290...
     >>> make_block({"stack": [{"width": 0.2, "height": 0.4, "mass": 10},
     ...                       {"width": 0.2, "height": 0.4, "mass": 10}]})
     Stack(...)
@@ -428,6 +428,33 @@ def make_blocks(mapping: dict, *, name: str | None = None, base_dir=None) -> lis
         if name:
             block = renamed(block, f"{name} @ {block.name.partition(' @ ')[2]}")
         out.append(block)
+    return unique_names(out)
+
+
+def unique_names(blocks: list) -> list:
+    """``blocks`` with names made unique: a name already taken, by another block or by a
+    direction that prints alike (``direction = [0, 0]``), gets ``#2``, ``#3`` ...
+
+    Examples
+    --------
+    >>> from rocking.blocks.factory import make_blocks
+    >>> from rocking.shapes.example import example_mesh_path
+    >>> [b.name for b in make_blocks({"mesh": str(example_mesh_path()), "density": 2600,
+    ...                              "direction": [0, 0]},
+    ...                              name="statue")]
+    ['statue @ 0 deg', 'statue @ 0 deg #2']
+    """
+    taken = {b.name.strip() for b in blocks}
+    seen, out = set(), []
+    for b in blocks:
+        name = b.name
+        if name.strip() in seen:
+            k = 2
+            while f"{name} #{k}".strip() in seen or f"{name} #{k}".strip() in taken:
+                k += 1
+            b = renamed(b, f"{name} #{k}")
+        seen.add(b.name.strip())
+        out.append(b)
     return out
 
 

@@ -572,25 +572,7 @@ def _blocks(raw: dict, base_dir=".") -> tuple[tuple, tuple]:
         bs, ds = _block(i, b, base_dir)
         blocks += bs
         digests += ds
-    return tuple(_unique_names(blocks, raw["blocks"])), tuple(digests)
-
-
-def _unique_names(blocks: list, tables: list) -> list:
-    """``blocks`` with names made unique: a name already taken, by another table or by a
-    direction that prints alike (``direction = [0, 0]``), gets ``#2``, ``#3`` ... (a name
-    given twice is refused before: :func:`_blocks`)."""
-    taken = {b.name.strip() for b in blocks}
-    seen, out = set(), []
-    for b in blocks:
-        name = b.name
-        if name.strip() in seen:
-            k = 2
-            while f"{name} #{k}".strip() in seen or f"{name} #{k}".strip() in taken:
-                k += 1
-            b = factory.renamed(b, f"{name} #{k}")
-        seen.add(b.name.strip())
-        out.append(b)
-    return out
+    return tuple(factory.unique_names(blocks)), tuple(digests)
 
 
 # ------------------------------------------------------------------------------ motions
