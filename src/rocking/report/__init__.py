@@ -30,7 +30,7 @@ SECTION_PACKAGE = f"{__name__}.sections"
 """The package holding the section modules."""
 SECTION_MODULES = ("table2", "identification", "table4", "free_rocking", "figure7", "dem",
                    "earthquakes", "figure6", "probability", "pulses", "fragility", "vertical",
-                   "buildings", "mitigation", "real_object")
+                   "buildings", "mitigation", "real_object", "three_d")
 """Modules of :data:`SECTION_PACKAGE` that register sections when imported."""
 
 
