@@ -34,7 +34,7 @@ from rocking.verification.catalog import half_sine_mode2, one_cosine_mode2, one_
 from rocking.verification.core import short_source
 
 GROUPS = {"classical", "pulses", "similarity", "cross-model", "buildings", "isolation",
-          "shapes", "paper"}
+          "shapes", "paper", "printed", "three-d"}
 CHEAP = ["housner-free-period", "shape-box-p"]
 
 

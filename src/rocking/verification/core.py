@@ -537,6 +537,8 @@ GROUP_TITLES = {
     "buildings": "Buildings",
     "isolation": "Isolation",
     "shapes": "Shapes from meshes",
+    "printed": "Thresholds printed in the rocking literature",
+    "three-d": "The 3-D rigid body (rigid3d)",
 }
 """Section titles of the case groups on the verification page."""
 
