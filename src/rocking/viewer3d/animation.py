@@ -24,6 +24,7 @@ def frame_times(t_end: float, fps: float, speed: float) -> np.ndarray:
 
     Examples
     --------
+    >>> from rocking.viewer3d import frame_times
     >>> frame_times(1.0, 10, 1.0).size, frame_times(1.0, 10, 2.0).tolist()
     (11, [0.0, 0.2, 0.4, 0.6, 0.8, 1.0])
     """
@@ -151,7 +152,8 @@ def animate(response, path, *, shape=None, fps: float = 12.0, speed: float = 1.0
                                  facecolors=(0.86, 0.88, 0.9, 1.0), edgecolors="none",
                                  zorder=0)
         ax.add_collection3d(plane, autolim=False)
-        grid = Line3DCollection(_grid(cx, cy, half, spacing, gnd[0, :2]), colors=(0.55, 0.58, 0.62, 1.0), linewidths=0.6, zorder=1)
+        grid = Line3DCollection(_grid(cx, cy, half, spacing, gnd[0, :2]),
+                                colors=(0.55, 0.58, 0.62, 1.0), linewidths=0.6, zorder=1)
         ax.add_collection3d(grid, autolim=False)
         body = Poly3DCollection(tri @ R[0].T + world[0], linewidths=0.4, zorder=2)
         ax.add_collection3d(body, autolim=False)

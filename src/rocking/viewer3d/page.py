@@ -44,6 +44,7 @@ def frame_indices(n: int, dt: float, fps: float) -> np.ndarray:
 
     Examples
     --------
+    >>> from rocking.viewer3d import frame_indices
     >>> frame_indices(11, 0.002, 100).tolist()  # k = 5
     [0, 5, 10]
     >>> frame_indices(12, 0.002, 100).tolist()
@@ -182,7 +183,20 @@ def write_html(response, path, *, shape=None, fps: float = 60.0, ground: bool = 
 
 
 def read_page_data(path) -> dict:
-    """The JSON data of a page written by :func:`write_html` (module docstring)."""
+    """The JSON data of a page written by :func:`write_html` (module docstring).
+
+    Examples
+    --------
+    >>> from rocking.viewer3d import read_page_data, write_html
+    >>> import rocking
+    >>> from rocking.shapes import Shape
+    >>> r = rocking.simulate(Shape.box(0.4, 0.4, 1.2, mass=400.0),
+    ...                      rocking.motions.Sine(freq=2.0, amplitude=0.001, duration=0.1),
+    ...                      model="rigid3d", duration=0.1)
+    >>> data = read_page_data(write_html(r, "box.html"))
+    >>> len(data["faces"]) // 3, data["pos"][:3], data["quat"][:4]  # a box: 12 triangles
+    (12, [0.0, 0.0, 0.6], [1.0, 0.0, 0.0, 0.0])
+    """
     text = Path(path).read_text("utf-8")
     m = re.search(rf'<script type="application/json" id="{DATA_ID}">(.*?)</script>', text,
                   re.S)

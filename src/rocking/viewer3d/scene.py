@@ -37,6 +37,22 @@ class Scene:
     frame (m), ``faces`` (k, 3), ``t`` (s), ``position`` (m, ground frame) and
     ``quaternion`` (q0..q3) per sample, ``ground`` the ground's displacement (m) per
     sample or None, ``name`` the body's name.
+
+    Examples
+    --------
+    A box at rest: its lowest vertex is on the ground.
+
+    >>> from rocking.viewer3d import scene
+    >>> import rocking
+    >>> from rocking.shapes import Shape
+    >>> r = rocking.simulate(Shape.box(0.4, 0.4, 1.2, mass=400.0),
+    ...                      rocking.motions.Sine(freq=2.0, amplitude=0.001, duration=0.1),
+    ...                      model="rigid3d", duration=0.1)
+    >>> s = scene(r)
+    >>> s.vertices.shape, s.position[0].tolist(), s.quaternion[0].tolist()
+    ((8, 3), [0.0, 0.0, 0.6], [1.0, 0.0, 0.0, 0.0])
+    >>> float(s.position[0, 2] + s.vertices[:, 2].min())
+    0.0
     """
 
     vertices: np.ndarray
@@ -53,6 +69,7 @@ class Scene:
 
         Examples
         --------
+        >>> from rocking.viewer3d import Scene
         >>> import numpy as np
         >>> s = Scene(np.zeros((3, 3)), np.array([[0, 1, 2]]), np.array([0.0, 1.0]),
         ...           np.array([[0, 0, 1.0], [2, 0, 1.0]]),
@@ -76,6 +93,7 @@ def rotation_matrices(q) -> np.ndarray:
 
     Examples
     --------
+    >>> from rocking.viewer3d import rotation_matrices
     >>> import math
     >>> R = rotation_matrices([[math.cos(math.pi / 4), 0, 0, math.sin(math.pi / 4)]])
     >>> np.round(R[0] @ [1.0, 0, 0], 12).tolist()  # a quarter turn about z
@@ -97,8 +115,9 @@ def tilt(q) -> np.ndarray:
 
     Examples
     --------
+    >>> from rocking.viewer3d import tilt
     >>> import math
-    >>> float(tilt([[math.cos(0.15), math.sin(0.15), 0, 0]])[0])  # 0.3 rad about x
+    >>> round(float(tilt([[math.cos(0.15), math.sin(0.15), 0, 0]])[0]), 12)  # 0.3 rad about x
     0.3
     """
     q = np.atleast_2d(np.asarray(q, dtype=np.float64))
@@ -115,6 +134,7 @@ def decimate(vertices, faces, max_faces: int) -> tuple[np.ndarray, np.ndarray]:
 
     Examples
     --------
+    >>> from rocking.viewer3d import decimate
     >>> import trimesh
     >>> m = trimesh.creation.icosphere(subdivisions=4)  # 5120 triangles
     >>> v, f = decimate(m.vertices, m.faces, 500)
@@ -171,6 +191,7 @@ def grid_spacing(width: float, lines: int) -> float:
 
     Examples
     --------
+    >>> from rocking.viewer3d.scene import grid_spacing
     >>> grid_spacing(5.4, 12), grid_spacing(2.0, 8)
     (0.5, 0.2)
     """
@@ -244,12 +265,13 @@ def ground_displacement(response, shape, t) -> np.ndarray:
     a = np.array([ground_acc3(kind, prm, samples, float(s)) for s in tt])
     v = np.concatenate([np.zeros((1, 3)),
                         np.cumsum(0.5 * (a[1:] + a[:-1]) * np.diff(tt)[:, None], axis=0)])
-    dur = float(getattr(response.motion, "duration", tt[-1]) or tt[-1])
-    sel = tt <= min(dur, tt[-1]) + 1e-12
-    v0 = -v[sel].mean(axis=0) if sel.sum() > 1 else np.zeros(3)
-    v = v + v0
     d = np.concatenate([np.zeros((1, 3)),
                         np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(tt)[:, None], axis=0)])
+    # the initial velocity v0 of zero mean velocity over the motion's duration T:
+    # d(T) + v0 T = 0
+    dur = min(float(getattr(response.motion, "duration", tt[-1]) or tt[-1]), tt[-1])
+    if dur > 0.0:
+        d -= np.outer(tt, [np.interp(dur, tt, d[:, j]) / dur for j in range(3)])
     return np.column_stack([np.interp(t, tt, d[:, j]) for j in range(3)])
 
 
@@ -257,7 +279,25 @@ def scene(response, shape=None, *, ground: bool = False, max_faces: int | None =
           ) -> Scene:
     """The :class:`Scene` of a 3-D ``response`` (``rigid3d``): its body (``shape``, or the
     response's; decimated to ``max_faces`` triangles if given) and poses, and the ground's
-    displacement if ``ground``."""
+    displacement if ``ground``.
+
+    Examples
+    --------
+    The ground's displacement under a :class:`~rocking.motions.Sine` along the body's x
+    axis is its displacement amplitude times ``sin(2 pi f t)``:
+
+    >>> from rocking.viewer3d import scene
+    >>> import math
+    >>> import rocking
+    >>> from rocking.shapes import Shape
+    >>> r = rocking.simulate(Shape.box(0.4, 0.4, 1.2, mass=400.0),
+    ...                      rocking.motions.Sine(freq=2.0, amplitude=0.001, duration=0.5),
+    ...                      model="rigid3d", duration=0.5)
+    >>> s = scene(r, ground=True)
+    >>> i = int(round(0.125 / (r.t[1] - r.t[0])))  # t = 1/(4 f)
+    >>> round(float(s.ground[i, 0]), 6), round(float(s.ground[i, 1]), 9)
+    (0.001, 0.0)
+    """
     cols = pose_columns(response)
     body = resolve_shape(response, shape)
     states = np.asarray(response.states, dtype=np.float64)
