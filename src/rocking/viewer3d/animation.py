@@ -116,13 +116,15 @@ def animate(response, path, *, shape=None, fps: float = 12.0, speed: float = 1.0
     nrm = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
     nrm /= np.maximum(np.linalg.norm(nrm, axis=1), 1e-300)[:, None]
     tilts = np.degrees(tilt(quat))
+    t_over = float(response.overturn_time) if response.overturned else math.inf
 
-    # the view: a cube around every position of the body (and the ground's)
+    # the view: a cube around every position of the body (the ground's included)
     world = pos + gnd                                  # centre of mass, fixed frame
-    reach = float(np.max(np.linalg.norm(verts, axis=1)))
-    lo = world.min(axis=0) - reach
-    hi = world.max(axis=0) + reach
-    half = 0.5 * float(np.max(hi[:2] - lo[:2]))
+    hull = verts[np.unique(sc.faces)]
+    pts = np.einsum("fij,vj->fvi", R, hull) + world[:, None, :]
+    lo = pts.reshape(-1, 3).min(axis=0)
+    hi = pts.reshape(-1, 3).max(axis=0)
+    half = 0.55 * float(np.max(hi[:2] - lo[:2]))
     half = max(half, 0.5 * float(hi[2] - min(lo[2], 0.0)))
     cx, cy = 0.5 * (lo[:2] + hi[:2])
     zc = half
@@ -144,7 +146,7 @@ def animate(response, path, *, shape=None, fps: float = 12.0, speed: float = 1.0
         ax.set_xlim(cx - half, cx + half)
         ax.set_ylim(cy - half, cy + half)
         ax.set_zlim(zc - half, zc + half)
-        ax.set_box_aspect((1, 1, 1))
+        ax.set_box_aspect((1, 1, 1), zoom=1.1)
         ax.view_init(elev=elev, azim=azim)
         ax.set_axis_off()
         plane = Poly3DCollection([[(cx - half, cy - half, 0), (cx + half, cy - half, 0),
@@ -175,7 +177,8 @@ def animate(response, path, *, shape=None, fps: float = 12.0, speed: float = 1.0
                 body.set_facecolor(rgba)
                 body.set_edgecolor(rgba)  # hides the seams between triangles
                 grid.set_segments(_grid(cx, cy, half, spacing, gnd[k, :2]))
-                label.set_text(f"t = {times[k]:6.2f} s   tilt = {tilts[k]:5.2f} deg")
+                over = "  overturned" if times[k] >= t_over else ""
+                label.set_text(f"t = {times[k]:6.2f} s   tilt = {tilts[k]:5.2f} deg{over}")
                 writer.grab_frame()
     finally:
         plt.close(fig)
