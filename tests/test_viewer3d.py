@@ -241,3 +241,24 @@ def test_page_renders_in_headless_chromium(response, page, tmp_path):
     r, g, b = img[..., 0], img[..., 1], img[..., 2]
     stone = (r - b > 40) & (r > g) & (g > b)
     assert stone.mean() > 0.01, stone.mean()
+
+
+def test_mp4_needs_ffmpeg(response, tmp_path):
+    """An MP4 is written where ffmpeg exists, refused naming ``path`` where it does not."""
+    from matplotlib.animation import FFMpegWriter
+
+    if FFMpegWriter.isAvailable():
+        path = animate(response, tmp_path / "box.mp4", fps=5)
+        assert path.stat().st_size > 1000
+    else:
+        with pytest.raises(ParameterError, match="path: .*ffmpeg"):
+            animate(response, tmp_path / "box.mp4", fps=5)
+
+
+def test_a_rectangular_block_is_drawn_as_the_models_box(tmp_path):
+    """A run given a rectangular Block draws the box the model made of it."""
+    block = rocking.Block.rectangular(0.3, 1.0)
+    r = rocking.simulate(block, Sine(freq=F, amplitude=0.001, duration=0.2),
+                         model="rigid3d", duration=0.2)
+    v = np.reshape(read_page_data(write_html(r, tmp_path / "b.html"))["vertices"], (-1, 3))
+    np.testing.assert_allclose(v.max(axis=0) - v.min(axis=0), [0.3, 0.3, 1.0], atol=1e-7)
