@@ -218,7 +218,7 @@ CHROMIUM_FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--use-angle=sw
 def test_page_renders_in_headless_chromium(response, page, tmp_path):
     """The page, opened paused at the peak tilt (``#t=``), starts WebGL (``data-ready``),
     shows that time and the tilt there, and draws the body (its stone colour) over the
-    ground."""
+    ground; opened plainly, it plays."""
     sc = scene(response)
     tl = tilt(sc.quaternion)
     t_peak = float(sc.t[np.argmax(tl)])
@@ -232,6 +232,11 @@ def test_page_renders_in_headless_chromium(response, page, tmp_path):
     shown = re.search(r"tilt = ([0-9.]+) deg", dom)
     assert shown and float(shown.group(1)) == pytest.approx(expected, abs=0.006)
     assert expected == pytest.approx(math.degrees(tl.max()), rel=0.01)
+    # without '#t=' the page plays: its time has advanced once loaded
+    dom = subprocess.run([chromium(), *CHROMIUM_FLAGS, "--dump-dom", page.resolve().as_uri()],
+                         capture_output=True, text=True, timeout=180).stdout
+    played = re.search(r'data-t="([0-9.]+)"', dom)
+    assert 'data-ready="1"' in dom and played and float(played.group(1)) > 0.0
     shot = tmp_path / "shot.png"
     subprocess.run([chromium(), *CHROMIUM_FLAGS, "--window-size=800,600",
                     f"--screenshot={shot}", url], capture_output=True, timeout=180)
@@ -262,3 +267,14 @@ def test_a_rectangular_block_is_drawn_as_the_models_box(tmp_path):
                          model="rigid3d", duration=0.2)
     v = np.reshape(read_page_data(write_html(r, tmp_path / "b.html"))["vertices"], (-1, 3))
     np.testing.assert_allclose(v.max(axis=0) - v.min(axis=0), [0.3, 0.3, 1.0], atol=1e-7)
+
+
+def test_ground_of_a_run_shorter_than_its_motion(box):
+    """A run that stops before its motion ends (an explicit duration, or an overturn)
+    still sees the motion's ground displacement: the initial velocity comes from the whole
+    motion, not from the part that was run."""
+    r = rocking.simulate(box, Sine(freq=F, amplitude=0.001, duration=2.0), model="rigid3d",
+                         duration=0.3)
+    sc = scene(r, ground=True)
+    np.testing.assert_allclose(sc.ground[:, 0], 0.001 * np.sin(2 * math.pi * F * sc.t),
+                               atol=2e-5 * 0.001)

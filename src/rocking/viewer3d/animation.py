@@ -149,12 +149,13 @@ def animate(response, path, *, shape=None, fps: float = 12.0, speed: float = 1.0
         ax.set_box_aspect((1, 1, 1), zoom=1.1)
         ax.view_init(elev=elev, azim=azim)
         ax.set_axis_off()
-        plane = Poly3DCollection([[(cx - half, cy - half, 0), (cx + half, cy - half, 0),
-                                   (cx + half, cy + half, 0), (cx - half, cy + half, 0)]],
+        gh = 1.3 * half  # the ground's square, a little beyond the view
+        plane = Poly3DCollection([[(cx - gh, cy - gh, 0), (cx + gh, cy - gh, 0),
+                                   (cx + gh, cy + gh, 0), (cx - gh, cy + gh, 0)]],
                                  facecolors=(0.86, 0.88, 0.9, 1.0), edgecolors="none",
                                  zorder=0)
         ax.add_collection3d(plane, autolim=False)
-        grid = Line3DCollection(_grid(cx, cy, half, spacing, gnd[0, :2]),
+        grid = Line3DCollection(_grid(cx, cy, gh, spacing, gnd[0, :2]),
                                 colors=(0.55, 0.58, 0.62, 1.0), linewidths=0.6, zorder=1)
         ax.add_collection3d(grid, autolim=False)
         body = Poly3DCollection(tri @ R[0].T + world[0], linewidths=0.4, zorder=2)
@@ -176,7 +177,7 @@ def animate(response, path, *, shape=None, fps: float = 12.0, speed: float = 1.0
                 rgba = _shade(nrm @ Rk.T)
                 body.set_facecolor(rgba)
                 body.set_edgecolor(rgba)  # hides the seams between triangles
-                grid.set_segments(_grid(cx, cy, half, spacing, gnd[k, :2]))
+                grid.set_segments(_grid(cx, cy, gh, spacing, gnd[k, :2]))
                 over = "  overturned" if times[k] >= t_over else ""
                 label.set_text(f"t = {times[k]:6.2f} s   tilt = {tilts[k]:5.2f} deg{over}")
                 writer.grab_frame()

@@ -165,6 +165,7 @@ def write_html(response, path, *, shape=None, fps: float = 60.0, ground: bool = 
         "quat": _flat(quat, 8),
         "tilt": _flat(tilt(quat), 8),
         "ground": _flat(sc.ground[idx], 7) if sc.ground is not None else None,
+        "overturnTime": float(response.overturn_time) if response.overturned else None,
     }
     blob = json.dumps(data, separators=(",", ":"), allow_nan=False).replace("</", "<\\/")
     page = resources.files(__package__).joinpath("template.html").read_text("utf-8")

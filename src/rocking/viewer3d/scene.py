@@ -260,8 +260,13 @@ def ground_displacement(response, shape, t) -> np.ndarray:
         dt_motion = math.inf
     dt_out = float(np.min(np.diff(t))) if len(t) > 1 else 1.0
     dt = min(dt_out / 4.0, dt_motion / 2.0) if math.isfinite(dt_motion) else dt_out / 4.0
-    n = max(2, int(math.ceil((t[-1] - t[0]) / max(dt, 1e-6))) + 1)
-    tt = np.linspace(0.0, max(t[-1], 0.0), n)
+    # over the whole motion, even where the run stopped before its end (an overturn)
+    dur = float(getattr(response.motion, "duration", 0.0) or 0.0)
+    if not (math.isfinite(dur) and dur > 0.0):
+        dur = float(t[-1])
+    t_last = max(float(t[-1]), dur)
+    n = max(2, int(math.ceil(t_last / max(dt, 1e-6))) + 1)
+    tt = np.linspace(0.0, t_last, n)
     a = np.array([ground_acc3(kind, prm, samples, float(s)) for s in tt])
     v = np.concatenate([np.zeros((1, 3)),
                         np.cumsum(0.5 * (a[1:] + a[:-1]) * np.diff(tt)[:, None], axis=0)])
@@ -269,7 +274,6 @@ def ground_displacement(response, shape, t) -> np.ndarray:
                         np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(tt)[:, None], axis=0)])
     # the initial velocity v0 of zero mean velocity over the motion's duration T:
     # d(T) + v0 T = 0
-    dur = min(float(getattr(response.motion, "duration", tt[-1]) or tt[-1]), tt[-1])
     if dur > 0.0:
         d -= np.outer(tt, [np.interp(dur, tt, d[:, j]) / dur for j in range(3)])
     return np.column_stack([np.interp(t, tt, d[:, j]) for j in range(3)])
