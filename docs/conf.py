@@ -63,6 +63,7 @@ PACKAGES = {
     "rocking.identify": "Identification of alpha, p and mu from free rocking.",
     "rocking.campaign": "Campaigns: TOML specs, executors, the Parquet store.",
     "rocking.report": "The reproduction report.",
+    "rocking.viewer3d": "Seeing a 3-D response: an animation and a self-contained page.",
     "rocking.testing": "The model contract and plain reference implementations.",
     "rocking.verification": "The verification manual: cases from the literature, run.",
 }

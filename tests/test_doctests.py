@@ -13,7 +13,8 @@ import pytest
 
 PACKAGES = ("rocking", "rocking.blocks", "rocking.motions", "rocking.buildings",
             "rocking.shapes", "rocking.models", "rocking.analysis", "rocking.identify",
-            "rocking.campaign", "rocking.report", "rocking.testing", "rocking.verification")
+            "rocking.campaign", "rocking.report", "rocking.testing", "rocking.verification",
+            "rocking.viewer3d")
 
 
 def public_objects() -> list[tuple[str, object]]:

@@ -43,7 +43,8 @@ del ensure_numba_cache
 __version__ = "0.1.0"
 
 _SUBMODULES = ("blocks", "motions", "buildings", "models", "results", "identify", "analysis",
-               "campaign", "report", "cli", "testing", "units", "errors", "plot")
+               "campaign", "report", "cli", "testing", "units", "errors", "plot",
+               "viewer3d")
 """Submodules loaded on first access (PEP 562): ``rocking.identify.free_rocking`` works
 after ``import rocking``, and ``import rocking`` stays cheap (no numba compilation)."""
 _LAZY = {"simulate": ("rocking.models", "simulate"),
