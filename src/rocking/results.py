@@ -86,7 +86,7 @@ def twist_angle(q) -> np.ndarray:
     >>> import math
     >>> q = [[math.cos(a / 2), 0.0, 0.0, math.sin(a / 2)] for a in (0.0, 3.0, -3.0)]
     >>> np.round(twist_angle(q), 12).tolist()  # -3 rad is 2 pi - 3 past +3: unwrapped
-    [0.0, 3.0, 3.283185307180]
+    [0.0, 3.0, 3.28318530718]
     """
     q = np.atleast_2d(np.asarray(q, dtype=np.float64))
     tw = np.unwrap(2.0 * np.arctan2(q[:, 3], q[:, 0]))
