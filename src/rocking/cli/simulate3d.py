@@ -55,11 +55,11 @@ PLOTS = ("tilt_slide_twist.png", "com_path.png", "overturn_azimuth.png")
 
 
 def is_3d(model: str) -> bool:
-    """True for a registered model without a planar angle (``Model.tags["planar"]``
-    False: ``rigid3d``)."""
-    from .common import model_classes
+    """True for a registered model of a 3-D body (:func:`rocking.models.is_3d`:
+    ``rigid3d``)."""
+    from ..models import is_3d as three_d  # lazy: the models import numba
 
-    return model_classes()[model].tags.get("planar", True) is False
+    return three_d(model)
 
 
 def refuse_3d_flags(model: str, box, cylinder, pair) -> None:
