@@ -251,7 +251,24 @@ class Response:
         """The horizontal displacement (m) of the body's base point (the centroid of its
         support at rest, carried with the body) from where it started, samples x 2
         (``x``, ``y`` in the ground's frame): the quantity of ``max_slide`` and
-        ``residual_slide``. None for the planar models."""
+        ``residual_slide``. None for the planar models.
+
+        Examples
+        --------
+        A box released from a tilt rocks about its edge: its base point moves, the
+        largest distance (sampled every step) is ``max_slide``.
+
+        >>> import rocking
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.box(0.4, 0.4, 1.2, density=2000.0)
+        >>> r = rocking.simulate(box, model="rigid3d", duration=0.2, tilt0=0.1, step=1e-3,
+        ...                      dt_out=1e-3)
+        >>> p = r.base_path()
+        >>> p.shape, p[0].tolist()
+        ((201, 2), [0.0, 0.0])
+        >>> bool(np.isclose(np.hypot(p[:, 0], p[:, 1]).max(), r.max_slide, rtol=1e-12))
+        True
+        """
         q = self._quaternions()
         if q is None:
             return None
@@ -271,7 +288,22 @@ class Response:
 
     def com_path(self) -> np.ndarray | None:
         """The path of the centre of mass seen from above (m): its ``x``, ``y`` relative to
-        the ground (samples x 2); None for the planar models."""
+        the ground (samples x 2); None for the planar models.
+
+        Examples
+        --------
+        Released from a tilt ``th`` about the edge at ``x = -b`` (``b``, ``h``: half the
+        width and height), the centre of mass starts at ``x = -b + b cos(th) - h sin(th)``:
+
+        >>> import math
+        >>> import rocking
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.box(0.4, 0.4, 1.2, density=2000.0)
+        >>> r = rocking.simulate(box, model="rigid3d", duration=0.2, tilt0=0.1, step=1e-3)
+        >>> x0, y0 = r.com_path()[0]
+        >>> round(float(x0), 9), round(-0.2 + 0.2 * math.cos(0.1) - 0.6 * math.sin(0.1), 9)
+        (-0.060899217, -0.060899217)
+        """
         if self._quaternions() is None:
             return None
         names = tuple(self.state_names)

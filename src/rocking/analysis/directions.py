@@ -515,7 +515,23 @@ class HeadingSweep:
     then the earliest overturn, the largest ``max_tilt``, the largest ``max_slide``),
     the ``pair``, the body's critical tilt ``alpha`` (rad, of its weakest direction:
     :meth:`rocking.shapes.Shape.weakest`, the scale of ``max_tilt_over_alpha``) and
-    ``scale`` (the load factor of the pair)."""
+    ``scale`` (the load factor of the pair).
+
+    Examples
+    --------
+    >>> import rocking
+    >>> from rocking.analysis import heading_sweep
+    >>> from rocking.motions import HorizontalPair, Record
+    >>> from rocking.shapes import Shape
+    >>> pulse = np.sin(2 * np.pi * np.arange(0.0, 1.0, 0.005))  # a 1 Hz one-sine, m/s^2
+    >>> pair = HorizontalPair(Record(4.0 * pulse, 0.005), Record(pulse, 0.005))
+    >>> sw = heading_sweep(Shape.box(0.3, 0.3, 1.2, density=2000.0), pair, 4,
+    ...                    duration=2.0, step=1e-3)
+    >>> round(sw.alpha, 6), round(float(np.arctan(0.3 / 1.2)), 6)  # the box's weakest side
+    (0.244979, 0.244979)
+    >>> bool(sw.table["worst"].sum() == 1), sw.worst_heading == float(sw.worst["heading"])
+    (True, True)
+    """
 
     table: pd.DataFrame
     worst: pd.Series
@@ -533,7 +549,22 @@ class HeadingSweep:
         """``max_tilt / alpha`` against the heading on polar axes (0 deg: the body's x
         axis along the pair's first component, counter-clockwise), the overturned
         headings at the rim, marked x, the worst one ringed; labelled. Returns the
-        figure."""
+        figure.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.analysis import heading_sweep
+        >>> from rocking.motions import HorizontalPair, Record
+        >>> from rocking.shapes import Shape
+        >>> pulse = np.sin(2 * np.pi * np.arange(0.0, 1.0, 0.005))  # a 1 Hz one-sine, m/s^2
+        >>> pair = HorizontalPair(Record(4.0 * pulse, 0.005), Record(pulse, 0.005))
+        >>> sw = heading_sweep(Shape.box(0.3, 0.3, 1.2, density=2000.0), pair, 4,
+        ...                    duration=2.0, step=1e-3)
+        >>> ax = sw.plot().axes[0]
+        >>> ax.name, len(ax.lines[0].get_xdata())  # 4 headings, closed
+        ('polar', 5)
+        """
         if ax is None:
             from matplotlib.figure import Figure
 
