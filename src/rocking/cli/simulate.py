@@ -794,7 +794,8 @@ def simulate_cmd(**options):
     elif req.is_3d:
         width = max((len(k) for k in outputs), default=0) + 2
         click.echo("\n".join(
-            simulate3d.text_lines(resp, req.block, req.model, req.motion_info, req.options)
+            simulate3d.text_lines(resp, req.block, req.model, req.motion_info, req.options,
+                                  req.floor_info)
             + [f"{k:<{width}}{row_output_text(d)}" for k, d in outputs.items()]))
     else:
         click.echo("\n".join(_text_lines(resp, req.block, req.model, req.linear,

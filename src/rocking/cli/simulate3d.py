@@ -184,13 +184,18 @@ def summary_block(shape, info: dict) -> dict:
                                           "support_area", "contact_points")}}
 
 
-def text_lines(resp, shape, model: str, mdesc: dict, options: dict) -> list[str]:
-    """The text report of a 3-D run (before the model's outputs, which follow)."""
+def text_lines(resp, shape, model: str, mdesc: dict, options: dict,
+               fdesc: dict | None = None) -> list[str]:
+    """The text report of a 3-D run (before the model's outputs, which follow; ``fdesc``:
+    the floor it stands on, ``--building``)."""
     turn = (f", heading {options.get('heading', 0.0):g} deg" if mdesc.get("type") == "pair"
             else f", direction {options.get('direction', 0.0):g} deg"
             if mdesc.get("type") != "free" else "")
+    on = "" if fdesc is None else (
+        f" on {fdesc['where']} of the {fdesc['building']['name']} (peak floor acceleration "
+        f"{fdesc['floor_pga'] / G:.3g} g)")
     lines = [f"body        {shape!r}",
-             f"motion      {mdesc.get('repr', 'free motion')}  [{model}{turn}]",
+             f"motion      {mdesc.get('repr', 'free motion')}{on}  [{model}{turn}]",
              f"max tilt    {math.degrees(resp.max_tilt):.4g} deg ({resp.max_tilt:.6g} rad)",
              (f"overturned  yes, at t = {resp.overturn_time:.4g} s, towards "
               f"{resp.overturn_azimuth:.4g} deg (counter-clockwise from x)")
