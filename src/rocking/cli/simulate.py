@@ -677,9 +677,10 @@ def _summary(req: SimulateRequest, resp) -> dict:
     blk = (simulate3d.summary_block(block, binfo) if req.is_3d else
            {**binfo, "alpha": block.alpha, "p": block.p, "mu": block.mu, "R": block.R,
             "name": block.name})
-    inputs = {"block": blk,
-              "model": req.model, "linear": bool(req.linear), "motion": req.motion_info,
-              "theta0": req.theta0 or 0.0, "omega0": req.omega0 or 0.0}
+    inputs = ({"block": blk, "model": req.model, "motion": req.motion_info} if req.is_3d
+              else {"block": blk, "model": req.model, "linear": bool(req.linear),
+                    "motion": req.motion_info, "theta0": req.theta0 or 0.0,
+                    "omega0": req.omega0 or 0.0})  # a 3-D body: tilt0 among the options
     if req.options:
         inputs["options"] = req.options
     inputs.update(req.run)
