@@ -43,6 +43,7 @@ lean of the up axis on a compass, the overturning azimuth marked).
 from __future__ import annotations
 
 import math
+import textwrap
 from pathlib import Path
 
 from .._validate import as_float
@@ -224,7 +225,8 @@ def write_plots(resp, title: str, folder: Path) -> None:
 
     axes = plot_histories3d(resp, title=title)
     save_figure(axes[0].figure, folder / PLOTS[0])
-    ax = plot_com_path(resp, title=f"{title}\ncentre of mass seen from above")
+    ax = plot_com_path(resp, title=textwrap.fill(title, 58)
+                       + "\ncentre of mass seen from above")
     save_figure(ax.figure, folder / PLOTS[1])
     ax = plot_overturn_azimuth(resp)
     save_figure(ax.figure, folder / PLOTS[2])
