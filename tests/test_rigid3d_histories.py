@@ -99,3 +99,16 @@ def test_planar_models_have_none():
     assert r.tilt is None and r.twist is None and r.slide is None
     assert r.base_path() is None and r.com_path() is None
     assert "tilt" not in r.to_dataframe().columns
+
+
+def test_response_plot_draws_the_tilt(box):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    r = rocking.simulate(box, model="rigid3d", duration=0.3, tilt0=0.05, step=1e-3)
+    ax = r.plot()
+    np.testing.assert_allclose(ax.lines[0].get_ydata(), np.degrees(r.tilt))
+    assert ax.get_ylabel() == "tilt (deg)"
+    plt.close("all")
