@@ -6,6 +6,7 @@ report on its rows, end to end (store, report, risk)."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -146,3 +147,33 @@ def test_single_component_motions_act_along_direction():
     r = rocking.simulate(Shape.box(0.2, 0.2, 1.0, mass=100.0), rocking.motions.load_builtin(
         "Rinaldi228"), model="rigid3d", duration=3.0, step=4e-3, direction=30.0)
     assert rows["max_tilt"].iloc[0] == r.max_tilt
+
+
+def test_orientation_options_the_runs_would_ignore_are_refused():
+    single = spec_text(blocks=BOX).replace('kind = "pair"\nset = ["rinaldi", "duzce"]',
+                                           'kind = "builtin"\nname = "Rinaldi228"')
+    with pytest.raises(SpecError, match=r"options\.rigid3d\.heading"):
+        parse_spec(single)
+    with pytest.raises(SpecError, match=r"options\.rigid3d\.direction"):
+        parse_spec(spec_text(blocks=BOX).replace("heading = [0, 45]", "direction = 30"))
+    parse_spec(spec_text(blocks=BOX).replace("heading = [0, 45]",
+                                             "direction = 30\ntilt0 = 0.01"))
+
+
+def test_pair_from_files(tmp_path):
+    """``file``, ``second_file``, ``vertical_file``: one pair read (and hashed) by the
+    spec, its azimuths from the NGA headers."""
+    from rocking.campaign.plan import MotionSet
+
+    rec = Path(rocking.__file__).parent / "motions" / "data" / "records" / "three_component"
+    text = spec_text(blocks=BOX).replace(
+        'set = ["rinaldi", "duzce"]',
+        f'file = "{rec / "Rinaldi228.AT2"}"\nsecond_file = "{rec / "Rinaldi318.AT2"}"\n'
+        f'vertical_file = "{rec / "RinaldiUP.AT2"}"')
+    spec = parse_spec(text)
+    assert spec.n_motions == 1 and len(spec.motion_axis.digests[0].split("+")) == 3
+    pair = MotionSet(spec.motion_axis, 1).get(0)
+    ref = HorizontalPair.builtin("rinaldi")
+    assert pair.azimuths_deg == pytest.approx(ref.azimuths_deg)
+    np.testing.assert_array_equal(pair.a1, ref.a1)
+    np.testing.assert_array_equal(pair.vertical.values, ref.vertical.values)

@@ -1552,6 +1552,8 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
     uncertain = _uncertain(raw, c, blocks, motions, run_models)
     building = _building(raw)
     headings = _headings(raw, run_models)
+    if body:
+        _orientation(raw, run_models, motions.kind in catalog.KINDS_3D)
     _check_size(c, blocks, motions, building, len(entries), len(headings))
     chunk, window = _run(raw)
     options = _options(raw, tuple(dict.fromkeys(c["models"] + run_models)))
@@ -1764,3 +1766,22 @@ def _headings(raw: dict, models: tuple) -> tuple[float, ...]:
             _fail(key, "has repeated values (one heading each)")
         return tuple(float(x) for x in values)
     return ()
+
+
+def _orientation(raw: dict, models: tuple, pair: bool) -> None:
+    """Never an option the runs would ignore: ``heading`` orients a pair (``kind =
+    "pair"``), ``direction`` a single horizontal motion (with a pair it only says where
+    ``tilt0`` leans)."""
+    opts = raw.get("options", {})
+    tables = [(f"options.{m}", opts.get(m)) for m in models]
+    tables += [(f"mitigation[{i}]", e) for i, e in enumerate(raw.get("mitigation") or [])]
+    for key, t in tables:
+        if not isinstance(t, dict):
+            continue
+        if "heading" in t and not pair:
+            _fail(f"{key}.heading", 'orients a pair of horizontal components (motions.kind = '
+                                    '"pair"); a single horizontal motion acts along direction')
+        if "direction" in t and pair and not t.get("tilt0"):
+            _fail(f"{key}.direction", "with a pair the body's orientation is heading (deg "
+                                      "from the first component); direction only says where "
+                                      "tilt0 leans")
