@@ -71,7 +71,8 @@ def test_tilt_is_the_up_axis_angle_and_twist_unwraps():
     np.testing.assert_allclose(twist_angle(qz), a, atol=1e-12)
 
 
-def test_histories_agree_with_the_kernels_outputs(box):
+@pytest.mark.parametrize("body", ["box", "cylinder"])
+def test_histories_agree_with_the_kernels_outputs(box, body):
     """Under a pair of sines the histories' extremes are the kernel's outputs: the last
     slide and twist are ``residual_slide``, ``residual_twist`` (explicit duration: the
     last sample is the last step); the sampled peaks do not exceed ``max_tilt``,
@@ -79,7 +80,8 @@ def test_histories_agree_with_the_kernels_outputs(box):
     t = np.arange(0.0, 1.0, 0.005)
     pair = HorizontalPair(Record(4.5 * np.sin(2 * np.pi * 2 * t), 0.005),
                           Record(3.5 * np.sin(2 * np.pi * 3 * t), 0.005))
-    r = rocking.simulate(box, pair, model="rigid3d", duration=1.0, step=5e-4, heading=20.0,
+    shape = box if body == "box" else Shape.cylinder(0.2, 1.2, density=2000.0)
+    r = rocking.simulate(shape, pair, model="rigid3d", duration=1.0, step=5e-4, heading=20.0,
                          dt_out=5e-4)
     assert r.max_tilt > 0.01 and not r.overturned  # it rocks
     assert r.slide[-1] == pytest.approx(r.residual_slide, rel=1e-9, abs=1e-12)
