@@ -102,9 +102,9 @@ def nominal_rows() -> pd.DataFrame:
 # --------------------------------------------------------------------- axes and columns
 def test_the_mitigation_axis_follows_the_model_axis(nominal_rows):
     spec = parse_spec(text())
-    assert list(spec.axes) == ["model", "mitigation", "block", "floor", "motion", "level",
-                               "sample"]
-    assert tuple(spec.axes.values()) == (1, 3, 2, 1, 2, 3, 1)
+    assert list(spec.axes) == ["model", "mitigation", "heading", "block", "floor", "motion",
+                               "level", "sample"]
+    assert tuple(spec.axes.values()) == (1, 3, 1, 2, 1, 2, 3, 1)
     n = 2 * 2 * 3
     assert spec.n_sims == 3 * n
     t = nominal_rows

@@ -150,11 +150,24 @@ def plot_response(resp, ax=None, deg: bool = True, label: str | None = None, *,
         Passed to ``Axes.plot`` (``color``, ``linewidth``, ...).
 
     Overturning is marked with a red cross at ``|theta| = 90 deg`` and annotated with its
-    time. A model without a planar angle (``Response.theta`` None) draws each of its
-    states against time instead. Returns the Axes.
+    time. A 3-D body (``rigid3d``) draws its tilt (:attr:`rocking.Response.tilt`; its
+    slide, twist and path: :mod:`rocking.plot3d`); another model without a planar angle
+    (``Response.theta`` None) draws each of its states against time. Returns the Axes.
     """
     if ax is None:
         _, ax = new_axes()
+    if resp.theta is None and getattr(resp, "tilt", None) is not None:  # a 3-D body
+        tilt = np.degrees(resp.tilt) if deg else resp.tilt
+        ax.plot(resp.t, tilt, color=kw.pop("color", PALETTE[0]), label=label, **kw)
+        if resp.overturned:
+            ax.plot([resp.overturn_time], [tilt[-1]], marker="X", markersize=9,
+                    color="#C00000", linestyle="none", zorder=5)
+        style_axes(ax, "time t (s)", "tilt (deg)" if deg else "tilt (rad)")
+        if label is not None:
+            ax.legend(frameon=False, fontsize=9)
+        if title:
+            ax.set_title(title, fontsize=10)
+        return ax
     if resp.theta is None:  # no planar angle: the states (Response.state_names)
         for j, name in enumerate(resp.state_names):
             ax.plot(resp.t, resp.states[:, j], color=PALETTE[j % len(PALETTE)], label=name,

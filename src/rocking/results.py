@@ -55,6 +55,77 @@ def jsonable(x):
     return repr(x)
 
 
+QUATERNION = ("q0", "q1", "q2", "q3")
+"""The state names of an orientation quaternion (body to ground, scalar first)."""
+
+
+def tilt_angle(q) -> np.ndarray:
+    """The angle (rad) of the body's up axis from the vertical for the unit quaternions
+    ``q`` (..., 4; body to ground, scalar first): ``R_zz = cos(tilt) = 1 - 2 (q1^2 +
+    q2^2)``, written as ``2 atan2(sqrt(q1^2 + q2^2), sqrt(q0^2 + q3^2))``, accurate at
+    small tilts too.
+
+    Examples
+    --------
+    >>> import math
+    >>> q = [math.cos(0.15), math.sin(0.15), 0.0, 0.0]  # 0.3 rad about x
+    >>> round(float(tilt_angle(q)), 12)
+    0.3
+    """
+    q = np.asarray(q, dtype=np.float64)
+    return 2.0 * np.arctan2(np.hypot(q[..., 1], q[..., 2]), np.hypot(q[..., 0], q[..., 3]))
+
+
+def twist_angle(q) -> np.ndarray:
+    """The twist (rad) about the vertical of the quaternion history ``q`` (samples x 4):
+    the twist of the swing-twist decomposition, ``2 atan2(q3, q0)``, unwrapped and
+    relative to the first sample (counter-clockwise looking down).
+
+    Examples
+    --------
+    >>> import math
+    >>> q = [[math.cos(a / 2), 0.0, 0.0, math.sin(a / 2)] for a in (0.0, 3.0, -3.0)]
+    >>> np.round(twist_angle(q), 12).tolist()  # -3 rad is 2 pi - 3 past +3: unwrapped
+    [0.0, 3.0, 3.28318530718]
+    """
+    q = np.atleast_2d(np.asarray(q, dtype=np.float64))
+    tw = np.unwrap(2.0 * np.arctan2(q[:, 3], q[:, 0]))
+    return tw - tw[0]
+
+
+def rotation_matrices(q) -> np.ndarray:
+    """The rotation matrices (..., 3, 3) of the unit quaternions ``q`` (..., 4; scalar
+    first)."""
+    q = np.asarray(q, dtype=np.float64)
+    q0, q1, q2, q3 = (q[..., i] for i in range(4))
+    return np.stack([
+        np.stack([1 - 2 * (q2 * q2 + q3 * q3), 2 * (q1 * q2 - q0 * q3),
+                  2 * (q1 * q3 + q0 * q2)], -1),
+        np.stack([2 * (q1 * q2 + q0 * q3), 1 - 2 * (q1 * q1 + q3 * q3),
+                  2 * (q2 * q3 - q0 * q1)], -1),
+        np.stack([2 * (q1 * q3 - q0 * q2), 2 * (q2 * q3 + q0 * q1),
+                  1 - 2 * (q1 * q1 + q2 * q2)], -1)], -2)
+
+
+def support_base_point(shape) -> np.ndarray:
+    """The base point of a :class:`~rocking.shapes.Shape` relative to its centre of mass
+    in the body's frame (m, (3,)): the area centroid of its support at rest, on the
+    ground (as :mod:`rocking.models.rigid3d` measures the slide)."""
+    from .models.rigid3d import polygon_centroid  # lazy: the models import this module
+
+    cx, cy = polygon_centroid(np.asarray(shape.support))
+    return np.array([cx, cy, -float(shape.h)])
+
+
+def base_point_path(com, q, base_point) -> np.ndarray:
+    """The horizontal displacement (samples x 2, m) of the point ``base_point`` (3,), fixed
+    in the body (relative to its centre of mass), from its first position: ``com + R
+    base_point``, for the centre of mass ``com`` (samples x 3) and orientation ``q``
+    (samples x 4)."""
+    p = np.asarray(com, dtype=np.float64) + rotation_matrices(q) @ np.asarray(base_point)
+    return p[:, :2] - p[0, :2]
+
+
 def _block_dict(block) -> dict | None:
     if block is None:
         return None
@@ -138,6 +209,105 @@ class Response:
         if name not in self.state_names:
             raise KeyError(f"no state {name!r}; the states are {', '.join(self.state_names)}")
         return self.states[:, self.state_names.index(name)]
+
+    # ------------------------------------------------------------ 3-D histories
+    def _quaternions(self) -> np.ndarray | None:
+        """The orientation history ``q0..q3`` (samples x 4), None without one."""
+        names = tuple(self.state_names)
+        if self.states is None or not all(n in names for n in QUATERNION):
+            return None
+        return self.states[:, [names.index(n) for n in QUATERNION]]
+
+    @property
+    def tilt(self) -> np.ndarray | None:
+        """The tilt history (rad): the angle of the body's initial up axis from the
+        vertical (:func:`tilt_angle`), for a model whose state has an orientation
+        (``rigid3d``); None for the planar models (their angle is :attr:`theta`).
+
+        Examples
+        --------
+        Released from a tilt of 0.05 rad, the box starts at that tilt:
+
+        >>> import rocking
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.box(0.4, 0.4, 1.2, density=2000.0)
+        >>> r = rocking.simulate(box, model="rigid3d", duration=0.02, tilt0=0.05)
+        >>> round(float(r.tilt[0]), 12), rocking.simulate(rocking.specimen(2), duration=0.1).tilt
+        (0.05, None)
+        """
+        q = self._quaternions()
+        return None if q is None else tilt_angle(q)
+
+    @property
+    def twist(self) -> np.ndarray | None:
+        """The twist history (rad, counter-clockwise looking down): the rotation about the
+        vertical of the swing-twist decomposition, followed continuously from the start
+        (:func:`twist_angle`; ``residual_twist`` is its last value); None for the planar
+        models."""
+        q = self._quaternions()
+        return None if q is None else twist_angle(q)
+
+    def base_path(self) -> np.ndarray | None:
+        """The horizontal displacement (m) of the body's base point (the centroid of its
+        support at rest, carried with the body) from where it started, samples x 2
+        (``x``, ``y`` in the ground's frame): the quantity of ``max_slide`` and
+        ``residual_slide``. None for the planar models.
+
+        Examples
+        --------
+        A box released from a tilt rocks about its edge: its base point moves, the
+        largest distance (sampled every step) is ``max_slide``.
+
+        >>> import rocking
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.box(0.4, 0.4, 1.2, density=2000.0)
+        >>> r = rocking.simulate(box, model="rigid3d", duration=0.2, tilt0=0.1, step=1e-3,
+        ...                      dt_out=1e-3)
+        >>> p = r.base_path()
+        >>> p.shape, p[0].tolist()
+        ((201, 2), [0.0, 0.0])
+        >>> bool(np.isclose(np.hypot(p[:, 0], p[:, 1]).max(), r.max_slide, rtol=1e-12))
+        True
+        """
+        q = self._quaternions()
+        if q is None:
+            return None
+        from .models import get_model  # lazy: the models import this module
+
+        shape = get_model(self.model).check_block(self.block)
+        return base_point_path(self.states[:, [self.state_names.index(n) for n in "xyz"]],
+                               q, support_base_point(shape))
+
+    @property
+    def slide(self) -> np.ndarray | None:
+        """The slide history (m): the horizontal distance of the base point from where it
+        started (:meth:`base_path`; ``max_slide`` is its largest value, ``residual_slide``
+        its last); None for the planar models."""
+        p = self.base_path()
+        return None if p is None else np.hypot(p[:, 0], p[:, 1])
+
+    def com_path(self) -> np.ndarray | None:
+        """The path of the centre of mass seen from above (m): its ``x``, ``y`` relative to
+        the ground (samples x 2); None for the planar models.
+
+        Examples
+        --------
+        Released from a tilt ``th`` about the edge at ``x = -b`` (``b``, ``h``: half the
+        width and height), the centre of mass starts at ``x = -b + b cos(th) - h sin(th)``:
+
+        >>> import math
+        >>> import rocking
+        >>> from rocking.shapes import Shape
+        >>> box = Shape.box(0.4, 0.4, 1.2, density=2000.0)
+        >>> r = rocking.simulate(box, model="rigid3d", duration=0.2, tilt0=0.1, step=1e-3)
+        >>> x0, y0 = r.com_path()[0]
+        >>> round(float(x0), 9), round(-0.2 + 0.2 * math.cos(0.1) - 0.6 * math.sin(0.1), 9)
+        (-0.060899217, -0.060899217)
+        """
+        if self._quaternions() is None:
+            return None
+        names = tuple(self.state_names)
+        return self.states[:, [names.index("x"), names.index("y")]].copy()
 
     @property
     def lifted_off(self) -> bool:
@@ -282,7 +452,9 @@ class Response:
 
     def to_dataframe(self):
         """``pandas.DataFrame`` with columns ``t``, ``theta``, ``omega`` (planar models) and
-        every state variable (:attr:`state_names`) not among them.
+        every state variable (:attr:`state_names`) not among them; for a 3-D body
+        (``rigid3d``) then ``tilt`` (rad), ``slide`` (m) and ``twist`` (rad)
+        (:attr:`tilt`, :attr:`slide`, :attr:`twist`).
 
         Examples
         --------
@@ -303,6 +475,8 @@ class Response:
         if self.states is not None:
             for j, name in enumerate(self.state_names):
                 cols.setdefault(name, self.states[:, j])
+        if self._quaternions() is not None:  # a 3-D body: its derived histories
+            cols |= {"tilt": self.tilt, "slide": self.slide, "twist": self.twist}
         return pd.DataFrame(cols)
 
     def to_csv(self, path) -> Path:

@@ -17,7 +17,9 @@ every function returns a tidy :class:`pandas.DataFrame` or a result object with 
   (:class:`MitigationComparison`, :func:`plot_mitigations`; issue 19);
 * :func:`direction_sweep`: a 3-D body's planar analysis in every direction under two
   horizontal components, and its worst direction (:class:`DirectionSweep`), and
-  :func:`direction_fragility`, a fragility curve per direction (issue 20);
+  :func:`direction_fragility`, a fragility curve per direction (issue 20); its 3-D
+  counterpart :func:`heading_sweep`, the body itself (``rigid3d``) at every heading of a
+  pair (:class:`HeadingSweep`; issue 30);
 * :func:`select_records`: amplitude-scaled records whose mean spectrum matches a target
   (EN 1998-1 3.2.3.1.2; :class:`SelectionResult`, :func:`default_periods`,
   :func:`uniform_hazard_spectrum` of SA hazard curves as a target; issue 21);
@@ -30,8 +32,10 @@ from .damage import DEFAULT_THRESHOLDS, FragilityCurves, damage_state, fragility
 from .directions import (
     DirectionFragility,
     DirectionSweep,
+    HeadingSweep,
     direction_fragility,
     direction_sweep,
+    heading_sweep,
     plot_sweeps,
 )
 from .fourier import FourierSpectrum, fourier_spectrum
@@ -64,6 +68,7 @@ __all__ = [
     "fourier_spectrum", "FourierSpectrum", "overturning_spectrum", "outcome_map",
     "plot_overturning_spectrum", "plot_outcome_map", "pulse_motion", "PULSES",
     "direction_sweep", "DirectionSweep", "plot_sweeps", "direction_fragility",
-    "DirectionFragility", "HazardCurve", "Risk", "risk", "probability_in", "plot_risk",
+    "DirectionFragility", "heading_sweep", "HeadingSweep", "HazardCurve", "Risk", "risk",
+    "probability_in", "plot_risk",
     "select_records", "SelectionResult", "default_periods", "uniform_hazard_spectrum",
 ]

@@ -1,4 +1,10 @@
-r"""The weakest direction of a 3-D body under two horizontal components (issue 20).
+r"""The weakest direction of a 3-D body under two horizontal components (issue 20), and
+the worst heading of a 3-D body (issue 30).
+
+:func:`heading_sweep` is the 3-D counterpart of the planar sweep: the body itself
+(``model="rigid3d"``) under the pair's three components at every heading (the body's x
+axis from the first component), in one batch (:class:`HeadingSweep`);
+:func:`direction_sweep` with ``model="rigid3d"`` is refused and names it.
 
 :func:`direction_sweep` runs, for every direction ``phi`` of the body's horizontal frame,
 the planar analysis of the body's planar block of that direction
@@ -50,7 +56,7 @@ import pandas as pd
 from .._validate import as_float, positive
 from ..blocks import Block
 from ..errors import ParameterError
-from ..models import simulate_many
+from ..models import is_3d, simulate_many
 from ..motions import HorizontalPair
 from ..motions.pair import angle
 from ..plot import PALETTE
@@ -227,6 +233,10 @@ def direction_sweep(body, pair: HorizontalPair, directions=None, *, model="housn
     >>> sw.table["uplift_demand"].round(2).tolist(), sw.table["overturned"].tolist()
     ([1.8, 1.7, 0.6, 0.85], [True, True, False, False])
     """
+    if is_3d(model):
+        raise ParameterError(f"direction_sweep is the planar analysis per direction; model "
+                             f"{model!r} is 3-D: sweep the pair's heading with "
+                             "rocking.analysis.heading_sweep(shape, pair, headings)")
     if not isinstance(pair, HorizontalPair):
         raise ParameterError("pair must be a rocking.motions.HorizontalPair, got "
                              f"{type(pair).__name__}")
@@ -487,5 +497,211 @@ def direction_fragility(body, pairs, levels, directions=None, *, im: str = "larg
     return DirectionFragility(table=pd.DataFrame(rows), runs=runs, fits=fits, im=im)
 
 
-__all__ = ["COLUMNS", "PAIR_IMS", "DirectionFragility", "DirectionSweep", "direction_fragility",
-           "direction_sweep", "pair_im", "plot_sweeps", "worst_index"]
+# ====================================================================== 3-D: headings
+HEADING_COLUMNS = ("heading", "heading_deg", "max_tilt", "max_tilt_over_alpha", "overturned",
+                   "overturn_time", "overturn_azimuth", "uplift_time", "n_impacts",
+                   "max_slide", "residual_slide", "max_twist", "residual_twist",
+                   "lifted_off", "settled", "unconverged_steps", "worst")
+"""The columns of :attr:`HeadingSweep.table` (SI; angles in rad, ``heading_deg`` and
+``overturn_azimuth`` in deg: the outputs of :mod:`rocking.models.rigid3d`)."""
+DEFAULT_HEADING_STEP = math.radians(15.0)
+"""The default spacing of the headings (rad), over [0, 360) deg."""
+
+
+@dataclass(frozen=True, eq=False)
+class HeadingSweep:
+    """The result of :func:`heading_sweep`: ``table`` (one row per heading,
+    :data:`HEADING_COLUMNS`), ``worst`` (its row of the worst heading: overturned first,
+    then the earliest overturn, the largest ``max_tilt``, the largest ``max_slide``),
+    the ``pair``, the body's critical tilt ``alpha`` (rad, of its weakest direction:
+    :meth:`rocking.shapes.Shape.weakest`, the scale of ``max_tilt_over_alpha``) and
+    ``scale`` (the load factor of the pair).
+
+    Examples
+    --------
+    >>> import rocking
+    >>> from rocking.analysis import heading_sweep
+    >>> from rocking.motions import HorizontalPair, Record
+    >>> from rocking.shapes import Shape
+    >>> pulse = np.sin(2 * np.pi * np.arange(0.0, 1.0, 0.005))  # a 1 Hz one-sine, m/s^2
+    >>> pair = HorizontalPair(Record(4.0 * pulse, 0.005), Record(pulse, 0.005))
+    >>> sw = heading_sweep(Shape.box(0.3, 0.3, 1.2, density=2000.0), pair, 4,
+    ...                    duration=2.0, step=1e-3)
+    >>> round(sw.alpha, 6), round(float(np.arctan(0.3 / 1.2)), 6)  # the box's weakest side
+    (0.244979, 0.244979)
+    >>> bool(sw.table["worst"].sum() == 1), sw.worst_heading == float(sw.worst["heading"])
+    (True, True)
+    """
+
+    table: pd.DataFrame
+    worst: pd.Series
+    pair: HorizontalPair
+    alpha: float
+    scale: float
+    model: str = "rigid3d"
+
+    @property
+    def worst_heading(self) -> float:
+        """The worst heading (rad)."""
+        return float(self.worst["heading"])
+
+    def plot(self, ax=None, *, label: str | None = None):
+        """``max_tilt / alpha`` against the heading on polar axes (0 deg: the body's x
+        axis along the pair's first component, counter-clockwise), the overturned
+        headings at the rim, marked x, the worst one ringed; labelled. Returns the
+        figure.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.analysis import heading_sweep
+        >>> from rocking.motions import HorizontalPair, Record
+        >>> from rocking.shapes import Shape
+        >>> pulse = np.sin(2 * np.pi * np.arange(0.0, 1.0, 0.005))  # a 1 Hz one-sine, m/s^2
+        >>> pair = HorizontalPair(Record(4.0 * pulse, 0.005), Record(pulse, 0.005))
+        >>> sw = heading_sweep(Shape.box(0.3, 0.3, 1.2, density=2000.0), pair, 4,
+        ...                    duration=2.0, step=1e-3)
+        >>> ax = sw.plot().axes[0]
+        >>> ax.name, len(ax.lines[0].get_xdata())  # 4 headings, closed
+        ('polar', 5)
+        """
+        if ax is None:
+            from matplotlib.figure import Figure
+
+            fig = Figure(figsize=(5.4, 5.6), layout="constrained")
+            ax = fig.add_subplot(projection="polar")
+        t = self.table.sort_values("heading")
+        h = t.heading.to_numpy(float) % (2 * math.pi)
+        r = t.max_tilt_over_alpha.to_numpy(float)
+        ovt = t.overturned.to_numpy(bool)
+        rim = max(1.05, float(np.nanmax(np.where(ovt, 0.0, r))) * 1.1 if r.size else 1.05)
+        r = np.where(ovt, rim, r)
+        line, = ax.plot(np.append(h, h[:1]), np.append(r, r[:1]), marker="o", ms=3,
+                        label=label or f"{self.pair.name or 'pair'} x {self.scale:g}")
+        ax.plot(h[ovt], r[ovt], "x", color=line.get_color(), ms=8,
+                label="overturned" if ovt.any() else None)
+        w = self.worst
+        ax.plot([float(w["heading"]) % (2 * math.pi)],
+                [rim if w["overturned"] else float(w["max_tilt_over_alpha"])], "o",
+                mfc="none", mec="#C00000", ms=12, mew=1.5,
+                label=f"worst: {float(w['heading_deg']):g} deg")
+        ax.set_ylim(0.0, rim * 1.02)
+        ax.set_theta_zero_location("E")
+        ax.set_theta_direction(1)
+        ax.tick_params(labelsize=8)
+        ax.set_title("max tilt / alpha (weakest side) against the heading\n(the body's x "
+                     "axis from the first component, counter-clockwise)", fontsize=9)
+        ax.legend(fontsize=8, loc="lower left", bbox_to_anchor=(-0.12, -0.14),
+                  frameon=False)
+        return ax.figure
+
+
+def _headings(headings) -> np.ndarray:
+    if headings is None:
+        return np.arange(0.0, 2.0 * math.pi - 1e-12, DEFAULT_HEADING_STEP)
+    if isinstance(headings, int | np.integer) and not isinstance(headings, bool):
+        if headings < 1:
+            raise ParameterError(f"headings must be >= 1 (a count), got {headings}")
+        return np.arange(int(headings)) * (2.0 * math.pi / int(headings))
+    try:
+        h = np.atleast_1d(np.asarray(headings, dtype=float))
+    except (TypeError, ValueError):
+        raise ParameterError("headings must be angles in rad (a number or a sequence), or "
+                             f"a count; got {headings!r}") from None
+    if h.ndim != 1 or h.size == 0 or not np.all(np.isfinite(h)):
+        raise ParameterError("headings must be a non-empty 1-D sequence of finite angles "
+                             "(rad)")
+    warn_if_degrees(h)
+    return h
+
+
+def heading_sweep(shape, pair: HorizontalPair, headings=None, *, scale: float = 1.0,
+                  vertical: bool = True, duration: float | None = None,
+                  **options) -> HeadingSweep:
+    """The 3-D counterpart of :func:`direction_sweep`: the body ``shape`` (a
+    :class:`rocking.shapes.Shape`, or a rectangular :class:`rocking.Block` as its box)
+    under the three components of ``pair`` at every heading (``model="rigid3d"``: the
+    body's x axis ``heading`` rad counter-clockwise from the first component), all
+    headings in one :func:`rocking.simulate_many` batch.
+
+    ``headings``: angles (rad), a count over [0, 2 pi), or None (every 15 deg over
+    [0, 360) deg: a heading and its opposite differ unless the body is symmetric under a
+    half turn). Heading ``h`` runs the pair turned by ``-h``
+    (:meth:`~rocking.motions.HorizontalPair.rotated`: the same ground motion recorded on
+    axes along the body's) at heading 0: the same run as ``rocking.simulate(shape, pair,
+    model="rigid3d", heading=deg(h))`` up to the rounding of the projection. ``scale``:
+    a load factor on the pair (the vertical component too); ``vertical``: use the pair's
+    vertical component when it has one; ``duration`` and ``**options`` (``friction``,
+    ``step``, ...): as in :func:`rocking.simulate_many` (``heading`` is the sweep's).
+
+    Unlike the planar sweep this couples both components, the vertical one, wobbling,
+    twisting and sliding; ``max_tilt_over_alpha`` scales the tilt by the critical tilt of
+    the body's weakest side (a box tipping over a corner can tilt beyond it and stand).
+
+    Examples
+    --------
+    >>> import rocking
+    >>> from rocking.analysis import heading_sweep
+    >>> from rocking.motions import HorizontalPair, Record
+    >>> from rocking.shapes import Shape
+    >>> t = np.arange(0.0, 1.0, 0.005)
+    >>> pulse = np.sin(2 * np.pi * t)  # a 1 Hz one-sine, m/s^2
+    >>> pair = HorizontalPair(Record(4.0 * pulse, 0.005), Record(pulse, 0.005))
+    >>> sw = heading_sweep(Shape.box(0.3, 0.3, 1.2, density=2000.0), pair, 4,
+    ...                    duration=2.0, step=1e-3)
+    >>> sw.table["heading_deg"].tolist(), bool(sw.table["max_tilt"].min() > 0.01)
+    ([0.0, 90.0, 180.0, 270.0], True)
+    """
+    from ..models import get_model
+
+    if not isinstance(pair, HorizontalPair):
+        raise ParameterError("pair must be a rocking.motions.HorizontalPair, got "
+                             f"{type(pair).__name__}")
+    if not isinstance(vertical, bool | np.bool_):
+        raise ParameterError(f"vertical must be True or False, got {vertical!r}")
+    for k in ("heading", "model"):
+        if k in options:
+            raise ParameterError(f"{k} is the sweep's (heading_sweep runs model 'rigid3d' "
+                                 "at each of its headings)")
+    s = as_float("scale", scale)
+    if s <= 0.0:
+        raise ParameterError(f"scale must be > 0 (a load factor), got {scale!r}")
+    body = get_model("rigid3d").check_block(shape)
+    hs = _headings(headings)
+    base = pair if vertical or pair.vertical is None else HorizontalPair(
+        pair.first, pair.second, azimuths=pair.azimuths, name=pair.name)
+    if s != 1.0:
+        base = base.scaled(s)
+    pairs = [base.rotated(-float(h)) for h in hs]
+    res = simulate_many(body, pairs, model="rigid3d", duration=duration, heading=0.0,
+                        **options)
+    alpha = float(body.weakest().alpha)
+    out = res.outputs
+    table = pd.DataFrame({
+        "heading": hs, "heading_deg": np.degrees(hs), "max_tilt": out["max_tilt"],
+        "max_tilt_over_alpha": out["max_tilt"] / alpha,
+        "overturned": np.asarray(res.overturned, dtype=bool),
+        "overturn_time": np.asarray(res.overturn_time, dtype=float),
+        "overturn_azimuth": out["overturn_azimuth"],
+        "uplift_time": np.asarray(res.uplift_time, dtype=float),
+        "n_impacts": np.asarray(res.n_impacts, dtype=int),
+        "max_slide": out["max_slide"], "residual_slide": out["residual_slide"],
+        "max_twist": out["max_twist"], "residual_twist": out["residual_twist"],
+        "lifted_off": np.asarray(out["lifted_off"], dtype=bool),
+        "settled": np.asarray(res.settled, dtype=bool),
+        "unconverged_steps": out["unconverged_steps"],
+    })
+    ovt = table.overturned.to_numpy(bool)
+    t = np.where(ovt, np.nan_to_num(table.overturn_time.to_numpy(float), nan=np.inf), np.inf)
+    w = int(np.lexsort((-np.nan_to_num(table.max_slide.to_numpy(float), nan=-np.inf),
+                        -np.nan_to_num(table.max_tilt.to_numpy(float), nan=-np.inf),
+                        t, ~ovt))[0])
+    table["worst"] = np.arange(len(table)) == w
+    table.attrs.update({"model": "rigid3d", "pair": pair.name, "scale": s, "alpha": alpha,
+                        "vertical": bool(vertical and pair.vertical is not None)})
+    return HeadingSweep(table=table, worst=table.iloc[w], pair=pair, alpha=alpha, scale=s)
+
+
+__all__ = ["COLUMNS", "HEADING_COLUMNS", "PAIR_IMS", "DirectionFragility", "DirectionSweep",
+           "HeadingSweep", "direction_fragility", "direction_sweep", "heading_sweep",
+           "pair_im", "plot_sweeps", "worst_index"]

@@ -167,6 +167,82 @@ class MeshForm(Options):
                                  "plinth_depth and plinth_height only")
 
 
+def _sizes(key: str, value, n: int, what: str) -> tuple:
+    """``value`` as ``n`` positive lengths (m; numbers, or strings with a unit such as
+    ``"40cm"``)."""
+    from ..units import parse_quantity
+
+    if not isinstance(value, list | tuple) or len(value) != n:
+        raise ParameterError(f"{key} must be a list of {n} lengths [{what}] (m, or strings "
+                             f"with a unit such as '40cm'), got {value!r}")
+    out = []
+    for i, v in enumerate(value):
+        if isinstance(v, bool):
+            raise ParameterError(f"{key}[{i}] must be a length, got {v!r}")
+        x = parse_quantity(v, "length", name=f"{key}[{i}]", default_unit="m")
+        if not (x > 0.0 and math.isfinite(x)):
+            raise ParameterError(f"{key}[{i}] must be > 0 m, got {v!r}")
+        out.append(float(x))
+    return tuple(out)
+
+
+def _density_or_mass(density, mass) -> dict:
+    if density is not None and mass is not None:
+        raise ParameterError("density or mass: give one (density in kg/m^3 or mass in kg), "
+                             "not both")
+    return {"mass": mass} if mass is not None else {"density": density or DEFAULT_DENSITY}
+
+
+DEFAULT_DENSITY = 1000.0
+"""Density (kg/m^3) of a ``box`` or ``cylinder`` body given neither density nor mass: the
+motion of a rigid body on a rigid ground does not depend on its mass (every force scales
+with it), only its reported mass does."""
+
+
+@dataclass(frozen=True)
+class BoxForm(Options):
+    box: tuple = option(REQUIRED, help="[lx, ly, lz]: a rectangular box (m) standing on its lx "
+                        "x ly face, lz vertical; a 3-D body (rocking.shapes.Shape.box, model "
+                        "rigid3d)", kind=object, required=True)
+    density: float | None = option(REQUIRED, help="density (or mass; default 1000 kg/m^3: "
+                                   "the motion does not depend on it)", unit="kg/m^3", lo=0.0)
+    mass: float | None = _mass("mass (instead of density)")
+
+    def check(self):
+        _sizes("box", self.box, 3, "lx, ly, lz")
+        _density_or_mass(self.density, self.mass)
+
+
+@dataclass(frozen=True)
+class CylinderForm(Options):
+    cylinder: tuple = option(REQUIRED, help="[radius, height]: a circular cylinder (m) "
+                             "standing on an end; a 3-D body (rocking.shapes.Shape.cylinder, "
+                             "model rigid3d)", kind=object, required=True)
+    density: float | None = option(REQUIRED, help="density (or mass; default 1000 kg/m^3: "
+                                   "the motion does not depend on it)", unit="kg/m^3", lo=0.0)
+    mass: float | None = _mass("mass (instead of density)")
+
+    def check(self):
+        _sizes("cylinder", self.cylinder, 2, "radius, height")
+        _density_or_mass(self.density, self.mass)
+
+
+def _box(f: BoxForm):
+    from ..shapes import Shape  # lazy: trimesh
+
+    lx, ly, lz = _sizes("box", f.box, 3, "lx, ly, lz")
+    return Shape.box(lx, ly, lz, name=f"{lx:g} x {ly:g} x {lz:g} m box",
+                     **_density_or_mass(f.density, f.mass))
+
+
+def _cylinder(f: CylinderForm):
+    from ..shapes import Shape  # lazy: trimesh
+
+    r, h = _sizes("cylinder", f.cylinder, 2, "radius, height")
+    return Shape.cylinder(r, h, name=f"cylinder r {r:g} x {h:g} m",
+                          **_density_or_mass(f.density, f.mass))
+
+
 def mesh_direction(value):
     """One ``direction`` of a mesh block (:func:`rocking.shapes.parse_direction`: an angle
     in rad from a number in degrees or a string with its unit, or ``"weakest"`` /
@@ -358,6 +434,10 @@ FORMS: dict[str, BlockForm] = {f.name: f for f in (
               "with a plinth: a stack)", paths=("mesh",), several="direction"),
     BlockForm("stack", "stack", StackForm, _stack,
               "blocks stacked bottom to top (rocking.Stack; the DEM)"),
+    BlockForm("box", "box", BoxForm, _box,
+              "a 3-D rectangular box (rocking.shapes.Shape.box; model rigid3d)"),
+    BlockForm("cylinder", "cylinder", CylinderForm, _cylinder,
+              "a 3-D circular cylinder (rocking.shapes.Shape.cylinder; model rigid3d)"),
 )}
 """The block forms by name."""
 
@@ -374,9 +454,11 @@ def form_of(mapping: dict) -> BlockForm:
 
 
 def renamed(block, name: str):
-    """``block`` (a Block or a Stack) with the name ``name``."""
-    return (dataclasses.replace(block, name=name) if isinstance(block, Block)
-            else Stack(block.blocks, block.offsets, name=name))
+    """``block`` (a Block, a Stack or a 3-D :class:`~rocking.shapes.Shape`) with the name
+    ``name``."""
+    if isinstance(block, Stack):
+        return Stack(block.blocks, block.offsets, name=name)
+    return dataclasses.replace(block, name=name)
 
 
 def _prepared(mapping: dict, name, base_dir) -> tuple:
@@ -462,3 +544,60 @@ def table() -> list[dict]:
     """Every form and key, one dict each (``form``, ``name``, ``unit``, ``range``, ...)."""
     return [{"form": f.name, **d, "type": d["kind"]} for f in FORMS.values()
             for d in f.describe()]
+
+
+BODY_FORMS = ("box", "cylinder", "mesh", "rectangular", "specimen")
+"""The forms that describe a 3-D body (:func:`make_body`)."""
+PLANAR_MESH_KEYS = ("direction", "mu", "plinth_width", "plinth_depth", "plinth_height",
+                    "plinth_density", "plinth_mass")
+"""Keys of the ``mesh`` form that make its planar block, not the 3-D body."""
+
+
+def make_body(mapping: dict, *, name: str | None = None, base_dir=None):
+    """The 3-D body (:class:`rocking.shapes.Shape`) described by ``mapping``, for a 3-D
+    model (``rigid3d``): ``box = [lx, ly, lz]``, ``cylinder = [radius, height]``, a
+    ``mesh`` (the whole mesh: its mass properties, contact on its hull), or a rectangular
+    block (``width``, ``height``, ``thickness``: the box ``width`` x ``thickness`` (its
+    width if not given) x ``height``) or a ``specimen`` (its box). ``density`` or ``mass``
+    (a box or cylinder without either: :data:`DEFAULT_DENSITY`). A mesh's planar keys
+    (``direction``, ``mu``, a plinth) are refused: a 3-D model takes the direction of a
+    single horizontal motion as its option ``direction``.
+
+    Examples
+    --------
+    >>> from rocking.blocks.factory import make_body
+    >>> body = make_body({"box": [0.4, "30cm", 1.2], "mass": 144.0})
+    >>> body.name, round(body.h, 6), round(body.density, 6)
+    ('0.4 x 0.3 x 1.2 m box', 0.6, 1000.0)
+    """
+    form, values, name = _prepared(mapping, name, base_dir)
+    if form.name not in BODY_FORMS:
+        raise ParameterError(f"{form.key}: a 3-D body (model rigid3d) needs its shape: give "
+                             "box = [lx, ly, lz], cylinder = [radius, height], mesh, width "
+                             f"and height, or specimen (not the {form.name} form)")
+    if form.name == "mesh":
+        planar = [k for k in PLANAR_MESH_KEYS if k in values]
+        if planar:
+            raise ParameterError(
+                f"{planar[0]}: a key of the mesh's planar block; a 3-D model (rigid3d) "
+                "takes the whole mesh (set where a single horizontal motion acts with its "
+                "option direction, deg, and a pair's orientation with heading)")
+        body = load_mesh(form.Params(**values))
+    elif form.name in ("box", "cylinder"):
+        body = form.make(form.Params(**values))
+    else:
+        from ..shapes import Shape  # lazy: trimesh
+
+        for k in ("p", "mu", "corner_cut", "shape"):
+            if values.get(k) not in (None, 0, 0.0, "rectangle"):
+                raise ParameterError(f"{k}: a planar block's key; a 3-D body (rigid3d) "
+                                     "takes its shape, mass and inertia from its geometry "
+                                     "(a corner cut: give a mesh)")
+        block = form.make(form.Params(**values))
+        if block.width is None or block.height is None:
+            raise ParameterError(f"{form.key}: this block has no rectangular size for a 3-D "
+                                 "body; give box = [lx, ly, lz]")
+        depth = block.thickness if block.thickness is not None else block.width
+        kw = {"mass": block.mass} if block.mass else {"density": DEFAULT_DENSITY}
+        body = Shape.box(block.width, depth, block.height, name=block.name or "box", **kw)
+    return renamed(body, name) if name else body

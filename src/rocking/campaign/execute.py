@@ -348,5 +348,7 @@ def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:
         del axes["floors"]
     if not spec.mitigations:
         del axes["mitigations"]
+    if not spec.headings:
+        del axes["headings"]
     return {"n_sims": spec.n_sims, "n_chunks": spec.n_chunks, "chunk_size": spec.chunk_size,
             "shape": axes, "sampled": sampled, "estimated_seconds": seconds}

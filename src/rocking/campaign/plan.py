@@ -62,7 +62,7 @@ from ..blocks import Block
 from ..errors import ParameterError
 from ..models import GENERIC_OUTPUTS, MODELS, PLANAR_OUTPUTS, simulate_many
 from ..models.base import empty_results
-from ..motions import GroundMotion, Motion, Record, catalog, sample
+from ..motions import GroundMotion, HorizontalPair, Motion, Record, catalog, sample
 from .spec import BuildingAxis, CampaignSpec, MotionAxis, nominal
 
 STREAM = 3
@@ -73,10 +73,16 @@ RESULT_COLUMNS = ("max_abs_theta", "max_abs_theta_over_alpha", "overturned", "ov
                   "uplift_time", "n_impacts", "settled", "damage_state", "status")
 """The result columns of every campaign (the shared outputs of the models,
 :data:`rocking.models.base.GENERIC_OUTPUTS` and ``PLANAR_OUTPUTS``, and two derived
-columns); after them, the models' own outputs (:func:`row_output_columns`). A model
-without a planar angle leaves ``max_abs_theta`` and its ratio NaN, ``n_impacts`` 0 when
-it declares none, and ``damage_state`` -1."""
+columns); after them, the models' own outputs (:func:`row_output_columns`). A 3-D body
+(``rigid3d``) puts its ``max_tilt`` in ``max_abs_theta`` (the largest angle of its up axis
+from the vertical: ``|theta|`` in the planar limit) and its ``alpha``, ``p``, ``mu`` are
+those of its weakest direction (:func:`.spec.nominal`), so that ``max_abs_theta_over_alpha``
+and the damage states read as for a planar block; its own outputs (``max_tilt``,
+``overturn_azimuth``, ``max_slide``, ...) follow. A model without a planar angle or a tilt
+leaves ``max_abs_theta`` and its ratio NaN, ``n_impacts`` 0 when it declares none, and
+``damage_state`` -1."""
 INPUT_UNITS = {"alpha": "rad", "p": "1/s", "mu": "", "theta0": "rad", "pga": "m/s^2",
+               "heading": "deg",
                "floor_pga": "m/s^2", "load_factor": "", "amplitude": "", "noise": "m/s^2",
                "max_abs_theta_over_alpha": "", "damage_state": "", "lifted_off": ""}
 """The units of the campaign's input and derived columns (SI; ``""``: none), written with
@@ -141,9 +147,13 @@ def column_units(models) -> dict:
 
 def motion_im(mo: Motion, im: str, block: Block | None = None) -> float:
     """The intensity measure ``im`` of ``mo``; a ground motion's is its horizontal
-    component's; the PGA is the motion's own (:attr:`rocking.motions.Motion.pga`: exact
-    where the kind states it, else the motion sampled at ``min(scan_step, 0.005)``, as the
-    other IMs here)."""
+    component's; a :class:`~rocking.motions.HorizontalPair`'s the larger of its two
+    horizontal components' (the PGA: the larger component's PGA, as recorded: it does
+    not depend on the heading); the PGA is the motion's own
+    (:attr:`rocking.motions.Motion.pga`: exact where the kind states it, else the motion
+    sampled at ``min(scan_step, 0.005)``, as the other IMs here)."""
+    if isinstance(mo, HorizontalPair):
+        return max(motion_im(c, im, block) for c in (mo.first, mo.second))
     if isinstance(mo, GroundMotion):
         mo = mo.horizontal if mo.scale == 1.0 else mo.horizontal.scaled(mo.scale)
     if im == "pga":
@@ -398,10 +408,14 @@ class Campaign:
                                  dtype=float) * amp
         motion_ids = np.array([self.motions.id(j) for j in uj.tolist()], dtype=object)
         runs = s.runs
+        nh = max(1, len(s.headings))
         table = pd.DataFrame({
             "sim_id": ids, "model": np.array([m for m, _ in runs], dtype=object)[ri],
-            **({"mitigation": np.array([m.name for m in s.mitigations], dtype=object)[ri]}
+            **({"mitigation": np.array([m.name for m in s.mitigations],
+                                       dtype=object)[ri // nh]}
                if s.mitigations else {}),
+            **({"heading": np.asarray(s.headings, dtype=float)[ri % nh]}
+               if s.headings else {}),
             "block": bi.astype(np.int64),
             "block_name": np.array([b.name for b in s.blocks], dtype=object)[bi],
             **self._floor_columns(fi),
@@ -420,9 +434,10 @@ class Campaign:
 
     def draw_ids(self, ids) -> np.ndarray:
         """The ids of the random streams of simulations ``ids``: the flat index over the
-        axes without the mitigation axis (``ids`` themselves without ``[[mitigation]]``):
-        every mitigation of a (model, block, floor, motion, level, sample) draws the same
-        uncertain parameters (common random numbers).
+        axes without the mitigation and heading axes (``ids`` themselves without
+        ``[[mitigation]]`` or headings): every mitigation (and heading) of a (model, block,
+        floor, motion, level, sample) draws the same uncertain parameters (common random
+        numbers).
 
         Examples
         --------
@@ -438,11 +453,12 @@ class Campaign:
         """
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
         a = self.spec.axes
-        if a["mitigation"] == 1:
+        shared = ("mitigation", "heading")
+        if all(a[k] == 1 for k in shared):
             return ids
-        idx = list(np.unravel_index(ids, tuple(a.values())))
-        del idx[1]
-        return np.ravel_multi_index(idx, tuple(v for k, v in a.items() if k != "mitigation"))
+        idx = np.unravel_index(ids, tuple(a.values()))
+        keep = [i for i, k in zip(idx, a, strict=True) if k not in shared]
+        return np.ravel_multi_index(keep, tuple(v for k, v in a.items() if k not in shared))
 
     def _floor_columns(self, fi: np.ndarray) -> dict:
         """``floor`` (the floor number; with ``height_ratios`` its index there) and
@@ -510,6 +526,8 @@ class Campaign:
                 v = getattr(res, k)
                 if v is not None:  # None: an output the model does not declare
                     out[k][idx] = v
+            if res.max_abs_theta is None and "max_tilt" in res.outputs:  # a 3-D body
+                out["max_abs_theta"][idx] = res.outputs["max_tilt"]
             for k, v in res.outputs.items():
                 rows_out[k][idx] = v
         table = table.assign(**out)

@@ -157,8 +157,8 @@ def _check(table, manifest) -> tuple[pd.DataFrame, dict, tuple]:
                              "campaign first)")
     im = _im_of(table, manifest)
     if "model" in table.columns:  # damage states need max |theta| / alpha
-        for name in dict.fromkeys(table["model"].tolist()):
-            if name in MODELS:
+        for name in dict.fromkeys(table["model"].tolist()):  # (a 3-D body: its max_tilt)
+            if name in MODELS and "max_tilt" not in {o.name for o in MODELS[name].outputs}:
                 require_planar(name, "the campaign report (damage states and fragility)")
     t = table.copy()
     for col in ("alpha", "load_factor", "pga", "max_abs_theta", "max_abs_theta_over_alpha",

@@ -220,7 +220,7 @@ MITIGATION_KEYS = {
 """The keys of a ``[[mitigation]]`` entry."""
 MAX_NAME = 64
 """Longest ``[[mitigation]]`` name."""
-AXES = ("model", "mitigation", "block", "floor", "motion", "level", "sample")
+AXES = ("model", "mitigation", "heading", "block", "floor", "motion", "level", "sample")
 """The axes of a campaign's table, in the order of ``sim_id`` (the last fastest)."""
 
 
@@ -386,8 +386,9 @@ class MotionAxis:
 
     @property
     def catalog_kind(self) -> catalog.MotionKind:
-        """The catalog entry of the motions."""
-        return catalog.KINDS[self.kind]
+        """The catalog entry of the motions (:data:`~rocking.motions.catalog.KINDS`, or
+        :data:`~rocking.motions.catalog.KINDS_3D`: a pair)."""
+        return catalog.any_kind(self.kind)
 
     def value(self, j: int):
         """The swept parameter's value of motion ``j`` (the index itself for ``n``)."""
@@ -528,11 +529,34 @@ BLOCK_KEYS = {"name", *(k for f in factory.FORMS.values() for k in f.Params.name
 
 def nominal(block) -> Block:
     """The block whose ``alpha``, ``p`` and ``mu`` stand for ``block`` in the table: the
-    block itself, or a :class:`~rocking.Stack`'s top block (whose angle is the result)."""
-    return block.top if isinstance(block, Stack) else block
+    block itself, a :class:`~rocking.Stack`'s top block (whose angle is the result), or
+    for a 3-D body (a :class:`~rocking.shapes.Shape`, model ``rigid3d``) its planar block
+    in its weakest direction (:meth:`rocking.Block.from_shape` along
+    :meth:`~rocking.shapes.Shape.weakest`: the smallest uplift acceleration, the critical
+    tilt ``alpha`` of that side; kept with the body)."""
+    if isinstance(block, Stack):
+        return block.top
+    if isinstance(block, Block):
+        return block
+    planar = _NOMINAL.get(id(block))
+    if planar is None or planar[0] is not block:
+        planar = _NOMINAL[id(block)] = (block, Block.from_shape(block, block.weakest().phi,
+                                                                name=block.name))
+    return planar[1]
 
 
-def _block(i: int, t, base_dir) -> tuple[list, list]:
+_NOMINAL: dict = {}
+
+
+def is_3d(model: str) -> bool:
+    """True for a model of a 3-D body (:func:`rocking.models.is_3d`: ``rigid3d``): its
+    bodies are 3-D shapes (:func:`rocking.blocks.factory.make_body`)."""
+    from ..models import is_3d as three_d
+
+    return three_d(model)
+
+
+def _block(i: int, t, base_dir, body: bool = False) -> tuple[list, list]:
     """``[[blocks]]`` table ``i`` through :func:`rocking.blocks.factory.make_blocks` (one
     block, or one per item of a mesh's ``direction`` list, in place); without a ``name``,
     the form's name and the block's place (``0.25 x 1 m block (blocks[1])``), except a
@@ -542,7 +566,8 @@ def _block(i: int, t, base_dir) -> tuple[list, list]:
     t = _table(key, t)
     try:
         form = factory.form_of({k: v for k, v in t.items() if k != "name"})
-        bs = factory.make_blocks(t, base_dir=base_dir)
+        bs = ([factory.make_body(t, base_dir=base_dir)] if body
+              else factory.make_blocks(t, base_dir=base_dir))
         if "name" not in t and form.name != "specimen":
             bs = [factory.renamed(b, f"{b.name} ({key})") for b in bs]
     except (RockingError, TypeError, ValueError) as e:
@@ -551,8 +576,9 @@ def _block(i: int, t, base_dir) -> tuple[list, list]:
     return bs, digests
 
 
-def _blocks(raw: dict, base_dir=".") -> tuple[tuple, tuple]:
-    """The blocks of ``[[blocks]]`` and the digests of the files they name."""
+def _blocks(raw: dict, base_dir=".", body: bool = False) -> tuple[tuple, tuple]:
+    """The blocks of ``[[blocks]]`` and the digests of the files they name (``body``: the
+    3-D bodies of a 3-D model, :func:`rocking.blocks.factory.make_body`)."""
     if "blocks" not in raw:
         _fail("blocks", "missing (one [[blocks]] table per block)")
     if not isinstance(raw["blocks"], list) or not raw["blocks"]:
@@ -569,7 +595,7 @@ def _blocks(raw: dict, base_dir=".") -> tuple[tuple, tuple]:
                            f"blocks[{named[b['name'].strip()]}] (names are unique: the "
                            "report, risk.csv and pelicun.csv group the runs by them)")
             named[b["name"].strip()] = i
-        bs, ds = _block(i, b, base_dir)
+        bs, ds = _block(i, b, base_dir, body)
         blocks += bs
         digests += ds
     return tuple(factory.unique_names(blocks)), tuple(digests)
@@ -645,7 +671,7 @@ def _motion_kind(t: dict) -> catalog.MotionKind:
     if "kind" not in t:
         _fail("motions.kind", f"missing (one of {', '.join(catalog.KINDS)})")
     try:
-        kind = catalog.kind(t["kind"])
+        kind = catalog.any_kind(t["kind"])
     except ParameterError as e:
         _param_fail("motions", e, {"kind"})
     counted = {COUNT} if COUNTER in kind.sweep else set()
@@ -838,7 +864,7 @@ def _motions(t, base_dir: Path, seed: int) -> MotionAxis:
 def motion_kind(m) -> catalog.MotionKind:
     """The catalog entry of a checked ``[motions]`` table (a :class:`MotionAxis`, or its
     :meth:`~MotionAxis.to_dict`)."""
-    return catalog.KINDS[m.kind if isinstance(m, MotionAxis) else m["kind"]]
+    return catalog.any_kind(m.kind if isinstance(m, MotionAxis) else m["kind"])
 
 
 def motion_value(m, j: int):
@@ -1107,6 +1133,10 @@ class CampaignSpec:
     """The checked ``[hazard]``: the manifest's record of the site's hazard curve
     (:func:`rocking.campaign.hazard.record`), or None. Not in :attr:`hash`: it changes no
     run, only the report."""
+    headings: tuple = ()
+    """The heading axis (deg; a 3-D model's ``[options.rigid3d] heading`` given as a list
+    or grid: the body's x axis from a pair's first component), or ``()``: none (size 1,
+    the table without a ``heading`` column)."""
 
     @property
     def motions(self) -> dict:
@@ -1130,11 +1160,14 @@ class CampaignSpec:
     @property
     def runs(self) -> tuple[tuple[str, dict], ...]:
         """``(model, options)`` of each index of the first axis of :attr:`shape` (the
-        models, or with ``[[mitigation]]`` the mitigations of the single model): what a row
+        models, or with ``[[mitigation]]`` the mitigations of the single model; with a
+        heading axis each of them once per heading, the heading fastest): what a row
         runs."""
-        if self.mitigations:
-            return tuple((m.model, m.options) for m in self.mitigations)
-        return tuple((m, self.options.get(m, {})) for m in self.models)
+        base = (tuple((m.model, m.options) for m in self.mitigations) if self.mitigations
+                else tuple((m, self.options.get(m, {})) for m in self.models))
+        if not self.headings:
+            return base
+        return tuple((m, {**o, "heading": h}) for m, o in base for h in self.headings)
 
     @property
     def run_models(self) -> tuple[str, ...]:
@@ -1181,12 +1214,14 @@ class CampaignSpec:
 
     @property
     def axes(self) -> dict[str, int]:
-        """The size of each axis of :data:`AXES` (``model``, ``mitigation``, ``block``,
-        ``floor``, ``motion``, ``level``, ``sample``), in the order of ``sim_id`` (the last
-        fastest): the mitigation axis has size 1 without ``[[mitigation]]`` and the floor
-        axis without ``[building]``, so that the ids of a spec without them are those of
-        the other axes."""
+        """The size of each axis of :data:`AXES` (``model``, ``mitigation``, ``heading``,
+        ``block``, ``floor``, ``motion``, ``level``, ``sample``), in the order of ``sim_id``
+        (the last fastest): the mitigation axis has size 1 without ``[[mitigation]]``, the
+        heading axis without a list of headings and the floor axis without
+        ``[building]``, so that the ids of a spec without them are those of the other
+        axes."""
         return dict(zip(AXES, (len(self.models), max(1, len(self.mitigations)),
+                               max(1, len(self.headings)),
                                len(self.blocks), len(self.floors), self.n_motions,
                                self.levels.size, self.samples), strict=True))
 
@@ -1194,11 +1229,12 @@ class CampaignSpec:
     def shape(self) -> tuple[int, int, int, int, int, int]:
         """``(runs, blocks, floors, motions, levels, samples)``: the axes of the
         simulation table, ``sim_id`` running fastest over the last; ``runs`` is the model
-        axis, or with ``[[mitigation]]`` (one model) the mitigation axis: :attr:`runs`.
+        axis, or with ``[[mitigation]]`` (one model) the mitigation axis, times the
+        heading axis: :attr:`runs`.
         The same ids as :attr:`axes` (one of the model and mitigation axes has size 1)."""
         a = self.axes
-        return (a["model"] * a["mitigation"], a["block"], a["floor"], a["motion"],
-                a["level"], a["sample"])
+        return (a["model"] * a["mitigation"] * a["heading"], a["block"], a["floor"],
+                a["motion"], a["level"], a["sample"])
 
     @property
     def n_sims(self) -> int:
@@ -1290,9 +1326,10 @@ def _uncertain(raw: dict, c: dict, blocks: tuple, motions: MotionAxis,
 
 
 def _check_size(c: dict, blocks: tuple, motions: MotionAxis, building: BuildingAxis | None,
-                n_mitigations: int = 0) -> None:
+                n_mitigations: int = 0, n_headings: int = 0) -> None:
     floors = [0] if building is None else building.values
-    shape = (len(c["models"]) * max(1, n_mitigations), len(blocks), len(floors),
+    shape = (len(c["models"]) * max(1, n_mitigations) * max(1, n_headings), len(blocks),
+             len(floors),
              motions.n, len(motions.intensity_levels), c["samples"])
     if math.prod(shape) > MAX_SIMS:
         axes = {"mitigation" if n_mitigations else "campaign.model": shape[0],
@@ -1365,7 +1402,10 @@ def _options(raw: dict, models) -> dict:
     _known("options", opts, models)
     options = {}
     for m, o in opts.items():
-        o = option_values(m, _table(f"options.{m}", o), f"options.{m}")
+        o = _table(f"options.{m}", o)
+        if is_3d(m) and isinstance(o.get("heading"), list | dict):
+            o = {k: v for k, v in o.items() if k != "heading"}  # the heading axis
+        o = option_values(m, o, f"options.{m}")
         _build_options(m, o, f"options.{m}")
         options[m] = dict(o)
     return options
@@ -1480,15 +1520,23 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
         raise SpecError(f"spec: not valid TOML: {e}") from None
     _known("", raw, SECTIONS)
     c = _campaign(raw)
-    blocks, block_digests = _blocks(raw, Path(base_dir).resolve())
+    entries = _mitigation_entries(raw, c)
+    run_models = tuple(dict.fromkeys(e[1] for e in entries)) if entries else c["models"]
+    body = _three_d(c, run_models, raw)
+    blocks, block_digests = _blocks(raw, Path(base_dir).resolve(), body)
     if "motions" not in raw:
         _fail("motions", "missing (a [motions] table with kind)")
     motions = _motions(raw["motions"], Path(base_dir).resolve(), c["seed"])
-    entries = _mitigation_entries(raw, c)
-    run_models = tuple(dict.fromkeys(e[1] for e in entries)) if entries else c["models"]
+    if motions.kind in catalog.KINDS_3D and not body:
+        _fail("motions.kind", f"{motions.kind!r} (two horizontal components) needs a 3-D "
+                              f"model: campaign.model = \"rigid3d\" (the planar models take "
+                              "one component)")
     uncertain = _uncertain(raw, c, blocks, motions, run_models)
     building = _building(raw)
-    _check_size(c, blocks, motions, building, len(entries))
+    headings = _headings(raw, run_models)
+    if body:
+        _orientation(raw, run_models, motions.kind in catalog.KINDS_3D)
+    _check_size(c, blocks, motions, building, len(entries), len(headings))
     chunk, window = _run(raw)
     options = _options(raw, tuple(dict.fromkeys(c["models"] + run_models)))
     mitigations = _mitigations(entries, options)
@@ -1502,7 +1550,7 @@ def parse_spec(text: str, base_dir=".") -> CampaignSpec:
                         base_dir=str(Path(base_dir).resolve()),
                         max_free_time=c["max_free_time"], building_axis=building,
                         mitigations=mitigations, block_digests=block_digests,
-                        hazard=hazard)
+                        hazard=hazard, headings=headings)
 
 
 def read_spec(path) -> CampaignSpec:
@@ -1562,7 +1610,7 @@ def _several(kind: catalog.MotionKind, d: dict) -> str:
 def _motion_rows() -> list[list]:
     rows = [["(all)", f"`{k}`", "", "", "", "", h] for k, h in
             {"kind": "the motion kind (below)", **INTENSITY_KEYS}.items()]
-    for k in catalog.KINDS.values():
+    for k in [*catalog.KINDS.values(), *catalog.KINDS_3D.values()]:
         if COUNTER in k.sweep:
             rows.append([f"`{k.name}`", f"`{COUNT}`", "", "[0, 1e7]", "required", "",
                          f"the records {COUNTER} = 0 .. n-1 (or give {COUNTER})"])
@@ -1595,7 +1643,11 @@ def keys_table() -> str:
     blocks += [[f"{f.name} (`{f.key}`)", f"`{d['name']}`", d["unit"], d["range"],
                 _default(d), d["help"]] for f in factory.FORMS.values() for d in f.describe()]
     out += ["", "**`[[blocks]]`**, one table per block; its form is told by its key (a "
-            "stack is stood for by its top block in `alpha`, `p`, `mu`):", ""]
+            "stack is stood for by its top block in `alpha`, `p`, `mu`). A 3-D model "
+            "(`rigid3d`, which then runs alone) takes 3-D bodies: `box`, `cylinder`, a `mesh` "
+            "(the whole mesh, without its planar keys), or a rectangle or specimen as a box; "
+            "its rows' `alpha`, `p`, `mu` are those of the body's weakest direction and "
+            "`max_abs_theta` its `max_tilt`:", ""]
     out += _rows(["form", "key", "unit", "range", "default", "meaning"], blocks)
     out += ["", "**`[motions]`**: `kind` and that kind's parameters; at most one parameter "
             "gives several motions (the motion axis), as a list, a grid `{start, stop, num, "
@@ -1610,7 +1662,10 @@ def keys_table() -> str:
     out += ["", "**`[run]`**", ""] + _rows(["key", "meaning"],
                                           [[f"`{k}`", h] for k, h in RUN_KEYS.items()])
     out += ["", "**`[options.<model>]`**: the model's options, as `rocking models` lists "
-            "them (a quantity may carry its unit: `\"2.5s\"`, `\"0.15m\"`, `\"10%\"`)."]
+            "them (a quantity may carry its unit: `\"2.5s\"`, `\"0.15m\"`, `\"10%\"`). "
+            "`[options.rigid3d] heading` (deg) given as a list or a grid is the heading axis "
+            "(after the model and mitigation axes; a `heading` column): every run once per "
+            "heading of the pair."]
     out += ["", "**`[[mitigation]]`** (optional): one table per mitigation, the mitigation "
             "axis (after the model axis; `campaign.model` then a single model); the table "
             "gets a `mitigation` column and the models' row outputs:", ""]
@@ -1643,3 +1698,72 @@ def write_keys_table(readme) -> None:
     head, _, rest = text.partition(KEYS_START)
     _, _, tail = rest.partition(KEYS_END)
     p.write_text(f"{head}{KEYS_START}\n{keys_table()}{KEYS_END}{tail}", encoding="utf-8")
+
+
+# ------------------------------------------------------------------------------- 3-D
+HEADING_KEY = "heading"
+"""``[options.rigid3d] heading`` given as a list or a grid ``{start, stop, num}`` (deg)
+sets the heading axis (:attr:`CampaignSpec.headings`): every run once per heading."""
+
+
+def _three_d(c: dict, run_models: tuple, raw: dict) -> bool:
+    """True if the campaign runs a 3-D model (``rigid3d``): then it runs 3-D models only
+    (its ``[[blocks]]`` are 3-D bodies), with neither ``[uncertain]`` nor ``[building]``."""
+    models = tuple(dict.fromkeys(c["models"] + run_models))
+    three = [m for m in models if is_3d(m)]
+    if not three:
+        return False
+    if len(three) != len(models):
+        planar = next(m for m in models if not is_3d(m))
+        _fail("campaign.model", f"{three[0]!r} is a 3-D model (its [[blocks]] are 3-D bodies: "
+                                f"box, cylinder, mesh) and {planar!r} a planar one: run them "
+                                "in separate campaigns")
+    for section, why in (("uncertain", "a 3-D body's geometry is its shape"),
+                         ("building", "floor motions are one horizontal component")):
+        if section in raw:
+            _fail(section, f"not supported with model {three[0]!r} ({why})")
+    return True
+
+
+def _headings(raw: dict, models: tuple) -> tuple[float, ...]:
+    """The heading axis (deg): ``[options.<3-D model>] heading`` as a list or a grid;
+    ``()`` when it is a single value or absent."""
+    opts = raw.get("options", {})
+    if not isinstance(opts, dict):
+        return ()
+    for m in models:
+        o = opts.get(m)
+        if not (is_3d(m) and isinstance(o, dict) and isinstance(o.get(HEADING_KEY),
+                                                               list | dict)):
+            continue
+        key = f"options.{m}.{HEADING_KEY}"
+        v = o[HEADING_KEY]
+        values = grid(key, v, -360.0, lo_open=False).tolist() if isinstance(v, dict) else [
+            _number(f"{key}[{i}]", x, -360.0, 360.0) for i, x in enumerate(v)]
+        if not values:
+            _fail(key, "is empty (a list of headings in deg, or one number)")
+        if any(not -360.0 <= x <= 360.0 for x in values):
+            _fail(key, "must lie in [-360, 360] deg")
+        if len(set(values)) != len(values):
+            _fail(key, "has repeated values (one heading each)")
+        return tuple(float(x) for x in values)
+    return ()
+
+
+def _orientation(raw: dict, models: tuple, pair: bool) -> None:
+    """Never an option the runs would ignore: ``heading`` orients a pair (``kind =
+    "pair"``), ``direction`` a single horizontal motion (with a pair it only says where
+    ``tilt0`` leans)."""
+    opts = raw.get("options", {})
+    tables = [(f"options.{m}", opts.get(m)) for m in models]
+    tables += [(f"mitigation[{i}]", e) for i, e in enumerate(raw.get("mitigation") or [])]
+    for key, t in tables:
+        if not isinstance(t, dict):
+            continue
+        if "heading" in t and not pair:
+            _fail(f"{key}.heading", 'orients a pair of horizontal components (motions.kind = '
+                                    '"pair"); a single horizontal motion acts along direction')
+        if "direction" in t and pair and not t.get("tilt0"):
+            _fail(f"{key}.direction", "with a pair the body's orientation is heading (deg "
+                                      "from the first component); direction only says where "
+                                      "tilt0 leans")

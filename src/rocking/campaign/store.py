@@ -97,13 +97,16 @@ def record_name(k: int) -> str:
 
 def _axes(spec: CampaignSpec) -> dict:
     """``axes`` and ``shape``: the axes of :attr:`CampaignSpec.axes`, without the floor
-    axis when there is no building and without the mitigation axis when there is no
-    ``[[mitigation]]`` (the five axes of the stores written before either existed)."""
+    axis when there is no building, without the mitigation axis when there is no
+    ``[[mitigation]]`` and without the heading axis when there is no list of headings
+    (the five axes of the stores written before any existed)."""
     a = spec.axes
     if spec.building is None:
         del a["floor"]
     if not spec.mitigations:
         del a["mitigation"]
+    if not spec.headings:
+        del a["heading"]
     return {"axes": list(a), "shape": list(a.values())}
 
 
@@ -144,6 +147,7 @@ def manifest_for(spec: CampaignSpec) -> dict:
         **_axes(spec),
         "models": list(spec.models),
         **_mitigations(spec),
+        **({"headings": list(spec.headings)} if spec.headings else {}),
         "blocks": [{"name": b.name, "alpha": nominal(b).alpha, "p": nominal(b).p,
                     "mu": nominal(b).mu} for b in spec.blocks],  # a stack: its top block
         "motions": spec.motions,
@@ -158,7 +162,8 @@ def manifest_for(spec: CampaignSpec) -> dict:
             "campaign_seed": spec.seed,
             "simulation": (f"SeedSequence({spec.seed}, spawn_key=({STREAM}, draw_id)): "
                            "draw_id the flat index over the axes without the mitigation "
-                           "axis (common random numbers)" if spec.mitigations else
+                           "and heading axes (common random numbers)"
+                           if spec.mitigations or spec.headings else
                            f"SeedSequence({spec.seed}, spawn_key=({STREAM}, sim_id))"),
             "stochastic_records": f"SeedSequence({spec.seed}, spawn_key=(2, motion))",
         },

@@ -143,12 +143,16 @@ def block_options(classical: bool = False, mass: bool = False):
     mesh_help = {
         "mesh": ("FILE", "A 3-D mesh (STL, OBJ, PLY): its planar block in --direction "
                  "(rocking.shapes; 'rocking shape FILE' tabulates the directions)."),
-        "density": ("RHO", "Density of the --mesh (kg/m^3), or --mass."),
-        "mass": ("M", "Mass of the --mesh (kg), instead of --density."),
+        "density": ("RHO", "Density of the --mesh (or rigid3d's --box, --cylinder; "
+                    "kg/m^3), or --mass."),
+        "mass": ("M", "Mass of the --mesh (or --box, --cylinder; kg), instead of "
+                 "--density."),
         "up": ("AXIS", "The --mesh's vertical axis: x, y, z (default), -x, -y, -z."),
-        "direction": ("DIR", "Direction of shaking of the --mesh from its x axis, "
+        "direction": ("DIR", "Direction of shaking from the body's x axis, "
                       "counter-clockwise looking down --up (bare number: deg; 0.5rad), "
-                      "weakest or strongest (default 0)."),
+                      "weakest or strongest (default 0): the --mesh's planar block; "
+                      "rigid3d: where a single horizontal motion acts (its option "
+                      "direction)."),
         "units": ("U", "Length unit of the --mesh file: m (default), cm, mm."),
         "repair": ("hull", "Use the convex hull of an open or inconsistent --mesh."),
     }

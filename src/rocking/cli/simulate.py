@@ -11,6 +11,15 @@
         --param gamma=2 --param nu=0
     rocking simulate --specimen 2 --record Rinaldi228 --building shear --storeys 5 \\
         --building-period 0.5 --building-damping 5% --floor 3
+    rocking simulate --model rigid3d --mesh statue.ply --density 2600 \\
+        --pair H1.AT2 H2.AT2 --vertical UP.AT2 --heading 30 --out out/
+    rocking simulate --model rigid3d --box 0.4 0.4 1.2 --record Rinaldi228 --direction 30
+
+A 3-D model (``--model rigid3d``) takes a body (``--mesh``, ``--box LX LY LZ``,
+``--cylinder R H``, or a rectangular block or specimen as a box), a single motion along
+``--direction`` or a pair of horizontal components (``--pair H1 H2``, ``--vertical``) at
+``--heading``, and ``--out`` writes its tilt, slide and twist, the path of its centre of
+mass and its overturning azimuth: :mod:`rocking.cli.simulate3d`.
 
 Motions are built by :mod:`rocking.motions.catalog` (``rocking motions`` lists the kinds):
 ``--motion`` is a kind's name, ``--amp``, ``--freq``, ``--tp`` and ``--duration`` set its
@@ -52,8 +61,9 @@ Options WITHOUT a flag, since theirs is already a flag of this command (set them
 ``--option KEY=VALUE``): ``dt`` (ccrr, dem: ``--dt`` is a record's time step), ``mu``
 (isolated's restitution: ``--mu`` overrides the block's, which that model does not use, so
 ``--mu`` with it is refused), ``linear`` (housner: ``--linear`` is that option
-already) and ``direction`` (rigid3d's direction of a single horizontal motion, deg:
-``--direction`` is a mesh's direction of the planar analysis; issue 30 joins them).
+already) and ``direction`` (rigid3d: ``--direction`` is that option already, the
+direction of shaking from the body's x axis, the same quantity as a ``--mesh``'s planar
+direction: :mod:`rocking.cli.simulate3d`).
 ``ModelFlagsCommand.skipped()`` lists them; a test checks this list against it.
 
 Models with row outputs (:attr:`rocking.models.base.Model.row_outputs`: the isolated
@@ -79,6 +89,7 @@ from .._validate import as_float
 from ..errors import ParameterError
 from ..options import check_option
 from ..units import ACCELERATION, LENGTH, G, split_quantity
+from . import simulate3d
 from .common import (
     BUILDING_FLAGS,
     CONTEXT,
@@ -106,6 +117,7 @@ from .common import (
     read_record_arg,
     validate_options,
 )
+from .simulate3d import is_3d, refuse_3d_flags
 
 HARMONIC = ("sine", "hanning")
 PULSES = ("one_sine", "one_cosine", "half_sine", "rectangular")
@@ -547,9 +559,25 @@ class SimulateRequest:
                      max_free_time, record, vertical, vertical_factor, units, dt, earthquake,
                      load_factor, theta0, omega0, linear, dt_out, building, storeys,
                      building_period, building_damping, building_params, floor,
-                     height_ratio, out, as_json, **model_flags):
+                     height_ratio, out, as_json, box=None, cylinder=None, pair=None,
+                     **model_flags):
         """The request of the command's options (click's values; ``model_flags``: the
-        generated flags of the models' options)."""
+        generated flags of the models' options). A 3-D model (``rigid3d``): the body, pair
+        and direction of :mod:`rocking.cli.simulate3d`."""
+        if is_3d(model):
+            return cls._from_options_3d(
+                specimen=specimen, params_set=params_set, width=width, height=height,
+                alpha=alpha, p=p, mu=mu, model=model, model_opts=model_opts, motion=motion,
+                freq=freq, amp=amp, tp=tp, motion_params=motion_params, duration=duration,
+                max_free_time=max_free_time, record=record, vertical=vertical,
+                vertical_factor=vertical_factor, units=units, dt=dt, earthquake=earthquake,
+                load_factor=load_factor, theta0=theta0, omega0=omega0, linear=linear,
+                dt_out=dt_out, building=building, storeys=storeys,
+                building_period=building_period, building_damping=building_damping,
+                building_params=building_params, floor=floor, height_ratio=height_ratio,
+                out=out, as_json=as_json, box=box, cylinder=cylinder, pair=pair,
+                model_flags=model_flags)
+        refuse_3d_flags(model, box, cylinder, pair)
         block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
                                   allow_classical=True)
         mot, mdesc, sim_dur = make_motion(motion, freq, amp, tp, duration, record, units, dt,
@@ -572,6 +600,66 @@ class SimulateRequest:
                    linear=bool(options.get("linear", False)), theta0=th0, omega0=om0,
                    run=run, out=out, as_json=as_json)
 
+    @classmethod
+    def _from_options_3d(cls, *, specimen, params_set, width, height, alpha, p, mu, model,
+                         model_opts, motion, freq, amp, tp, motion_params, duration,
+                         max_free_time, record, vertical, vertical_factor, units, dt,
+                         earthquake, load_factor, theta0, omega0, linear, dt_out, building,
+                         storeys, building_period, building_damping, building_params, floor,
+                         height_ratio, out, as_json, box, cylinder, pair, model_flags):
+        """The request of a 3-D model (:mod:`rocking.cli.simulate3d`)."""
+        for flag, v in (("theta0", theta0), ("omega0", omega0)):
+            if v is not None:
+                raise ParameterError(f"{flag}: --model {model} has no planar angle; give its "
+                                     "initial tilt as --tilt0 (rad)")
+        body, binfo, direction = simulate3d.make_body(specimen, params_set, width, height,
+                                                      alpha, p, mu, box, cylinder)
+        options = model_options(model, model_opts, flags=model_flags_given(model_flags))
+        _linear_option(model, linear, options)
+        if direction is not None:
+            if "direction" in options:
+                raise ParameterError("option direction given twice (--direction and "
+                                     "--option direction=...)")
+            options["direction"] = simulate3d.direction_deg(body, direction)
+            binfo["direction"] = str(direction)
+            validate_options(model, options)
+        simulate3d.check_orientation(options, bool(pair), direction)
+        if pair:
+            for flag, v in (("record", record), ("motion", motion),
+                            ("earthquake", earthquake)):
+                if v is not None:
+                    raise ParameterError(f"{flag}: --pair is the motion; --{flag} cannot be "
+                                         "combined with it")
+            for flag, v in (("freq", freq), ("amp", amp), ("tp", tp),
+                            ("param", motion_params or None)):
+                if v is not None:
+                    raise ParameterError(f"{flag} does not apply to --pair")
+            if building is not None:
+                raise ParameterError("building: --building takes one horizontal ground motion "
+                                     "(--record), not --pair")
+            mot, mdesc = simulate3d.make_pair(pair, vertical, vertical_factor, units, dt,
+                                              load_factor)
+            sim_dur = positive_quantity(duration, "time", "duration", "s", "s")
+            fdesc = None
+        else:
+            mot, mdesc, sim_dur = make_motion(motion, freq, amp, tp, duration, record, units,
+                                              dt, load_factor, earthquake, vertical,
+                                              vertical_factor, params=motion_params)
+            mot, fdesc = on_floor(mot, {"kind": building, "storeys": storeys,
+                                        "period": building_period,
+                                        "damping": building_damping,
+                                        "param": building_params}, floor, height_ratio)
+        run = _run_settings(dt_out, max_free_time, sim_dur)
+        return cls(block=body, block_info=binfo, motion=mot, motion_info=mdesc,
+                   floor_info=fdesc, duration=sim_dur, model=model, options=options,
+                   linear=False, theta0=None, omega0=None, run=run, out=out,
+                   as_json=as_json)
+
+    @property
+    def is_3d(self) -> bool:
+        """A 3-D model's request (``rigid3d``)."""
+        return is_3d(self.model)
+
     def simulate(self):
         """The response of :func:`rocking.models.simulate`."""
         from ..models import simulate  # lazy: the models import numba
@@ -586,10 +674,13 @@ def _summary(req: SimulateRequest, resp) -> dict:
     """summary.json: the response's summary with the inputs of the run."""
     block, binfo, fdesc = req.block, req.block_info, req.floor_info
     summary = resp.summary()
-    inputs = {"block": {**binfo, "alpha": block.alpha, "p": block.p, "mu": block.mu,
-                        "R": block.R, "name": block.name},
-              "model": req.model, "linear": bool(req.linear), "motion": req.motion_info,
-              "theta0": req.theta0 or 0.0, "omega0": req.omega0 or 0.0}
+    blk = (simulate3d.summary_block(block, binfo) if req.is_3d else
+           {**binfo, "alpha": block.alpha, "p": block.p, "mu": block.mu, "R": block.R,
+            "name": block.name})
+    inputs = ({"block": blk, "model": req.model, "motion": req.motion_info} if req.is_3d
+              else {"block": blk, "model": req.model, "linear": bool(req.linear),
+                    "motion": req.motion_info, "theta0": req.theta0 or 0.0,
+                    "omega0": req.omega0 or 0.0})  # a 3-D body: tilt0 among the options
     if req.options:
         inputs["options"] = req.options
     inputs.update(req.run)
@@ -610,15 +701,33 @@ def _write_outputs(req: SimulateRequest, resp, summary: dict) -> None:
     resp.to_csv(folder / "response.csv")
     atomic_write(folder / "summary.json",
                  json.dumps(summary, indent=2, default=json_default))
-    _theta_png(resp, req.block, req.motion_info, folder / "theta.png", req.floor_info)
+    if req.is_3d:
+        mdesc = req.motion_info
+        what = (simulate3d.motion_title(mdesc, req.options) if mdesc.get("type") == "pair"
+                else f"{_motion_title(mdesc)}, direction "
+                     f"{req.options.get('direction', 0.0):g} deg")
+        simulate3d.write_plots(resp, f"{req.block.name or 'body'}: {what}", folder)
+        plots = ", ".join(simulate3d.PLOTS)
+    else:
+        _theta_png(resp, req.block, req.motion_info, folder / "theta.png", req.floor_info)
+        plots = "theta.png"
     if not req.as_json:
-        click.echo(f"wrote       {folder / 'response.csv'}, summary.json, theta.png")
+        click.echo(f"wrote       {folder / 'response.csv'}, summary.json, {plots}")
 
 
 # ----------------------------------------------------------------------------- command
 @click.command("simulate", cls=ModelFlagsCommand, flag_help=FLAG_HELP,
-               option_flags={"linear": "--linear"}, context_settings=CONTEXT)
+               option_flags={"linear": "--linear", "direction": "--direction"},
+               context_settings=CONTEXT)
 @block_options(classical=True)
+@click.option("--box", nargs=3, metavar="LX LY LZ", default=None,
+              help="rigid3d: a box (m; LZ vertical; --density or --mass, default "
+                   "1000 kg/m^3).")
+@click.option("--cylinder", nargs=2, metavar="R H", default=None,
+              help="rigid3d: a circular cylinder of radius R and height H (m).")
+@click.option("--pair", nargs=2, metavar="H1 H2", default=None,
+              help="rigid3d: two horizontal components (files or built-in names, e.g. "
+                   "Rinaldi228 Rinaldi318; --vertical UP too), oriented by --heading.")
 @click.option("--model", type=ModelChoice(), default="housner", show_default=True,
               help="Rocking model (see 'rocking models').")
 @click.option("--option", "model_opts", multiple=True, metavar="KEY=VALUE",
@@ -683,6 +792,12 @@ def simulate_cmd(**options):
                    f"outcome may change; {fix}", err=True)
     if req.as_json:
         click.echo(json.dumps(summary, indent=2, default=json_default))
+    elif req.is_3d:
+        width = max((len(k) for k in outputs), default=0) + 2
+        click.echo("\n".join(
+            simulate3d.text_lines(resp, req.block, req.model, req.motion_info, req.options,
+                                  req.floor_info)
+            + [f"{k:<{width}}{row_output_text(d)}" for k, d in outputs.items()]))
     else:
         click.echo("\n".join(_text_lines(resp, req.block, req.model, req.linear,
                                           req.motion_info, req.floor_info, outputs)))

@@ -30,6 +30,7 @@ from .registry import MODELS, available, register
 from .run import (
     PackedMotions,
     get_model,
+    is_3d,
     pack_motions,
     require_planar,
     simulate,
@@ -38,5 +39,5 @@ from .run import (
 
 __all__ = ["Model", "ModelOptions", "option", "row_args", "same_block", "store_row",
            "set_planar_result", "Output", "GENERIC_OUTPUTS", "PLANAR_OUTPUTS", "Batch",
-           "MODELS", "available", "register", "get_model", "require_planar", "pack_motions",
-           "PackedMotions", "simulate", "simulate_many"]
+           "MODELS", "available", "register", "get_model", "require_planar", "is_3d",
+           "pack_motions", "PackedMotions", "simulate", "simulate_many"]

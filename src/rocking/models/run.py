@@ -98,6 +98,20 @@ def require_planar(model, what: str) -> type[Model]:
     return cls
 
 
+def is_3d(model) -> bool:
+    """True for a model of a 3-D body: its state has an orientation quaternion
+    (``q0 .. q3`` among ``Model.state_names``: ``rigid3d``), its block is a
+    :class:`rocking.shapes.Shape`.
+
+    Examples
+    --------
+    >>> from rocking.models import is_3d
+    >>> is_3d("rigid3d"), is_3d("housner")
+    (True, False)
+    """
+    return {"q0", "q1", "q2", "q3"} <= set(get_model(model).state_names)
+
+
 def _make(model, block, linear: bool, options: dict) -> Model:
     cls = get_model(model)
     if check_linear(linear):

@@ -463,6 +463,86 @@ KINDS: dict[str, MotionKind] = {k.name: k for k in (
 )}
 """The motion kinds by name."""
 
+
+
+# ----------------------------------------------------------------- 3-D kinds (pairs)
+@dataclass(frozen=True)
+class PairParams(Options):
+    set: str | None = option(REQUIRED, help="a three-component set shipped with the package "
+                             "(rocking.motions.builtin_sets; or give file and second_file)",
+                             kind=str)
+    file: str | None = option(REQUIRED, help="first horizontal component's file (with "
+                              "second_file)", kind=str)
+    second_file: str | None = option(REQUIRED, help="second horizontal component's file",
+                                     kind=str)
+    vertical_file: str | None = option(REQUIRED, help="vertical component's file (positive "
+                                       "upwards; optional)", kind=str)
+    units: str = option("g", help="unit of the files' accelerations", choices=_UNITS)
+    dt: float | None = option(REQUIRED, help="time step of one-column files", unit="s",
+                              lo=0.0, quantity="time")
+    vertical_factor: float = option(1.0, help="the vertical component times this (relative "
+                                    "to the horizontal ones; 0: without it)", lo=0.0,
+                                    lo_open=False)
+
+    def check(self):
+        if (self.set is None) == (self.file is None):
+            raise ParameterError("set or file: give exactly one (a built-in set, or the "
+                                 "first horizontal file with its second_file)")
+        if self.set is not None:
+            if self.set not in _set_names():
+                raise ParameterError(f"set must be one of {', '.join(_set_names())}; got "
+                                     f"{self.set!r}")
+            for k in ("second_file", "vertical_file"):
+                if getattr(self, k) is not None:
+                    raise ParameterError(f"{k} applies with file, not with set")
+        elif self.second_file is None:
+            raise ParameterError("second_file is required with file (the second horizontal "
+                                 "component)")
+
+
+def _pair(p: PairParams, ctx: Context):
+    from .pair import HorizontalPair
+
+    if p.set is not None:
+        pair = HorizontalPair.builtin(p.set, vertical=p.vertical_factor > 0.0)
+    else:
+        pair = HorizontalPair.from_files(
+            ctx.path(p.file), ctx.path(p.second_file),
+            None if p.vertical_file is None or p.vertical_factor == 0.0
+            else ctx.path(p.vertical_file), units=p.units, dt=p.dt,
+            name=f"{Path(p.file).stem}+{Path(p.second_file).stem}")
+    if pair.vertical is not None and p.vertical_factor != 1.0:
+        pair = HorizontalPair(pair.first, pair.second, azimuths=pair.azimuths,
+                              vertical=pair.vertical.scaled(p.vertical_factor),
+                              name=pair.name)
+    return pair
+
+
+KINDS_3D: dict[str, MotionKind] = {k.name: k for k in (
+    MotionKind("pair", "two horizontal components (and the vertical) for a 3-D model "
+               "(rocking.motions.HorizontalPair; model rigid3d, oriented by its heading)",
+               PairParams, _pair,
+               lambda p: p.set if p.set is not None else f"{p.file}+{p.second_file}",
+               sweep=("set",), vertical=True,
+               files=("file", "second_file", "vertical_file")),
+)}
+"""The motion kinds of the 3-D models (a campaign's ``[motions]``): their motions are not
+:class:`~rocking.motions.Motion` objects of one component but
+:class:`~rocking.motions.HorizontalPair` objects, which only a 3-D model (``rigid3d``)
+takes; kept apart from :data:`KINDS`, which the planar tools enumerate."""
+
+
+def any_kind(name: str, *, param: str = "kind") -> MotionKind:
+    """The entry ``name`` of :data:`KINDS` (:func:`kind`) or of :data:`KINDS_3D`."""
+    if isinstance(name, str) and name in KINDS_3D:
+        return KINDS_3D[name]
+    try:
+        return kind(name, param=param)
+    except ParameterError:
+        raise ParameterError(f"{param} must be one of {', '.join([*KINDS, *KINDS_3D])}; got "
+                             f"{name!r}") from None
+
+
 ALIASES = {a: k.name for k in KINDS.values() for a in k.aliases}
 
 

@@ -179,6 +179,24 @@ class HorizontalPair:
         return cls(r1, r2, azimuths=cls._auto(r1, r2, azimuths), vertical=v, name=name)
 
     @classmethod
+    def from_records(cls, first, second, vertical=None, *, azimuths="auto",
+                     name: str = "") -> HorizontalPair:
+        """A pair of two :class:`Record` objects (and a vertical motion);
+        ``azimuths="auto"``: from the records' NGA headers (``meta["component"]``) when
+        both state a number, else None (as :meth:`from_files`).
+
+        Examples
+        --------
+        >>> from rocking.motions import HorizontalPair, load_builtin
+        >>> pair = HorizontalPair.from_records(load_builtin("Rinaldi228"),
+        ...                                    load_builtin("Rinaldi318"))
+        >>> [round(a, 6) for a in pair.azimuths_deg]
+        [228.0, 318.0]
+        """
+        return cls(first, second, azimuths=cls._auto(first, second, azimuths),
+                   vertical=vertical, name=name)
+
+    @classmethod
     def builtin(cls, name: str, second: str | None = None, *, vertical=True) -> HorizontalPair:
         """A pair shipped with the package: a three-component set by name (``"rinaldi"``,
         ``"duzce"``; :func:`rocking.motions.builtin_sets`) with its vertical component
