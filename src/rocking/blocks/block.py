@@ -45,8 +45,8 @@ attributes ``alpha_plus``/``alpha_minus``, ``p_*``, ``R_*``, ``mu_*`` (equal to 
 ``R``, ``mu`` (and ``uplift_acceleration``) of an asymmetric block are those of its
 *weaker side*, the one with the smaller ``alpha`` ("+" on a tie): the side it uplifts and
 overturns towards first. ``mu`` is then the restitution of the impact that ends rocking on
-that side. The classical model and CCRR use both sides; the other models refuse an
-asymmetric block.
+that side. The classical, CCRR, anchored and isolated models use both sides; the DEM
+rocks the body's outline (geometry ``"body"``) and refuses an asymmetric block otherwise.
 
 All quantities are SI: m, kg, kg m^2, rad, 1/s.
 """
@@ -168,19 +168,6 @@ def _check_sides(sides) -> tuple:
 def _weaker(sides) -> int:
     """Index of the weaker side (the smaller alpha; "+" on a tie)."""
     return 1 if sides[1][0] < sides[0][0] else 0
-
-
-def require_symmetric(block, model: str):
-    """``block`` itself if it (every block of a stack) is symmetric, else one
-    :class:`ParameterError` naming ``model`` (for the models that take symmetric blocks
-    only)."""
-    for b in getattr(block, "blocks", (block,)):
-        if isinstance(b, Block) and not b.symmetric:
-            raise ParameterError(
-                f"model {model!r} takes symmetric blocks only: {b.name or 'the block'} has "
-                f"alpha_plus = {b.alpha_plus:.4g}, alpha_minus = {b.alpha_minus:.4g} rad; "
-                "use model='housner' or 'ccrr' (or a symmetric block)")
-    return block
 
 
 def housner_mu(alpha: float) -> float:
