@@ -53,8 +53,9 @@ Options WITHOUT a flag, since theirs is already a flag of this command (set them
 (isolated's restitution: ``--mu`` is the impact restitution of every model, so with the
 isolated model it imposes that option, derived from the momentum of block and plate
 without it; ``--alpha A --p P --mu MU --model isolated`` runs with ``mu = MU``),
-``linear`` (housner: ``--linear`` is that option already) and ``direction`` (rigid3d's direction of a single horizontal motion, deg:
-``--direction`` is a mesh's direction of the planar analysis; issue 30 joins them).
+``linear`` (housner: ``--linear`` is that option already) and ``direction`` (rigid3d's
+direction of a single horizontal motion, deg: ``--direction`` is a mesh's direction of the
+planar analysis; issue 30 joins them).
 ``ModelFlagsCommand.skipped()`` lists them; a test checks this list against it.
 
 Models with row outputs (:attr:`rocking.models.base.Model.row_outputs`: the isolated
