@@ -316,7 +316,7 @@ def test_models_command_shows_flags_and_outputs():
     rows = {line.split()[0]: line for line in out.splitlines() if line.startswith("  ")}
     assert "--isolation-period" in rows["isolation_period"]
     assert "--clearance" in rows["clearance"]
-    assert "--option mu=" in rows["mu"]  # --mu is the block's restitution
+    assert "--option mu=" in rows["mu"]  # --mu is the command's own (it sets mu too)
     assert "max_base_displacement" in out and "clearance_time" in out
     data = json.loads(invoke("models", "anchored", "--json"))
     assert [m["name"] for m in data] == ["anchored"]
@@ -338,10 +338,11 @@ def test_housner_json_has_no_row_outputs():
     assert d["inputs"]["options"] == {"rest_tol": 1e-6}
 
 
-def test_block_mu_refused_where_the_model_replaces_it(capsys):
-    """The isolated model derives its restitution (or takes its option mu): the block's
-    ``--mu`` would be silently ignored, so it is refused; ``--option mu=`` is the way."""
-    code, _, err = run_main(capsys, *FREE, "--model", "isolated", "--mu", "0.9")
-    assert_one_line_error(code, err, "--option mu=")
+def test_block_mu_is_imposed_where_the_model_has_its_own(capsys):
+    """The isolated model derives its restitution unless its option mu is given: the
+    block's ``--mu`` is that option (never silently ignored), as ``--option mu=`` is
+    (issue 31: ``--alpha A --p P --mu MU`` works, tests/test_asymmetric_mitigation.py)."""
+    d = run_json(*FREE[1:], "--model", "isolated", "--mu", "0.9")
+    assert d["inputs"]["options"]["mu"] == 0.9
     assert model_options("isolated", ("mu=0.9",)) == {"mu": 0.9}
     assert "--linear" in invoke("models", "housner").split("linear", 1)[1].splitlines()[0]

@@ -61,16 +61,16 @@ fig.axes[0].set_rticks([5, 10, 15])              # fewer radial labels: deg
 fig.axes[1].set_rticks([0.1, 0.2, 0.3])          # g
 
 # %%
-# The isolated model takes symmetric blocks only, so for the comparison with isolation we
-# also use a symmetric stand-in with the *weak* side's parameters on both sides (a
-# simplification; the fragility of the stand-in without isolation, below, shows what it
-# changes).
+# Every model takes the statue's two sides, the isolated base included. For comparison
+# only, the body with its *weak* side on both sides (its own restitution, from angular
+# momentum): :doc:`plot_asymmetric_fragility` shows why the statue is about as fragile
+# as that body, and why a stand-in with the weak side's ``mu`` (the restitution of an
+# impact onto the strong pivot) is not.
 
-proxy = rocking.Block.from_params(statue.alpha_minus if weak.side == "-" else
-                                  statue.alpha_plus,
-                                  statue.p_minus if weak.side == "-" else statue.p_plus,
-                                  statue.mu_minus if weak.side == "-" else statue.mu_plus,
-                                  name="statue, weak side on both sides")
+geo = shape.parameters(weak.phi)
+b_weak = min(geo["b_plus"], geo["b_minus"])             # m: the weak side's pivot
+proxy = rocking.Block.from_geometry(geo["h"], b_weak, b_weak, geo["radius_of_gyration"],
+                                    name="statue, weak side on both sides")
 print(proxy)
 
 # %%
@@ -165,8 +165,8 @@ ax.grid(alpha=0.3)
 # restitution (per side) at each impact. Five configurations:
 #
 # * ``free``: the statue as it stands (asymmetric sides);
-# * ``free, proxy``: the symmetric weak-side stand-in (to see what symmetrising costs);
-# * ``isolated, 0.2 m`` and ``isolated, 0.4 m``: the stand-in on an isolated base plate
+# * ``free, proxy``: the body with its weak side on both sides (for comparison);
+# * ``isolated, 0.2 m`` and ``isolated, 0.4 m``: the statue on an isolated base plate
 #   (linear isolator, ``T_b`` = 2.5 s, 10 % damping, plate mass = statue mass) in a moat
 #   with a clearance of 0.20 m or 0.40 m. A run that reaches the clearance stops: the
 #   plate hits the wall, and such a run counts as a failure (not as a survivor);
@@ -197,7 +197,7 @@ for where, mots in motions.items():
         warnings.simplefilter("ignore", PlausibilityWarning)
         for moat in MOATS:
             runs[where, isolated(moat)] = rocking.simulate_many(
-                proxy, mots, model="isolated", clearance=moat, max_free_time=5.0,
+                statue, mots, model="isolated", clearance=moat, max_free_time=5.0,
                 **ISOLATION)
 
 

@@ -12,6 +12,7 @@ that a count never comes from arithmetic that may have rounded).
 
 from __future__ import annotations
 
+import contextlib
 import math
 import numbers
 import os
@@ -41,6 +42,44 @@ def warn_implausible(message: str, category: type[Warning] = PlausibilityWarning
     while f is not None and _inside(f.f_code):
         f, level = f.f_back, level + 1
     warnings.warn(message, category, stacklevel=level)
+
+
+_SHOWN: set = set()
+"""``(category, text)`` of the warnings :func:`each_warning_once` has let through."""
+
+
+@contextlib.contextmanager
+def each_warning_once():
+    """Inside, every warning is shown at most once per process (by category and text),
+    then with the filters in force outside (``ignore``, ``error``, ...): for work that
+    repeats, such as a campaign's chunks, each of which builds its model again (the
+    isolated model's notice about the restitution it derives, issue 31). The warnings are
+    recorded inside and issued again on the way out, even if the body raises.
+
+    Examples
+    --------
+    >>> import warnings
+    >>> from rocking._validate import each_warning_once
+    >>> with warnings.catch_warnings(record=True) as seen:
+    ...     warnings.simplefilter("always")
+    ...     for _ in range(3):
+    ...         with each_warning_once():
+    ...             warnings.warn("said once (doctest of each_warning_once)")
+    >>> len(seen)
+    1
+    """
+    caught: list = []
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            yield
+    finally:
+        for w in caught:
+            key = (w.category, str(w.message))
+            if key not in _SHOWN:
+                _SHOWN.add(key)
+                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno,
+                                       source=w.source)
 
 
 def warn_deprecated(message: str) -> None:

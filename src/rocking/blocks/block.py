@@ -45,8 +45,8 @@ attributes ``alpha_plus``/``alpha_minus``, ``p_*``, ``R_*``, ``mu_*`` (equal to 
 ``R``, ``mu`` (and ``uplift_acceleration``) of an asymmetric block are those of its
 *weaker side*, the one with the smaller ``alpha`` ("+" on a tie): the side it uplifts and
 overturns towards first. ``mu`` is then the restitution of the impact that ends rocking on
-that side. The classical model and CCRR use both sides; the other models refuse an
-asymmetric block.
+that side. The classical, CCRR, anchored and isolated models use both sides; the DEM
+rocks the body's outline (geometry ``"body"``) and refuses an asymmetric block otherwise.
 
 All quantities are SI: m, kg, kg m^2, rad, 1/s.
 """
@@ -170,17 +170,21 @@ def _weaker(sides) -> int:
     return 1 if sides[1][0] < sides[0][0] else 0
 
 
-def require_symmetric(block, model: str):
-    """``block`` itself if it (every block of a stack) is symmetric, else one
-    :class:`ParameterError` naming ``model`` (for the models that take symmetric blocks
-    only)."""
-    for b in getattr(block, "blocks", (block,)):
-        if isinstance(b, Block) and not b.symmetric:
-            raise ParameterError(
-                f"model {model!r} takes symmetric blocks only: {b.name or 'the block'} has "
-                f"alpha_plus = {b.alpha_plus:.4g}, alpha_minus = {b.alpha_minus:.4g} rad; "
-                "use model='housner' or 'ccrr' (or a symmetric block)")
-    return block
+def _warn_energy_gain(block, where: str) -> None:
+    """A :class:`PlausibilityWarning` when an impact of ``block`` creates kinetic energy
+    (:meth:`Block.impact_energy_ratios` above 1): given restitutions that ignore the
+    inertias of the two pivots (one ``mu`` for both sides of an asymmetric body)."""
+    ratios = block.impact_energy_ratios()
+    if ratios is None or block.sides is None or max(ratios) <= 1.0 + 1e-12:
+        return
+    s = "+" if ratios[0] >= ratios[1] else "-"
+    o = "-" if s == "+" else "+"
+    warn_implausible(
+        f"{where}: an impact that ends rocking on side {s} would create energy (kinetic "
+        f"energy ratio mu_{'plus' if s == '+' else 'minus'}^2 I_O{o} / I_O{s} = "
+        f"{max(ratios):.4f} > 1: side {o}'s inertia is the larger); the restitutions of "
+        "an asymmetric body follow from angular momentum about the new pivot: leave mu "
+        "out (Block.from_geometry, Block.from_mesh) or give each side's")
 
 
 def housner_mu(alpha: float) -> float:
@@ -490,10 +494,13 @@ class Block:
                          m_s if mu is None else mu, R))
         sides = (side[0], side[1])
         alpha, p, mu_w, R = sides[_weaker(sides)]
-        return cls(alpha=alpha, p=p, mu=mu_w, R=R, mass=mass,
-                   I_O=None if mass is None else mass * (rg2 + R * R),
-                   name="" if name is None else str(name),
-                   sides=None if sides[0] == sides[1] else sides)
+        block = cls(alpha=alpha, p=p, mu=mu_w, R=R, mass=mass,
+                    I_O=None if mass is None else mass * (rg2 + R * R),
+                    name="" if name is None else str(name),
+                    sides=None if sides[0] == sides[1] else sides)
+        if mu is not None:
+            _warn_energy_gain(block, "Block.from_geometry")
+        return block
 
     @classmethod
     def from_shape(cls, shape, phi: float = 0.0, *, name: str | None = None, mu=None,
@@ -639,8 +646,10 @@ class Block:
         alpha, p, mu, R = sides[_weaker(sides)]
         if self.R is None and sides[0][3] is None:
             R = None
-        return dataclasses.replace(self, alpha=alpha, p=p, mu=mu, R=R,
-                                   sides=None if sides[0] == sides[1] else sides, **changes)
+        block = dataclasses.replace(self, alpha=alpha, p=p, mu=mu, R=R,
+                                    sides=None if sides[0] == sides[1] else sides, **changes)
+        _warn_energy_gain(block, "Block.with_params")
+        return block
 
     def mirrored(self) -> Block:
         """The block with its sides swapped (the same body seen from behind): under the
@@ -692,6 +701,28 @@ class Block:
                       doc="Distance (m) from the + pivot to the centre of mass (or None).")
     R_minus = property(lambda self: self._side(1, 3),
                        doc="Distance (m) from the - pivot to the centre of mass (or None).")
+
+    def impact_energy_ratios(self) -> tuple[float, float] | None:
+        """``(r_+, r_-)``: the kinetic energy after over before an impact that ends rocking
+        on side + (it lands on the - pivot) and on side -, ``r_s = mu_s^2 I_o / I_s`` (``o``
+        the other side; ``I_s = m g R_s / p_s^2``, Eq 3); ``mu^2`` on both sides of a
+        symmetric block; None when ``R`` is unknown. The angular-momentum restitutions
+        (:meth:`from_geometry`) give ``r_+ = r_- = mu_+ mu_- < 1``; restitutions given
+        otherwise may give ``r_s > 1``: an impact that creates energy.
+
+        Examples
+        --------
+        >>> from rocking import Block
+        >>> body = Block.from_geometry(0.5, 0.1, 0.3, 0.25)  # derived restitutions
+        >>> r = body.impact_energy_ratios()
+        >>> round(r[0], 12) == round(r[1], 12) == round(body.mu_plus * body.mu_minus, 12)
+        True
+        """
+        if self.R_plus is None:
+            return None
+        i_p = self.R_plus / self.p_plus ** 2  # I_O / (m g)
+        i_m = self.R_minus / self.p_minus ** 2
+        return (self.mu_plus ** 2 * i_m / i_p, self.mu_minus ** 2 * i_p / i_m)
 
     # ------------------------------------------------------------------ derived values
     @property

@@ -49,6 +49,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from .._validate import each_warning_once
 from ..analysis.damage import damage_state
 from ..analysis.ida import IMS, intensity
 from ..analysis.montecarlo import (
@@ -517,11 +518,12 @@ class Campaign:
         for r in dict.fromkeys(ri.tolist()):
             idx = np.flatnonzero(ri == r)
             name, options = runs[r]
-            res = simulate_many([blocks[i] for i in idx], [motions[i] for i in idx],
-                                model=name, duration=self.spec.duration,
-                                max_free_time=self.spec.max_free_time,
-                                theta0=theta0[idx] if theta0[idx].any() else 0.0,
-                                errors="nan", **options)
+            with each_warning_once():  # a model's notices: once, not once per chunk
+                res = simulate_many([blocks[i] for i in idx], [motions[i] for i in idx],
+                                    model=name, duration=self.spec.duration,
+                                    max_free_time=self.spec.max_free_time,
+                                    theta0=theta0[idx] if theta0[idx].any() else 0.0,
+                                    errors="nan", **options)
             for k in out:
                 v = getattr(res, k)
                 if v is not None:  # None: an output the model does not declare

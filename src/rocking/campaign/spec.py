@@ -142,7 +142,7 @@ from typing import NamedTuple, NoReturn
 
 import numpy as np
 
-from .._validate import as_int, in_range
+from .._validate import as_int, each_warning_once, in_range
 from ..analysis.damage import DEFAULT_THRESHOLDS, state_labels
 from ..analysis.ida import IMS
 from ..analysis.montecarlo import PARAMETERS, RANGES, distributions
@@ -1488,7 +1488,8 @@ def _usable(models: tuple, blocks: tuple, options: dict, entries=(),
         for i, ((_, _, _, given), mit) in enumerate(zip(entries, mitigations, strict=True)):
             for j, b in enumerate(blocks):
                 try:
-                    MODELS[mit.model].from_kwargs(b, **mit.options)
+                    with each_warning_once():  # said here, not again by each chunk
+                        MODELS[mit.model].from_kwargs(b, **mit.options)
                 except RockingError as e:
                     if given:
                         _fail(f"mitigation[{i}].model", f"model {mit.model!r} cannot take "
@@ -1499,7 +1500,8 @@ def _usable(models: tuple, blocks: tuple, options: dict, entries=(),
     for m in models:
         for i, b in enumerate(blocks):
             try:
-                MODELS[m].from_kwargs(b, **options.get(m, {}))
+                with each_warning_once():
+                    MODELS[m].from_kwargs(b, **options.get(m, {}))
             except RockingError as e:
                 _fail(f"blocks[{i}]", f"not usable with model {m!r}: {e}")
 

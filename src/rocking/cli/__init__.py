@@ -38,6 +38,7 @@ Warnings of the package (:class:`~rocking.errors.PlausibilityWarning`, a
 
 from __future__ import annotations
 
+import functools
 import sys
 import warnings
 
@@ -76,9 +77,18 @@ for _command in (params_cmd, simulate_cmd, reproduce_cmd, identify, dem_params, 
 _NO_ARGS_IS_HELP = getattr(click.exceptions, "NoArgsIsHelpError", ())
 
 
-def _show_warning(message, category, filename, lineno, file=None, line=None):
-    """Our warnings (plausibility, unsettled runs, ...) as one ``warning: ...`` line."""
-    click.echo(f"warning: {one_line(str(message))}", err=True)
+def _show_warning(message, category, filename, lineno, file=None, line=None, *,
+                  shown: set):
+    """Our warnings (plausibility, unsettled runs, ...) as one ``warning: ...`` line, each
+    once per command (``shown``: the lines printed so far), through ``tqdm.write`` (above
+    a campaign's progress bar, not inside it)."""
+    text = f"warning: {one_line(str(message))}"
+    if text in shown:
+        return
+    shown.add(text)
+    from tqdm.auto import tqdm  # lazy: the command line starts without it
+
+    tqdm.write(text, file=sys.stderr)
 
 
 def main(argv=None) -> None:
@@ -89,7 +99,7 @@ def main(argv=None) -> None:
     Exits with ``sys.exit(code)``; ``argv`` defaults to ``sys.argv[1:]``.
     """
     with warnings.catch_warnings():  # restores the filters and showwarning
-        warnings.showwarning = _show_warning
+        warnings.showwarning = functools.partial(_show_warning, shown=set())
         for module in _DEPRECATION_FROM:
             warnings.filterwarnings("default", category=DeprecationWarning, module=module)
         code = _run(argv)

@@ -133,7 +133,9 @@ def block_options(classical: bool = False, mass: bool = False):
             click.option("--p", metavar="P",
                          help="Frequency parameter p (1/s); overrides a specimen's."),
             click.option("--mu", metavar="MU",
-                         help="Coefficient of restitution in (0, 1]; overrides."),
+                         help="Coefficient of restitution in (0, 1]; overrides (with "
+                              "--model isolated: imposed on its impacts, instead of the "
+                              "one derived from the moving plate)."),
         ]
     mesh_dest = {"mesh": "mesh_path", "density": "mesh_density", "up": "mesh_up",
                  "direction": "mesh_direction", "units": "mesh_units",

@@ -59,11 +59,12 @@ option given both by its flag and by ``--option``, is refused (exit code 2).
 
 Options WITHOUT a flag, since theirs is already a flag of this command (set them with
 ``--option KEY=VALUE``): ``dt`` (ccrr, dem: ``--dt`` is a record's time step), ``mu``
-(isolated's restitution: ``--mu`` overrides the block's, which that model does not use, so
-``--mu`` with it is refused), ``linear`` (housner: ``--linear`` is that option
-already) and ``direction`` (rigid3d: ``--direction`` is that option already, the
-direction of shaking from the body's x axis, the same quantity as a ``--mesh``'s planar
-direction: :mod:`rocking.cli.simulate3d`).
+(isolated's restitution: ``--mu`` is the impact restitution of every model, so with the
+isolated model it imposes that option, derived from the momentum of block and plate
+without it; ``--alpha A --p P --mu MU --model isolated`` runs with ``mu = MU``),
+``linear`` (housner: ``--linear`` is that option already) and ``direction`` (rigid3d:
+``--direction`` is that option already, the direction of shaking from the body's x axis,
+the same quantity as a ``--mesh``'s planar direction: :mod:`rocking.cli.simulate3d`).
 ``ModelFlagsCommand.skipped()`` lists them; a test checks this list against it.
 
 Models with row outputs (:attr:`rocking.models.base.Model.row_outputs`: the isolated
@@ -588,9 +589,12 @@ class SimulateRequest:
                                     "param": building_params}, floor, height_ratio)
         options = model_options(model, model_opts, flags=model_flags_given(model_flags))
         if mu is not None and model in models_with_option("mu"):
-            raise ParameterError(f"mu: --mu overrides the block's restitution, which --model "
-                                 f"{model} does not use (its option mu replaces it; default: "
-                                 "derived): give --option mu=VALUE")
+            # --mu is the impact restitution whatever the model: where the model has its
+            # own option mu (the isolated base derives one by default), --mu imposes it
+            if "mu" in options and options["mu"] != block.mu:
+                raise ParameterError(f"mu given twice: --mu {mu} and --option mu="
+                                     f"{options['mu']:g}; give one")
+            options["mu"] = block.mu
         _linear_option(model, linear, options)
         th0 = quantity(theta0, "angle", "theta0", default_unit="rad")
         om0 = number(omega0, "omega0", ("rad/s", "1/s"))

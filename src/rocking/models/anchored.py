@@ -19,6 +19,16 @@ which this file does not touch) plus two brittle anchors, ``+`` (stretched when
   breaks, for good, when ``kappa sin|theta|`` reaches ``q`` (located inside the step);
   the uplift threshold is gravity's (no force at ``theta = 0``).
 
+Asymmetric blocks (:meth:`rocking.Block.from_geometry`, :meth:`rocking.Block.from_mesh`;
+derived in the reference's "Asymmetric blocks"): side ``s`` rocks with its own
+``alpha_s``, ``p_s`` (Eq 1) and ends with its own ``mu_s`` (Eq 4, angular momentum about
+the new pivot), as in the classical model; the anchors are the base width ``L = h
+(tan(alpha_+) + tan(alpha_-))`` apart, so a rigid anchor ``s`` holds the block down until
+``s a > g (gf tan(alpha_s) + q (tan(alpha_+) + tan(alpha_-)))`` and the elastic anchor's
+moment is ``-p_s^2 kappa (L / R_s) sin(theta) cos(theta)``, ``L / R_s = cos(alpha_s)
+(tan(alpha_+) + tan(alpha_-))`` (``kappa = k_a L / (m g)``). With equal sides every
+operation is the symmetric one (bit-identical results).
+
 A block that starts tilted (``theta0 != 0``) with a rigid anchor on that side has it
 broken at ``t = 0``. A vertical motion replaces ``g`` by ``g + a_v`` in the gravity term
 and in gravity's part of the uplift threshold (not in the anchors'); the run stops where
@@ -44,7 +54,6 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange
 
-from ..blocks.block import require_symmetric
 from ..motions._kernel import (
     ground_acc,
     ground_acc_hv,
@@ -66,21 +75,24 @@ from .base import (
     set_planar_result,
     store_row,
 )
-from .housner import ClassicalTolerances, amplitude_from_energy, free_cap
+from .housner import ClassicalTolerances, amplitude_from_energy, free_cap_sides
 
 INV_G = 1.0 / G
 
 
 @njit(cache=True)
-def _thr(side, rigid, q, bp, bm, c, gf):
-    """Uplift threshold (m/s^2) towards ``side`` with the effective gravity ``gf g``."""
+def _thr(side, rigid, q, bp, bm, c_p, c_m, gf):
+    """Uplift threshold (m/s^2) towards ``side`` with the effective gravity ``gf g``:
+    ``g (gf tan(alpha_s) + q (tan(alpha_+) + tan(alpha_-)))`` with the rigid anchor ``s``
+    intact (``g tan(alpha) (gf + 2 q)`` for a symmetric block), gravity's alone once it has
+    broken."""
     intact = (not bp) if side > 0.0 else (not bm)
-    extra = 2.0 * q * c * G if (rigid and intact) else 0.0
-    return c * G * gf + extra
+    extra = q * (c_p + c_m) * G if (rigid and intact) else 0.0
+    return (c_p if side > 0.0 else c_m) * G * gf + extra
 
 
 @njit(cache=True)
-def _trips(kind, prm, samples, t, rigid, q, bp, bm, c):
+def _trips(kind, prm, samples, t, rigid, q, bp, bm, c_p, c_m):
     """Whether the block at rest uplifts at ``t`` (or the base falls away): returns the
     direction (+1/-1), E.LIFT_OFF, or 0."""
     gf = 1.0
@@ -89,19 +101,20 @@ def _trips(kind, prm, samples, t, rigid, q, bp, bm, c):
         if gf <= 0.0:
             return E.LIFT_OFF
     a = ground_acc(kind, prm, samples, t)
-    if a > _thr(1.0, rigid, q, bp, bm, c, gf):
+    if a > _thr(1.0, rigid, q, bp, bm, c_p, c_m, gf):
         return 1.0
-    if -a > _thr(-1.0, rigid, q, bp, bm, c, gf):
+    if -a > _thr(-1.0, rigid, q, bp, bm, c_p, c_m, gf):
         return -1.0
     return 0.0
 
 
 @njit(cache=True)
-def _hold(kind, prm, samples, t, rigid, q, bp, bm, c):
+def _hold(kind, prm, samples, t, rigid, q, bp, bm, c_p, c_m):
     """Force (fraction of m g) an intact rigid anchor carries at rest at ``t``: the moment
-    balance about the pivot, ``2 b F = m h |a| - m (g + a_v) b``, i.e.
-    ``F/(m g) = (|a|/(g tan(alpha)) - (1 + a_v/g)) / 2`` (``a_v``: the vertical ground
-    acceleration, positive upwards)."""
+    balance about the pivot ``s = sgn(a)``, ``L F = m h |a| - m (g + a_v) b_s`` (``L = b_+
+    + b_-`` the base width), i.e. ``F/(m g) = (|a|/(g tan(alpha_s)) - (1 + a_v/g))
+    tan(alpha_s) / (tan(alpha_+) + tan(alpha_-))``, a half of the bracket for a symmetric
+    block (``a_v``: the vertical ground acceleration, positive upwards)."""
     if not rigid:
         return 0.0
     a = ground_acc(kind, prm, samples, t)
@@ -109,28 +122,29 @@ def _hold(kind, prm, samples, t, rigid, q, bp, bm, c):
     if not intact:
         return 0.0
     gf = 1.0 + vertical_acc(prm, samples, t) * INV_G if has_vertical(prm) else 1.0
-    return min(q, max(0.0, 0.5 * (abs(a) / (c * G) - gf)))
+    c = c_p if a > 0.0 else c_m
+    return min(q, max(0.0, c / (c_p + c_m) * (abs(a) / (c * G) - gf)))
 
 
 @njit(cache=True)
-def _rest(kind, prm, samples, t, t_end, h_scan, rigid, q, bp, bm, c, dt_out, k, out_th,
-          out_om, fmax):
+def _rest(kind, prm, samples, t, t_end, h_scan, rigid, q, bp, bm, c_p, c_m, dt_out, k,
+          out_th, out_om, fmax):
     """Advance a block at rest to its uplift (or ``t_end``); returns
     ``(t, k, direction, fmax)`` (direction 0: still at rest at ``t_end``)."""
     while True:
-        fmax = max(fmax, _hold(kind, prm, samples, t, rigid, q, bp, bm, c))
-        d = _trips(kind, prm, samples, t, rigid, q, bp, bm, c)
+        fmax = max(fmax, _hold(kind, prm, samples, t, rigid, q, bp, bm, c_p, c_m))
+        d = _trips(kind, prm, samples, t, rigid, q, bp, bm, c_p, c_m)
         if d != 0.0 or t >= t_end - 1e-12:
             t_w = t - 1e-12 if d != 0.0 else t + 1e-12  # up to the uplift, or through t_end
             return t, E.rest_fill(k, t_w, dt_out, out_th, out_om), d, fmax
         t1 = min(t + h_scan, next_breakpoint(kind, prm, samples, t), t_end)
-        if _trips(kind, prm, samples, t1, rigid, q, bp, bm, c) != 0.0:
+        if _trips(kind, prm, samples, t1, rigid, q, bp, bm, c_p, c_m) != 0.0:
             lo, hi = t, t1
             for _ in range(200):
                 mid = 0.5 * (lo + hi)
                 if not (lo < mid < hi):
                     break
-                if _trips(kind, prm, samples, mid, rigid, q, bp, bm, c) != 0.0:
+                if _trips(kind, prm, samples, mid, rigid, q, bp, bm, c_p, c_m) != 0.0:
                     hi = mid
                 else:
                     lo = mid
@@ -140,9 +154,11 @@ def _rest(kind, prm, samples, t, t_end, h_scan, rigid, q, bp, bm, c, dt_out, k, 
 
 
 @njit(cache=True)
-def _acc(th, t, s, alpha, p2, ka, kind, prm, samples):
-    """Eq 1 on branch ``s`` plus the elastic anchor's moment (``ka``: its stiffness kappa
-    while intact on this side, else 0)."""
+def _acc(th, t, s, alpha, p2, ka, lr, kind, prm, samples):
+    """Eq 1 on branch ``s`` (that side's ``alpha``, ``p^2``) plus the elastic anchor's
+    moment (``ka``: its stiffness kappa while intact on this side, else 0; ``lr = L /
+    R_s``, the base width over the distance from the pivot to the centre of mass, ``2
+    sin(alpha)`` for a symmetric block)."""
     if has_vertical(prm):
         ah, av = ground_acc_hv(kind, prm, samples, t)
         a = ah * INV_G
@@ -152,7 +168,7 @@ def _acc(th, t, s, alpha, p2, ka, kind, prm, samples):
         gf = 1.0
     acc = -s * p2 * gf * math.sin(alpha - s * th) + p2 * math.cos(alpha - s * th) * a
     if ka > 0.0:
-        acc -= p2 * 2.0 * math.sin(alpha) * ka * math.sin(th) * math.cos(th)
+        acc -= p2 * lr * ka * math.sin(th) * math.cos(th)
     return acc
 
 
@@ -161,11 +177,12 @@ def _acc(th, t, s, alpha, p2, ka, kind, prm, samples):
 # ``xs = (bp, bm, t_break_p, t_break_m, max_force)`` (bp, bm: the anchor +, - has broken)
 AnchorLoopParams = namedtuple("AnchorLoopParams", [
     "alpha", "p", "mu", "q", "kappa", "rigid", "p2", "c", "th_b", "rest_tol",
-    "free_rest_tol"])
-"""The parameters of the anchored model's hooks in the shared step loop: the block's
-``alpha``, ``p``, ``mu``, ``p^2``, ``c = tan(alpha)``, the anchors' ``q``, ``kappa``,
-rigid or elastic and the angle ``th_b`` at which an elastic anchor breaks, and the rest
-tolerances."""
+    "free_rest_tol", "alpha_m", "p_m", "mu_m", "p2_m", "c_m", "lr", "lr_m"])
+"""The parameters of the anchored model's hooks in the shared step loop: the block's side
++ (``alpha``, ``p``, ``mu``, ``p^2``, ``c = tan(alpha)``), the anchors' ``q``, ``kappa``,
+rigid or elastic and the angle ``th_b`` at which an elastic anchor breaks, the rest
+tolerances, the side - (``alpha_m``, ...; equal for a symmetric block) and the lever
+ratios ``lr``, ``lr_m`` of the elastic anchors (:func:`_acc`)."""
 
 
 @njit(cache=True, inline="always")
@@ -177,8 +194,10 @@ def _ka(mp, xs, s):
 
 @njit(cache=True, inline="always")
 def _rhs_args(mp, xs, s, kind, prm, samples):
-    """The arguments of :func:`_acc` on pivot ``s``."""
-    return (s, mp.alpha, mp.p2, _ka(mp, xs, s), kind, prm, samples)
+    """The arguments of :func:`_acc` on pivot ``s`` (that side's parameters)."""
+    if s > 0.0:
+        return (s, mp.alpha, mp.p2, _ka(mp, xs, s), mp.lr, kind, prm, samples)
+    return (s, mp.alpha_m, mp.p2_m, _ka(mp, xs, s), mp.lr_m, kind, prm, samples)
 
 
 @njit(cache=True, inline="always")
@@ -204,7 +223,7 @@ def _at_rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, ou
     q, rigid = mp.q, mp.rigid
     bp, bm, tbp, tbm, fmax = xs
     t, k, d, fmax = _rest(kind, prm, samples, t, t_lim, h_scan, rigid, q, bp, bm, mp.c,
-                          dt_out, k, out_th, out_om, fmax)
+                          mp.c_m, dt_out, k, out_th, out_om, fmax)
     if d != 0.0 and d != E.LIFT_OFF:
         if t_up != t_up:
             t_up = t
@@ -221,7 +240,8 @@ def _cap(mp, xs, th, om, s, t, free_time, peak):
     """The cap of the free motion: decided by energy unless an elastic anchor is intact."""
     if (not mp.rigid) and ((not xs[0]) or (not xs[1])):
         return True, False, peak, t  # an intact elastic anchor: no exact energy decision
-    decided, peak, t_end = free_cap(th, om, s, mp.alpha, mp.p, mp.mu, False, t, free_time, peak)
+    decided, peak, t_end = free_cap_sides(th, om, s, mp.alpha, mp.p, mp.mu, mp.alpha_m, mp.p_m,
+                                          mp.mu_m, False, t, free_time, peak)
     return decided, decided, peak, t_end
 
 
@@ -234,7 +254,7 @@ def _inside(args, mp, xs, t, th, om, a0, th1, om1, a1, hh, s, dt_out, k, out_th,
             return 1, t, th, om, k, 0.0, 0.5 * hh, xs  # crossed before an interior peak
         if s * th1 >= th_b:
             sig, thc, omc, ac = D.locate(_acc, args, t, th, om, a0, th1, om1, a1, hh, s, th_b,
-                                         True, 1e-15 * mp.alpha, 60)
+                                         True, 1e-15 * args[1], 60)
             tc = t + sig
             k, pk = D.segment(t, th, om, a0, tc, thc, omc, ac, sig, dt_out, k, out_th, out_om,
                               abs(th))
@@ -244,32 +264,36 @@ def _inside(args, mp, xs, t, th, om, a0, th1, om1, a1, hh, s, dt_out, k, out_th,
             else:
                 bm, tbm = True, tc
             fmax = mp.q
-            return 2, tc, thc, omc, k, pk, max(sig, 1e-6 / mp.p), (bp, bm, tbp, tbm, fmax)
+            return 2, tc, thc, omc, k, pk, max(sig, 1e-6 / max(mp.p, mp.p_m)), (
+                bp, bm, tbp, tbm, fmax)
     return 0, t, th, om, k, 0.0, hh, xs
 
 
 @njit(cache=True, inline="always")
 def _impact_tol(mp, s):
-    return 1e-15 * mp.alpha
+    return 1e-15 * (mp.alpha if s > 0.0 else mp.alpha_m)
 
 
 @njit(cache=True, inline="always")
 def _after_impact(mp, xs, s, t, omc, pk, kind, prm, samples, t_quiet, hv):
-    """Eq 4, the Zeno rule (at rest if no intact rigid anchor lets the ground lift the
-    block) and the rigid anchor of the new side breaking: ``(rest, om, s, xs)``."""
-    alpha, mu, q, kappa, rigid, p2, c = mp.alpha, mp.mu, mp.q, mp.kappa, mp.rigid, mp.p2, mp.c
+    """Eq 4 (rocking on side ``s`` ends: that side's ``mu``), the Zeno rule with the side
+    it rebounds on (at rest if no intact rigid anchor lets the ground lift the block) and
+    the rigid anchor of the new side breaking: ``(rest, om, s, xs)``."""
+    q, kappa, rigid, c_p, c_m = mp.q, mp.kappa, mp.rigid, mp.c, mp.c_m
     bp, bm, tbp, tbm, fmax = xs
     if _ka(mp, xs, s) > 0.0:
         fmax = max(fmax, kappa * math.sin(pk))
-    om = mu * omc
+    om = (mp.mu if s > 0.0 else mp.mu_m) * omc
     ag = ground_acc(kind, prm, samples, t)
+    sn = E.rebound_side(om, ag)
+    alpha, p2 = (mp.alpha, mp.p2) if sn > 0.0 else (mp.alpha_m, mp.p2_m)
     gf = 1.0 + vertical_acc(prm, samples, t) * INV_G if hv else 1.0
     rt = mp.rest_tol if t < t_quiet else max(mp.rest_tol, mp.free_rest_tol)
     if om == 0.0 or amplitude_from_energy(om, alpha, p2 * gf, False) < rt * alpha:
-        if ag <= _thr(1.0, rigid, q, bp, bm, c, gf) and -ag <= _thr(-1.0, rigid, q, bp, bm, c,
-                                                                     gf):
+        if ag <= _thr(1.0, rigid, q, bp, bm, c_p, c_m, gf) and -ag <= _thr(
+                -1.0, rigid, q, bp, bm, c_p, c_m, gf):
             return True, 0.0, s, (bp, bm, tbp, tbm, fmax)
-    s = E.rebound_side(om, ag)
+    s = sn
     if rigid or q == 0.0:  # an intact rigid anchor cannot stop the block
         if s > 0.0 and not bp:
             bp, tbp, fmax = True, t, q
@@ -295,22 +319,40 @@ def _on_segment(mp, xs, s, pk):
 
 
 @njit(cache=True)
+def lever_ratios(alpha_p, alpha_m):
+    """``(L / R_+, L / R_-)``: the base width ``L = b_+ + b_- = h (tan(alpha_+) +
+    tan(alpha_-))`` over each pivot's distance ``R_s = h / cos(alpha_s)`` to the centre of
+    mass (one height ``h`` of a rigid body); ``2 sin(alpha)`` for a symmetric block."""
+    if alpha_p == alpha_m:
+        lr = 2.0 * math.sin(alpha_p)
+        return lr, lr
+    w = math.tan(alpha_p) + math.tan(alpha_m)
+    return math.cos(alpha_p) * w, math.cos(alpha_m) * w
+
+
+@njit(cache=True)
 def integrate(alpha, p, mu, q, kappa, rigid, kind, prm, samples, t_end, t_quiet, th0, om0,
               rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th, out_om, imp,
-              anch):
-    """One simulation; ``anch`` (length >= 5, else ignored) receives ``[max force, t_break+,
-    t_break-, broken+, broken-]``. Returns ``(n_out, n_impacts, peak, overturned,
-    t_over, t_up, n_steps, t_lift, settled)``."""
+              anch, alpha_m, p_m, mu_m):
+    """One simulation of a block with the sides + (``alpha``, ``p``, ``mu``) and -
+    (``alpha_m``, ``p_m``, ``mu_m``); ``anch`` (length >= 5, else ignored) receives ``[max
+    force, t_break+, t_break-, broken+, broken-]``. Returns ``(n_out, n_impacts, peak,
+    overturned, t_over, t_up, n_steps, t_lift, settled)``."""
     p2 = p * p
+    p2_m = p_m * p_m
     c = math.tan(alpha)
+    c_m = math.tan(alpha_m)
+    lr, lr_m = lever_ratios(alpha, alpha_m)
     # the elastic anchor breaks at kappa sin|theta| = q; never before pi/2 if q >= kappa
     th_b = (math.asin(q / kappa) if q < kappa else math.inf) if not rigid else 0.0
-    atol_th, atol_om = D.abs_tols(rtol, alpha, p)
-    mp = AnchorLoopParams(alpha, p, mu, q, kappa, rigid, p2, c, th_b, rest_tol, free_rest_tol)
+    p_hi = max(p, p_m)  # the step sizes follow the faster side, the errors the smaller alpha
+    atol_th, atol_om = D.abs_tols(rtol, min(alpha, alpha_m), p_hi)
+    mp = AnchorLoopParams(alpha, p, mu, q, kappa, rigid, p2, c, th_b, rest_tol, free_rest_tol,
+                          alpha_m, p_m, mu_m, p2_m, c_m, lr, lr_m)
     k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, xs = L.run(
         _acc, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact,
         _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,
-        atol_th, atol_om, p, h_max, h_scan, dt_out, out_th, out_om, imp)
+        atol_th, atol_om, p_hi, h_max, h_scan, dt_out, out_th, out_om, imp)
     bp, bm, tbp, tbm, fmax = xs
     if anch.shape[0] >= 5:
         anch[0] = fmax
@@ -322,23 +364,25 @@ def integrate(alpha, p, mu, q, kappa, rigid, kind, prm, samples, t_end, t_quiet,
 
 
 AnchoredParams = namedtuple("AnchoredParams", [
-    "alpha", "p", "mu", "strength", "stiffness", "rigid", "rtol", "rest_tol", "free_rest_tol"])
-"""The kernel parameters ``mp`` of the anchored block: its ``alpha`` (rad), ``p`` (1/s),
-``mu``, the anchors (``q``, ``kappa``, rigid or elastic) and the tolerances."""
+    "alpha", "p", "mu", "strength", "stiffness", "rigid", "rtol", "rest_tol", "free_rest_tol",
+    "alpha_m", "p_m", "mu_m"])
+"""The kernel parameters ``mp`` of the anchored block: its side + ``alpha`` (rad), ``p``
+(1/s), ``mu``, the anchors (``q``, ``kappa``, rigid or elastic), the tolerances and its
+side - (``alpha_m``, ``p_m``, ``mu_m``; equal for a symmetric block)."""
 
 
 @njit(cache=True)
 def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp, res, extra):
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
-    p, kappa, rigid = mp.p, mp.stiffness, mp.rigid
+    p, kappa, rigid = max(mp.p, mp.p_m), mp.stiffness, mp.rigid
     h_max = min(0.05 / p, 8.0 * h_scan)
     if not rigid:
         h_max = min(h_max, 0.05 / (p * math.sqrt(1.0 + kappa)))
     anch = np.full(5, np.nan)
     k, n_imp, peak, over, t_over, t_up, n_steps, t_lift, settled = integrate(
-        mp.alpha, p, mp.mu, mp.strength, kappa, rigid, kind, prm, samples, t_end, t_quiet,
+        mp.alpha, mp.p, mp.mu, mp.strength, kappa, rigid, kind, prm, samples, t_end, t_quiet,
         y0[0], y0[1], mp.rtol, mp.rest_tol, mp.free_rest_tol, h_max, h_scan, dt_out,
-        hist[:, 0], hist[:, 1], imp, anch)
+        hist[:, 0], hist[:, 1], imp, anch, mp.alpha_m, mp.p_m, mp.mu_m)
     set_planar_result(res, k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled)
     res.max_anchor_force = anch[0]
     res.anchor_break_time_plus = anch[1]
@@ -349,9 +393,10 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
 
 @njit(cache=True)
 def with_block(mp, b):
-    """``mp`` with the block parameters ``b = (alpha, p, mu)`` of a batch row."""
+    """``mp`` with the block parameters ``b = (alpha_+, p_+, mu_+, alpha_-, p_-, mu_-)`` of
+    a batch row."""
     return AnchoredParams(b[0], b[1], b[2], mp.strength, mp.stiffness, mp.rigid, mp.rtol,
-                          mp.rest_tol, mp.free_rest_tol)
+                          mp.rest_tol, mp.free_rest_tol, b[3], b[4], b[5])
 
 
 @njit(cache=True, parallel=True)
@@ -400,18 +445,19 @@ class Anchored(Model):
         Output("anchor_broken_minus", "", True, "the - anchor broke"),
     )
 
-    @classmethod
-    def check_block(cls, block):
-        return require_symmetric(super().check_block(block), cls.name)
+    accepts_asymmetric = True
 
     @classmethod
     def block_row(cls, block) -> tuple:
-        return (block.alpha, block.p, block.mu)
+        """Both sides: ``(alpha_+, p_+, mu_+, alpha_-, p_-, mu_-)``."""
+        return (block.alpha_plus, block.p_plus, block.mu_plus, block.alpha_minus,
+                block.p_minus, block.mu_minus)
 
     def kernel_params(self, dt_out, theta0, omega0) -> tuple:
         b, o = self.block, self.options
-        return AnchoredParams(b.alpha, b.p, b.mu, o.anchor_strength, o.anchor_stiffness,
-                              o.anchors == "rigid", o.rtol, o.rest_tol, o.free_rest_tol)
+        return AnchoredParams(b.alpha_plus, b.p_plus, b.mu_plus, o.anchor_strength,
+                              o.anchor_stiffness, o.anchors == "rigid", o.rtol, o.rest_tol,
+                              o.free_rest_tol, b.alpha_minus, b.p_minus, b.mu_minus)
 
     def result_info(self, values: dict) -> dict:
         """The row outputs, and the anchor force in N (with the block's mass), the broken

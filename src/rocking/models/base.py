@@ -498,12 +498,13 @@ class Model:
 
         Examples
         --------
-        The anchored model's rows take ``(alpha, p, mu)``; the base class, none:
+        The anchored model's rows take both sides' ``(alpha, p, mu)``; the base class,
+        none:
 
         >>> import rocking
         >>> from rocking.models import Model
         >>> block = rocking.Block.rectangular(0.2, 1.0)
-        >>> rocking.MODELS["anchored"].block_row(block) == (block.alpha, block.p, block.mu)
+        >>> rocking.MODELS["anchored"].block_row(block) == (block.alpha, block.p, block.mu) * 2
         True
         >>> Model.block_row(block)
         ()

@@ -89,10 +89,25 @@ once the ground is still (``t_quiet``) a block at rest is settled when an energy
 the plate's free motion shows that ``|A|`` can no longer reach ``g tan(alpha)`` (with a
 friction pendulum whose ``mu_f g`` exceeds it, the run goes to its time cap).
 
+Asymmetric blocks (:meth:`rocking.Block.from_geometry`, :meth:`rocking.Block.from_mesh`,
+mesh directions; derived in the reference's "Asymmetric blocks", after Vassiliou and
+Makris 2012's Lagrangian and impact, with Contento and Di Egidio 2009's two sides): on the
+pivot ``s`` the equations of motion take that side's ``alpha_s``, ``p_s``, ``R_s``,
+``lambda_s``; a block at rest uplifts towards ``+`` when ``A > (g + a_v) tan(alpha_+)``,
+towards ``-`` when ``-A > (g + a_v) tan(alpha_-)``; an impact that ends rocking on side
+``s`` multiplies ``theta'`` by ``mu_iso,s = 1 - lambda_o sin(alpha_o) (sin(alpha_o) +
+(R_s/R_o) sin(alpha_s)) / (1 - gamma lambda_o cos^2(alpha_o))`` (``o`` the landing side;
+the block's fixed-base ``mu_s`` as ``gamma -> 0``) and the plate's velocity by ``gamma h_o
+(mu_iso,s - 1) theta'``; the Zeno rule uses the landing side. The step sizes follow the
+faster side (largest ``p``), the error norms the smaller ``alpha`` and half-width. With
+equal sides every operation is the symmetric one (bit-identical results). A given ``mu``
+applies to both sides.
+
 Batches may hold one block per row (campaigns with uncertain ``alpha`` and ``p``): one
-compiled call, :meth:`Isolated.block_row` ``(alpha, p, R)`` and :func:`with_block`
-rebuilding ``lambda`` and a derived restitution with the same compiled
-:func:`block_terms` as :meth:`Isolated.kernel_params` (rows bit-identical to single runs).
+compiled call, :meth:`Isolated.block_row` ``(alpha_+, p_+, R_+, alpha_-, p_-, R_-)`` and
+:func:`with_block` rebuilding ``lambda`` and the derived restitutions with the same
+compiled :func:`side_terms` as :meth:`Isolated.kernel_params` (rows bit-identical to single
+runs).
 
 Checked against :func:`rocking.testing.isolated_reference.simulate_isolated_reference`
 and with :func:`rocking.testing.check_model` in ``tests/test_isolated.py``. Registered as
@@ -109,7 +124,6 @@ import numpy as np
 from numba import njit, prange
 
 from .._validate import warn_implausible
-from ..blocks.block import require_symmetric
 from ..errors import ParameterError
 from ..motions._kernel import (
     ground_acc,
@@ -139,12 +153,14 @@ DEFAULT_RTOL = 1e-8
 
 IsolatedParams = namedtuple("IsolatedParams", [
     "alpha", "p", "mu", "R", "lam", "gam", "iso", "c1", "c2", "veps", "clearance", "h_max",
-    "rest_tol", "rtol", "mu_given", "ws2"])
-"""The kernel parameters ``mp`` of the isolated model: the block (``alpha``, ``p``, ``mu``
-used, ``R``, ``lam = R p^2 / g``), ``gam = 1 / (1 + mass_ratio)``, the isolator (``iso``
-0: linear, 1: pendulum; its ``c1``, ``c2``, ``veps``), the clearance (m, inf: none), the
-largest step (s), the tolerances, the given restitution (NaN: derived) and the stop's
-``omega_s^2`` (0: none)."""
+    "rest_tol", "rtol", "mu_given", "ws2", "alpha_m", "p_m", "mu_m", "R_m", "lam_m"])
+"""The kernel parameters ``mp`` of the isolated model: the block's side + (``alpha``,
+``p``, ``mu`` used at an impact that ends rocking on side +, ``R``, ``lam = R p^2 / g``),
+``gam = 1 / (1 + mass_ratio)``, the isolator (``iso`` 0: linear, 1: pendulum; its ``c1``,
+``c2``, ``veps``), the clearance (m, inf: none), the largest step (s), the tolerances, the
+given restitution (NaN: derived), the stop's ``omega_s^2`` (0: none) and the block's side
+- (``alpha_m``, ``p_m``, ``mu_m``, ``R_m``, ``lam_m``; equal to side + for a symmetric
+block)."""
 
 
 @njit(cache=True)
@@ -176,7 +192,11 @@ def _acc(mp, th, om, u, v, s, rock, gf):
     f = _force(mp, u, v, gf)
     if not rock:
         return -f, 0.0
-    alpha, p, R, lam, gam = mp.alpha, mp.p, mp.R, mp.lam, mp.gam
+    if s > 0.0:  # the parameters of the pivot's side
+        alpha, p, R, lam = mp.alpha, mp.p, mp.R, mp.lam
+    else:
+        alpha, p, R, lam = mp.alpha_m, mp.p_m, mp.R_m, mp.lam_m
+    gam = mp.gam
     phi = alpha - s * th
     c, sn = math.cos(phi), math.sin(phi)
     p2 = p * p
@@ -286,23 +306,33 @@ def _acc_at(mp, seg, x, s, rock, prm, samples):
 
 
 @njit(cache=True)
+def _up_margin(A, thr, gf):
+    """How far the plate's acceleration ``A`` of a block at rest is beyond the uplift
+    threshold of the side it drives (positive: it uplifts): ``A - gf g tan(alpha_+)``
+    towards +, ``-A - gf g tan(alpha_-)`` towards -; ``thr = (g tan(alpha_+),
+    g tan(alpha_-))``. Equal sides: ``|A| - gf g tan(alpha)`` exactly."""
+    return max(A - thr[0] * gf, -A - thr[1] * gf)
+
+
+@njit(cache=True)
 def _peak_acc(mp, seg, s, rock, prm, samples, peak, a0, a1, thr):
     """The running ``max |A|`` over the step: the ends (``a0``, ``a1``), ``x = 1/4, 1/2,
     3/4`` and, where a sample comes within 1 % of the running peak, a golden-section search
     around the largest; and the first sample ``x`` at which a block at rest uplifts
-    (``|A| > (g + a_v) tan(alpha)``; 2 if none)."""
+    (:func:`_up_margin` > 0; 2 if none)."""
     best, xb = a0, 0.0
     if a1 > best:
         best, xb = a1, 1.0
     x_up = 2.0
     for j in range(1, 4):
         x = 0.25 * j
-        a = abs(_acc_at(mp, seg, x, s, rock, prm, samples))
+        a_s = _acc_at(mp, seg, x, s, rock, prm, samples)
+        a = abs(a_s)
         if a > best:
             best, xb = a, x
         if not rock and x_up > 1.0:
             gf = _gf(prm, samples, seg[0] + x * seg[1])
-            if gf > 0.0 and a > thr * gf:
+            if gf > 0.0 and _up_margin(a_s, thr, gf) > 0.0:
                 x_up = x
     if best > 0.99 * peak:
         lo, hi = max(xb - 0.25, 0.0), min(xb + 0.25, 1.0)
@@ -327,11 +357,12 @@ def _peak_acc(mp, seg, s, rock, prm, samples, peak, a0, a1, thr):
 @njit(cache=True)
 def _event(mp, which, th, u, v, t, s, prm, samples, thr):
     """Event functions at ``t``, positive once the event has happened: 1 uplift of a block
-    at rest (``|A| > (g + a_v) tan(alpha)``; never where ``g + a_v <= 0``: the lift-off
-    comes first), 2 clearance."""
+    at rest (``A = -F/M`` beyond ``(g + a_v) tan(alpha_s)`` towards its side ``s``,
+    :func:`_up_margin`; never where ``g + a_v <= 0``: the lift-off comes first), 2
+    clearance."""
     if which == 1:
         gf = _gf(prm, samples, t)
-        return abs(_force(mp, u, v, gf)) - thr * gf if gf > 0.0 else -1.0
+        return _up_margin(-_force(mp, u, v, gf), thr, gf) if gf > 0.0 else -1.0
     if which == 2:
         return abs(u) - mp.clearance
     return mp.clearance - abs(u)  # 4: the plate leaves the stop
@@ -370,7 +401,8 @@ def _locate_impact(mp, t, y, d, hh, y1, d1, s, rock, kind, prm, samples):
             lo = sig
         else:
             hi = sig
-        if abs(thc) <= 1e-15 * mp.alpha or hi - lo <= 1e-15 * (1.0 + t):
+        if abs(thc) <= 1e-15 * (mp.alpha if s > 0.0 else mp.alpha_m) or (
+                hi - lo <= 1e-15 * (1.0 + t)):
             break
         new = sig - thc / omc if omc != 0.0 else -1.0
         if not (lo < new < hi):
@@ -398,15 +430,23 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     """The single-run kernel of the model interface (:mod:`rocking.models.base`)."""
     th0, om0 = y0[0], y0[1]
     out_th, out_om = hist[:, 0], hist[:, 1]
-    alpha, p, mu, R, gam, rest_tol, rtol = (mp.alpha, mp.p, mp.mu, mp.R, mp.gam, mp.rest_tol,
-                                            mp.rtol)
-    hc = R * math.cos(alpha)
-    thr = G * math.tan(alpha)
+    gam, rest_tol, rtol = mp.gam, mp.rest_tol, mp.rtol
+    # the heights of the centre of mass seen from either pivot (one height for a rigid
+    # body; the landing side's is used at an impact) and the uplift thresholds
+    hc_p, hc_m = mp.R * math.cos(mp.alpha), mp.R_m * math.cos(mp.alpha_m)
+    thr = (G * math.tan(mp.alpha), G * math.tan(mp.alpha_m))
+    thr_lo = min(thr[0], thr[1])
+    p = max(mp.p, mp.p_m)  # the step sizes follow the faster side, the errors the smaller
+    alpha = min(mp.alpha, mp.alpha_m)
     hv = has_vertical(prm)
     h_max = min(mp.h_max, 0.05 / p, 4.0 * h_scan)
     atol_th = 1e-3 * rtol * alpha
     atol_om = atol_th * p
-    atol_u = rtol * R * math.sin(alpha)  # the plate to rtol of the block's half-width b
+    # the plate to rtol of the block's half-width b (the smaller side's)
+    if mp.R * math.sin(mp.alpha) <= mp.R_m * math.sin(mp.alpha_m):
+        atol_u = rtol * mp.R * math.sin(mp.alpha)
+    else:
+        atol_u = rtol * mp.R_m * math.sin(mp.alpha_m)
     atol_v = atol_u * p
     y = np.zeros(4)
     y[0], y[1] = th0, om0
@@ -432,11 +472,11 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     need_d = True
     while t < t_end - 1e-12:
         if not rock:
-            if t >= t_quiet and _amp_bound(mp, y) <= thr:
+            if t >= t_quiet and _amp_bound(mp, y) <= thr_lo:
                 break  # the ground is still and the plate cannot uplift the block
             gf = _gf(prm, samples, t)
             a0 = -_force(mp, y[2], y[3], gf)
-            if abs(a0) > thr * gf:
+            if _up_margin(a0, thr, gf) > 0.0:
                 rock, s, need_d = True, (1.0 if a0 > 0.0 else -1.0), True
                 if math.isnan(t_up):
                     t_up = t
@@ -580,20 +620,22 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
             imp[n_imp] = t
         n_imp += 1
         om1 = y[1]
-        om2 = mu * om1
+        om2 = (mp.mu if s > 0.0 else mp.mu_m) * om1  # rocking on side s ends
+        sn = 1.0 if om2 > 0.0 else -1.0  # the landing side (the new pivot's)
+        al_n, p_n, hc = (mp.alpha, mp.p, hc_p) if sn > 0.0 else (mp.alpha_m, mp.p_m, hc_m)
         y[0] = 0.0
         y[1] = om2
         y[3] += gam * hc * (om2 - om1)
         gf = _gf(prm, samples, t)
-        c = math.cos(alpha) + 0.5 * (om2 / p) ** 2 / gf if gf > 0.0 else 2.0
-        amp = alpha - math.acos(c) if c < 1.0 else math.inf
+        c = math.cos(al_n) + 0.5 * (om2 / p_n) ** 2 / gf if gf > 0.0 else 2.0
+        amp = al_n - math.acos(c) if c < 1.0 else math.inf
         v_rest = y[3] - gam * hc * om2
-        if om2 == 0.0 or (amp < rest_tol * alpha
-                          and abs(_force(mp, y[2], v_rest, gf)) <= thr * gf):
+        if om2 == 0.0 or (amp < rest_tol * al_n
+                          and _up_margin(-_force(mp, y[2], v_rest, gf), thr, gf) <= 0.0):
             y[1], y[3] = 0.0, v_rest
             rock = False
         else:
-            s = 1.0 if om2 > 0.0 else -1.0
+            s = sn
             d[0], d[1], d[2] = _deriv(mp, y[0], y[1], y[2], y[3], t, s, rock, kind, prm,
                                       samples)
             peak_a = max(peak_a, abs(d[2]))
@@ -611,10 +653,9 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
 
 @njit(cache=True)
 def block_terms(alpha, p, R, gam, mu_given):
-    """``(lambda, mu)`` of a block (``lambda = R p^2 / g``; ``mu``: ``mu_given``, or the
-    derived restitution ``1 - 2 lambda sin^2(alpha) / (1 - gamma lambda cos^2(alpha))``
-    where it is NaN). Compiled, and used by both :meth:`Isolated.kernel_params` and
-    :func:`with_block`, so that batch rows are bit-identical to single runs."""
+    """``(lambda, mu)`` of a symmetric block (``lambda = R p^2 / g``; ``mu``: ``mu_given``,
+    or the derived restitution ``1 - 2 lambda sin^2(alpha) / (1 - gamma lambda
+    cos^2(alpha))`` where it is NaN)."""
     lam = R * p * p / G
     if mu_given == mu_given:
         return lam, mu_given
@@ -623,12 +664,42 @@ def block_terms(alpha, p, R, gam, mu_given):
 
 
 @njit(cache=True)
+def side_terms(alpha_p, p_p, R_p, alpha_m, p_m, R_m, gam, mu_given):
+    """``(lambda_+, mu_+, lambda_-, mu_-)`` of a block's two sides: ``lambda_s = R_s p_s^2
+    / g``, and ``mu_s`` (the restitution of an impact that ends rocking on side ``s``)
+    ``mu_given``, or where it is NaN the one derived from the momentum balance with the
+    plate (:mod:`rocking.testing.isolated_reference`, asymmetric impact), with ``o`` the
+    landing side:
+
+    ``mu_s = 1 - lambda_o sin(alpha_o) (sin(alpha_o) + (R_s/R_o) sin(alpha_s)) / (1 - gamma
+    lambda_o cos^2(alpha_o))``.
+
+    Equal sides: :func:`block_terms` (the symmetric arithmetic exactly). Compiled, and used
+    by both :meth:`Isolated.kernel_params` and :func:`with_block`, so that batch rows are
+    bit-identical to single runs."""
+    if alpha_p == alpha_m and p_p == p_m and R_p == R_m:
+        lam, mu = block_terms(alpha_p, p_p, R_p, gam, mu_given)
+        return lam, mu, lam, mu
+    lam_p = R_p * p_p * p_p / G
+    lam_m = R_m * p_m * p_m / G
+    if mu_given == mu_given:
+        return lam_p, mu_given, lam_m, mu_given
+    sp, sm = math.sin(alpha_p), math.sin(alpha_m)
+    cp, cm = math.cos(alpha_p), math.cos(alpha_m)
+    mu_p = 1.0 - lam_m * sm * (sm + R_p / R_m * sp) / (1.0 - gam * lam_m * cm * cm)
+    mu_m = 1.0 - lam_p * sp * (sp + R_m / R_p * sm) / (1.0 - gam * lam_p * cp * cp)
+    return lam_p, mu_p, lam_m, mu_m
+
+
+@njit(cache=True)
 def with_block(mp, b):
-    """``mp`` with the block ``b = (alpha, p, R)`` of a batch row (``lambda`` and a derived
-    restitution rebuilt from it)."""
-    lam, mu = block_terms(b[0], b[1], b[2], mp.gam, mp.mu_given)
-    return IsolatedParams(b[0], b[1], mu, b[2], lam, mp.gam, mp.iso, mp.c1, mp.c2, mp.veps,
-                          mp.clearance, mp.h_max, mp.rest_tol, mp.rtol, mp.mu_given, mp.ws2)
+    """``mp`` with the block ``b = (alpha_+, p_+, R_+, alpha_-, p_-, R_-)`` of a batch row
+    (``lambda`` and the derived restitutions rebuilt from it, :func:`side_terms`)."""
+    lam_p, mu_p, lam_m, mu_m = side_terms(b[0], b[1], b[2], b[3], b[4], b[5], mp.gam,
+                                          mp.mu_given)
+    return IsolatedParams(b[0], b[1], mu_p, b[2], lam_p, mp.gam, mp.iso, mp.c1, mp.c2,
+                          mp.veps, mp.clearance, mp.h_max, mp.rest_tol, mp.rtol, mp.mu_given,
+                          mp.ws2, b[3], b[4], mu_m, b[5], lam_m)
 
 
 @njit(cache=True, parallel=True)
@@ -695,9 +766,7 @@ class Isolated(Model):
                                              "(NaN: never)"),
     )
 
-    @classmethod
-    def check_block(cls, block):
-        return require_symmetric(super().check_block(block), cls.name)
+    accepts_asymmetric = True
 
     LINEAR_ONLY = ("isolation_period", "isolation_damping")
     PENDULUM_ONLY = ("radius", "friction", "v_eps")
@@ -723,29 +792,55 @@ class Isolated(Model):
             warn_implausible(f"model 'isolated': clearance {o.clearance:g} m is above 2 m; "
                              "check the units (lengths are in m: '15cm' is 0.15)")
         if o.mu is None:  # the derived restitution replaces the block's own mu: say so
-            alpha, p, R = self.block_row(self.block)
-            lam = R * p * p / G
-            mu_fixed = 1.0 - 2.0 * lam * math.sin(alpha) ** 2
-            if abs(self.block.mu - mu_fixed) > 1e-3:  # Eq 4 to the 3 decimals of tables
-                _, mu_iso = block_terms(alpha, p, R, 1.0 / (1.0 + o.mass_ratio), math.nan)
-                warn_implausible(
-                    f"model 'isolated' derives the impact restitution from the momentum "
-                    f"of block and plate ({mu_iso:.4f} here; {mu_fixed:.4f} on a fixed "
-                    f"base, Eq 4 for this geometry): the block's own mu = "
-                    f"{self.block.mu:.4f} is not used; pass mu=... to impose one")
+            row = self.block_row(self.block)
+            gam = 1.0 / (1.0 + o.mass_ratio)
+            _, fix_p, _, fix_m = side_terms(*row, 0.0, math.nan)  # on a fixed base
+            _, iso_p, _, iso_m = side_terms(*row, gam, math.nan)
+            if min(iso_p, iso_m) <= 0.0:
+                raise ParameterError(
+                    f"model 'isolated': the restitution derived from the momentum of block "
+                    f"and plate is {min(iso_p, iso_m):.4f} <= 0 for this squat block "
+                    f"(mass_ratio = {o.mass_ratio:g}): the block would not rock on the "
+                    "plate as Housner's impact assumes; pass mu=... in (0, 1] to impose one")
+            own = (self.block.mu_plus, self.block.mu_minus)
+            if max(abs(own[0] - fix_p), abs(own[1] - fix_m)) > 1e-3:  # 3 decimals of tables
+                if self.block.symmetric:
+                    what = (f"({iso_p:.4f} here; {fix_p:.4f} on a fixed base, Eq 4 for this "
+                            f"geometry): the block's own mu = {own[0]:.4f} is not used")
+                else:
+                    what = (f"({iso_p:.4f}/{iso_m:.4f} here, sides +/-; {fix_p:.4f}/"
+                            f"{fix_m:.4f} on a fixed base, from angular momentum for this "
+                            f"geometry): the block's own mu = {own[0]:.4f}/{own[1]:.4f} is "
+                            "not used")
+                warn_implausible("model 'isolated' derives the impact restitution from the "
+                                 f"momentum of block and plate {what}; pass mu=... to "
+                                 "impose one")
 
     @classmethod
     def block_row(cls, block) -> tuple:
-        """``(alpha, p, R)``; ``R`` a rectangle's ``3 g / (4 p^2)`` when the block has none."""
-        R = block.R if block.R is not None else 3.0 * G / (4.0 * block.p ** 2)
-        return (float(block.alpha), float(block.p), float(R))
+        """``(alpha_+, p_+, R_+, alpha_-, p_-, R_-)`` (both sides; equal for a symmetric
+        block); ``R`` a rectangle's ``3 g / (4 p^2)`` when the block has none."""
+        out = []
+        for alpha, p, R in ((block.alpha_plus, block.p_plus, block.R_plus),
+                            (block.alpha_minus, block.p_minus, block.R_minus)):
+            out += [float(alpha), float(p),
+                    float(R if R is not None else 3.0 * G / (4.0 * p ** 2))]
+        return tuple(out)
+
+    def restitutions(self) -> tuple[float, float]:
+        """``(mu_+, mu_-)``: the impact restitutions used (``mu``, or those derived from the
+        momentum of block and plate, :func:`side_terms`)."""
+        mu_given = math.nan if self.options.mu is None else float(self.options.mu)
+        _, mu_p, _, mu_m = side_terms(*self.block_row(self.block),
+                                      1.0 / (1.0 + self.options.mass_ratio), mu_given)
+        return float(mu_p), float(mu_m)
 
     def kernel_params(self, dt_out, theta0, omega0):
         b, o = self.block, self.options
-        alpha, p, R = self.block_row(b)
+        row = self.block_row(b)
         gam = 1.0 / (1.0 + o.mass_ratio)
         mu_given = math.nan if o.mu is None else float(o.mu)
-        lam, mu = block_terms(alpha, p, R, gam, mu_given)
+        lam, mu, lam_m, mu_m = side_terms(*row, gam, mu_given)
         if o.isolation == "linear":
             w = 2.0 * math.pi / o.isolation_period
             iso, c1, c2, veps = 0.0, w * w, 2.0 * o.isolation_damping * w, 1.0
@@ -763,14 +858,20 @@ class Isolated(Model):
                                      "moat wall at |u| = clearance")
             ws2 = (2.0 * math.pi / o.stop_period) ** 2
             h = min(h, o.stop_period / 20.0)
+        alpha, p, R, alpha_m, p_m, R_m = row
         return IsolatedParams(*(float(x) for x in (
             alpha, p, mu, R, lam, gam, iso, c1, c2, veps, clear, min(h, o.max_step),
-            o.rest_tol, o.rtol, mu_given, ws2)))
+            o.rest_tol, o.rtol, mu_given, ws2, alpha_m, p_m, mu_m, R_m, lam_m)))
 
     def info(self, dt_out=None):
         """The options, and ``restitution``: the impact restitution used (``mu``, or the
-        one derived from the momentum of block and plate)."""
-        alpha, p, R = self.block_row(self.block)
-        mu_given = math.nan if self.options.mu is None else float(self.options.mu)
-        _, mu = block_terms(alpha, p, R, 1.0 / (1.0 + self.options.mass_ratio), mu_given)
-        return {**super().info(dt_out), "restitution": float(mu)}
+        one derived from the momentum of block and plate); for an asymmetric block that of
+        an impact ending rocking on its weaker side, and both as ``restitution_plus``,
+        ``restitution_minus``."""
+        mu_p, mu_m = self.restitutions()
+        b = self.block
+        out = {**super().info(dt_out),
+               "restitution": mu_m if b.alpha_minus < b.alpha_plus else mu_p}
+        if not b.symmetric:
+            out.update(restitution_plus=mu_p, restitution_minus=mu_m)
+        return out

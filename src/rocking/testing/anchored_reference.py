@@ -70,6 +70,30 @@ An anchor of zero strength breaks as soon as it would carry a force (at the upli
 its side): the block is then the free (classical) block. After an anchor breaks its side
 rocks freely; after both have broken the block is the classical one.
 
+Asymmetric blocks
+-----------------
+A body whose pivots are at the horizontal distances ``b_+``, ``b_-`` from its centre of
+mass (height ``h``; :meth:`rocking.Block.from_geometry`, :meth:`rocking.Block.from_mesh`;
+Contento and Di Egidio 2009) rocks on side ``s`` with that side's ``alpha_s = atan(b_s /
+h)``, ``p_s`` and ``R_s``, and an impact that ends rocking on side ``s`` multiplies the
+velocity by ``mu_s`` (:mod:`rocking.models.housner`). The anchors sit at the two pivots,
+the base width ``L = b_+ + b_- = h (tan(alpha_+) + tan(alpha_-))`` apart (``2 b`` above):
+on side ``s`` the lifting corner rises by ``L sin|theta|``, the anchor's force ``F = k_a L
+sin|theta|`` (``kappa = k_a L / (m g)``) has the lever arm ``L cos(theta)``, and the
+moment equation above becomes
+
+.. math::
+
+    \theta'' = -s p_s^2 \sin(\alpha_s - s\theta) + p_s^2 \cos(\alpha_s - s\theta)\, a/g
+               - s\, p_s^2\, f\, (L / R_s) \cos\theta,
+
+``L / R_s = 2 sin(alpha)`` for a symmetric block. At rest the moments about the pivot
+``s`` give ``m |a| h <= m g b_s + L F``: a rigid anchor ``s`` holds the block down until
+``s a > g (tan(alpha_s) + q (tan(alpha_+) + tan(alpha_-)))`` (Makris and Zhang's ``g
+tan(alpha) (1 + 2 q)`` for a symmetric block), carrying ``f = (|a|/g - tan(alpha_s)) /
+(tan(alpha_+) + tan(alpha_-))`` before. An anchor of zero strength leaves the classical
+asymmetric block.
+
 Impacts (Eq 4), rest (Zeno rule) and overturning are those of
 :mod:`rocking.testing.housner_reference`: at ``theta = 0`` the velocity is multiplied by
 ``mu``; after an impact the block is put at rest if the amplitude that free motion of the
@@ -257,12 +281,20 @@ def simulate_anchored_reference(block, motion, t_end: float, anchor_strength: fl
         exc = Excitation(FunctionMotion(motion, positive("scan_step", scan_step, "s")))
     else:
         raise ParameterError("motion must be a rocking Motion or a function a(t)")
-    alpha, p, mu = block.alpha, block.p, block.mu
-    p2 = p * p
-    ta = math.tan(alpha)
-    sa2 = 2.0 * math.sin(alpha)
+    # the sides (module docstring, asymmetric blocks): alpha, p, mu, and the lever ratio
+    # L / R_s of the elastic anchor's moment, L = b_+ + b_- the base width
+    side = {1.0: (block.alpha_plus, block.p_plus, block.mu_plus, block.R_plus),
+            -1.0: (block.alpha_minus, block.p_minus, block.mu_minus, block.R_minus)}
+    tan_sum = math.tan(side[1.0][0]) + math.tan(side[-1.0][0])  # L / h
+    if block.R_plus is not None:  # L from the pivots' distances b_s = R_s sin(alpha_s)
+        width = sum(R * math.sin(a) for a, _, _, R in side.values())
+        lever = {s: width / side[s][3] for s in side}
+    else:  # one height h: R_s = h / cos(alpha_s)
+        lever = {s: tan_sum * math.cos(side[s][0]) for s in side}
+    a_lo = min(side[1.0][0], side[-1.0][0])
+    p_hi = max(side[1.0][1], side[-1.0][1])
     if atol is None:
-        atol = [1e-3 * rtol * alpha, 1e-3 * rtol * alpha * p]
+        atol = [1e-3 * rtol * a_lo, 1e-3 * rtol * a_lo * p_hi]
 
     broken = {1.0: False, -1.0: False}
     t_break = {1.0: math.nan, -1.0: math.nan}
@@ -274,14 +306,15 @@ def simulate_anchored_reference(block, motion, t_end: float, anchor_strength: fl
         t_break[side] = t
         f_max = max(f_max, q)
 
-    def thr(side):  # uplift threshold towards `side` (m/s^2)
-        return G * ta * (1.0 + 2.0 * q) if rigid and not broken[side] else G * ta
+    def thr(s):  # uplift threshold towards `s` (m/s^2): m a h = m g b_s (+ L F_a)
+        ta = math.tan(side[s][0])
+        return G * (ta + q * tan_sum) if rigid and not broken[s] else G * ta
 
     def hold_force(a):  # rigid anchors at rest: the force the intact one carries
-        side = 1.0 if a > 0.0 else -1.0
-        if not rigid or broken[side]:
+        s = 1.0 if a > 0.0 else -1.0
+        if not rigid or broken[s]:
             return 0.0
-        return min(q, max(0.0, 0.5 * (abs(a) / (G * ta) - 1.0)))
+        return min(q, max(0.0, (abs(a) / G - math.tan(side[s][0])) / tan_sum))
 
     t, th, om = 0.0, 0.0, 0.0
     resting = True
@@ -316,11 +349,14 @@ def simulate_anchored_reference(block, motion, t_end: float, anchor_strength: fl
         fn = exc.fns[k]
         anch = not broken[s]  # only an elastic anchor can be intact while its side rocks
 
-        def rhs(tt, y, s=s, fn=fn, anch=anch):
+        alpha, p, _, _ = side[s]
+        p2 = p * p
+
+        def rhs(tt, y, s=s, fn=fn, anch=anch, alpha=alpha, p2=p2, lr=lever[s]):
             x = alpha - s * y[0]
             acc = -s * p2 * math.sin(x) + p2 * math.cos(x) * fn(tt) / G
             if anch:
-                acc -= p2 * sa2 * kappa * math.sin(y[0]) * math.cos(y[0])
+                acc -= p2 * lr * kappa * math.sin(y[0]) * math.cos(y[0])
             return (y[1], acc)
 
         def ev_impact(tt, y, s=s, t_start=t):
@@ -371,15 +407,16 @@ def simulate_anchored_reference(block, motion, t_end: float, anchor_strength: fl
         if sol.t_events[0].size:
             te = float(sol.t_events[0][0])
             impacts.append(te)
-            om = mu * float(sol.y_events[0][0][1])
+            om = side[s][2] * float(sol.y_events[0][0][1])  # rocking on side s ends
             th, t = 0.0, te
             a_t = _point_values(exc, t)[0]
             can_lift = a_t > thr(1.0) or -a_t > thr(-1.0)
-            if om == 0.0 or (free_amplitude(om, alpha, p) < rest_tol * alpha
-                             and not can_lift):
+            sn = 1.0 if om > 0.0 else -1.0  # the side it rebounds on
+            if om == 0.0 or (free_amplitude(om, side[sn][0], side[sn][1])
+                             < rest_tol * side[sn][0] and not can_lift):
                 resting, om = True, 0.0
                 continue
-            s = 1.0 if om > 0.0 else -1.0
+            s = sn
             if not broken[s] and (rigid or q == 0.0):
                 breaks(s, t)  # a rigid anchor cannot stop the block: it breaks at the impact
             continue

@@ -154,11 +154,54 @@ given restitution ``mu`` instead (``mu=...``: ``theta'_2 = mu theta'_1``) the pl
 follows from the momentum balance alone, ``Delta v = gamma h (mu - 1) theta'_1``; with
 ``mu = 1`` nothing changes and the energy is conserved.
 
+Asymmetric blocks
+-----------------
+A body whose pivots are at different distances from its centre of mass
+(:meth:`rocking.Block.from_geometry`, :meth:`rocking.Block.from_mesh`; Contento and Di
+Egidio 2009): side ``s`` has its own ``alpha_s``, ``p_s``, ``R_s``, ``lambda_s = R_s p_s^2
+/ g`` (``b_s = R_s sin(alpha_s)``; one height ``h = R_s cos(alpha_s)`` of the centre of
+mass and one centroidal inertia ``m r_g^2 = I_{O_s} - m R_s^2``). On the branch ``s`` the
+block pivots on the corner at ``x = -s b_s``, and the Lagrangian above holds with that
+side's parameters (``phi = alpha_s - s theta``): the equations of motion are those above
+with ``alpha, p, R, lambda`` replaced by ``alpha_s, p_s, R_s, lambda_s``. At rest the
+block uplifts towards ``+`` when ``A > g_e tan(alpha_+)``, towards ``-`` when ``-A > g_e
+tan(alpha_-)``.
+
+At an impact that ends rocking on side ``s`` the block lands on the pivot ``o = -s``: with
+the centre at ``(-s b_o, h)`` from it and its velocity ``(v - h theta', s b_s theta')``
+before (rotation about the old pivot) and ``(v - h theta', -s b_o theta')`` after, the
+angular momentum about the new pivot and the horizontal momentum ``P = M v - m h theta'``
+give
+
+.. math::
+
+    H_{before} = m\,(r_g^2 + h^2 - b_s b_o)\,\theta'_1 - m h v_1, \qquad
+    H_{after} = I_{O_o}\,\theta'_2 - m h v_2,
+
+and, with ``v_2 - v_1 = gamma h (theta'_2 - theta'_1)`` as above,
+
+.. math::
+
+    \mu_{iso,s} = \frac{\theta'_2}{\theta'_1}
+        = \frac{r_g^2 + h^2 - b_s b_o - \gamma h^2}{r_g^2 + R_o^2 - \gamma h^2}
+        = 1 - \frac{\lambda_o \sin\alpha_o\,(\sin\alpha_o + (R_s/R_o)\sin\alpha_s)}
+                   {1 - \gamma\lambda_o\cos^2\alpha_o},
+
+which is :attr:`rocking.Block.mu_plus` / ``mu_minus`` (the fixed-base restitution of
+:meth:`rocking.Block.from_geometry`, from the same angular momentum) as ``gamma -> 0`` and
+the symmetric ``mu_iso`` for equal sides; ``Delta v = gamma h (mu_iso,s - 1) theta'_1``.
+Where a block's sides do not make one rigid body exactly (a side changed by
+:meth:`rocking.Block.with_params`, a drawn ``alpha`` scaling both sides) the impact takes
+``h``, ``r_g`` and ``b_o`` from the landing side ``o`` (this reference and the compiled
+model alike). A given ``mu`` applies to both sides.
+
 Rest after an impact (Zeno rule, as in :mod:`rocking.testing.housner_reference`): if the
 amplitude that free motion of the block on a fixed base would reach from the post-impact
 ``theta'`` (under the gravity ``g_e`` of that instant) is below ``rest_tol * alpha`` and
-the plate cannot uplift the block there, the block is put at rest; the plate then takes
-the common velocity that conserves ``P``, ``v -> v - gamma h theta'``.
+the plate cannot uplift the block there (towards either side), the block is put at rest;
+the plate then takes the common velocity that conserves ``P``, ``v -> v - gamma h
+theta'``. (The amplitude is that of the landing side, whose pivot the block now rocks
+on.)
 
 Overturning: ``|theta|`` reaches ``pi/2`` (the run stops). Clearance: ``|u|`` reaches
 ``clearance`` (the moat wall). Without a stop the run stops there and the time is an
@@ -205,14 +248,37 @@ def _geometry(block):
     return R, R * block.p ** 2 / G
 
 
-def isolated_restitution(block, mass_ratio: float) -> float:
+def _side(block, s: float) -> tuple[float, float, float, float]:
+    """``(alpha, p, R, lambda)`` of the side ``s`` (+1: the pivot of ``theta > 0``, -1:
+    the other); ``R`` a rectangle's ``3 g / (4 p^2)`` if unknown."""
+    alpha, p, R = ((block.alpha_plus, block.p_plus, block.R_plus) if s > 0.0
+                   else (block.alpha_minus, block.p_minus, block.R_minus))
+    R = R if R is not None else 3.0 * G / (4.0 * p ** 2)
+    return alpha, p, R, R * p * p / G
+
+
+def isolated_restitution(block, mass_ratio: float, side: str | None = None) -> float:
     """``mu_iso = theta'_after / theta'_before`` of an impact on a plate of mass
     ``mass_ratio * m`` (module docstring): ``1 - 2 lambda sin^2(alpha) / (1 - gamma lambda
-    cos^2(alpha))``, ``gamma = 1 / (1 + mass_ratio)``."""
-    _, lam = _geometry(block)
+    cos^2(alpha))``, ``gamma = 1 / (1 + mass_ratio)``, for a symmetric block; for an
+    asymmetric one, that of the impact that ends rocking on ``side`` (``"+"`` or ``"-"``;
+    None: the weaker side, the smaller ``alpha``) from the angular momentum about the new
+    pivot (module docstring, asymmetric blocks)."""
     gam = 1.0 / (1.0 + mass_ratio)
-    a = block.alpha
-    return 1.0 - 2.0 * lam * math.sin(a) ** 2 / (1.0 - gam * lam * math.cos(a) ** 2)
+    if block.symmetric:
+        _, lam = _geometry(block)
+        a = block.alpha
+        return 1.0 - 2.0 * lam * math.sin(a) ** 2 / (1.0 - gam * lam * math.cos(a) ** 2)
+    if side is None:
+        side = "-" if block.alpha_minus < block.alpha_plus else "+"
+    if side not in ("+", "-"):
+        raise ParameterError(f"side must be '+' or '-', got {side!r}")
+    s = 1.0 if side == "+" else -1.0
+    a_s, _, R_s, _ = _side(block, s)
+    a_o, p_o, R_o, _ = _side(block, -s)  # the landing side: the new pivot
+    h, b_s, b_o = R_o * math.cos(a_o), R_s * math.sin(a_s), R_o * math.sin(a_o)
+    rg2 = G * R_o / p_o ** 2 - R_o ** 2  # I_O = m (r_g^2 + R^2) = m g R / p^2
+    return (rg2 + h * h - b_s * b_o - gam * h * h) / (rg2 + R_o * R_o - gam * h * h)
 
 
 def isolation_force(isolation: str, u, v, *, period=None, damping=0.0, radius=None,
@@ -336,15 +402,20 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
             raise ParameterError("stop_period needs a finite clearance (m)")
         ws2 = (2.0 * math.pi / stop_period) ** 2
 
-    alpha, p = block.alpha, block.p
-    p2 = p * p
-    R, lam = _geometry(block)
-    h = R * math.cos(alpha)
+    sides = {1.0: _side(block, 1.0), -1.0: _side(block, -1.0)}  # (alpha, p, R, lambda)
     gam = 1.0 / (1.0 + mass_ratio)
-    mu_i = isolated_restitution(block, mass_ratio) if mu is None else float(mu)
-    thr = G * math.tan(alpha)
+    if mu is not None:
+        mu_side = {1.0: float(mu), -1.0: float(mu)}
+    elif block.symmetric:
+        mu_side = dict.fromkeys((1.0, -1.0), isolated_restitution(block, mass_ratio))
+    else:
+        mu_side = {1.0: isolated_restitution(block, mass_ratio, "+"),
+                   -1.0: isolated_restitution(block, mass_ratio, "-")}
+    thr_s = {s: G * math.tan(sides[s][0]) for s in (1.0, -1.0)}  # uplift towards s
+    a_lo = min(sides[1.0][0], sides[-1.0][0])
+    p_hi = max(sides[1.0][1], sides[-1.0][1])
     if atol is None:
-        atol = [1e-3 * rtol * alpha, 1e-3 * rtol * alpha * p, 1e-12, 1e-12]
+        atol = [1e-3 * rtol * a_lo, 1e-3 * rtol * a_lo * p_hi, 1e-12, 1e-12]
 
     def force(u, v, ge=G):
         f = isolation_force(isolation, u, v, period=period, damping=damping,
@@ -358,6 +429,8 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
         f = force(y[2], y[3], ge)
         if not rocking:
             return -f, 0.0
+        alpha, p, R, lam = sides[s]
+        p2 = p * p
         phi = alpha - s * y[0]
         c, sn = math.cos(phi), math.sin(phi)
         gf = ge / G
@@ -391,7 +464,7 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
             break
         if not rocking:  # uplift at once if |A| already exceeds the threshold
             A0 = -force(y[2], y[3], ge0)
-            if abs(A0) > thr * ge0 / G:
+            if A0 > thr_s[1.0] * ge0 / G or -A0 > thr_s[-1.0] * ge0 / G:
                 rocking, s = True, math.copysign(1.0, A0)
                 y[0] = y[1] = 0.0
                 if math.isnan(uplift_time):
@@ -421,11 +494,11 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
 
         def ev_up_p(tt, yy, vfn=vfn):
             ge = G + vfn(tt)
-            return -force(yy[2], yy[3], ge) - thr * ge / G
+            return -force(yy[2], yy[3], ge) - thr_s[1.0] * ge / G
 
         def ev_up_m(tt, yy, vfn=vfn):
             ge = G + vfn(tt)
-            return -force(yy[2], yy[3], ge) + thr * ge / G
+            return -force(yy[2], yy[3], ge) + thr_s[-1.0] * ge / G
 
         def ev_lift(tt, yy, vfn=vfn):
             return G + vfn(tt)
@@ -509,18 +582,23 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
                 impacts.append(te)
                 ye = sol.y_events[0][0]
                 om1 = float(ye[1])
-                om2 = mu_i * om1
+                om2 = mu_side[s] * om1  # rocking on side s ends
+                sn = 1.0 if om2 > 0.0 else -1.0  # the landing side
+                a_n, p_n, R_n, _ = sides[sn]
+                h = R_n * math.cos(a_n)
                 v2 = float(ye[3]) + gam * h * (om2 - om1)
                 y = np.array([0.0, om2, float(ye[2]), v2])
                 v_rest = v2 - gam * h * om2  # plastic: the common velocity conserving P
                 ge = G + vfn(te)
-                pe = p * math.sqrt(max(ge / G, 1e-300))  # free rocking under g_e
-                if om2 == 0.0 or (_free_amplitude(om2, alpha, pe) < rest_tol * alpha
-                                  and abs(force(y[2], v_rest, ge)) <= thr * ge / G):
+                pe = p_n * math.sqrt(max(ge / G, 1e-300))  # free rocking under g_e
+                f_rest = force(y[2], v_rest, ge)
+                if om2 == 0.0 or (_free_amplitude(om2, a_n, pe) < rest_tol * a_n
+                                  and -f_rest <= thr_s[1.0] * ge / G
+                                  and f_rest <= thr_s[-1.0] * ge / G):
                     y[1], y[3] = 0.0, v_rest
                     rocking = False
                 else:
-                    s = 1.0 if om2 > 0.0 else -1.0
+                    s = sn
                 continue
         else:
             for j, sg in ((0, 1.0), (1, -1.0)):
@@ -542,6 +620,7 @@ def simulate_isolated_reference(block, motion_fn, t_end: float, mass_ratio: floa
         max_abs_theta=float(peak), overturned=overturned, overturn_time=t_over,
         uplift_time=uplift_time, impact_times=np.asarray(impacts, dtype=float),
         max_abs_u=float(peak_u), max_plate_acc=float(peak_a),
-        clearance_exceeded=cleared, clearance_time=t_clear, restitution=mu_i,
+        clearance_exceeded=cleared, clearance_time=t_clear,
+        restitution=mu_side[-1.0 if block.alpha_minus < block.alpha_plus else 1.0],
         settled=(overturned or not rocking) and math.isnan(lift_off_time),
         lift_off_time=lift_off_time, pieces=pieces)
