@@ -109,7 +109,10 @@ def is_3d(model) -> bool:
     >>> is_3d("rigid3d"), is_3d("housner")
     (True, False)
     """
-    return {"q0", "q1", "q2", "q3"} <= set(get_model(model).state_names)
+    names = get_model(model).state_names
+    # a model whose states depend on its block (the DEM's, per block) declares them as a
+    # property: not a single 3-D body
+    return not isinstance(names, property) and {"q0", "q1", "q2", "q3"} <= set(names)
 
 
 def _make(model, block, linear: bool, options: dict) -> Model:
