@@ -249,3 +249,34 @@ def test_bodies_that_cannot_rest_are_refused_naming_block():
                          duration=0.1)
     with pytest.raises(ParameterError, match="^tol: "):
         Shape.from_arrays(box.vertices, box.faces, density=1.0, settle=True, tol=0.01)
+
+
+# ------------------------------------------------------------------ planar refusals
+def octahedron():
+    """An octahedron on its lowest vertex, set off-centre (a symmetric one balances)."""
+    v = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [.2, .1, -1]])
+    return convex_hull(0.3 * v)
+
+
+def test_planar_refusals_name_rigid3d_and_settle(tmp_path):
+    """Where the planar analysis needs a flat base it refuses, naming model="rigid3d" and
+    settle=True; settled, the same bodies load: the octahedron on a vertex rests on a
+    stable face (the exhaustive search's), the box tilted beyond alpha on its side."""
+    import trimesh
+
+    v, f = octahedron()
+    path = tmp_path / "octahedron.stl"
+    trimesh.Trimesh(v, f).export(path)
+    for call in (lambda: Shape.from_arrays(v, f, density=1.0),
+                 lambda: rocking.Block.from_mesh(path, density=1.0)):
+        with pytest.raises(ParameterError, match="^no flat base") as e:
+            call()
+        assert 'model="rigid3d"' in str(e.value) and "settle=True" in str(e.value)
+    octa = rocking.shapes.load_shape(path, density=1.0, settle=True)
+    hit = [d for n, d in stable_faces(octa.vertices, octa.com) if n @ octa.frame[2] < -1 + 1e-12]
+    assert octa.contact_points == 3 and len(hit) == 1
+    assert octa.h == pytest.approx(hit[0], abs=1e-12)
+    with pytest.raises(ParameterError, match="cannot stand on its base") as e:
+        tilted_box([0, 1, 0], 20.0, tol=0.3)
+    assert 'model="rigid3d"' in str(e.value) and "settle=True" in str(e.value)
+    assert tilted_box([0, 1, 0], 20.0, settle=True).h == pytest.approx(LX / 2, abs=1e-12)

@@ -156,7 +156,9 @@ class Shape:
             where = (f"{-margin:.3g} m outside the support" if margin < 0.0
                      else "on the support's edge")
             raise ParameterError(f"the centre of mass's vertical falls {where}: the body "
-                                 f"cannot stand on its base along up={up!r}")
+                                 f"cannot stand on its base along up={up!r}; analyse it "
+                                 "with model=\"rigid3d\", which settles it into its "
+                                 "resting pose with no tol (load it with settle=True)")
         return cls(vertices=v, faces=f, mass=float(m), density=float(rho),
                    volume=props["volume"], com=com, inertia=inertia, frame=fr,
                    local_vertices=local, inertia_local=fr @ inertia @ fr.T,
