@@ -288,7 +288,10 @@ def metrics(sc: Scene, t, pos, quat, ref=None) -> dict:
         v = np.diff(z) / DT_OUT
         fall = np.flatnonzero(v < -0.5)
         land = fall[-1] + 1 if len(fall) else 0  # the end of the fall: the landing
-        out["rebound_mm"] = float(1e3 * (z[land:].max() - z[-1]))
+        out["landing_speed_m_s"] = float(-v[:land].min()) if land else np.nan
+        out["rebound_speed_m_s"] = float(max(v[land:].max(), 0.0))
+        out["rebound_mm"] = float(1e3 * max(z[land + 2:].max() - z[-1], 0.0))
+        out["max_sink_mm"] = float(1e3 * (sc.size[2] / 2 - z.min()))
         out["sink_at_rest_mm"] = float(1e3 * (sc.size[2] / 2 - z[-1]))
         moving = np.flatnonzero(np.abs(v) > 1e-3)
         out["time_to_rest_s"] = float(t[moving[-1] + 1]) if len(moving) else 0.0
@@ -302,6 +305,27 @@ def figure(sc: Scene, runs: dict, path: str):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    if sc.name == "drop":
+        fig, (ax, zoom) = plt.subplots(1, 2, figsize=(10, 3.6),
+                                       gridspec_kw={"width_ratios": [1, 1.3]})
+        for name, (t, pos, _) in runs.items():
+            style = dict(lw=2.2 if name == "rigid3d" else 1.2,
+                         ls="-" if name in ("rigid3d", "Siconos") else "--")
+            for a in (ax, zoom):
+                a.plot(t, 1e3 * (pos[:, 2] - sc.size[2] / 2), label=name, **style)
+        zoom.set_xlim(0.09, 0.32)
+        zoom.set_ylim(-0.25, 0.5)
+        zoom.set_title("the landing, zoomed (0 = resting on the plane)", fontsize=9)
+        ax.set_ylabel("height of the base (mm)")
+        for a in (ax, zoom):
+            a.set_xlabel("time (s)")
+            a.grid(alpha=0.3)
+        zoom.legend(fontsize=8, ncol=2)
+        ax.set_title(f"{sc.name}: {sc.label}")
+        fig.tight_layout()
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        return
     fig, ax = plt.subplots(figsize=(8, 3.6))
     for name, (t, pos, quat) in runs.items():
         style = dict(lw=2.2 if name == "rigid3d" else 1.2,
@@ -435,6 +459,16 @@ def main(argv=None):
     cols = ["scene", "code"]
     rows = [{**{c: r[c] for c in cols}, **{k: v for k, v in r.items() if k not in cols}}
             for r in rows]
+    csv = os.path.join(args.out, "peers.csv")
+    if args.scenes and os.path.isfile(csv):  # keep the other scenes' rows
+        import pandas as pd
+
+        old = pd.read_csv(csv)
+        keep = old[~old["scene"].isin(args.scenes)].to_dict("records")
+        rows = [{k: v for k, v in r.items() if not (isinstance(v, float) and math.isnan(v))}
+                for r in keep] + rows
+        order = [sc.name for sc in scenes()]
+        rows.sort(key=lambda r: order.index(r["scene"]))
     write_tables(rows, args.out)
     print(f"wrote {args.out}/peers.csv, peers.md and the figures")
 

@@ -180,6 +180,7 @@ def test_rigid3d_settles_a_shape_whose_base_is_not_flat(rock_mesh):
         body = Rigid3d.check_block(given)
         stays_at_rest(given)
     assert body.contact_points == 3 and body.h == pytest.approx(rock.h, abs=1e-12)
+    assert Rigid3d.check_block(given) is body  # settled once per shape
     assert given.contact_points > 3  # the patch within tol: more points than touch
 
 

@@ -971,9 +971,18 @@ def settled_body(shape):
     with a warning where it rolls off its declared base (the patch within ``tol``) onto
     another face. A shape whose declared support cannot carry it (its centre of mass's
     vertical not strictly inside the support, or the centre of mass not strictly inside
-    its hull: mass properties that do not belong to its mesh) is refused (``block``)."""
+    its hull: mass properties that do not belong to its mesh) is refused (``block``). A
+    settled pose is kept per shape (a weak reference): a batch or a campaign settles each
+    body once."""
+    import weakref
+
     from ..shapes.rest import REST_EPS, is_resting, rest_pose
     from ..shapes.support import inside_margin
+
+    cache = _SETTLED.setdefault("shapes", weakref.WeakKeyDictionary())
+    hit = cache.get(shape)
+    if hit is not None:
+        return hit
 
     pts = np.asarray(shape.hull_points())
     size = float(np.max(np.ptp(pts, axis=0)))
@@ -991,6 +1000,7 @@ def settled_body(shape):
     if is_resting(shape):
         return shape
     rested = rest_pose(shape)
+    cache[shape] = rested
     v = np.asarray(shape.vertices)
     z0 = v @ shape.frame[2]
     z1 = v @ rested.frame[2]
@@ -1004,3 +1014,7 @@ def settled_body(shape):
             f"another face, turning by {turn:.3g} deg; model 'rigid3d' runs it in that pose "
             "(rocking.shapes.rest.rest_pose)")
     return rested
+
+
+_SETTLED: dict = {}
+"""The settled bodies of :func:`settled_body`, per shape (weak keys)."""
