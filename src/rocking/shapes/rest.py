@@ -187,6 +187,9 @@ def settle(points, com, up, *, max_stages=None) -> Rest:
         w = hp - s3
         wu, wd = w @ u, w @ d
         ahead = wd > eps
+        if not ahead.any():  # cannot happen for a centre of mass inside the hull
+            raise ParameterError("block: the roll into the resting pose found no vertex "
+                                 "ahead of the pivot (a degenerate hull)")
         t = float(np.min(np.arctan2(np.maximum(wu[ahead], 0.0), wd[ahead])))
         u = u * math.cos(t) - d * math.sin(t)
         u /= np.linalg.norm(u)
