@@ -792,11 +792,17 @@ class Rigid3d(Model):
 
     @classmethod
     def check_block(cls, block):
+        """The body as a :class:`~rocking.shapes.Shape` at rest: a rectangular
+        :class:`~rocking.Block` becomes its box (:func:`box_of`); a shape that does not
+        rest exactly on its declared base (its contact patch within ``tol`` is not flat:
+        :func:`rocking.shapes.rest.is_resting`; a rock on three points, a scan tilted by
+        a fraction of a degree) is first settled under gravity into its resting pose
+        (:func:`settled_body`), so that no base tolerance matters."""
         from ..blocks import Block
         from ..shapes import Shape
 
         if isinstance(block, Shape):
-            return block
+            return settled_body(block)
         if isinstance(block, Block):
             return box_of(block)
         raise ParameterError(f"block must be a rocking.shapes.Shape (or a rectangular "
@@ -957,3 +963,58 @@ def rest_state(shape, tilt0: float = 0.0, direction: float = 0.0) -> np.ndarray:
     y[:3] = com
     y[3:7] = q
     return y
+
+
+def settled_body(shape):
+    """``shape`` in its resting pose (:func:`rocking.shapes.rest.rest_pose`): itself if
+    it rests exactly on its base, else settled under gravity from its given orientation,
+    with a warning where it rolls off its declared base (the patch within ``tol``) onto
+    another face. A shape whose declared support cannot carry it (its centre of mass's
+    vertical not strictly inside the support, or the centre of mass not strictly inside
+    its hull: mass properties that do not belong to its mesh) is refused (``block``). A
+    settled pose is kept per shape (a weak reference): a batch or a campaign settles each
+    body once."""
+    import weakref
+
+    from ..shapes.rest import REST_EPS, is_resting, rest_pose
+    from ..shapes.support import inside_margin
+
+    cache = _SETTLED.setdefault("shapes", weakref.WeakKeyDictionary())
+    hit = cache.get(shape)
+    if hit is not None:
+        return hit
+
+    pts = np.asarray(shape.hull_points())
+    size = float(np.max(np.ptp(pts, axis=0)))
+    if not inside_margin(shape.support, np.zeros(2)) > REST_EPS * size:
+        raise ParameterError("block: the centre of mass's vertical is not strictly inside "
+                             "the shape's declared support: it cannot rest on the plane")
+    from scipy.spatial import ConvexHull
+
+    eq = ConvexHull(pts).equations
+    if not float(np.max(eq[:, :3] @ np.array([0.0, 0.0, shape.h]) + eq[:, 3])) \
+            < -REST_EPS * size:
+        raise ParameterError("block: the centre of mass (at height h) is not strictly "
+                             "inside the shape's convex hull: its mass properties do not "
+                             "belong to its mesh, and it cannot rest on the plane")
+    if is_resting(shape):
+        return shape
+    rested = rest_pose(shape)
+    cache[shape] = rested
+    v = np.asarray(shape.vertices)
+    z0 = v @ shape.frame[2]
+    z1 = v @ rested.frame[2]
+    patch = z0 - z0.min() <= shape.tol
+    on = z1 - z1.min() <= rested.tol
+    if np.any(on & ~patch):
+        turn = math.degrees(math.acos(min(1.0, float(shape.frame[2] @ rested.frame[2]))))
+        warn_implausible(
+            f"block: {shape.name or 'the body'} does not rest on its declared base (the "
+            f"patch within tol = {shape.tol:.3g} m): settled under gravity it rolls onto "
+            f"another face, turning by {turn:.3g} deg; model 'rigid3d' runs it in that pose "
+            "(rocking.shapes.rest.rest_pose)")
+    return rested
+
+
+_SETTLED: dict = {}
+"""The settled bodies of :func:`settled_body`, per shape (weak keys)."""

@@ -11,6 +11,10 @@ direction of horizontal shaking (issue 20).
   :func:`plot_directional` draws it (polar).
 * :meth:`rocking.Block.from_shape` is the planar :class:`rocking.Block` of one direction and
   :meth:`Shape.polygon` its outline for the DEM.
+* :func:`rest_pose` settles a body whose base is not flat (a rock on three points) under
+  gravity into its resting pose, its support then exact (``settle=True`` in
+  :func:`load_shape`; :mod:`rocking.shapes.rest`); :func:`is_resting` tells whether a shape
+  already rests exactly on its base.
 * :func:`example_mesh_path` / :func:`load_example`: a small synthetic statue shipped with
   the package (``data/statue.ply``, written by ``data/make_example.py``).
 
@@ -33,9 +37,10 @@ from .directional import (
 )
 from .example import example_mesh_path, load_example
 from .plot import plot_directional
+from .rest import is_resting, rest_pose
 from .shape import MeshRepairWarning, Shape, load_shape
 
 __all__ = ["COLUMNS", "NAMED_DIRECTIONS", "Direction", "MeshRepairWarning", "Shape",
-           "directional_parameters", "example_mesh_path", "load_example", "load_shape",
-           "parse_direction", "plot_directional", "resolve_direction", "strongest_direction",
-           "weakest_direction"]
+           "directional_parameters", "example_mesh_path", "is_resting", "load_example",
+           "load_shape", "parse_direction", "plot_directional", "resolve_direction",
+           "rest_pose", "strongest_direction", "weakest_direction"]

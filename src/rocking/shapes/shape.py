@@ -38,6 +38,7 @@ from ..units import G
 from .directional import Direction, side_arrays
 from .mass import resolve_mass, volume_properties
 from .mesh import count_parts, read_mesh, size_of, validated
+from .rest import rest_tolerance, resting_up
 from .support import contact_tolerance, frame, inside_margin, support_hull
 
 PLAUSIBLE_HEIGHT = 50.0
@@ -102,8 +103,14 @@ class Shape:
     # ------------------------------------------------------------------ constructors
     @classmethod
     def from_arrays(cls, vertices, faces, *, density=None, mass=None, up="z", repair=None,
-                    tol=None, weld=None, name="", source=None) -> Shape:
+                    tol=None, weld=None, name="", source=None, settle=False) -> Shape:
         """A shape from vertices (n, 3) in m and triangles (m, 3) (module docstring).
+
+        ``settle=True``: the body, lowered along ``up``, is first settled under gravity
+        into its resting pose (:mod:`rocking.shapes.rest`: a quasi-static roll over its
+        convex hull); ``up`` becomes that pose's and the support its resting face,
+        exactly, with ``tol`` at rounding (no tolerance to choose: ``tol`` must not be
+        given).
 
         Examples
         --------
@@ -127,8 +134,13 @@ class Shape:
                              "(a hollow body's inner surface is one of them)")
         props = volume_properties(v, f)
         m, rho = resolve_mass(props["volume"], density, mass)
-        fr = frame(up)
         com = props["com"]
+        if settle:
+            if tol is not None:
+                raise ParameterError("tol: a settled shape has no contact tolerance to "
+                                     "choose (settle=True finds its resting face exactly)")
+            up, tol = resting_up(v, com, up), rest_tolerance(v)
+        fr = frame(up)
         inertia = props["inertia"] * rho
         z = v @ fr[2]
         zmin = float(z.min())
@@ -144,7 +156,9 @@ class Shape:
             where = (f"{-margin:.3g} m outside the support" if margin < 0.0
                      else "on the support's edge")
             raise ParameterError(f"the centre of mass's vertical falls {where}: the body "
-                                 f"cannot stand on its base along up={up!r}")
+                                 f"cannot stand on its base along up={up!r}; analyse it "
+                                 "with model=\"rigid3d\", which settles it into its "
+                                 "resting pose with no tol (load it with settle=True)")
         return cls(vertices=v, faces=f, mass=float(m), density=float(rho),
                    volume=props["volume"], com=com, inertia=inertia, frame=fr,
                    local_vertices=local, inertia_local=fr @ inertia @ fr.T,
@@ -426,7 +440,7 @@ class Shape:
 
 
 def load_shape(path, *, density=None, mass=None, up="z", repair=None, tol=None,
-               units="m", weld=None, name=None) -> Shape:
+               units="m", weld=None, name=None, settle=False) -> Shape:
     """Read, weld and validate the mesh in ``path`` (STL, OBJ or PLY) and return its
     :class:`Shape`.
 
@@ -435,7 +449,10 @@ def load_shape(path, *, density=None, mass=None, up="z", repair=None, tol=None,
     (with a :class:`MeshRepairWarning` stating the volume added) instead of refusing it.
     ``tol``: the contact patch's tolerance (m, or "2mm"; default 1e-3 of the height).
     ``units``: the file's length unit ("m", "cm", "mm"). ``weld``: the vertex-merging
-    distance (m; default 1e-9 of the bounding box's diagonal).
+    distance (m; default 1e-9 of the bounding box's diagonal). ``settle=True``: settle the
+    body, set down along ``up``, under gravity into its resting pose
+    (:mod:`rocking.shapes.rest`; its support is then its resting face, exactly, and
+    ``tol`` is not given): a scanned body whose base is not flat, a rock on three points.
 
     Examples
     --------
@@ -454,7 +471,7 @@ def load_shape(path, *, density=None, mass=None, up="z", repair=None, tol=None,
     stem = os.path.splitext(os.path.basename(os.fspath(path)))[0]
     return Shape.from_arrays(v, f, density=density, mass=mass, up=up, repair=repair,
                              tol=tol, weld=weld, name=stem if name is None else name,
-                             source=os.fspath(path))
+                             source=os.fspath(path), settle=settle)
 
 
 __all__ = ["MeshRepairWarning", "PLAUSIBLE_HEIGHT", "Shape", "load_shape"]

@@ -13,7 +13,9 @@ scanned base is never exactly flat; the patch of a slightly tilted or rough base
 still spans it), and the support is the patch's convex hull in the horizontal plane (qhull,
 :class:`scipy.spatial.ConvexHull`). A patch with fewer than three non-collinear points (a
 body on a point or an edge) is refused; so is a centre of mass whose vertical does not
-fall strictly inside the support (the body cannot stand).
+fall strictly inside the support (the body cannot stand). Both refusals name the way to
+analyse such a body: ``settle=True`` (:mod:`rocking.shapes.rest`: the resting pose, its
+face exact) and ``model="rigid3d"``.
 """
 
 from __future__ import annotations
@@ -93,7 +95,9 @@ def support_hull(local_vertices, tol: float) -> tuple[np.ndarray, np.ndarray]:
             return patch, pts[hull.vertices]  # 2-D hulls are counter-clockwise
     raise ParameterError(
         f"no flat base: the body stands on {what} (the contact patch within tol = "
-        f"{tol:.3g} m of the lowest plane has no area); check `up`, or raise tol")
+        f"{tol:.3g} m of the lowest plane has no area); check `up`, or raise tol, or "
+        f"analyse it with model=\"rigid3d\", which settles it into its resting pose with "
+        f"no tol (load it with settle=True)")
 
 
 def inside_margin(hull_xy, point) -> float:
