@@ -113,7 +113,9 @@ TAIL_NOTE = 0.1
 """A risk whose share from the hazard curve's extrapolated tails exceeds this gets a note
 (the number rests on the power-law extension beyond the curve's ends)."""
 RISK_COLUMNS = ("fit", "state", "label", "median", "beta", "im_unit", "annual_frequency",
-                "tail_share", "probability", "t_years", "annual_frequency_lower_bound",
+                "tail_share", "probability", "t_years", "annual_frequency_low",
+                "annual_frequency_high", "probability_low", "probability_high",
+                "interval_level", "interval_source", "annual_frequency_lower_bound",
                 "annual_frequency_upper_bound", "probability_lower_bound",
                 "probability_upper_bound", "hazard", "approximate", "note")
 """The columns of ``risk.csv`` after the group's (model, mitigation, block, floor). The
@@ -121,7 +123,10 @@ RISK_COLUMNS = ("fit", "state", "label", "median", "beta", "im_unit", "annual_fr
 frequency (and probability) of a step fragility at the IM bounds its outcomes give (the
 largest IM without failure, the smallest with): bounds only under that step model, not
 statistical confidence bounds (a fragility could rise below the largest IM run without
-failure)."""
+failure). ``annual_frequency_low``/``_high`` and ``probability_low``/``_high``: the
+central ``interval_level`` interval (0.9: the 5th and 95th percentiles) propagated from the
+fit's bootstrap and the hazard's fractile curves when it has them (``interval_source``;
+:func:`rocking.analysis.hazard.risk_interval`); NaN for a group without a fit."""
 
 CLEARANCE_FIT = "overturned_or_clearance"
 """The ``fit`` of the combined failure of a group whose runs were stopped at the isolator's
@@ -440,8 +445,13 @@ def _risk_row(f, curve: HazardCurve, t: float) -> dict:
         note = (f"{100 * r.tail_share:.0f}% of it from the power-law tails beyond the hazard "
                 f"curve ({_g(curve.im[0])}..{_g(curve.im[-1])} {curve.unit}): it rests on "
                 "that extrapolation")
+    lo, hi = r.annual_frequency_interval
+    pl, ph = r.probability_interval_in(t)
     return {"median": f.median, "beta": f.beta, "annual_frequency": r.annual_frequency,
-            "tail_share": r.tail_share, "probability": r.probability_in(t), "note": note}
+            "tail_share": r.tail_share, "probability": r.probability_in(t),
+            "annual_frequency_low": lo, "annual_frequency_high": hi, "probability_low": pl,
+            "probability_high": ph, "interval_level": r.interval_level,
+            "interval_source": r.interval_source, "note": note}
 
 
 def _bounds(ok: pd.DataFrame, im: dict, curve: HazardCurve, t: float,
@@ -529,7 +539,9 @@ def _risk_rows(key: dict, ok: pd.DataFrame, im: dict, fit, curves, labels: list[
     curve, t = site["curve"], site["t_years"]
     nan = math.nan
     base = {**key, "im_unit": im["unit"], "t_years": t, "hazard": curve.label,
-            "approximate": curve.approximate,
+            "approximate": curve.approximate, "annual_frequency_low": nan,
+            "annual_frequency_high": nan, "probability_low": nan, "probability_high": nan,
+            "interval_level": nan, "interval_source": "",
             "annual_frequency_lower_bound": nan, "annual_frequency_upper_bound": nan,
             "probability_lower_bound": nan, "probability_upper_bound": nan}
     x = ok[im["column"]].to_numpy(float)
@@ -696,6 +708,24 @@ def _source_text(src: dict) -> str:
     return out
 
 
+def _span(lo, hi) -> str:
+    """``"lo–hi"`` of an interval, ``"–"`` without one."""
+    if not (isinstance(lo, float | int) and math.isfinite(lo) and math.isfinite(hi)):
+        return "–"
+    return f"{_g(lo, 2)}–{_g(hi, 2)}"
+
+
+def _interval_words(rk: pd.DataFrame) -> str:
+    """What the intervals of ``rk`` are (their level and sources), for report.md."""
+    lv = rk["interval_level"].dropna() if "interval_level" in rk else pd.Series([], float)
+    if lv.empty:
+        return "no interval: the fits have no bootstrap and the hazard no fractile curves"
+    src = sorted({str(v) for v in rk["interval_source"] if v and v == v})
+    return (f"{100 * float(lv.iloc[0]):.0f} % interval (the {50 * (1 - float(lv.iloc[0])):g}th "
+            f"and {100 - 50 * (1 - float(lv.iloc[0])):g}th percentiles) from "
+            + "; ".join(src))
+
+
 def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
     """The risk section of ``report.md``."""
     c, t = site["curve"], site["t_years"]
@@ -716,17 +746,22 @@ def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
             "curve extended beyond its ends as power laws with its end slopes; tails: the "
             f"share of lambda from those extensions. P({_g(t, 6)} yr) = 1 - exp(-lambda t). "
             "A group without a fit has no number: the note gives the rate of the IM up to "
-            "which nothing overturned (or from which everything did).", ""]
+            "which nothing overturned (or from which everything did).",
+            f"Intervals: {_interval_words(rk)} (rocking.analysis.hazard.risk_interval).",
+            ""]
     ov = rk[rk["fit"] == "overturning"]
     by = "mitigation" if "mitigation" in rk.columns else "model"
     ty = f"P({_g(t, 6)} yr)"
     for _, f in ov.groupby(by, sort=False):
         out += [f"### {_run_name(f.iloc[0].to_dict())}: overturning", ""]
         rows = [[_group_name(r["block_name"], r.to_dict()), _g(r["annual_frequency"]),
-                 _g(r["probability"]), _g(100 * r["tail_share"], 2) + " %"
+                 _span(r["annual_frequency_low"], r["annual_frequency_high"]),
+                 _g(r["probability"]), _span(r["probability_low"], r["probability_high"]),
+                 _g(100 * r["tail_share"], 2) + " %"
                  if math.isfinite(r["tail_share"]) else "–", r["note"] or ""]
                 for _, r in f.iterrows()]
-        out += _md_table(["block", "annual frequency (/yr)", ty, "tails", "note"], rows)
+        out += _md_table(["block", "annual frequency (/yr)", "interval (/yr)", ty,
+                          "interval", "tails", "note"], rows)
     for _, f in rk[rk["fit"] == CLEARANCE_FIT].groupby(by, sort=False):
         out += [f"### {_run_name(f.iloc[0].to_dict())}: {CLEARANCE_LABEL}", "",
                 "The runs stopped at the isolator's clearance (clearance_exceeded) are no "
@@ -735,10 +770,13 @@ def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
                 "failure='overturned_or_clearance'), the conservative counterpart of the "
                 "overturning rows above, which count them as survivors.", ""]
         rows = [[_group_name(r["block_name"], r.to_dict()), _g(r["annual_frequency"]),
-                 _g(r["probability"]), _g(100 * r["tail_share"], 2) + " %"
+                 _span(r["annual_frequency_low"], r["annual_frequency_high"]),
+                 _g(r["probability"]), _span(r["probability_low"], r["probability_high"]),
+                 _g(100 * r["tail_share"], 2) + " %"
                  if math.isfinite(r["tail_share"]) else "–", r["note"] or ""]
                 for _, r in f.iterrows()]
-        out += _md_table(["block", "annual frequency (/yr)", ty, "tails", "note"], rows)
+        out += _md_table(["block", "annual frequency (/yr)", "interval (/yr)", ty,
+                          "interval", "tails", "note"], rows)
     ds = rk[rk["fit"] == "damage_states"]
     if len(ds):
         out += ["### Damage states", "",
@@ -1016,6 +1054,15 @@ def summary_lines(result: dict) -> list[str]:
     return lines + risk_lines(result)
 
 
+def _interval_part(r) -> str:
+    """`` (90 % interval: ... per year, P ...)`` of a risk row, ``""`` without one."""
+    lo, hi = r.get("annual_frequency_low", math.nan), r.get("annual_frequency_high", math.nan)
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        return ""
+    return (f" ({100 * r['interval_level']:.0f} % interval: {_span(lo, hi)} per year, "
+            f"probability {_span(r['probability_low'], r['probability_high'])})")
+
+
 def _stop_part(note) -> str:
     """``"; <the warning>"`` if ``note`` holds :func:`_stopped_note`'s, else ``""``."""
     parts = [p for p in str(note or "").split("; ") if STOPPED in p]
@@ -1053,7 +1100,8 @@ def risk_lines(result: dict) -> list[str]:
                         else "") + ")" if r["tail_share"] >= 0.005 else "")
             lines.append(f"{head} annual frequency of overturning "
                          f"{_g(r['annual_frequency'])} per year, {_g(t, 6)}-year probability "
-                         f"{_g(r['probability'])}{tails}{_stop_part(r['note'])}{tag}")
+                         f"{_g(r['probability'])}{_interval_part(r)}{tails}"
+                         f"{_stop_part(r['note'])}{tag}")
         else:
             lines.append(f"{head} {r['note']}{tag}")
         for _, q in rk[(rk["fit"] == CLEARANCE_FIT) & _same_group(rk, d)].iterrows():
@@ -1065,7 +1113,7 @@ def risk_lines(result: dict) -> list[str]:
                 lines.append(f"{head} {CLEARANCE_LABEL} (runs {STOPPED} count as "
                              f"failures): annual frequency {_g(q['annual_frequency'])} per "
                              f"year, {_g(t, 6)}-year probability {_g(q['probability'])}"
-                             f"{tails}{tag}")
+                             f"{_interval_part(q)}{tails}{tag}")
             else:
                 lines.append(f"{head} {CLEARANCE_LABEL} (runs {STOPPED} count as "
                              f"failures): {q['note']}{tag}")
