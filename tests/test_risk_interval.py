@@ -21,7 +21,6 @@ from rocking.analysis import HazardCurve, fragility, probability_in, risk
 from rocking.analysis.hazard import lognormal_risks, risk_interval, risk_text
 
 
-
 def planted(n_per_stripe: int, seed: int = 0, n_boot: int = 400):
     """A fit to stripes drawn from a lognormal curve of median 3 m/s^2, beta 0.4."""
     rng = np.random.default_rng(seed)
@@ -52,7 +51,7 @@ def test_vectorised_integral_equals_the_quadrature_and_the_closed_form():
     curve = hazard()
     med, beta = np.array([1.5, 3.0, 6.0]), np.array([0.2, 0.4, 0.9])
     lam = lognormal_risks(med, beta, curve, factor=9.80665)
-    quad = [risk(Lognormal(m, b), curve).annual_frequency for m, b in zip(med, beta)]
+    quad = [risk(Lognormal(m, b), curve).annual_frequency for m, b in zip(med, beta, strict=True)]
     np.testing.assert_allclose(lam, quad, rtol=1e-5)
     code = HazardCurve.from_code_value(0.25)  # (1/475) (a / 0.25 g)^-3
     closed = (0.25 / med) ** 3 / 475 * np.exp(9 * beta**2 / 2)  # median in g
@@ -66,7 +65,7 @@ def test_interval_matches_a_brute_force_propagation_and_contains_the_estimate():
     b0, b1 = fit.boot_coef.T
     ok = b1 > 0
     brute = [risk(Lognormal(math.exp(-a / b), 1 / b), curve).annual_frequency
-             for a, b in zip(b0[ok], b1[ok])]
+             for a, b in zip(b0[ok], b1[ok], strict=True)]
     lo, hi = np.quantile(brute, [0.05, 0.95])
     assert r.annual_frequency_interval == pytest.approx((lo, hi), rel=1e-4)
     assert lo < r.annual_frequency < hi

@@ -1019,8 +1019,9 @@ def lognormal_risks(median, beta, curve: HazardCurve, *, factor: float = 1.0,
     >>> from rocking.analysis import HazardCurve
     >>> from rocking.analysis.hazard import lognormal_risks
     >>> curve = HazardCurve.from_code_value(0.25)  # (1/475) (a / 0.25)^-3, a in g
-    >>> lam = lognormal_risks(np.array([0.5, 1.0]), np.array([0.3, 0.5]), curve)
-    >>> closed = (0.25 / np.array([0.5, 1.0])) ** 3 / 475 * np.exp(9 * np.array([0.3, 0.5]) ** 2 / 2)
+    >>> med, beta = np.array([0.5, 1.0]), np.array([0.3, 0.5])
+    >>> lam = lognormal_risks(med, beta, curve)
+    >>> closed = (0.25 / med) ** 3 / 475 * np.exp(9 * beta**2 / 2)
     >>> bool(np.allclose(lam, closed, rtol=1e-6))
     True
     """
@@ -1110,7 +1111,8 @@ def risk(fit, curve: HazardCurve, *, t_years: float = 50.0,
     with ``scipy.integrate.quad``. Its uncertainty: the central ``level`` interval
     (default 0.9: 5-95 %) from the fit's bootstrap and the curve's fractile curves
     (:func:`risk_interval`), in ``Risk.annual_frequency_interval`` and
-    ``Risk.probability_interval`` (NaN without either). The IM names must agree and the units be of the same
+    ``Risk.probability_interval`` (NaN without either). The IM names must agree and the
+    units be of the same
     kind (g and m/s^2 are converted). ``fit``: a :class:`FragilityFit` (one :class:`Risk`)
     or damage-state curves with ``fits`` (a list, one per state).
 
