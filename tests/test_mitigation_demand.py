@@ -139,3 +139,38 @@ def test_a_mitigation_that_makes_it_worse_is_flagged_with_its_reason():
     r3 = compare_mitigations(t, n_boot=0).table.set_index("mitigation")
     assert r3.loc["isolated", "verdict"] == ("worse" if r3.loc["isolated", "median_ratio"] < 1
                                              else "better")
+
+
+def test_campaign_report_compares_the_mitigations(tmp_path):
+    """The campaign report states every mitigation's ratio to none, flags the worse one
+    with its reason, and gives the isolator's demand at 475 and 2475 years."""
+    from test_campaign_hazard import manifest, synthetic
+
+    from rocking.campaign.hazard import record
+    from rocking.campaign.report import report, summary_lines
+
+    t = synthetic([("none", "housner", 0, 6.0, 0.4), ("isolated", "isolated", 0, 3.0, 0.4)],
+                  n_per=20)
+    iso = (t["mitigation"] == "isolated").to_numpy()
+    rng = np.random.default_rng(0)
+    d = A * t["pga"].to_numpy() * np.exp(S * rng.standard_normal(len(t)))
+    stop = iso & (d >= 0.15) & ~t["overturned"].to_numpy()
+    t["max_base_displacement"] = np.where(iso, np.minimum(d, 0.15), np.nan)
+    t["clearance_exceeded"] = stop
+    man = manifest(record(curve(), {}, 50.0))
+    man["mitigations"] = [{"name": "none", "model": "housner", "options": {}},
+                          {"name": "isolated", "model": "isolated",
+                           "options": {"isolation_period": 2.5, "clearance": 0.15}}]
+    res = report(t, man, tmp_path / "r", n_boot=0)
+    cmp = pd.read_csv(tmp_path / "r" / "mitigation.csv")
+    r = cmp.set_index("mitigation")
+    assert r.loc["none", "verdict"] == "reference"
+    assert r.loc["isolated", "verdict"] == "worse"
+    assert r.loc["isolated", "annual_frequency_ratio"] == pytest.approx(
+        r.loc["isolated", "annual_frequency"] / r.loc["none", "annual_frequency"], rel=1e-5)
+    assert np.isfinite(r.loc["isolated", "displacement_median_475yr"])
+    md = (tmp_path / "r" / "report.md").read_text()
+    assert "## Mitigations compared with none" in md and "| WORSE |" in md
+    assert "### The isolator's displacement demand" in md
+    line = next(x for x in summary_lines(res) if x.startswith("isolated / "))
+    assert "WORSE than none" in line and "× the annual frequency of none" in line

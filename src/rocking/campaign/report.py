@@ -792,7 +792,7 @@ def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
 
 
 def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
-              counts=(), risk=None, site=None) -> str:
+              counts=(), risk=None, site=None, mitigation=None) -> str:
     unit = f" ({im['unit']})" if im["unit"] else ""
     src = ("the im column (motions scaled to intensity levels)" if im["column"] == "im"
            else "the PGA of each run as run (no intensity scaling)")
@@ -825,6 +825,8 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
         out += _md_table(["block", f"median{unit}", "beta", "runs", "failed", "note"], rows)
     if risk is not None:
         out += _risk_md(risk, site)
+    if mitigation is not None:
+        out += _mitigation_md(mitigation, im, site)
     out += _by_mitigation(po, unit)
     out += _by_floor(po, unit)
     out += ["## P(overturn) per level", "",
@@ -907,6 +909,120 @@ def _by_floor(po: pd.DataFrame, unit: str) -> list[str]:
         out += [f"### {model}, {name}", ""]
         out += _md_table(["level", f"IM{unit}", *heads], rows)
     return out
+
+
+# --------------------------------------------------------------------------- mitigations
+
+def _compare(t: pd.DataFrame, im: dict, site, manifest: dict, n_boot: int, seed):
+    """:func:`rocking.analysis.mitigation.compare_mitigations` of the campaign's runs
+    (grouped by block and floor; the site's hazard; the isolators' periods and the
+    building's first period from the manifest): ``(table, note)``, ``(None, note)`` when
+    it cannot be made."""
+    from ..analysis.mitigation import compare_mitigations
+
+    col, name = im["column"], im["name"]
+    tt = t.drop(columns=[c for c in ("mitigation_name",) if c in t.columns])
+    if col != name:  # the fits carry the IM's name (checked against the hazard's)
+        tt = tt.drop(columns=[name], errors="ignore").rename(columns={col: name})
+    iso = {m["name"]: float(m["options"]["isolation_period"])
+           for m in manifest.get("mitigations") or ()
+           if isinstance(m, dict) and "isolation_period" in (m.get("options") or {})}
+    b = manifest.get("building") or {}
+    t1 = float(b["periods"][0]) if b.get("periods") else None
+    by = [c for c in ("block_name", "floor", "height_ratio") if c in tt.columns]
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            cmp = compare_mitigations(
+                tt, im=name, im_unit=im["unit"], by=by,
+                hazard=site["curve"] if site is not None else None, n_boot=n_boot,
+                seed=seed, t_years=site["t_years"] if site is not None else 50.0,
+                building_period=t1, isolation_periods=iso or None)
+    except (ParameterError, SimulationError, ValueError) as e:
+        return None, f"mitigations not compared: {_line(e)}"
+    return cmp.table, ""
+
+
+def _ratio_text(r) -> str:
+    """``"2.27 x none's annual frequency"`` (or its median), ``"–"`` without one."""
+    af = r.get("annual_frequency_ratio", math.nan)
+    if isinstance(af, float) and math.isfinite(af):
+        return f"{_g(af)} × the annual frequency"
+    m = r.get("median_ratio", math.nan)
+    if isinstance(m, float) and math.isfinite(m):
+        return f"{_g(m)} × the median"
+    return "–"
+
+
+def _mitigation_md(cmp: pd.DataFrame, im: dict, site) -> list[str]:
+    """The section of ``report.md`` that compares the mitigations with "none"."""
+    unit = f" {im['unit']}" if im["unit"] else ""
+    out = ["## Mitigations compared with none", "",
+           "Each mitigation against the block as it stands (\"none\"), group by group "
+           "(rocking.analysis.compare_mitigations; failure: overturned, or also the moat "
+           "reached for an isolator whose runs stopped there): the ratio of its annual "
+           "frequency of failure to none's (with a hazard, else of its median), the verdict, "
+           "and for a mitigation that is **worse** the likely reason the runs show.", ""]
+    rows = []
+    for _, r in cmp.iterrows():
+        d = r.to_dict()
+        where = _where(d)
+        verdict = str(d["verdict"]).upper() if d["verdict"] == "worse" else str(d["verdict"])
+        rows.append([str(d["block_name"]) + (f", {where}" if where else ""),
+                     str(d["mitigation"]), str(d["failure"]).replace("_", " "),
+                     _g(d["annual_frequency"]) if site is not None else _g(d["median"]),
+                     _ratio_text(d) if d["verdict"] != "reference" else "1", verdict,
+                     d["reason"] or ""])
+    out += _md_table(["block", "mitigation", "failure",
+                      "annual frequency (/yr)" if site is not None else f"median{unit}",
+                      "ratio to none", "verdict", "likely reason"], rows)
+    cols = [c for c in cmp.columns if c.startswith("displacement_median_")]
+    if cols and cmp["displacement_max"].notna().any():
+        periods = [c.removeprefix("displacement_median_") for c in cols]
+        out += ["### The isolator's displacement demand", "",
+                "At the IM of each return period of the site's hazard: the median and 84th "
+                "percentile of the base displacement (m) of the runs, interpolated between "
+                "the levels run (no extrapolation: – beyond them), and P(reaching the "
+                "clearance) there; the annual frequency of reaching the clearance and its "
+                f"probability in {_g(site['t_years'], 6)} years.", ""]
+        rows = []
+        for _, r in cmp[cmp["displacement_max"].notna()].iterrows():
+            d = r.to_dict()
+            where = _where(d)
+            cells = []
+            for T in periods:
+                cells += [f"{_g(d['im_' + T])}{unit}",
+                          f"{_g(d['displacement_median_' + T])} / "
+                          f"{_g(d['displacement_p84_' + T])}",
+                          _g(d["p_clearance_" + T], 2)]
+            rows.append([str(d["block_name"]) + (f", {where}" if where else ""),
+                         str(d["mitigation"]), *cells,
+                         _g(d["clearance_annual_frequency"]),
+                         _g(d["clearance_probability"])])
+        heads = []
+        for T in periods:
+            heads += [f"IM {T}", f"median / p84 {T} (m)", f"P(clearance) {T}"]
+        out += _md_table(["block", "mitigation", *heads, "clearance reached (/yr)",
+                          f"P({_g(site['t_years'], 6)} yr)"], rows)
+    return out
+
+
+def mitigation_lines(result: dict) -> list[str]:
+    """The terminal's lines of the comparison of mitigations: per group and mitigation
+    its ratio to none and the verdict, a worse one with its likely reason."""
+    cmp = result.get("mitigation")
+    if cmp is None:
+        return []
+    lines = []
+    for _, r in cmp[cmp["verdict"] != "reference"].iterrows():
+        d = r.to_dict()
+        where = _where(d)
+        head = f"{d['mitigation']} / {d['block_name']}" + (f", {where}" if where else "")
+        text = f"{head}: {_ratio_text(d)} of none, {d['verdict']}"
+        if d["verdict"] == "worse":
+            text = f"{head}: WORSE than none ({_ratio_text(d)} of none): {d['reason']}"
+        lines.append(text)
+    return lines
 
 
 # --------------------------------------------------------------------------- public
@@ -996,6 +1112,15 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
             notes.append("hazard given at report time: " + site["curve"].label + (
                 f" (replaces the store's [hazard] {site['replaces']!r})" if site["replaces"]
                 else ""))
+    cmp = None
+    if mit:
+        cmp, why = _compare(t[~failed], im, site, manifest, n_boot, seed)
+        if cmp is not None:
+            with atomic_path(out / "mitigation.csv") as tmp:
+                cmp.to_csv(tmp, index=False, float_format="%.6g")
+            files.append(out / "mitigation.csv")
+        else:
+            notes.append(why)
     if pel_rows:
         with atomic_path(out / "pelicun.csv") as tmp:
             pd.concat(pel_rows).to_csv(tmp, float_format="%.6g")
@@ -1008,12 +1133,13 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         images.append((model, p))
         files.append(p)
     md = _markdown(manifest, im, len(t), n_excl, fr, po, images, notes, n_states,
-                   counts=run_lines, risk=rk, site=site)
+                   counts=run_lines, risk=rk, site=site, mitigation=cmp)
     atomic_write(out / "report.md", md)
     files.append(out / "report.md")
     return {"files": files, "fragility": fr, "p_overturn": po, "notes": notes, "im": im,
             "n_runs": len(t), "n_excluded": n_excl, "run_notes": run_lines,
             "run_alerts": run_alerts, **run_counts,
+            **({} if cmp is None else {"mitigation": cmp}),
             **({} if site is None else {"risk": rk, "hazard": _hazard_info(site)})}
 
 
@@ -1051,7 +1177,7 @@ def summary_lines(result: dict) -> list[str]:
                              f"(± {_g(q.beta_se, 2)}), {q.n_exceed} of {q.n} runs failed")
             else:
                 lines.append(f"{head} {q.note}")
-    return lines + risk_lines(result)
+    return lines + risk_lines(result) + mitigation_lines(result)
 
 
 def _interval_part(r) -> str:
@@ -1120,5 +1246,6 @@ def risk_lines(result: dict) -> list[str]:
     return lines
 
 
-__all__ = ["report", "summary_lines", "risk_lines", "REQUIRED_COLUMNS", "PELICUN_DEMAND",
+__all__ = ["report", "summary_lines", "risk_lines", "mitigation_lines", "REQUIRED_COLUMNS",
+           "PELICUN_DEMAND",
            "RISK_COLUMNS", "CLEARANCE_FIT", "CLEARANCE_LABEL"]
