@@ -174,3 +174,65 @@ def test_campaign_report_compares_the_mitigations(tmp_path):
     assert "### The isolator's displacement demand" in md
     line = next(x for x in summary_lines(res) if x.startswith("isolated / "))
     assert "WORSE than none" in line and "× the annual frequency of none" in line
+
+
+# --------------------------------------------------------------------------- plots
+
+def _curves(ax):
+    return [ln for ln in ax.get_lines() if len(ln.get_xdata()) > 20]
+
+
+def test_comparison_plot_tells_the_curves_apart_and_keeps_the_legend_off_the_data():
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    lv = np.geomspace(1.0, 16.0, 6)
+    t = runs(lv, seed=5, medians={"none": 12.0, "isolated": 20.0}, moat=0.15)
+    t2 = runs(lv, seed=6, medians={"none": 12.0, "anchored": 16.0})
+    t = pd.concat([t, t2[t2["mitigation"] == "anchored"]], ignore_index=True)
+    fig = compare_mitigations(t, hazard=curve(), n_boot=0).plot()
+    FigureCanvasAgg(fig).draw()
+    ax = fig.axes[0]
+    lines = _curves(ax)
+    assert len(lines) == 3
+    looks = {(ln.get_color(), str(ln.get_linestyle())) for ln in lines}
+    assert len({c for c, _ in looks}) == 3 and len({s for _, s in looks}) == 3
+    assert ax.get_xlabel() and ax.get_ylabel() == "P(failure)" and fig.get_suptitle()
+    legend = ax.get_legend()
+    texts = [x.get_text() for x in legend.get_texts()]
+    assert any("WORSE than none" in x and "× the annual frequency of none" in x for x in texts)
+    assert not legend.get_window_extent().overlaps(ax.get_window_extent())
+
+
+def test_campaign_plot_shows_every_floor_and_names_the_combined_failure(tmp_path,
+                                                                         monkeypatch):
+    """Two floors of an isolated block that never overturns: their points at P = 0 used
+    to lie on one another (the floor-0 points hidden), and the combined failure was
+    drawn under a "P(overturn)" label."""
+    from test_campaign_hazard import manifest, synthetic
+
+    import rocking.campaign.report as rep
+
+    t = synthetic([("isolated", "isolated", 0, None, 0)], n_per=12)
+    t = pd.concat([t.assign(floor=0), t.assign(floor=3)], ignore_index=True)
+    t["sim_id"] = np.arange(len(t))
+    d = A * t["pga"].to_numpy()
+    t["max_base_displacement"] = np.minimum(d, 0.15)
+    t["clearance_exceeded"] = d >= 0.15
+    figs = []
+    monkeypatch.setattr(rep, "save_figure", lambda fig, path, dpi=None: figs.append(fig)
+                        or path)
+    rep.report(t, manifest(), tmp_path / "r", n_boot=0)
+    ax = figs[0].axes[0]
+    assert "clearance" in ax.get_ylabel() and "clearance" in ax.get_title()
+    pts = [ln for ln in ax.get_lines() if ln.get_linestyle() in ("None", "")
+           and ln.get_marker() not in ("_", "|")]  # the points, not the error bars' caps
+    at_zero = {}
+    for ln in pts:
+        x, y = np.asarray(ln.get_xdata(), float), np.asarray(ln.get_ydata(), float)
+        for xi in x[y == 0]:
+            at_zero.setdefault((ln.get_color(), ln.get_marker()), []).append(xi)
+    assert len({c for c, _ in at_zero}) == 2 and len({m for _, m in at_zero}) == 2
+    xs = sorted({round(v, 9) for v in np.concatenate([np.asarray(v) for v in
+                                                         at_zero.values()])})
+    per = len(np.unique(t["pga"]))
+    assert len(xs) > per  # not drawn on one another

@@ -484,8 +484,10 @@ class MitigationComparison:
         >>> ax.get_xlabel(), ax.get_ylabel()
         ('PGA (m/s$^2$)', 'P(overturned)')
         >>> legend = [t.get_text() for t in ax.get_legend().get_texts()]
-        >>> legend
-        ['none: median 2 m/s$^2$, beta 1.14', 'isolated: median 4.11 m/s$^2$, beta 1.06']
+        >>> legend[0]
+        'none: median 2 m/s$^2$, beta 1.14'
+        >>> legend[1].splitlines()  # every mitigation states its ratio to none
+        ['isolated: median 4.11 m/s$^2$, beta 1.06', '2.05 × the median of none: better']
         >>> from rocking.analysis import plot_mitigations  # the same figure
         >>> ax2 = plot_mitigations(cmp).axes[0]
         >>> [t.get_text() for t in ax2.get_legend().get_texts()] == legend
@@ -1031,6 +1033,25 @@ def _reason(r, d: dict, building_period) -> str:
 
 # --------------------------------------------------------------------------- plot
 
+LINESTYLES = ("-", "--", "-.", ":", (0, (5, 1)), (0, (3, 1, 1, 1, 1, 1)))
+"""Line styles of the mitigations' curves (with the colours: no two curves look alike)."""
+MARKERS = ("o", "s", "^", "D", "v", "P", "X")
+_BY_WORDS = {"block_name": "block", "height_ratio": "z/H"}
+
+
+def _verdict_label(r) -> str:
+    """The ratio to the reference and the verdict for a legend ("" for the reference)."""
+    v = r.get("verdict", "")
+    if v in ("reference", "", None) or v != v:
+        return ""
+    af, med = r.get("annual_frequency_ratio", math.nan), r.get("median_ratio", math.nan)
+    ratio = (f"{af:.3g} × the annual frequency" if isinstance(af, float) and math.isfinite(af)
+             else f"{med:.3g} × the median" if isinstance(med, float) and math.isfinite(med)
+             else "")
+    word = "WORSE than none" if v == "worse" else v
+    return f"\n{ratio} of none: {word}" if ratio else f"\n{word}"
+
+
 def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
                      level: float = 0.95, ncols: int = 3, figsize=None):
     """Fragility curves of the mitigations side by side: one panel per group, the curves
@@ -1067,7 +1088,8 @@ def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
     groups = list(t.groupby(by, sort=False, dropna=False)) if by else [((), t)]
     ncols = min(ncols, len(groups))
     nrows = math.ceil(len(groups) / ncols)
-    fig = Figure(figsize=figsize or (4.2 * ncols, 3.4 * nrows), layout="constrained")
+    fig = Figure(figsize=figsize or (max(6.4, 5.4 * ncols), 5.1 * nrows),
+                 layout="constrained")
     axes = fig.subplots(nrows, ncols, squeeze=False).ravel()
     lo = float(t["im_min"].min())
     hi = float(t["im_max"].max())
@@ -1075,18 +1097,25 @@ def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
     if np.isfinite(meds).any():
         lo, hi = min(lo, np.nanmin(meds) / 3.0), max(hi, np.nanmax(meds) * 3.0)
     grid = np.geomspace(lo * 0.8, hi * 1.2, 200)
-    colors = {m: PALETTE[i % len(PALETTE)]
-              for i, m in enumerate(dict.fromkeys(t["mitigation"]))}
+    names = list(dict.fromkeys(t["mitigation"]))
+    style = {m: (PALETTE[i % len(PALETTE)], LINESTYLES[i % len(LINESTYLES)],
+                 MARKERS[i % len(MARKERS)]) for i, m in enumerate(names)}
     unit = comparison.im_unit
     row_key = dict(zip(t.index, comparison.keys, strict=True))
+    both = "failure" in t and (t["failure"] == "overturned_or_clearance").any()
     for ax, (gkey, g) in zip(axes, groups, strict=False):
         gkey = gkey if isinstance(gkey, tuple) else (gkey,)
-        for i, r in g.iterrows():
+        for j, (i, r) in enumerate(g.iterrows()):
             m = r["mitigation"]
             key = row_key[i]
-            c = colors[m]
+            c, ls, mk = style[m]
+            shift = math.exp(0.02 * (j - (len(g) - 1) / 2))  # coincident points stay seen
             s = comparison.stripes[key]
-            ax.plot(s["im"], s["n_failed"] / s["n"], "o", ms=4, mfc="none", color=c)
+            ax.plot(s["im"] * shift, s["n_failed"] / s["n"], mk, ms=4.5, mfc="none",
+                    color=c)
+            what = (" (overturned or clearance)" if both and r.get("failure") ==
+                    "overturned_or_clearance" else "")
+            verdict = _verdict_label(r)
             fit = comparison.fits.get(key)
             if fit is None:  # the bound in the legend (short), the note in the table
                 lo, hi = r["median_lower_bound"], r["median_upper_bound"]
@@ -1098,23 +1127,27 @@ def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
                     text = f"median < {hi:.3g} {unit_label(unit)} (all failed)"
                 else:
                     text = "no fit"
-                ax.plot([], [], "o", mfc="none", color=c, label=f"{m}: {text}")
+                ax.plot([], [], mk, mfc="none", color=c, label=f"{m}{what}: {text}{verdict}")
                 continue
-            ax.plot(grid, fit.probability(grid), color=c,
-                    label=f"{m}: median {fit.median:.3g} {unit_label(unit)}, "
-                          f"beta {fit.beta:.2f}")
+            ax.plot(grid, fit.probability(grid), color=c, ls=ls, lw=1.4,
+                    label=f"{m}{what}: median {fit.median:.3g} {unit_label(unit)}, "
+                          f"beta {fit.beta:.2f}{verdict}")
             if band and fit.n_boot:
                 b = fit.band(grid, level)
                 ax.fill_between(grid, b["lower"], b["upper"], color=c, alpha=0.15, lw=0)
         style_axes(ax, im_label(comparison.im if comparison.im in ("pga", "im") else
                                 IM_NAMES.get(comparison.im, comparison.im), unit),
-                   f"P({comparison.failure.replace('_', ' ')})")
+                   "P(failure)" if both else f"P({comparison.failure.replace('_', ' ')})")
         ax.set_xscale("log")
         ax.set_ylim(-0.02, 1.02)
-        if by:
-            ax.set_title(", ".join(f"{c} {v}" for c, v in zip(by, gkey, strict=True)),
-                         fontsize="medium")
-        ax.legend(frameon=False, fontsize="x-small")
+        title = (", ".join(f"{_BY_WORDS.get(c, c)} {v}" for c, v in zip(by, gkey, strict=True))
+                 if by else "")
+        if title:
+            ax.set_title(title, fontsize="medium")
+        ax.legend(frameon=False, fontsize="x-small", loc="upper center",
+                  bbox_to_anchor=(0.5, -0.2), borderaxespad=0.0)
+    fig.suptitle("Fragility per mitigation\nlines: lognormal fits; markers: the failed share "
+                 "of the runs per level", fontsize="medium")
     for ax in axes[len(groups):]:
         ax.set_visible(False)
     return fig

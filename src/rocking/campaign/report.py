@@ -598,14 +598,30 @@ def _plot_name(name: str, blocks) -> str:
     return f"{2 * r * math.sin(a):.3g} × {2 * r * math.cos(a):.3g} m block (blocks[{i}])"
 
 
+MARKERS = ("o", "s", "^", "D", "v", "P", "X")
+"""Markers of the groups of a plot (with the colours: no two groups look alike)."""
+LINESTYLES = ("-", "-.", (0, (5, 1)), ":")
+"""Line styles of the groups' fits (the combined failure is always dashed)."""
+
+
 def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> Path:
     """P(overturn) vs IM of one model: stripes with Wilson bars, fits with bands; the IM's
     unit in mathtext (``m/s$^2$``), the blocks named by :func:`_plot_name` (and their
-    floor), the legend beside the axes (it covered the curves of the weaker blocks)."""
-    fig, ax = figure(figsize=(8.6, 3.8))
+    floor), the legend beside the axes (it covered the curves of the weaker blocks).
+    Each group has its own colour, marker and line style, and its points are shifted
+    a little along the IM (a few %, in log) so that groups with the same outcomes (every
+    floor of an isolated block at P = 0) do not hide one another. A group with runs
+    stopped at the isolator's clearance also shows P(overturned or clearance reached)
+    per level (filled markers) and its fit (dashed): the y label names both."""
+    fig, ax = figure(figsize=(9.2, 4.0))
     unit = unit_label(im["unit"])
+    n_groups = len(groups)
+    any_clear = False
     for i, (key, pt, fit, *clear) in enumerate(groups):
         c = PALETTE[i % len(PALETTE)]
+        mk = MARKERS[i % len(MARKERS)]
+        ls = LINESTYLES[i % len(LINESTYLES)]
+        shift = math.exp(0.025 * (i - (n_groups - 1) / 2)) if n_groups > 1 else 1.0
         d = pt[(pt["n"] > 0) & pt["im"].notna()]
         yerr = np.vstack([d["p_overturn"] - d["ci_lower"], d["ci_upper"] - d["p_overturn"]])
         lab = _plot_name(key["block_name"], blocks)
@@ -615,28 +631,43 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
             hi = np.nanmax(d["im"]) if len(d) else fit.median
             x = np.geomspace(min(lo, fit.median * math.exp(-2.0 * fit.beta)),
                              max(hi, fit.median * math.exp(2.0 * fit.beta)), 150)
-            ax.plot(x, fit.probability(x), color=c, lw=1.2)
+            ax.plot(x, fit.probability(x), color=c, lw=1.3, ls=ls)
             if fit.n_boot:
                 b = fit.band(x)
                 ax.fill_between(x, b["lower"], b["upper"], color=c, alpha=0.18, lw=0)
             lab += f"\nmedian {_g(fit.median)}{' ' + unit if unit else ''}, beta {_g(fit.beta, 2)}"
-        if "n_clearance_exceeded" in pt and pt["n_clearance_exceeded"].sum():
+        stopped = "n_clearance_exceeded" in pt and bool(pt["n_clearance_exceeded"].sum())
+        if stopped:
+            any_clear = True
             lab += (f"\n{int(pt['n_clearance_exceeded'].sum())} runs stopped at the "
-                    "clearance\n(counted as not overturned)")
-        cf = clear[0] if clear and clear[0] else None
-        if cf is not None:  # the combined failure, dashed (no band: not the stripes' fit)
-            lo = np.nanmin(d["im"]) if len(d) else cf.median
-            hi = np.nanmax(d["im"]) if len(d) else cf.median
-            x = np.geomspace(min(lo, cf.median * math.exp(-2.0 * cf.beta)),
-                             max(hi, cf.median * math.exp(2.0 * cf.beta)), 150)
-            ax.plot(x, cf.probability(x), color=c, lw=1.2, ls="--")
-            lab += (f"\ndashed: {CLEARANCE_LABEL},\nmedian {_g(cf.median)}"
-                    f"{' ' + unit if unit else ''}, beta {_g(cf.beta, 2)}")
-        ax.errorbar(d["im"], d["p_overturn"], yerr=np.clip(yerr, 0, None), fmt="o", ms=4,
-                    mfc="none", color=c, capsize=2, lw=0.8, label=lab)
-    style_axes(ax, im_label(im["name"], im["unit"]), "P(overturn)")
+                    "clearance")
+        ax.errorbar(d["im"] * shift, d["p_overturn"], yerr=np.clip(yerr, 0, None), fmt=mk,
+                    ms=4.5, mfc="none", color=c, capsize=2, lw=0.8,
+                    label=lab + ("\nopen: overturned" if stopped else ""))
+        if stopped:  # the combined failure per level, filled, and its fit dashed
+            k = (d["n_overturned"] + d["n_clearance_exceeded"]).to_numpy(int)
+            n = d["n"].to_numpy(int)
+            ci = np.array([wilson_interval(int(a), int(b)) for a, b in zip(k, n, strict=True)])
+            pc = k / n
+            cl = f"filled: {CLEARANCE_LABEL}"
+            cf = clear[0] if clear and clear[0] else None
+            if cf is not None:
+                lo = np.nanmin(d["im"]) if len(d) else cf.median
+                hi = np.nanmax(d["im"]) if len(d) else cf.median
+                x = np.geomspace(min(lo, cf.median * math.exp(-2.0 * cf.beta)),
+                                 max(hi, cf.median * math.exp(2.0 * cf.beta)), 150)
+                ax.plot(x, cf.probability(x), color=c, lw=1.3, ls="--")
+                cl += (f"\n(dashed fit: median {_g(cf.median)}"
+                       f"{' ' + unit if unit else ''}, beta {_g(cf.beta, 2)})")
+            ax.errorbar(d["im"] / shift, pc, yerr=np.clip(np.vstack([pc - ci[:, 0],
+                                                                      ci[:, 1] - pc]), 0,
+                                                           None),
+                        fmt=mk, ms=4.5, color=c, capsize=2, lw=0.8, label=cl)
+    ylabel = (f"P(overturn), P({CLEARANCE_LABEL})" if any_clear else "P(overturn)")
+    style_axes(ax, im_label(im["name"], im["unit"]), ylabel)
     ax.set_ylim(-0.03, 1.03)
-    ax.set_title(f"{model}: P(overturn) per level (95% Wilson bars), lognormal fits "
+    what = (f"P(overturn) and P({CLEARANCE_LABEL})" if any_clear else "P(overturn)")
+    ax.set_title(f"{model}: {what} per level (95% Wilson bars), lognormal fits "
                  "(95% bands)", fontsize=10)
     ax.legend(frameon=False, fontsize="small", loc="upper left", bbox_to_anchor=(1.02, 1.0),
               borderaxespad=0.0, labelspacing=0.9)
