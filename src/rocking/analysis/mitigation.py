@@ -499,8 +499,8 @@ class MitigationComparison:
 def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=None,
                         hazard=None, clearance=None, n_boot=200, seed=0,
                         reference=REFERENCE, return_periods=(), t_years=50.0,
-                        building_period=None, isolation_periods=None
-                        ) -> MitigationComparison:
+                        building_period=None, isolation_periods=None, records=None,
+                        ground=None) -> MitigationComparison:
     """Compare the mitigations of a table of runs, group by group.
 
     ``table``: one row per run, with a ``mitigation`` column (without it, ``model`` names
@@ -570,6 +570,12 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
     beyond them, with a note: no extrapolation). The demand per level is
     :attr:`MitigationComparison.demand` (:func:`demand_stripes`): the displacement is not
     pooled over the levels, which would make it depend on the levels chosen.
+
+    ``records`` (the records that were run, optional) are checked at the isolators'
+    periods and ``building_period`` against EN 1998-1 on ``ground`` (A-E; without it,
+    Type 1 on ground A) by :func:`rocking.motions.check_records_fit`: a
+    :class:`~rocking.motions.RecordFitWarning` where their mean spectrum falls more than
+    10 % below it.
 
     Raises :class:`~rocking.ParameterError` for a missing column, an unknown ``failure``,
     a hazard in an incompatible unit, or a group whose runs were all left out.
@@ -655,6 +661,16 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
     iso_T = _isolation_periods(table, mit_col, isolation_periods)
     if building_period is not None:
         building_period = _positive_period("building_period", building_period)
+
+    if records is not None:  # do they fit the periods that matter? (issue 31)
+        from ..motions.ec8_records import check_records_fit
+
+        why = {f"the isolation period of {m!r}": T for m, T in iso_T.items()}
+        if building_period is not None:
+            why["the building's first period"] = building_period
+        if why:
+            check_records_fit(records, why, ground=ground, what="compare_mitigations: "
+                              "the records run", stacklevel=3)
 
     rows, fits, stripes, keys, demand, diag = [], {}, {}, [], {}, {}
     groups = table.groupby(by, sort=False, dropna=False) if by else [((), table)]

@@ -974,6 +974,39 @@ def _compare(t: pd.DataFrame, im: dict, site, manifest: dict, n_boot: int, seed)
     return cmp.table, ""
 
 
+def _records_fit(manifest: dict) -> list[str]:
+    """The campaign's records checked at the periods that matter (the isolators' periods,
+    the building's first period) by :func:`rocking.motions.check_records_fit` (a
+    :class:`~rocking.motions.RecordFitWarning` each, and the messages for report.md);
+    nothing when there are no such periods or the motions are not records."""
+    from ..motions import Record, catalog
+    from ..motions.ec8_records import check_records_fit
+
+    why = {f"the isolation period of {m['name']!r}": float(m["options"]["isolation_period"])
+           for m in manifest.get("mitigations") or ()
+           if isinstance(m, dict) and "isolation_period" in (m.get("options") or {})}
+    b = manifest.get("building") or {}
+    if b.get("periods"):
+        why["the building's first period"] = float(b["periods"][0])
+    mo = manifest.get("motions") or {}
+    if not why or not isinstance(mo, dict) or "kind" not in mo:
+        return []
+    params = dict(mo.get("params") or {})
+    ctx = catalog.Context(base_dir=Path(manifest.get("spec_dir") or "."))
+    try:
+        recs = [catalog.build(mo["kind"], ctx, **params, **({mo["sweep"]: v} if mo.get(
+            "sweep") else {})) for v in (mo.get("values") or [None])]
+    except (ParameterError, OSError, ValueError, TypeError, KeyError):
+        return []
+    recs = [r for r in recs if isinstance(r, Record)]
+    if not recs:
+        return []
+    ground = params.get("ground") if mo["kind"] == "ec8_earthquake" else None
+    st = params.get("spectrum_type", 1) if ground else 1
+    return check_records_fit(recs, why, ground=ground, spectrum_type=st,
+                             what="the campaign's records", stacklevel=3)
+
+
 def _ratio_text(r) -> str:
     """``"2.27 x none's annual frequency"`` (or its median), ``"–"`` without one."""
     af = r.get("annual_frequency_ratio", math.nan)
@@ -1143,6 +1176,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
             notes.append("hazard given at report time: " + site["curve"].label + (
                 f" (replaces the store's [hazard] {site['replaces']!r})" if site["replaces"]
                 else ""))
+    notes += _records_fit(manifest)
     cmp = None
     if mit:
         cmp, why = _compare(t[~failed], im, site, manifest, n_boot, seed)
