@@ -604,6 +604,17 @@ LINESTYLES = ("-", "-.", (0, (5, 1)), ":")
 """Line styles of the groups' fits (the combined failure is always dashed)."""
 
 
+def _fit_range(d: pd.DataFrame, fit) -> np.ndarray:
+    """IMs to draw a fit over: the levels run and the fit's median +- 2 beta, within a
+    factor 4 of the levels (a fit with a large beta or a median far beyond the data must
+    not stretch the axis over decades where nothing was run)."""
+    lo = np.nanmin(d["im"]) if len(d) else fit.median
+    hi = np.nanmax(d["im"]) if len(d) else fit.median
+    a = max(min(lo, fit.median * math.exp(-2.0 * fit.beta)), lo / 4.0)
+    b = min(max(hi, fit.median * math.exp(2.0 * fit.beta)), hi * 4.0)
+    return np.geomspace(a, b, 150)
+
+
 def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> Path:
     """P(overturn) vs IM of one model: stripes with Wilson bars, fits with bands; the IM's
     unit in mathtext (``m/s$^2$``), the blocks named by :func:`_plot_name` (and their
@@ -627,10 +638,7 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
         lab = _plot_name(key["block_name"], blocks)
         lab += f", {_where(key)}" if _where(key) else ""
         if fit is not None:
-            lo = np.nanmin(d["im"]) if len(d) else fit.median
-            hi = np.nanmax(d["im"]) if len(d) else fit.median
-            x = np.geomspace(min(lo, fit.median * math.exp(-2.0 * fit.beta)),
-                             max(hi, fit.median * math.exp(2.0 * fit.beta)), 150)
+            x = _fit_range(d, fit)
             ax.plot(x, fit.probability(x), color=c, lw=1.3, ls=ls)
             if fit.n_boot:
                 b = fit.band(x)
@@ -652,10 +660,7 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
             cl = f"filled: {CLEARANCE_LABEL}"
             cf = clear[0] if clear and clear[0] else None
             if cf is not None:
-                lo = np.nanmin(d["im"]) if len(d) else cf.median
-                hi = np.nanmax(d["im"]) if len(d) else cf.median
-                x = np.geomspace(min(lo, cf.median * math.exp(-2.0 * cf.beta)),
-                                 max(hi, cf.median * math.exp(2.0 * cf.beta)), 150)
+                x = _fit_range(d, cf)
                 ax.plot(x, cf.probability(x), color=c, lw=1.3, ls="--")
                 cl += (f"\n(dashed fit: median {_g(cf.median)}"
                        f"{' ' + unit if unit else ''}, beta {_g(cf.beta, 2)})")
@@ -663,6 +668,10 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
                                                                       ci[:, 1] - pc]), 0,
                                                            None),
                         fmt=mk, ms=4.5, color=c, capsize=2, lw=0.8, label=cl)
+    ims = np.concatenate([g[1]["im"].dropna().to_numpy(float) for g in groups] or [[]])
+    ims = ims[ims > 0]
+    if ims.size and ims.max() > 8 * ims.min():  # levels spread over a decade: log axis
+        ax.set_xscale("log")
     ylabel = (f"P(overturn), P({CLEARANCE_LABEL})" if any_clear else "P(overturn)")
     style_axes(ax, im_label(im["name"], im["unit"]), ylabel)
     ax.set_ylim(-0.03, 1.03)
@@ -1046,18 +1055,23 @@ def _mitigation_md(cmp: pd.DataFrame, im: dict, site) -> list[str]:
         out += ["### The isolator's displacement demand", "",
                 "At the IM of each return period of the site's hazard: the median and 84th "
                 "percentile of the base displacement (m) of the runs, interpolated between "
-                "the levels run (no extrapolation: – beyond them), and P(reaching the "
-                "clearance) there; the annual frequency of reaching the clearance and its "
+                "the levels run (no extrapolation: – beyond them; ≥: runs stopped at the "
+                "moat, a lower bound), and P(reaching the clearance) there; the annual frequency of reaching the clearance and its "
                 f"probability in {_g(site['t_years'], 6)} years.", ""]
         rows = []
         for _, r in cmp[cmp["displacement_max"].notna()].iterrows():
             d = r.to_dict()
             where = _where(d)
             cells = []
+            cap = d["displacement_max"] if d.get("n_clearance_exceeded", 0) else math.inf
+
+            def at_least(v, cap=cap):  # a quantile at the moat: runs stopped there
+                return f"≥ {_g(v)}" if math.isfinite(v) and v >= cap * (1 - 1e-9) else _g(v)
+
             for T in periods:
                 cells += [f"{_g(d['im_' + T])}{unit}",
-                          f"{_g(d['displacement_median_' + T])} / "
-                          f"{_g(d['displacement_p84_' + T])}",
+                          f"{at_least(d['displacement_median_' + T])} / "
+                          f"{at_least(d['displacement_p84_' + T])}",
                           _g(d["p_clearance_" + T], 2)]
             rows.append([str(d["block_name"]) + (f", {where}" if where else ""),
                          str(d["mitigation"]), *cells,
