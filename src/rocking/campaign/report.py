@@ -1056,7 +1056,8 @@ def _mitigation_md(cmp: pd.DataFrame, im: dict, site) -> list[str]:
                 "At the IM of each return period of the site's hazard: the median and 84th "
                 "percentile of the base displacement (m) of the runs, interpolated between "
                 "the levels run (no extrapolation: – beyond them; ≥: runs stopped at the "
-                "moat, a lower bound), and P(reaching the clearance) there; the annual frequency of reaching the clearance and its "
+                "moat, a lower bound), and P(reaching the clearance) there; the annual "
+                "frequency of reaching the clearance and its "
                 f"probability in {_g(site['t_years'], 6)} years.", ""]
         rows = []
         for _, r in cmp[cmp["displacement_max"].notna()].iterrows():
