@@ -122,3 +122,13 @@ def test_campaign_report_warns_for_the_papers_records(tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("error", RecordFitWarning)
         report(t, man, tmp_path / "r2", n_boot=0)
+
+
+def test_ida_of_an_isolated_block_warns_for_records_that_do_not_fit():
+    import rocking
+    from rocking.analysis import ida
+
+    quakes = seed_earthquakes()[:3]
+    with pytest.warns(RecordFitWarning, match="ida: the records"):
+        ida(rocking.specimen(2), quakes, levels=[1.0], model="isolated",
+            isolation_period=2.5, isolation_damping=0.1, duration=3.0)
