@@ -161,5 +161,6 @@ def test_campaign_report_writes_the_interval(tmp_path):
     assert ov["interval_source"].str.contains("hazard fractiles").all()
     md = (tmp_path / "r" / "report.md").read_text()
     assert "interval (/yr)" in md and "90 % interval (the 5th and 95th percentiles)" in md
+    assert (tmp_path / "r" / "risk.png").is_file() and "(risk.png)" in md  # the plot
     line = next(x for x in risk_lines(res) if "annual frequency of overturning" in x)
     assert "(90 % interval: " in line

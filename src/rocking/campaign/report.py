@@ -683,6 +683,69 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
     return save_figure(fig, path, dpi=DPI)
 
 
+def _plot_risk(rk: pd.DataFrame, site: dict, path: Path) -> Path | None:
+    """The risk of every group at a glance (for a director): the annual frequency of
+    overturning (and of overturned or clearance reached) with its interval, one row per
+    group, on a log axis, the probability over the service life written beside it; a
+    group without a fit shows the bound of a step fragility (a triangle) if it has one.
+    A group with runs stopped at the isolator's clearance shows only its "overturned or
+    clearance reached" row (its overturning row counts those runs as survivors)."""
+    keep = rk[rk["fit"].isin(["overturning", CLEARANCE_FIT])]
+    rows = []
+    for _, r in keep.iterrows():
+        d = r.to_dict()
+        if d["fit"] == "overturning" and ((keep["fit"] == CLEARANCE_FIT)
+                                          & _same_group(keep, d)).any():
+            continue  # runs stopped at the moat count as survivors there: not shown
+        lam = d["annual_frequency"]
+        up = d.get("annual_frequency_upper_bound", math.nan)
+        if not (math.isfinite(lam) or math.isfinite(up)):
+            continue
+        rows.append(d)
+    if not rows:
+        return None
+    t = site["t_years"]
+    names = list(dict.fromkeys(_run_name(d) for d in rows))
+    fig, ax = figure(figsize=(9.0, 1.2 + 0.42 * len(rows)))
+    labels = []
+    for y, d in enumerate(rows):
+        c = PALETTE[names.index(_run_name(d)) % len(PALETTE)]
+        comb = d["fit"] == CLEARANCE_FIT
+        labels.append(f"{_group_name(d['block_name'], d)} — {_run_name(d)}"
+                      + (f"\n({CLEARANCE_LABEL})" if comb else ""))
+        lam = d["annual_frequency"]
+        if math.isfinite(lam):
+            lo, hi = d.get("annual_frequency_low", math.nan), d.get(
+                "annual_frequency_high", math.nan)
+            err = (np.array([[lam - lo], [hi - lam]]) if math.isfinite(lo)
+                   and math.isfinite(hi) else None)
+            ax.errorbar([lam], [y], xerr=err, fmt="s" if comb else "o", color=c, ms=6,
+                        mfc="white" if comb else c, capsize=3, lw=1.2)
+            p = f"P({_g(t, 6)} yr) {_g(d['probability'], 2)}"
+            if math.isfinite(d.get("probability_low", math.nan)):
+                p += f" ({_g(d['probability_low'], 2)}–{_g(d['probability_high'], 2)})"
+            ax.annotate(p, (hi if err is not None else lam, y), xytext=(8, 0),
+                        textcoords="offset points", va="center", fontsize=8)
+        else:
+            up = d["annual_frequency_upper_bound"]
+            ax.plot([up], [y], "<", color=c, ms=7)
+            ax.annotate(f"at most {_g(up, 2)}/yr (no fit: a step-fragility bound)",
+                        (up, y), xytext=(8, 0), textcoords="offset points",
+                        va="center", fontsize=8)
+    ax.set_yticks(range(len(rows)), labels, fontsize=8)
+    ax.invert_yaxis()
+    ax.set_xscale("log")
+    lo_x, hi_x = ax.get_xlim()
+    ax.set_xlim(lo_x, hi_x * 30)  # room for the probabilities
+    style_axes(ax, "annual frequency (per year)")
+    lv = rk["interval_level"].dropna()
+    what = (f"bars: {100 * float(lv.iloc[0]):.0f} % interval" if len(lv) else "no interval")
+    ax.set_title(f"Risk at the site: annual frequency and P({_g(t, 6)} yr) ({what})"
+                 + (" — APPROXIMATE hazard" if site["curve"].approximate else ""),
+                 fontsize=10)
+    return save_figure(fig, path, dpi=DPI)
+
+
 # --------------------------------------------------------------------------- markdown
 
 def _pm(x, se, digits: int) -> str:
@@ -1206,6 +1269,11 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
             pd.concat(pel_rows).to_csv(tmp, float_format="%.6g")
         files.append(out / "pelicun.csv")
     images = []
+    if rk is not None:
+        p = _plot_risk(rk, site, out / "risk.png")
+        if p is not None:
+            images.append(("risk at the site", p))
+            files.append(p)
     for model, groups in by_model.items():
         stem = _safe(groups[0][0].get("mitigation", model))
         p = _plot_model(model, groups, im, out / f"p_overturn_{stem}.png",
