@@ -22,8 +22,18 @@ writes, in one folder:
   IM bounds (a step fragility there) and a note, never a fitted number; an approximate
   (code-value) hazard is named so in its ``hazard`` and ``approximate`` columns;
   a group with runs stopped at an isolator's clearance also gets a row ``fit =
-  overturned_or_clearance`` (below);
-* ``report.md``: a short markdown summary linking the above.
+  overturned_or_clearance`` (below); every fitted number with its 90 % interval (``annual_frequency_low``/``_high``, ``probability_low``/
+  ``_high``: the fit's bootstrap and the hazard's fractile curves,
+  :func:`rocking.analysis.hazard.risk_interval`), and ``risk.png``, every group's annual
+  frequency with its interval and its service-life probability;
+* ``mitigation.csv`` (with ``[[mitigation]]``): every mitigation against ``none``
+  (:func:`rocking.analysis.compare_mitigations`: the ratio of the annual frequencies, or
+  of the medians without a hazard, the verdict and the likely reason of a worse one) and
+  the isolator's displacement at 475 and 2475 years with P(reaching the clearance);
+* ``report.md``: a short markdown summary linking the above. The campaign's records are
+  checked at the isolators' and the building's periods
+  (:func:`rocking.motions.check_records_fit`): a warning and a note where they fall more
+  than 10 % below EN 1998-1.
 
 A table with a ``floor`` column (a campaign with ``[building]``) is grouped by (model,
 block, floor): every file above has a ``floor`` column (and ``height_ratio`` when the
