@@ -236,3 +236,18 @@ def test_campaign_plot_shows_every_floor_and_names_the_combined_failure(tmp_path
                                                          at_zero.values()])})
     per = len(np.unique(t["pga"]))
     assert len(xs) > per  # not drawn on one another
+
+
+def test_anchors_that_break_are_the_reason_seen():
+    lv = np.geomspace(1.0, 16.0, 6)
+    t = runs(lv, seed=7, medians={"none": 8.0, "anchored": 5.0})
+    anc = (t["mitigation"] == "anchored").to_numpy()
+    t["anchor_broken_plus"] = anc & t["overturned"].to_numpy()
+    t["anchor_broken_minus"] = False
+    r = compare_mitigations(t, hazard=curve(), n_boot=0).table.set_index("mitigation")
+    assert r.loc["anchored", "verdict"] == "worse"
+    assert "the anchors broke in" in r.loc["anchored", "reason"]
+    # nothing to see: said so, not invented
+    t2 = t.drop(columns=["anchor_broken_plus", "anchor_broken_minus"])
+    r2 = compare_mitigations(t2, hazard=curve(), n_boot=0).table.set_index("mitigation")
+    assert r2.loc["anchored", "reason"] == "no reason visible in the runs"
