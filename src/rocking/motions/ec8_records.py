@@ -70,7 +70,19 @@ _MEMORY: dict[str, tuple[Record, ...]] = {}
 
 
 class RecordFitWarning(UserWarning):
-    """The records of a study fall below the target spectrum at a period that matters."""
+    """The records of a study fall below the target spectrum at a period that matters
+    (:func:`check_records_fit`).
+
+    Examples
+    --------
+    >>> import warnings
+    >>> from rocking.motions import RecordFitWarning, seed_earthquakes, check_records_fit
+    >>> with warnings.catch_warnings(record=True) as w:
+    ...     warnings.simplefilter("always")
+    ...     _ = check_records_fit(seed_earthquakes()[:7], {"an isolator": 3.0}, ground="C")
+    >>> w[0].category is RecordFitWarning, issubclass(RecordFitWarning, UserWarning)
+    (True, True)
+    """
 
 
 def _set(ground, spectrum_type) -> tuple[str, int]:
