@@ -22,10 +22,11 @@ writes, in one folder:
   IM bounds (a step fragility there) and a note, never a fitted number; an approximate
   (code-value) hazard is named so in its ``hazard`` and ``approximate`` columns;
   a group with runs stopped at an isolator's clearance also gets a row ``fit =
-  overturned_or_clearance`` (below); every fitted number with its 90 % interval (``annual_frequency_low``/``_high``, ``probability_low``/
-  ``_high``: the fit's bootstrap and the hazard's fractile curves,
-  :func:`rocking.analysis.hazard.risk_interval`), and ``risk.png``, every group's annual
-  frequency with its interval and its service-life probability;
+  overturned_or_clearance`` (below); every fitted number with its 90 % interval
+  (``annual_frequency_low``/``_high``, ``probability_low``/``_high``: the fit's bootstrap
+  and the hazard's fractile curves, :func:`rocking.analysis.hazard.risk_interval`), and
+  ``risk.png``, every group's annual frequency with its interval and its service-life
+  probability;
 * ``mitigation.csv`` (with ``[[mitigation]]``): every mitigation against ``none``
   (:func:`rocking.analysis.compare_mitigations`: the ratio of the annual frequencies, or
   of the medians without a hazard, the verdict and the likely reason of a worse one) and
