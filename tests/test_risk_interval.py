@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -164,3 +165,30 @@ def test_campaign_report_writes_the_interval(tmp_path):
     assert (tmp_path / "r" / "risk.png").is_file() and "(risk.png)" in md  # the plot
     line = next(x for x in risk_lines(res) if "annual frequency of overturning" in x)
     assert "(90 % interval: " in line
+
+
+def test_openquake_fractile_exports_are_read_with_the_mean(tmp_path):
+    src = (Path(__file__).resolve().parents[1] / "examples"
+           / "hazard_curve-mean-PGA_site.csv").read_text()
+    paths = []
+    for q, f in ((0.05, 0.4), (0.95, 2.5)):
+        lines = src.splitlines()
+        lines[0] = lines[0].replace("kind='mean'", f"kind='quantile-{q}'")
+        head = lines[1].split(",")
+        rows = [lines[0], lines[1]]
+        for row in lines[2:]:
+            v = row.split(",")
+            v[3:] = [repr(min(float(x) * f, 0.999)) if float(x) > 0 else x for x in v[3:]]
+            rows.append(",".join(v))
+        assert len(head) == len(rows[2].split(","))
+        p = tmp_path / f"hazard_curve-quantile-{q}-PGA_7.csv"
+        p.write_text("\n".join(rows) + "\n")
+        paths.append(p)
+    mean = tmp_path / "hazard_curve-mean-PGA_7.csv"
+    mean.write_text(src)
+    c = HazardCurve.from_openquake(mean, fractiles=paths)
+    assert sorted(c.fractiles) == [0.05, 0.95]
+    r = risk(planted(20, n_boot=0), c)
+    assert r.annual_frequency_interval[0] < r.annual_frequency < r.annual_frequency_interval[1]
+    with pytest.raises(ValueError, match="not a quantile export"):
+        HazardCurve.from_openquake(mean, fractiles=[mean])

@@ -719,7 +719,7 @@ class HazardCurve:
 
     @classmethod
     def from_openquake(cls, path, site=0, *, label: str = "",
-                       max_distance_km: float = MAX_SITE_DISTANCE_KM):
+                       max_distance_km: float = MAX_SITE_DISTANCE_KM, fractiles=()):
         """An OpenQuake engine hazard-curve export (``hazard_curve-<kind>-<IMT>_<id>.csv``):
         a first comment line of ``key=value`` metadata (``investigation_time``, ``imt``),
         then the header ``lon,lat,depth,poe-<level>,...`` and one row per site.
@@ -744,14 +744,39 @@ class HazardCurve:
         ('PGA', 'g', 1)
         >>> round(curve.rate_at(0.05), 8), np.round(curve.tail_slopes, 6).tolist()
         (0.001, [2.5, 2.5])
+
+        ``fractiles``: the model's fractile exports of the same calculation
+        (``hazard_curve-quantile-0.05-PGA_<id>.csv``, ...), read at the same site; each
+        one's fractile from its metadata ``kind='quantile-0.05'`` (or its name). They go
+        to :meth:`with_fractiles`, and :func:`risk` gives the interval they imply.
         """
         p = Path(path)
         if not p.is_file():
             raise ParameterError(f"path: no such OpenQuake file {str(path)!r}")
         try:
-            return cls._from_openquake(p, site, label, max_distance_km)
+            curve = cls._from_openquake(p, site, label, max_distance_km)
         except ParameterError as e:
             raise ParameterError(_in_file(str(e), p.name)) from None
+        if isinstance(fractiles, str | Path):
+            fractiles = [fractiles]
+        if not fractiles:
+            return curve
+        fr = {}
+        for f in fractiles:
+            c = cls.from_openquake(f, site, max_distance_km=max_distance_km)
+            text = str(c.metadata.get("kind", "")) + " " + Path(f).name
+            m = re.search(r"quantile-([0-9.]+)", text)
+            if m is None:
+                raise ParameterError(f"fractiles: {Path(f).name} is not a quantile export "
+                                     "(its kind must be 'quantile-<q>', e.g. "
+                                     "'quantile-0.05')")
+            if not same_im(c.im_name, curve.im_name):
+                raise ParameterError(f"fractiles: {Path(f).name} is of {c.im_name}, "
+                                     f"{p.name} of {curve.im_name}")
+            fr[float(m.group(1).rstrip("."))] = c
+        out = curve.with_fractiles(fr)
+        out.metadata = curve.metadata
+        return out
 
     @classmethod
     def _from_openquake(cls, p: Path, site, label, max_distance_km):
