@@ -251,3 +251,23 @@ def test_anchors_that_break_are_the_reason_seen():
     t2 = t.drop(columns=["anchor_broken_plus", "anchor_broken_minus"])
     r2 = compare_mitigations(t2, hazard=curve(), n_boot=0).table.set_index("mitigation")
     assert r2.loc["anchored", "reason"] == "no reason visible in the runs"
+
+
+def test_verdict_from_bounds_when_a_fit_is_missing():
+    """No fit for the reference (separated outcomes): its median lies between the bounds
+    its runs give; a mitigation whose median lies below them all is worse, one whose runs
+    never failed above them is better, an overlap is not known."""
+    lv = np.array([1.0, 2.0, 3.0, 4.0, 6.0, 8.0])
+    n = 20
+    none = pd.DataFrame({"mitigation": "none", "pga": np.repeat(lv, n),
+                         "overturned": np.repeat(lv >= 4.0, n)})  # median in [3, 4]
+    never = pd.DataFrame({"mitigation": "never", "pga": np.repeat(lv, n),
+                          "overturned": False})                   # median > 8
+    rng = np.random.default_rng(2)
+    weak = pd.DataFrame({"mitigation": "weak", "pga": np.repeat(lv, n)})
+    weak["overturned"] = rng.random(len(weak)) < norm.cdf(np.log(weak["pga"] / 1.5) / 0.4)
+    same = none.assign(mitigation="same")
+    r = compare_mitigations(pd.concat([none, never, weak, same]), n_boot=0).table
+    v = dict(zip(r["mitigation"], r["verdict"], strict=True))
+    assert v == {"none": "reference", "never": "better", "weak": "worse",
+                 "same": "not known"}

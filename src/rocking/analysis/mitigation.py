@@ -1005,16 +1005,27 @@ def _verdict(r, r0) -> str:
         return "better"
     if math.isfinite(af0) and math.isfinite(lo) and lo > af0:
         return "worse"
-    m, m0 = r["median"], r0["median"]
-    if math.isfinite(m) and math.isfinite(m0):
-        return "worse" if m < m0 else "better" if m > m0 else "same"
-    if math.isfinite(m0) and math.isfinite(r["median_lower_bound"]) and \
-            r["median_lower_bound"] > m0:
-        return "better"
-    if math.isfinite(m0) and math.isfinite(r["median_upper_bound"]) and \
-            r["median_upper_bound"] < m0:
+    (a, b), (a0, b0) = _median_span(r), _median_span(r0)
+    if a == b and a0 == b0 and math.isfinite(a) and math.isfinite(a0):
+        return "worse" if a < a0 else "better" if a > a0 else "same"
+    if b < a0:  # its median is below every median the reference's runs allow
         return "worse"
+    if a > b0:
+        return "better"
     return "not known"
+
+
+def _median_span(r) -> tuple[float, float]:
+    """What the runs say of a row's median: ``(m, m)`` with a fit, else the interval its
+    bounds give (no failure up to ``median_lower_bound``: above it; every run failed from
+    ``median_upper_bound``: below it); ``(nan, nan)`` when nothing is known."""
+    m = r["median"]
+    if math.isfinite(m):
+        return m, m
+    lo, hi = r["median_lower_bound"], r["median_upper_bound"]
+    if not (math.isfinite(lo) or math.isfinite(hi)):
+        return math.nan, math.nan
+    return (lo if math.isfinite(lo) else 0.0), (hi if math.isfinite(hi) else math.inf)
 
 
 def _reason(r, d: dict, building_period) -> str:
