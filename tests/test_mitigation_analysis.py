@@ -253,8 +253,15 @@ def test_clearance_exceedance_is_a_direct_count():
     assert r["clearance"] == pytest.approx(0.12)
     assert r["n_clearance_exceeded"] == hit.sum()
     assert r["p_clearance_exceeded"] == pytest.approx(hit.mean())
-    assert r["displacement_median"] == pytest.approx(np.median(d))
-    assert r["displacement_p84"] == pytest.approx(np.percentile(d, 84))
+    # the demand per IM level (not pooled over the levels: issue 31)
+    dem = comp.demand["isolated"]
+    x = t["pga"].to_numpy()[iso]
+    for _, s in dem.iterrows():
+        at = d[x == s["im"]]
+        assert s["displacement_median"] == pytest.approx(np.median(at))
+        assert s["displacement_p84"] == pytest.approx(np.percentile(at, 84))
+        assert s["p_clearance"] == pytest.approx(hit[x == s["im"]].mean())
+    assert "displacement_median" not in comp.table.columns
     assert r["displacement_max"] == pytest.approx(0.2)
     assert "stopped at the isolator's clearance" in r["note"]
     none = row(comp, "none")
@@ -275,7 +282,11 @@ def test_overturned_or_clearance_counts_both():
     any_stop = bool(np.any(t["clearance_exceeded"].to_numpy(bool)))
     assert any_stop  # the table has runs stopped at the clearance
     assert auto.failure == "overturned_or_clearance"
-    assert row(auto, "isolated")["n_failed"] == row(both, "isolated")["n_failed"]
+    # "auto" counts the runs the model stopped at its own moat (0.2 m); clearance= (0.15 m)
+    # measures the demand only (issue 31: a "no moat" isolator is not failed by it)
+    assert row(auto, "isolated")["failure"] == "overturned_or_clearance"
+    assert row(auto, "none")["failure"] == "overturned"
+    assert row(auto, "isolated")["n_failed"] == (ov | stopped)[iso].sum()
     plain = t.assign(clearance_exceeded=False)  # no stopped run: overturning only
     assert compare_mitigations(plain, n_boot=0).failure == "overturned"
     with np.errstate(invalid="ignore"):

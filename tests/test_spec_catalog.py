@@ -273,6 +273,7 @@ EXAMPLES = {
     "record": {"file": str(_builtin_dir() / "RSN982_NORTHR_JEN292.AT2")},
     "builtin": {"name": "RSN126_GAZLI_GAZ000"},
     "earthquake": {"number": 7},
+    "ec8_earthquake": {"number": 2, "ground": "C"},
     "ground_motion": {"set": "duzce", "horizontal": 2, "vertical_factor": 0.5},
     "stochastic": {"index": 3, "duration": 15.0, "Ia": 0.8},
 }

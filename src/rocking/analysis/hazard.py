@@ -406,6 +406,50 @@ class HazardCurve:
         if self.approximate and "approximat" not in lab.lower():
             lab = (lab + " " if lab else "") + "(approximation)"
         self.label = lab
+        self.fractiles: dict = {}
+        """The hazard's fractile curves ``{q: HazardCurve}`` (:meth:`with_fractiles`),
+        used by :func:`risk` for the interval of the annual frequency; empty: none."""
+
+    def with_fractiles(self, fractiles) -> HazardCurve:
+        """This curve with the hazard model's fractile curves ``{q: HazardCurve}`` (q in
+        (0, 1), at least two; e.g. OpenQuake's ``quantile-0.05`` and ``quantile-0.95``
+        exports read with :meth:`from_openquake`), of the same IM and a unit of the same
+        kind (converted to this curve's). :func:`risk` then propagates them into the
+        interval of the annual frequency (:func:`risk_interval`).
+
+        Examples
+        --------
+        >>> from rocking.analysis import HazardCurve
+        >>> mean = HazardCurve.from_code_value(0.25)
+        >>> lo, hi = HazardCurve.from_code_value(0.18), HazardCurve.from_code_value(0.33)
+        >>> c = mean.with_fractiles({0.05: lo, 0.95: hi})
+        >>> sorted(c.fractiles), c.fractiles[0.95].unit
+        ([0.05, 0.95], 'g')
+        """
+        if not isinstance(fractiles, dict) or len(fractiles) < 2:
+            raise ParameterError("fractiles must be a dict {q: HazardCurve} of at least two "
+                                 f"fractiles (q in (0, 1)), got {fractiles!r}")
+        out = {}
+        for q, c in fractiles.items():
+            try:
+                qv = float(q)
+            except (TypeError, ValueError):
+                qv = math.nan
+            if not 0.0 < qv < 1.0:
+                raise ParameterError(f"fractiles: a fractile q must be in (0, 1) (0.05, not "
+                                     f"5), got {q!r}")
+            if not isinstance(c, HazardCurve):
+                raise ParameterError(f"fractiles: the curve of q = {qv:g} must be a "
+                                     f"HazardCurve, got {type(c).__name__}")
+            if not same_im(c.im_name, self.im_name):
+                raise ParameterError(f"fractiles: the curve of q = {qv:g} is of "
+                                     f"{c.im_name}, this curve of {self.im_name}: the same "
+                                     "IM is needed")
+            out[qv] = c.to_unit(self.unit)
+        new = HazardCurve(self.im, self.rate, im_name=self.im_name, unit=self.unit,
+                          label=self.label, approximate=self.approximate)
+        new.fractiles = dict(sorted(out.items()))
+        return new
 
     def __repr__(self) -> str:
         approx = ", approximate" if self.approximate else ""
@@ -503,9 +547,11 @@ class HazardCurve:
         if b is None or a[0] != b[0]:
             raise ParameterError(f"unit must be a {a[0]} unit like {self.unit!r}, got "
                                  f"{unit!r}")
-        return HazardCurve(self.im * a[1] / b[1], self.rate, im_name=self.im_name,
-                           unit=str(unit).strip(), label=self.label,
-                           approximate=self.approximate)
+        out = HazardCurve(self.im * a[1] / b[1], self.rate, im_name=self.im_name,
+                          unit=str(unit).strip(), label=self.label,
+                          approximate=self.approximate)
+        out.fractiles = {q: c.to_unit(unit) for q, c in self.fractiles.items()}
+        return out
 
     # ------------------------------------------------------------------ constructors
 
@@ -673,7 +719,7 @@ class HazardCurve:
 
     @classmethod
     def from_openquake(cls, path, site=0, *, label: str = "",
-                       max_distance_km: float = MAX_SITE_DISTANCE_KM):
+                       max_distance_km: float = MAX_SITE_DISTANCE_KM, fractiles=()):
         """An OpenQuake engine hazard-curve export (``hazard_curve-<kind>-<IMT>_<id>.csv``):
         a first comment line of ``key=value`` metadata (``investigation_time``, ``imt``),
         then the header ``lon,lat,depth,poe-<level>,...`` and one row per site.
@@ -698,14 +744,39 @@ class HazardCurve:
         ('PGA', 'g', 1)
         >>> round(curve.rate_at(0.05), 8), np.round(curve.tail_slopes, 6).tolist()
         (0.001, [2.5, 2.5])
+
+        ``fractiles``: the model's fractile exports of the same calculation
+        (``hazard_curve-quantile-0.05-PGA_<id>.csv``, ...), read at the same site; each
+        one's fractile from its metadata ``kind='quantile-0.05'`` (or its name). They go
+        to :meth:`with_fractiles`, and :func:`risk` gives the interval they imply.
         """
         p = Path(path)
         if not p.is_file():
             raise ParameterError(f"path: no such OpenQuake file {str(path)!r}")
         try:
-            return cls._from_openquake(p, site, label, max_distance_km)
+            curve = cls._from_openquake(p, site, label, max_distance_km)
         except ParameterError as e:
             raise ParameterError(_in_file(str(e), p.name)) from None
+        if isinstance(fractiles, str | Path):
+            fractiles = [fractiles]
+        if not fractiles:
+            return curve
+        fr = {}
+        for f in fractiles:
+            c = cls.from_openquake(f, site, max_distance_km=max_distance_km)
+            text = str(c.metadata.get("kind", "")) + " " + Path(f).name
+            m = re.search(r"quantile-([0-9.]+)", text)
+            if m is None:
+                raise ParameterError(f"fractiles: {Path(f).name} is not a quantile export "
+                                     "(its kind must be 'quantile-<q>', e.g. "
+                                     "'quantile-0.05')")
+            if not same_im(c.im_name, curve.im_name):
+                raise ParameterError(f"fractiles: {Path(f).name} is of {c.im_name}, "
+                                     f"{p.name} of {curve.im_name}")
+            fr[float(m.group(1).rstrip("."))] = c
+        out = curve.with_fractiles(fr)
+        out.metadata = curve.metadata
+        return out
 
     @classmethod
     def _from_openquake(cls, p: Path, site, label, max_distance_km):
@@ -849,9 +920,21 @@ class HazardCurve:
 
 # --------------------------------------------------------------------------- risk
 
+#: Default level of the interval of :func:`risk`: the central 90 % (the 5 % and 95 %
+#: percentiles), the fractiles an OpenQuake hazard model usually exports.
+INTERVAL_LEVEL = 0.90
+
+
 @dataclass(frozen=True)
 class Risk:
     """The risk of one fragility under one hazard curve (:func:`risk`).
+
+    ``annual_frequency`` is the point estimate (the fit's curve on the hazard curve);
+    ``annual_frequency_interval`` the central ``interval_level`` interval (default 90 %:
+    the 5th and 95th percentiles) of the annual frequency propagated from the fit's
+    bootstrap and the hazard's fractile curves (``interval_source`` says which, NaN when
+    neither is there); ``probability_interval`` the same interval of the probability in
+    ``t_years`` (``1 - exp(-lambda t)`` is increasing in lambda).
 
     Examples
     --------
@@ -859,12 +942,35 @@ class Risk:
     >>> r = Risk(annual_frequency=1e-3, tail_share=0.0, probability_50=0.0488)
     >>> round(r.probability_in(100), 4)  # 1 - exp(-0.1)
     0.0952
+    >>> r.annual_frequency_interval  # no bootstrap, no fractiles: no interval
+    (nan, nan)
     """
 
     annual_frequency: float
     tail_share: float
     probability_50: float
     label: str = ""
+    annual_frequency_interval: tuple = (math.nan, math.nan)
+    probability_interval: tuple = (math.nan, math.nan)
+    interval_level: float = math.nan
+    interval_source: str = ""
+    t_years: float = 50.0
+
+    def probability_interval_in(self, t_years) -> tuple[float, float]:
+        """The interval of the probability in ``t_years``: :func:`probability_in` of the
+        ends of :attr:`annual_frequency_interval` (NaN without one).
+
+        Examples
+        --------
+        >>> from rocking.analysis import Risk
+        >>> r = Risk(1e-3, 0.0, 0.0488, annual_frequency_interval=(5e-4, 2e-3))
+        >>> [round(p, 5) for p in r.probability_interval_in(50)]  # 1 - exp(-lambda 50)
+        [0.02469, 0.09516]
+        """
+        lo, hi = self.annual_frequency_interval
+        if not (math.isfinite(lo) and math.isfinite(hi)):
+            return (math.nan, math.nan)
+        return (float(probability_in(t_years, lo)), float(probability_in(t_years, hi)))
 
     def probability_in(self, t_years):
         """Probability in ``t_years`` (``1 - exp(-lambda t)``), :func:`probability_in` of
@@ -901,13 +1007,137 @@ def _fit_factor(fit, curve: HazardCurve) -> float:
     return a[1] / b[1]
 
 
-def risk(fit, curve: HazardCurve, *, t_years: float = 50.0):
+def _log_rates(curve: HazardCurve, u, score=None):
+    """ln(rate) at ln(im) ``u`` (shape (B, n)); with ``score`` (shape (B,)), of the curve
+    at that normal score of the hazard's epistemic uncertainty: the fractile curves'
+    ln(rate) interpolated linearly in the normal score ``Phi^-1(q)`` of their fractiles
+    (extrapolated beyond the extreme ones), i.e. fractile curves that move together at
+    every IM (fully correlated across the IM)."""
+    from scipy.stats import norm
+
+    if score is None:
+        return curve._log_rate(u)
+    qs = np.array(sorted(curve.fractiles))
+    zs = norm.ppf(qs)
+    ll = np.stack([curve.fractiles[q]._log_rate(u) for q in qs])  # (Q, B, n)
+    j = np.clip(np.searchsorted(zs, score) - 1, 0, zs.size - 2)
+    w = (score - zs[j]) / (zs[j + 1] - zs[j])
+    rows = np.arange(u.shape[0])
+    return (1.0 - w)[:, None] * ll[j, rows] + w[:, None] * ll[j + 1, rows]
+
+
+def lognormal_risks(median, beta, curve: HazardCurve, *, factor: float = 1.0,
+                    score=None, n: int = 4001) -> np.ndarray:
+    """Annual frequencies of many lognormal fragilities (``median``, ``beta``: arrays, the
+    median in the fit's unit, ``factor`` taking the curve's IM into it) under ``curve``
+    (or, with ``score``, its fractile curves at those normal scores: :func:`_log_rates`),
+    vectorised: by parts, ``lambda_f = int lambda(im) dP(im) = E[lambda(median e^(beta Z))]``
+    with Z standard normal, a trapezoid rule over ``n`` points of Z from
+    ``-(k beta + 10)`` to 10 (k: the curve's steepest log-log slope, at most 20, which
+    moves the integrand's mass to ``Z = -k beta``). The same integral as :func:`risk`'s
+    quadrature, to about 1e-6 relatively.
+
+    Examples
+    --------
+    On a power law ``k0 a^-k`` the closed form is ``k0 median^-k exp(k^2 beta^2 / 2)``:
+
+    >>> from rocking.analysis import HazardCurve
+    >>> from rocking.analysis.hazard import lognormal_risks
+    >>> curve = HazardCurve.from_code_value(0.25)  # (1/475) (a / 0.25)^-3, a in g
+    >>> med, beta = np.array([0.5, 1.0]), np.array([0.3, 0.5])
+    >>> lam = lognormal_risks(med, beta, curve)
+    >>> closed = (0.25 / med) ** 3 / 475 * np.exp(9 * beta**2 / 2)
+    >>> bool(np.allclose(lam, closed, rtol=1e-6))
+    True
+    """
+    med = np.atleast_1d(np.asarray(median, dtype=float))
+    beta = np.atleast_1d(np.asarray(beta, dtype=float))
+    slopes = [*curve.tail_slopes, *(-np.diff(np.log(curve.rate)) / np.diff(np.log(curve.im)))]
+    for c in curve.fractiles.values() if score is not None else ():
+        slopes += list(c.tail_slopes)
+    k = min(max(max(slopes), 0.0), 20.0)
+    z_lo = -(k * beta + 10.0)
+    t = np.linspace(0.0, 1.0, int(n))
+    z = z_lo[:, None] + (10.0 - z_lo)[:, None] * t[None, :]
+    u = np.log(med / factor)[:, None] + beta[:, None] * z
+    logf = _log_rates(curve, u, score) - 0.5 * z * z - 0.5 * math.log(2.0 * math.pi)
+    return np.trapezoid(np.exp(logf), z, axis=1)
+
+
+def risk_interval(fit, curve: HazardCurve, *, level: float = INTERVAL_LEVEL, seed=0,
+                  factor: float | None = None):
+    """The central ``level`` interval of the annual frequency of ``fit`` under ``curve``
+    and where it comes from: ``(low, high, source, draws)``.
+
+    * **The fit's bootstrap** (``fit.boot_coef``, the probit ``(b0, b1)`` of each draw;
+      draws with ``b1 <= 0``, an infinite median, are left out): the annual frequency of
+      each draw (:func:`lognormal_risks`), its percentiles.
+    * **The hazard's fractile curves** (:meth:`HazardCurve.with_fractiles`), read as one
+      normal score Z_H of the hazard model's epistemic uncertainty that moves every IM's
+      rate together (each rate's fractiles at ``Phi(Z_H)``, interpolated in the score).
+      Alone (a fit without bootstrap), the annual frequency is monotone in Z_H: its
+      percentiles are those of the fractile curves at the interval's own fractiles, exactly.
+    * **Both**: each bootstrap draw is paired with an independent Z_H (random, ``seed``),
+      the percentiles of the pairs (a Monte Carlo of the two sources, independent).
+
+    ``(nan, nan, "", empty)`` when there is neither.
+
+    Examples
+    --------
+    >>> from scipy.stats import norm
+    >>> from rocking.analysis import HazardCurve, fragility
+    >>> from rocking.analysis.hazard import risk_interval
+    >>> im = np.repeat([1.0, 2.0, 3.0, 4.0, 6.0], 40)  # PGA (m/s^2)
+    >>> failed = np.tile(np.arange(40), 5) < np.round(40 * norm.cdf(np.log(im / 3) / 0.4))
+    >>> fit = fragility(im, failed, n_boot=400, seed=1, im_name="pga", im_unit="m/s^2")
+    >>> lo, hi, source, draws = risk_interval(fit, HazardCurve.from_code_value(0.25))
+    >>> bool(lo < hi), source, draws.size
+    (True, 'fit bootstrap (400 draws)', 400)
+    """
+    from scipy.stats import norm
+
+    level = float(level)
+    if not 0.0 < level < 1.0:
+        raise ParameterError(f"level must be in (0, 1) (0.9: the 5-95 % interval), got "
+                             f"{level!r}")
+    c = _fit_factor(fit, curve) if factor is None else factor
+    q = 0.5 * (1.0 - level)
+    b = np.asarray(getattr(fit, "boot_coef", np.empty((0, 2))), dtype=float).reshape(-1, 2)
+    b = b[np.isfinite(b).all(axis=1) & (b[:, 1] > 0)]
+    has_f = len(curve.fractiles) >= 2
+    lognormal = hasattr(fit, "median") and hasattr(fit, "beta")
+    if not lognormal or (b.shape[0] < 2 and not has_f):
+        return math.nan, math.nan, "", np.empty(0)
+    if b.shape[0] < 2:  # the fractiles only: exact, monotone in the score
+        z = norm.ppf([q, 1.0 - q])
+        lam = lognormal_risks(np.full(2, fit.median), np.full(2, fit.beta), curve,
+                              factor=c, score=z)
+        return (float(lam[0]), float(lam[1]),
+                f"hazard fractiles ({', '.join(f'{v:g}' for v in curve.fractiles)})", lam)
+    med, beta = np.exp(-b[:, 0] / b[:, 1]), 1.0 / b[:, 1]
+    score = None
+    source = f"fit bootstrap ({med.size} draws)"
+    if has_f:
+        score = np.random.default_rng(seed).standard_normal(med.size)
+        source += (" and hazard fractiles ("
+                   f"{', '.join(f'{v:g}' for v in curve.fractiles)})")
+    lam = lognormal_risks(med, beta, curve, factor=c, score=score)
+    lo, hi = np.quantile(lam, [q, 1.0 - q])
+    return float(lo), float(hi), source, lam
+
+
+def risk(fit, curve: HazardCurve, *, t_years: float = 50.0,
+         level: float = INTERVAL_LEVEL):
     """Annual frequency of the state of ``fit`` under ``curve`` over the whole IM range
     (Cornell et al. 2002), the share from the power-law tails beyond the curve's ends, and
     the probability in ``t_years`` (``Risk.probability_50`` for the default 50).
 
     ``lambda_f = integral_0^inf P(f | im) |d lambda / d im| d im``, computed in ``ln im``
-    with ``scipy.integrate.quad``. The IM names must agree and the units be of the same
+    with ``scipy.integrate.quad``. Its uncertainty: the central ``level`` interval
+    (default 0.9: 5-95 %) from the fit's bootstrap and the curve's fractile curves
+    (:func:`risk_interval`), in ``Risk.annual_frequency_interval`` and
+    ``Risk.probability_interval`` (NaN without either). The IM names must agree and the
+    units be of the same
     kind (g and m/s^2 are converted). ``fit``: a :class:`FragilityFit` (one :class:`Risk`)
     or damage-state curves with ``fits`` (a list, one per state).
 
@@ -935,7 +1165,7 @@ def risk(fit, curve: HazardCurve, *, t_years: float = 50.0):
         raise ParameterError(f"curve must be a HazardCurve, got {type(curve).__name__}")
     fits = getattr(fit, "fits", None)
     if fits is not None:
-        return [risk(f, curve, t_years=t_years) for f in fits]
+        return [risk(f, curve, t_years=t_years, level=level) for f in fits]
     if not callable(getattr(fit, "probability", None)):
         raise ParameterError(f"fit must be a FragilityFit, got {type(fit).__name__}")
     t_years = _positive("t_years", t_years)
@@ -968,8 +1198,14 @@ def risk(fit, curve: HazardCurve, *, t_years: float = 50.0):
     high = quad(integrand, lu[-1], np.inf, args=(k1,), **opts)[0] if k1 > 0 else 0.0
     total = inner + low + high
     share = (low + high) / total if total > 0 else 0.0
+    lo, hi, source, _ = risk_interval(fit, curve, level=level, factor=c,
+                                      seed=getattr(fit, "seed", 0) or 0)
+    pint = ((probability_in(t_years, lo), probability_in(t_years, hi)) if source
+            else (math.nan, math.nan))
     return Risk(total, share, probability_in(t_years, total),
-                label=getattr(fit, "label", ""))
+                label=getattr(fit, "label", ""), annual_frequency_interval=(lo, hi),
+                probability_interval=pint, interval_level=float(level) if source
+                else math.nan, interval_source=source, t_years=t_years)
 
 
 def plot_risk(curve: HazardCurve, fit, ax=None):
@@ -991,7 +1227,7 @@ def plot_risk(curve: HazardCurve, fit, ax=None):
     c = _fit_factor(fit, curve)
     res = risk(fit, curve)
     if ax is None:
-        fig, ax = figure((7.0, 4.0))
+        fig, ax = figure((10.0, 4.2))
     else:
         fig = ax.figure
     lo = min(curve.im[0], fit.median / c * math.exp(-4 * fit.beta))
@@ -1003,13 +1239,22 @@ def plot_risk(curve: HazardCurve, fit, ax=None):
     ax.loglog(x, np.where(inside, np.nan, lam), color=PALETTE[0], ls=":",
               label="power-law tails (extrapolated)")
     ax.plot(curve.im, curve.rate, "o", ms=3, color=PALETTE[0])
+    if len(curve.fractiles) >= 2:
+        qs = sorted(curve.fractiles)
+        lo_c, hi_c = curve.fractiles[qs[0]], curve.fractiles[qs[-1]]
+        ax.fill_between(x, lo_c.rate_at(x), hi_c.rate_at(x), color=PALETTE[0], alpha=0.15,
+                        lw=0, label=f"hazard fractiles {qs[0]:g}-{qs[-1]:g}")
     style_axes(ax, im_label(curve.im_name, curve.unit), "annual rate of exceedance")
     ax2 = ax.twinx()
     pf = np.asarray(fit.probability(x * c), dtype=float)
     u = np.log(x)
     dlam = -np.gradient(np.log(lam), u) * lam
     dens = pf * dlam
-    ax2.plot(x, pf, color=PALETTE[1], label=f"fragility {fit.label}".strip())
+    ax2.plot(x, pf, color=PALETTE[1], ls="--", label=f"fragility {fit.label}".strip())
+    if getattr(fit, "n_boot", 0):
+        b = fit.band(x * c, res.interval_level if res.interval_source else INTERVAL_LEVEL)
+        ax2.fill_between(x, b["lower"], b["upper"], color=PALETTE[1], alpha=0.15, lw=0,
+                         label="fragility bootstrap band")
     peak = dens.max() if dens.max() > 0 else 1.0
     ax2.fill_between(x, 0, dens / peak, color=PALETTE[2], alpha=0.3,
                      label="integrand P(f|im) |dλ/d ln im| (scaled)")
@@ -1017,8 +1262,32 @@ def plot_risk(curve: HazardCurve, fit, ax=None):
     ax2.set_ylabel("probability / relative contribution")
     h1, l1 = ax.get_legend_handles_labels()
     h2, l2 = ax2.get_legend_handles_labels()
-    ax.legend(h1 + h2, l1 + l2, fontsize=7, loc="lower left")
-    ax.set_title(f"annual frequency {res.annual_frequency:.3g}/yr (tails "
-                 f"{100 * res.tail_share:.0f}%), P(50 yr) {res.probability_50:.3g}",
-                 fontsize=9)
+    ax.legend(h1 + h2, l1 + l2, fontsize=7, loc="upper left", bbox_to_anchor=(1.12, 1.0),
+              borderaxespad=0.0, frameon=False)
+    ax.set_title(risk_text(res), fontsize=9)
     return fig
+
+
+def risk_text(r: Risk) -> str:
+    """One line of a :class:`Risk`: the annual frequency and the probability in its
+    service life, each with its interval when it has one.
+
+    Examples
+    --------
+    >>> from rocking.analysis import Risk
+    >>> from rocking.analysis.hazard import risk_text
+    >>> risk_text(Risk(1.3e-3, 0.0, 0.063, annual_frequency_interval=(8e-4, 5.4e-3),
+    ...                probability_interval=(0.039, 0.237), interval_level=0.9,
+    ...                interval_source="fit bootstrap (1000 draws)"))
+    'annual frequency 0.0013/yr (90 %: 0.0008-0.0054), P(50 yr) 0.063 (0.039-0.24)'
+    """
+    lo, hi = r.annual_frequency_interval
+    pl, ph = r.probability_interval
+    has = bool(r.interval_source) and math.isfinite(lo) and math.isfinite(hi)
+    a = f"annual frequency {r.annual_frequency:.3g}/yr"
+    p = f"P({r.t_years:g} yr) {r.probability_50:.3g}"
+    if has:
+        a += f" ({100 * r.interval_level:.0f} %: {lo:.2g}-{hi:.2g})"
+        p += f" ({pl:.2g}-{ph:.2g})"
+    tails = f", tails {100 * r.tail_share:.0f} %" if r.tail_share >= 0.005 else ""
+    return f"{a}, {p}{tails}"

@@ -37,7 +37,7 @@ from .fragility import (
     as_bool_array,
     fit_or_bounds,
 )
-from .hazard import HazardCurve, risk
+from .hazard import RETURN_PERIODS, HazardCurve, probability_in, risk
 
 FAILURES = ("overturned", "overturned_or_clearance")
 """What counts as a failure: the block overturned, or (also) the isolator reached its
@@ -55,10 +55,35 @@ COLUMNS = (
     "median", "beta", "median_ci_low", "median_ci_high", "beta_ci_low", "beta_ci_high",
     "median_lower_bound", "median_upper_bound", "median_ratio", "median_ratio_lower_bound",
     "annual_frequency", "annual_frequency_lower_bound", "annual_frequency_upper_bound",
-    "annual_frequency_ratio", "displacement_median", "displacement_p84",
-    "displacement_max", "n_clearance_exceeded", "p_clearance_exceeded", "clearance",
-    "note",
+    "annual_frequency_ratio", "annual_frequency_low", "annual_frequency_high",
+    "probability", "failure", "verdict", "reason", "displacement_max",
+    "n_clearance_exceeded", "p_clearance_exceeded", "clearance",
+    "clearance_annual_frequency", "clearance_probability", "note",
 )
+"""The per-return-period columns of the isolator's demand follow (:func:`demand_columns`)."""
+
+VERDICTS = ("reference", "better", "worse", "same", "not known")
+"""``verdict`` of a mitigation against the reference ("none"): its annual frequency of
+failure (with a hazard), else its median, compared with the reference's."""
+AMPLIFY_BAND = (0.7, 1.4)
+"""An isolator whose period is within this ratio of the building's period is near
+resonance with the floor's motion (a likely reason for an isolator that makes it worse)."""
+
+
+def demand_columns(T: float) -> tuple[str, ...]:
+    """The columns of the isolator's demand at return period ``T`` (years): the IM there
+    (``im_<T>yr``), the median and 84th percentile of the base displacement at that IM
+    (``displacement_median_<T>yr``, ``displacement_p84_<T>yr``, m) and the probability
+    that it reaches the clearance there (``p_clearance_<T>yr``).
+
+    Examples
+    --------
+    >>> from rocking.analysis.mitigation import demand_columns
+    >>> demand_columns(475)
+    ('im_475yr', 'displacement_median_475yr', 'displacement_p84_475yr', 'p_clearance_475yr')
+    """
+    t = f"{T:g}yr"
+    return (f"im_{t}", f"displacement_median_{t}", f"displacement_p84_{t}", f"p_clearance_{t}")
 
 
 # --------------------------------------------------------------------------- inputs
@@ -205,20 +230,24 @@ def _check_table(table, im, failure, by, mit_col):
 
 # --------------------------------------------------------------------------- one fit
 
+def _bins(x: np.ndarray, max_levels: int = 25):
+    """``(idx, im)``: the IM level of each run; with more than ``max_levels`` distinct IMs,
+    bins of equal count in ``ln im`` (``im``: the geometric mean of the bin)."""
+    levels = np.unique(x)
+    if levels.size <= max_levels:
+        return np.searchsorted(levels, x), levels
+    edges = np.quantile(np.log(x), np.linspace(0, 1, 11))
+    idx = np.clip(np.searchsorted(edges, np.log(x), side="right") - 1, 0, 9)
+    keep = np.unique(idx)
+    idx = np.searchsorted(keep, idx)
+    return idx, np.array([math.exp(np.log(x[idx == k]).mean()) for k in range(keep.size)])
+
+
 def _stripes(x: np.ndarray, y: np.ndarray, max_levels: int = 25) -> pd.DataFrame:
     """The observed failed fraction per IM level (``im``, ``n``, ``n_failed``); with more
     than ``max_levels`` distinct IMs, per bin of equal count in ``ln im`` (``im``: the
     geometric mean of the bin)."""
-    levels = np.unique(x)
-    if levels.size <= max_levels:
-        idx = np.searchsorted(levels, x)
-        im = levels
-    else:
-        edges = np.quantile(np.log(x), np.linspace(0, 1, 11))
-        idx = np.clip(np.searchsorted(edges, np.log(x), side="right") - 1, 0, 9)
-        keep = np.unique(idx)
-        idx = np.searchsorted(keep, idx)
-        im = np.array([math.exp(np.log(x[idx == k]).mean()) for k in range(keep.size)])
+    idx, im = _bins(x, max_levels)
     n = np.bincount(idx, minlength=im.size)
     k = np.bincount(idx, weights=y.astype(float), minlength=im.size).astype(int)
     return pd.DataFrame({"im": im, "n": n, "n_failed": k})
@@ -262,6 +291,77 @@ def _fit_one(x, y, *, im, im_unit, n_boot, seed, label):
     return fit, out
 
 
+def demand_stripes(x: np.ndarray, d: np.ndarray, exceeded: np.ndarray,
+                   cap: float = math.inf) -> pd.DataFrame:
+    """The isolator's displacement demand per IM level (the levels of :func:`_stripes`):
+    ``im``, ``n`` (runs with a displacement), ``displacement_median``,
+    ``displacement_p84`` (m), ``p_clearance`` (the share of runs known to reach the
+    clearance) and ``censored`` (True where a quantile is at or above ``cap``, the
+    smallest displacement at which the model stopped a run: runs stopped at the moat have
+    their clearance as maximum, so such a quantile is a lower bound only).
+
+    Examples
+    --------
+    >>> from rocking.analysis.mitigation import demand_stripes
+    >>> x = np.repeat([1.0, 2.0], 4)  # PGA (m/s^2)
+    >>> d = np.array([.01, .02, .03, .04, .02, .04, .06, .08])  # max |u| (m)
+    >>> t = demand_stripes(x, d, d >= 0.05)
+    >>> t[["im", "n", "displacement_median", "p_clearance"]].values.tolist()
+    [[1.0, 4.0, 0.025, 0.0], [2.0, 4.0, 0.05, 0.5]]
+    """
+    idx, im = _bins(x)
+    rows = []
+    for k, level in enumerate(im):
+        sel = idx == k
+        dk = d[sel]
+        dk = dk[np.isfinite(dk)]
+        ek = exceeded[sel]
+        ek = ek[np.isfinite(ek)]
+        med = float(np.median(dk)) if dk.size else math.nan
+        p84 = float(np.percentile(dk, 84)) if dk.size else math.nan
+        rows.append({"im": float(level), "n": int(dk.size), "displacement_median": med,
+                     "displacement_p84": p84,
+                     "p_clearance": float(ek.mean()) if ek.size else math.nan,
+                     "censored": bool(dk.size and p84 >= cap)})
+    return pd.DataFrame(rows)
+
+
+def demand_at(stripes: pd.DataFrame, im: float) -> dict:
+    """The demand of :func:`demand_stripes` at the IM ``im``: the median, 84th percentile
+    and P(reaching the clearance) interpolated between the levels (log-log for the
+    displacements, linear in ``ln im`` for the probability); NaN beyond the IMs run (no
+    extrapolation) and ``"beyond"`` then True; ``censored`` where a level used is.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> from rocking.analysis.mitigation import demand_at
+    >>> s = pd.DataFrame({"im": [1.0, 4.0], "n": [9, 9], "displacement_median": [0.01, 0.04],
+    ...                   "displacement_p84": [0.02, 0.08], "p_clearance": [0.0, 0.5],
+    ...                   "censored": [False, False]})
+    >>> {k: round(v, 4) for k, v in demand_at(s, 2.0).items() if k.startswith(("d", "p"))}
+    {'displacement_median': 0.02, 'displacement_p84': 0.04, 'p_clearance': 0.25}
+    """
+    nan = {"displacement_median": math.nan, "displacement_p84": math.nan,
+           "p_clearance": math.nan, "censored": False, "beyond": True}
+    s = stripes[(stripes["n"] > 0) & (stripes["displacement_median"] > 0)]
+    if len(s) == 0 or not math.isfinite(im) or im <= 0:
+        return nan
+    x = np.log(s["im"].to_numpy(float))
+    u = math.log(im)
+    if not x[0] - 1e-12 <= u <= x[-1] + 1e-12:
+        return nan
+    out = {"beyond": False}
+    for col in ("displacement_median", "displacement_p84"):
+        out[col] = float(np.exp(np.interp(u, x, np.log(s[col].to_numpy(float)))))
+    out["p_clearance"] = float(np.interp(u, x, s["p_clearance"].to_numpy(float)))
+    j = np.searchsorted(x, u)
+    near = s["censored"].to_numpy(bool)[max(j - 1, 0):j + 1]
+    out["censored"] = bool(near.any())
+    return {k: out[k] for k in ("displacement_median", "displacement_p84", "p_clearance",
+                                "censored", "beyond")}
+
+
 # --------------------------------------------------------------------------- result
 
 class MitigationComparison:
@@ -295,7 +395,8 @@ class MitigationComparison:
     """
 
     def __init__(self, table, fits, stripes, *, by, im, im_unit, failure, clearance,
-                 reference, hazard=None, keys=None):
+                 reference, hazard=None, keys=None, demand=None, return_periods=(),
+                 t_years=50.0):
         self.table = table
         self.keys = list(keys) if keys is not None else [
             self.key(r["mitigation"], tuple(r[c] for c in by)) for _, r in table.iterrows()]
@@ -309,6 +410,11 @@ class MitigationComparison:
         self.clearance = clearance
         self.reference = reference
         self.hazard = hazard
+        self.demand = demand or {}
+        """The isolator's displacement demand per IM level (:func:`demand_stripes`) by key,
+        for the mitigations whose runs have a ``max_base_displacement``."""
+        self.return_periods = tuple(return_periods)
+        self.t_years = t_years
 
     def __repr__(self) -> str:
         mits = list(dict.fromkeys(self.table["mitigation"]))
@@ -378,8 +484,10 @@ class MitigationComparison:
         >>> ax.get_xlabel(), ax.get_ylabel()
         ('PGA (m/s$^2$)', 'P(overturned)')
         >>> legend = [t.get_text() for t in ax.get_legend().get_texts()]
-        >>> legend
-        ['none: median 2 m/s$^2$, beta 1.14', 'isolated: median 4.11 m/s$^2$, beta 1.06']
+        >>> legend[0]
+        'none: median 2 m/s$^2$, beta 1.14'
+        >>> legend[1].splitlines()  # every mitigation states its ratio to none
+        ['isolated: median 4.11 m/s$^2$, beta 1.06', '2.05 × the median of none: better']
         >>> from rocking.analysis import plot_mitigations  # the same figure
         >>> ax2 = plot_mitigations(cmp).axes[0]
         >>> [t.get_text() for t in ax2.get_legend().get_texts()] == legend
@@ -390,7 +498,9 @@ class MitigationComparison:
 
 def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=None,
                         hazard=None, clearance=None, n_boot=200, seed=0,
-                        reference=REFERENCE) -> MitigationComparison:
+                        reference=REFERENCE, return_periods=(), t_years=50.0,
+                        building_period=None, isolation_periods=None, records=None,
+                        ground=None) -> MitigationComparison:
     """Compare the mitigations of a table of runs, group by group.
 
     ``table``: one row per run, with a ``mitigation`` column (without it, ``model`` names
@@ -437,14 +547,35 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
     the reference's median), ``annual_frequency`` (with ``hazard``),
     ``annual_frequency_lower_bound``/``_upper_bound`` (without a fit: the hazard rate at the
     bounds of the median, i.e. the frequency if the fragility were a step there; NaN
-    beyond the hazard curve), ``annual_frequency_ratio``, ``displacement_median``,
-    ``displacement_p84`` (84th percentile: median + one log standard deviation of a
-    lognormal demand), ``displacement_max`` (m, of ``max_base_displacement``; NaN without
-    it; a run stopped at the model's clearance has the clearance as its maximum, so these
-    are censored there), ``n_clearance_exceeded`` and ``p_clearance_exceeded`` (runs with
-    ``clearance_exceeded`` or ``max_base_displacement >= clearance``; NaN when neither is
-    known; a run stopped at the model's own clearance counts whatever ``clearance``),
-    ``clearance`` (m, NaN if not given) and ``note``.
+    beyond the hazard curve), ``annual_frequency_ratio`` (to the reference's: every
+    comparison states it), ``annual_frequency_low``/``_high`` (the 90 % interval of
+    :func:`~.hazard.risk`, with a :class:`~.hazard.HazardCurve`), ``probability`` (in
+    ``t_years``), ``failure`` (the rule of the row), ``verdict`` (:data:`VERDICTS`:
+    "worse" when its annual frequency, or without a hazard its median, is worse than the
+    reference's) and ``reason`` (for a worse one, the likely reason the runs show:
+    failures that are runs stopped at the moat, an isolation period near
+    ``building_period`` on a floor (within :data:`AMPLIFY_BAND`; ``isolation_periods``
+    ``{mitigation: s}`` or an ``isolation_period`` column), anchors that broke; else "no
+    reason visible in the runs"), ``displacement_max`` (m, of ``max_base_displacement``;
+    NaN without it; a run stopped at the model's clearance has the clearance as its
+    maximum), ``n_clearance_exceeded`` and ``p_clearance_exceeded`` (over all runs,
+    whatever their IM: runs with ``clearance_exceeded`` or ``max_base_displacement >=
+    clearance``; NaN when neither is known), ``clearance`` (m, NaN if not given),
+    ``clearance_annual_frequency`` and ``clearance_probability`` (in ``t_years``: a
+    fragility of "reached the clearance" integrated over the hazard), ``note``; then, with
+    a hazard, for each return period T of :data:`~.hazard.RETURN_PERIODS` (475 and 2475
+    years) and ``return_periods``, the columns of :func:`demand_columns`: the IM at T and
+    the isolator's demand there (median and 84th percentile of ``max_base_displacement``
+    and P(reaching the clearance), interpolated between the IM levels run, log-log; NaN
+    beyond them, with a note: no extrapolation). The demand per level is
+    :attr:`MitigationComparison.demand` (:func:`demand_stripes`): the displacement is not
+    pooled over the levels, which would make it depend on the levels chosen.
+
+    ``records`` (the records that were run, optional) are checked at the isolators'
+    periods and ``building_period`` against EN 1998-1 on ``ground`` (A-E; without it,
+    Type 1 on ground A) by :func:`rocking.motions.check_records_fit`: a
+    :class:`~rocking.motions.RecordFitWarning` where their mean spectrum falls more than
+    10 % below it.
 
     Raises :class:`~rocking.ParameterError` for a missing column, an unknown ``failure``,
     a hazard in an incompatible unit, or a group whose runs were all left out.
@@ -503,8 +634,7 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
     disp_all = (pd.to_numeric(table["max_base_displacement"], errors="coerce").to_numpy(float)
                 if "max_base_displacement" in table else np.full(len(table), np.nan))
     flag_all = _flags(table, "clearance_exceeded")
-    if failure == "auto":  # runs stopped at the clearance are no survivors to trust
-        failure = "overturned_or_clearance" if np.any(flag_all == 1) else "overturned"
+    asked = failure
     if failure == "overturned_or_clearance" and not (
             "clearance_exceeded" in table or (math.isfinite(clear)
                                               and "max_base_displacement" in table)):
@@ -522,8 +652,27 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
     exceeded = np.where((flag_all == 1) | (by_disp == 1), 1.0,
                         np.where(np.isfinite(flag_all) | np.isfinite(by_disp), 0.0, np.nan))
     settled = _flags(table, "settled")
+    broken = np.zeros(len(table), bool)
+    for col in ("anchor_broken_plus", "anchor_broken_minus"):
+        broken |= _flags(table, col) == 1
+    curve_im = _im_curve(hz, im, im_unit)
+    periods = sorted({*RETURN_PERIODS, *_periods(return_periods)})
+    t_years = _positive_years(t_years)
+    iso_T = _isolation_periods(table, mit_col, isolation_periods)
+    if building_period is not None:
+        building_period = _positive_period("building_period", building_period)
 
-    rows, fits, stripes, keys = [], {}, {}, []
+    if records is not None:  # do they fit the periods that matter? (issue 31)
+        from ..motions.ec8_records import check_records_fit
+
+        why = {f"the isolation period of {m!r}": T for m, T in iso_T.items()}
+        if building_period is not None:
+            why["the building's first period"] = building_period
+        if why:
+            check_records_fit(records, why, ground=ground, what="compare_mitigations: "
+                              "the records run", stacklevel=3)
+
+    rows, fits, stripes, keys, demand, diag = [], {}, {}, [], {}, {}
     groups = table.groupby(by, sort=False, dropna=False) if by else [((), table)]
     for gkey, g in groups:
         gkey = gkey if isinstance(gkey, tuple) else (gkey,)
@@ -543,7 +692,17 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
             x = x_all[ok]
             ovt = as_bool_array(f"overturned ({label})", table["overturned"].to_numpy()[ok])
             exc = exceeded[ok]
-            y = ovt | ((exc == 1) if failure == "overturned_or_clearance" else False)
+            own = flag_all[ok] == 1  # stopped by the model at its own clearance (moat)
+            # "auto": per mitigation; a moat the model did not have (a "no moat" isolator)
+            # is no failure: clearance= then measures the demand only
+            fail_m = (failure if failure != "auto" else
+                      "overturned_or_clearance" if own.any() else "overturned")
+            if fail_m == "overturned":
+                y = ovt.copy()
+            elif failure == "auto":
+                y = ovt | own
+            else:
+                y = ovt | (exc == 1)
             key = tuple(gkey) + (mname,) if by else mname
             fit, fields = _fit_one(x, y, im=im, im_unit=im_unit, n_boot=n_boot, seed=seed,
                                    label=mname)
@@ -556,14 +715,24 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
             if n_exc:
                 notes.append(f"{n_exc} runs left out (non-zero status or no valid IM)")
             n_stop = int(np.sum((flag_all[ok] == 1) & ~ovt))
-            if failure == "overturned" and n_stop:
+            if fail_m == "overturned" and n_stop:
                 notes.append(f"{n_stop} runs stopped at the isolator's clearance "
                              "(clearance_exceeded): whether they would have overturned is "
                              "not known, they count as not overturned "
                              "(failure='overturned_or_clearance' counts them as failed)")
-            d = disp_all[ok]
-            d = d[np.isfinite(d)]
+            d_ok = disp_all[ok]
+            d = d_ok[np.isfinite(d_ok)]
             known = exc[np.isfinite(exc)]
+            if d.size:
+                cap = float(np.min(d_ok[own & np.isfinite(d_ok)])) if np.any(
+                    own & np.isfinite(d_ok)) else math.inf
+                demand[key] = demand_stripes(x, d_ok, exc, cap)
+            diag[key] = {"n_failed": int(y.sum()), "n_stop_failed": int(np.sum(y & ~ovt)),
+                         "n_broken_failed": int(np.sum(y & broken[ok])),
+                         "clearance": (float(np.min(d_ok[own])) if own.any() and np.isfinite(
+                             d_ok[own]).any() else clear),
+                         "period": iso_T.get(mname), "floor": (
+                             g["floor"].iloc[0] if "floor" in g else None)}
             row = dict(zip(by, gkey, strict=True))
             models = (", ".join(dict.fromkeys(g["model"].astype(str).to_numpy()[
                 (g[mit_col].astype(str) == mname).to_numpy()]))
@@ -573,26 +742,37 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
                 n_excluded=n_exc,
                 n_unsettled=int(np.sum(settled[ok] == 0)),
                 im_min=float(x.min()), im_max=float(x.max()), **fields,
-                displacement_median=float(np.median(d)) if d.size else math.nan,
-                displacement_p84=float(np.percentile(d, 84)) if d.size else math.nan,
+                failure=fail_m,
                 displacement_max=float(d.max()) if d.size else math.nan,
                 n_clearance_exceeded=int(known.sum()) if known.size else 0,
                 p_clearance_exceeded=float(known.mean()) if known.size else math.nan,
                 clearance=clear, note="; ".join(notes))
-            _hazard_fields(row, fit, hz, im_unit)
+            _hazard_fields(row, fit, hz, im_unit, t_years)
+            _clearance_risk(row, x, exc, curve_im, t_years)
+            _demand_fields(row, demand.get(key), curve_im, periods)
             rows.append(row)
             keys.append(key)
     out = pd.DataFrame(rows)
     _ratios(out, by, reference, mit_col, table)
-    out = out[[*by, *COLUMNS]]
+    _verdicts(out, by, reference, mit_col, table, dict(zip(out.index, keys, strict=True)),
+              diag, building_period)
+    extra = [c for T in periods for c in demand_columns(T)] if curve_im is not None else []
+    out = out[[*by, *COLUMNS, *extra]]
+    if failure == "auto":
+        failure = ("overturned_or_clearance" if (out["failure"] == "overturned_or_clearance")
+                   .any() else "overturned")
     out.attrs.update(im=im, im_unit=im_unit, failure=failure, reference=reference,
                      clearance=clear, by=list(by),
                      fit_method="rocking.analysis.fragility.fragility: probit GLM MLE "
                                 "(Baker 2015)",
                      hazard="Cornell et al. (2002)" if hz is not None else None)
+    out.attrs.update(failure_asked=asked, return_periods=periods if curve_im is not None
+                     else [], t_years=t_years)
     return MitigationComparison(out, fits, stripes, by=by, im=im, im_unit=im_unit,
                                 failure=failure, clearance=clear, reference=reference,
-                                hazard=hz, keys=keys)
+                                hazard=hz, keys=keys, demand=demand,
+                                return_periods=periods if curve_im is not None else (),
+                                t_years=t_years)
 
 
 def _attrs_unit(table: pd.DataFrame, im: str) -> str | None:
@@ -607,15 +787,126 @@ def _attrs_unit(table: pd.DataFrame, im: str) -> str | None:
     return None
 
 
-def _hazard_fields(row: dict, fit: FragilityFit | None, hz, im_unit) -> None:
+def _im_curve(hz, im: str, im_unit) -> HazardCurve | None:
+    """The hazard as a :class:`HazardCurve` in the IM's unit (for its return periods),
+    None without a hazard (or in a unit a HazardCurve does not know)."""
+    if hz is None:
+        return None
+    try:
+        return HazardCurve(hz[0], hz[1], im_name=IM_NAMES.get(im, im), unit=im_unit)
+    except (ParameterError, ValueError):
+        return None
+
+
+def _periods(values) -> list[float]:
+    """Return periods (years) the user names, checked: numbers > 0."""
+    vals = [values] if isinstance(values, int | float) else list(values or ())
+    out = []
+    for v in vals:
+        try:
+            T = float(v)
+        except (TypeError, ValueError):
+            T = math.nan
+        if isinstance(v, bool) or not (math.isfinite(T) and T > 0):
+            raise ParameterError(f"return_periods must be return periods > 0 (years), such "
+                                 f"as (100, 975), got {values!r}")
+        out.append(T)
+    return out
+
+
+def _positive_years(t) -> float:
+    try:
+        v = float(t)
+    except (TypeError, ValueError):
+        v = math.nan
+    if isinstance(t, bool) or not (math.isfinite(v) and v > 0):
+        raise ParameterError(f"t_years must be a service life > 0 (years), got {t!r}")
+    return v
+
+
+def _positive_period(name: str, value) -> float:
+    try:
+        v = float(parse_quantity(value, "time", name=name, default_unit="s")
+                  if isinstance(value, str) else value)
+    except (TypeError, ValueError):
+        v = math.nan
+    if isinstance(value, bool) or not (math.isfinite(v) and 0 < v <= 20):
+        raise ParameterError(f"{name} must be a period in (0, 20] s, got {value!r}")
+    return v
+
+
+def _isolation_periods(table, mit_col, given) -> dict:
+    """``{mitigation: isolation period (s)}``: ``given`` (a dict), else the table's
+    ``isolation_period`` column (the first value of each mitigation), if any."""
+    out = {}
+    if "isolation_period" in table.columns:
+        for name, v in table.groupby(table[mit_col].astype(str))["isolation_period"]:
+            vals = pd.to_numeric(v, errors="coerce").dropna()
+            if len(vals):
+                out[name] = float(vals.iloc[0])
+    if given is not None:
+        if not isinstance(given, dict):
+            raise ParameterError(f"isolation_periods must be a dict {{mitigation: period "
+                                 f"(s)}}, got {given!r}")
+        for k, v in given.items():
+            out[str(k)] = _positive_period(f"isolation_periods[{k!r}]", v)
+    return out
+
+
+def _clearance_risk(row: dict, x, exc, curve: HazardCurve | None, t_years: float) -> None:
+    """The annual frequency of reaching the clearance (and its probability in
+    ``t_years``): a fragility of the event "reached the clearance" on the runs where it
+    is known, integrated over the hazard (:func:`~.hazard.risk`); NaN without a hazard,
+    a clearance, or a fit."""
+    row.update(clearance_annual_frequency=math.nan, clearance_probability=math.nan)
+    known = np.isfinite(exc)
+    if curve is None or known.sum() < 2:
+        return
+    fit, *_ = fit_or_bounds(x[known], exc[known] == 1, n_boot=0,
+                            im_name=curve.im_name, im_unit=curve.unit, label="clearance")
+    if fit is None:
+        return
+    r = risk(fit, curve, t_years=t_years)
+    row.update(clearance_annual_frequency=r.annual_frequency,
+               clearance_probability=r.probability_50)
+
+
+def _demand_fields(row: dict, stripes, curve: HazardCurve | None, periods) -> None:
+    """The isolator's demand at the IM of each return period (:func:`demand_at`)."""
+    if curve is None:
+        return
+    for T in periods:
+        c_im, c_med, c_p84, c_p = demand_columns(T)
+        a = float(curve.im_at_return_period(T))
+        row[c_im] = a
+        d = demand_at(stripes, a) if stripes is not None else None
+        row[c_med] = d["displacement_median"] if d else math.nan
+        row[c_p84] = d["displacement_p84"] if d else math.nan
+        row[c_p] = d["p_clearance"] if d else math.nan
+        if d and d["beyond"] and len(stripes):
+            row["note"] = "; ".join(filter(None, [row["note"], (
+                f"no demand at {T:g} years: its IM {a:.4g} is beyond the IMs run "
+                f"({stripes['im'].min():.4g} to {stripes['im'].max():.4g})")]))
+        elif d and d["censored"]:
+            row["note"] = "; ".join(filter(None, [row["note"], (
+                f"the demand at {T:g} years is censored by the moat (runs stopped at the "
+                "clearance): a lower bound")]))
+
+
+def _hazard_fields(row: dict, fit: FragilityFit | None, hz, im_unit,
+                   t_years: float = 50.0) -> None:
     row.update(annual_frequency=math.nan, annual_frequency_lower_bound=math.nan,
-               annual_frequency_upper_bound=math.nan)
+               annual_frequency_upper_bound=math.nan, annual_frequency_low=math.nan,
+               annual_frequency_high=math.nan, probability=math.nan)
     if hz is None:
         return
     hx, hr = hz[:2]
     if fit is not None and len(hz) == 3:  # a HazardCurve: the whole IM range, tails too
-        r = risk(fit, hz[2])
+        r = risk(fit, hz[2], t_years=t_years)
         row["annual_frequency"] = r.annual_frequency
+        row["annual_frequency_low"], row["annual_frequency_high"] = \
+            r.annual_frequency_interval
+        row["probability"] = r.probability_50
         if r.tail_share > 0.1:
             row["note"] = "; ".join(s for s in (row["note"], (
                 f"{100 * r.tail_share:.0f} % of the annual frequency comes from the "
@@ -624,6 +915,7 @@ def _hazard_fields(row: dict, fit: FragilityFit | None, hz, im_unit) -> None:
     if fit is not None:
         af = annual_frequency(fit, hx, hr, hazard_unit=im_unit)
         row["annual_frequency"] = af
+        row["probability"] = probability_in(t_years, af)
         # beyond the curve: the tail adds lambda(x_N) P(x_N), at most lambda(x_N) is right;
         # below it, failures at im < x_0 are not counted (at most lambda(x_0) - lambda(0))
         p_hi, p_lo = fit.probability(float(hx[-1])), fit.probability(float(hx[0]))
@@ -681,7 +973,111 @@ def _ratios(out: pd.DataFrame, by, reference, mit_col, table) -> None:
         out.loc[idx, "annual_frequency_ratio"] = g["annual_frequency"] / r["annual_frequency"]
 
 
+def _verdicts(out: pd.DataFrame, by, reference, mit_col, table, keys: dict, diag: dict,
+              building_period) -> None:
+    """``verdict`` and ``reason`` of every row: against the reference of its group, by
+    the annual frequency of failure (with a hazard) or else the median (the bounds when
+    there is no fit); a worse mitigation gets the likely reason that the runs show."""
+    out["verdict"] = "not known"
+    out["reason"] = ""
+    parts = out.groupby(by, sort=False, dropna=False) if by else [((), out)]
+    for _, g in parts:
+        ref = _reference_of(g, reference, mit_col, table)
+        if ref is None:
+            continue
+        r0 = g[g["mitigation"] == ref].iloc[0]
+        for i, r in g.iterrows():
+            if r["mitigation"] == ref:
+                out.loc[i, "verdict"] = "reference"
+                continue
+            v = _verdict(r, r0)
+            out.loc[i, "verdict"] = v
+            if v == "worse":
+                out.loc[i, "reason"] = _reason(r, diag.get(keys[i], {}), building_period)
+
+
+def _verdict(r, r0) -> str:
+    af, af0 = r["annual_frequency"], r0["annual_frequency"]
+    if math.isfinite(af) and math.isfinite(af0):
+        return "worse" if af > af0 else "better" if af < af0 else "same"
+    up, lo = r["annual_frequency_upper_bound"], r["annual_frequency_lower_bound"]
+    if math.isfinite(af0) and math.isfinite(up) and up < af0:
+        return "better"
+    if math.isfinite(af0) and math.isfinite(lo) and lo > af0:
+        return "worse"
+    (a, b), (a0, b0) = _median_span(r), _median_span(r0)
+    if a == b and a0 == b0 and math.isfinite(a) and math.isfinite(a0):
+        return "worse" if a < a0 else "better" if a > a0 else "same"
+    if b < a0:  # its median is below every median the reference's runs allow
+        return "worse"
+    if a > b0:
+        return "better"
+    return "not known"
+
+
+def _median_span(r) -> tuple[float, float]:
+    """What the runs say of a row's median: ``(m, m)`` with a fit, else the interval its
+    bounds give (no failure up to ``median_lower_bound``: above it; every run failed from
+    ``median_upper_bound``: below it); ``(nan, nan)`` when nothing is known."""
+    m = r["median"]
+    if math.isfinite(m):
+        return m, m
+    lo, hi = r["median_lower_bound"], r["median_upper_bound"]
+    if not (math.isfinite(lo) or math.isfinite(hi)):
+        return math.nan, math.nan
+    return (lo if math.isfinite(lo) else 0.0), (hi if math.isfinite(hi) else math.inf)
+
+
+def _reason(r, d: dict, building_period) -> str:
+    """The likely reason why a mitigation is worse, from what its runs show."""
+    why = []
+    n, stop = d.get("n_failed", 0), d.get("n_stop_failed", 0)
+    T = d.get("period")
+    if T and building_period and d.get("floor") not in (0, None) and \
+            AMPLIFY_BAND[0] <= T / building_period <= AMPLIFY_BAND[1]:
+        why.append(f"the isolator's period {T:g} s is near the building's {building_period:g}"
+                   " s: the floor's motion, narrow-band at the building's period, is "
+                   "amplified by the isolator (resonance); a longer isolation period")
+    elif T and building_period and d.get("floor") is None and \
+            AMPLIFY_BAND[0] <= T / building_period <= AMPLIFY_BAND[1]:
+        why.append(f"the isolator's period {T:g} s is near the building's {building_period:g}"
+                   " s (resonance with the floor's motion)")
+    if n and stop >= 0.5 * n:
+        c = d.get("clearance", math.nan)
+        cl = f" ({c:.3g} m)" if c == c and math.isfinite(c) else ""
+        d475 = r.get("displacement_median_475yr", math.nan)
+        need = (f"; the median demand at 475 years is {d475:.3g} m" if isinstance(
+            d475, float) and math.isfinite(d475) else "")
+        why.append(f"{stop} of its {n} failures are runs stopped at the clearance{cl}, "
+                   "not overturning: its risk is that of reaching the moat (a larger "
+                   f"clearance lowers it){need}")
+    if n and d.get("n_broken_failed", 0) >= 0.5 * n:
+        why.append(f"the anchors broke in {d['n_broken_failed']} of its {n} failures: "
+                   "brittle anchors release a block that is already rocking (stronger "
+                   "anchors, or none)")
+    return "; ".join(why) if why else "no reason visible in the runs"
+
+
 # --------------------------------------------------------------------------- plot
+
+LINESTYLES = ("-", "--", "-.", ":", (0, (5, 1)), (0, (3, 1, 1, 1, 1, 1)))
+"""Line styles of the mitigations' curves (with the colours: no two curves look alike)."""
+MARKERS = ("o", "s", "^", "D", "v", "P", "X")
+_BY_WORDS = {"block_name": "block", "height_ratio": "z/H"}
+
+
+def _verdict_label(r) -> str:
+    """The ratio to the reference and the verdict for a legend ("" for the reference)."""
+    v = r.get("verdict", "")
+    if v in ("reference", "", None) or v != v:
+        return ""
+    af, med = r.get("annual_frequency_ratio", math.nan), r.get("median_ratio", math.nan)
+    ratio = (f"{af:.3g} × the annual frequency" if isinstance(af, float) and math.isfinite(af)
+             else f"{med:.3g} × the median" if isinstance(med, float) and math.isfinite(med)
+             else "")
+    word = "WORSE than none" if v == "worse" else v
+    return f"\n{ratio} of none: {word}" if ratio else f"\n{word}"
+
 
 def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
                      level: float = 0.95, ncols: int = 3, figsize=None):
@@ -719,7 +1115,8 @@ def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
     groups = list(t.groupby(by, sort=False, dropna=False)) if by else [((), t)]
     ncols = min(ncols, len(groups))
     nrows = math.ceil(len(groups) / ncols)
-    fig = Figure(figsize=figsize or (4.2 * ncols, 3.4 * nrows), layout="constrained")
+    fig = Figure(figsize=figsize or (max(6.4, 5.4 * ncols), 5.1 * nrows),
+                 layout="constrained")
     axes = fig.subplots(nrows, ncols, squeeze=False).ravel()
     lo = float(t["im_min"].min())
     hi = float(t["im_max"].max())
@@ -727,18 +1124,25 @@ def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
     if np.isfinite(meds).any():
         lo, hi = min(lo, np.nanmin(meds) / 3.0), max(hi, np.nanmax(meds) * 3.0)
     grid = np.geomspace(lo * 0.8, hi * 1.2, 200)
-    colors = {m: PALETTE[i % len(PALETTE)]
-              for i, m in enumerate(dict.fromkeys(t["mitigation"]))}
+    names = list(dict.fromkeys(t["mitigation"]))
+    style = {m: (PALETTE[i % len(PALETTE)], LINESTYLES[i % len(LINESTYLES)],
+                 MARKERS[i % len(MARKERS)]) for i, m in enumerate(names)}
     unit = comparison.im_unit
     row_key = dict(zip(t.index, comparison.keys, strict=True))
+    both = "failure" in t and (t["failure"] == "overturned_or_clearance").any()
     for ax, (gkey, g) in zip(axes, groups, strict=False):
         gkey = gkey if isinstance(gkey, tuple) else (gkey,)
-        for i, r in g.iterrows():
+        for j, (i, r) in enumerate(g.iterrows()):
             m = r["mitigation"]
             key = row_key[i]
-            c = colors[m]
+            c, ls, mk = style[m]
+            shift = math.exp(0.02 * (j - (len(g) - 1) / 2))  # coincident points stay seen
             s = comparison.stripes[key]
-            ax.plot(s["im"], s["n_failed"] / s["n"], "o", ms=4, mfc="none", color=c)
+            ax.plot(s["im"] * shift, s["n_failed"] / s["n"], mk, ms=4.5, mfc="none",
+                    color=c)
+            what = (" (overturned or clearance)" if both and r.get("failure") ==
+                    "overturned_or_clearance" else "")
+            verdict = _verdict_label(r)
             fit = comparison.fits.get(key)
             if fit is None:  # the bound in the legend (short), the note in the table
                 lo, hi = r["median_lower_bound"], r["median_upper_bound"]
@@ -750,23 +1154,27 @@ def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
                     text = f"median < {hi:.3g} {unit_label(unit)} (all failed)"
                 else:
                     text = "no fit"
-                ax.plot([], [], "o", mfc="none", color=c, label=f"{m}: {text}")
+                ax.plot([], [], mk, mfc="none", color=c, label=f"{m}{what}: {text}{verdict}")
                 continue
-            ax.plot(grid, fit.probability(grid), color=c,
-                    label=f"{m}: median {fit.median:.3g} {unit_label(unit)}, "
-                          f"beta {fit.beta:.2f}")
+            ax.plot(grid, fit.probability(grid), color=c, ls=ls, lw=1.4,
+                    label=f"{m}{what}: median {fit.median:.3g} {unit_label(unit)}, "
+                          f"beta {fit.beta:.2f}{verdict}")
             if band and fit.n_boot:
                 b = fit.band(grid, level)
                 ax.fill_between(grid, b["lower"], b["upper"], color=c, alpha=0.15, lw=0)
         style_axes(ax, im_label(comparison.im if comparison.im in ("pga", "im") else
                                 IM_NAMES.get(comparison.im, comparison.im), unit),
-                   f"P({comparison.failure.replace('_', ' ')})")
+                   "P(failure)" if both else f"P({comparison.failure.replace('_', ' ')})")
         ax.set_xscale("log")
         ax.set_ylim(-0.02, 1.02)
-        if by:
-            ax.set_title(", ".join(f"{c} {v}" for c, v in zip(by, gkey, strict=True)),
-                         fontsize="medium")
-        ax.legend(frameon=False, fontsize="x-small")
+        title = (", ".join(f"{_BY_WORDS.get(c, c)} {v}" for c, v in zip(by, gkey, strict=True))
+                 if by else "")
+        if title:
+            ax.set_title(title, fontsize="medium")
+        ax.legend(frameon=False, fontsize="x-small", loc="upper center",
+                  bbox_to_anchor=(0.5, -0.2), borderaxespad=0.0)
+    fig.suptitle("Fragility per mitigation\nlines: lognormal fits; markers: the failed share "
+                 "of the runs per level", fontsize="medium")
     for ax in axes[len(groups):]:
         ax.set_visible(False)
     return fig

@@ -232,10 +232,15 @@ def record(curve: HazardCurve, source: dict, t_years: float) -> dict:
     """The manifest's ``hazard``: the curve's points (exactly: JSON keeps every digit of a
     float), its IM, unit, label, whether it is an approximation, the service life and the
     source (file and sha256, site; or the code value)."""
-    return {"label": curve.label, "im_name": curve.im_name, "unit": curve.unit,
-            "approximate": curve.approximate, "t_years": float(t_years),
-            "im": [float(v) for v in curve.im], "rate": [float(v) for v in curve.rate],
-            "source": source}
+    out = {"label": curve.label, "im_name": curve.im_name, "unit": curve.unit,
+           "approximate": curve.approximate, "t_years": float(t_years),
+           "im": [float(v) for v in curve.im], "rate": [float(v) for v in curve.rate],
+           "source": source}
+    if curve.fractiles:  # the hazard's fractile curves: the interval of the risk
+        out["fractiles"] = {repr(q): {"im": [float(v) for v in c.im],
+                                      "rate": [float(v) for v in c.rate]}
+                            for q, c in curve.fractiles.items()}
+    return out
 
 
 def curve_of(rec) -> HazardCurve:
@@ -250,8 +255,14 @@ def curve_of(rec) -> HazardCurve:
     if missing:
         raise ParameterError(f"hazard: the manifest's hazard record lacks "
                              f"{', '.join(missing)}")
-    return HazardCurve(rec["im"], rec["rate"], im_name=rec["im_name"], unit=rec["unit"],
-                       label=rec.get("label", ""), approximate=bool(rec.get("approximate")))
+    curve = HazardCurve(rec["im"], rec["rate"], im_name=rec["im_name"], unit=rec["unit"],
+                        label=rec.get("label", ""), approximate=bool(rec.get("approximate")))
+    fr = rec.get("fractiles")
+    if fr:  # {q: {"im", "rate"}}, the same IM and unit
+        curve = curve.with_fractiles({
+            float(q): HazardCurve(c["im"], c["rate"], im_name=rec["im_name"],
+                                  unit=rec["unit"]) for q, c in fr.items()})
+    return curve
 
 
 def check_t_years(t, name: str = "t_years") -> float:

@@ -22,8 +22,19 @@ writes, in one folder:
   IM bounds (a step fragility there) and a note, never a fitted number; an approximate
   (code-value) hazard is named so in its ``hazard`` and ``approximate`` columns;
   a group with runs stopped at an isolator's clearance also gets a row ``fit =
-  overturned_or_clearance`` (below);
-* ``report.md``: a short markdown summary linking the above.
+  overturned_or_clearance`` (below); every fitted number with its 90 % interval
+  (``annual_frequency_low``/``_high``, ``probability_low``/``_high``: the fit's bootstrap
+  and the hazard's fractile curves, :func:`rocking.analysis.hazard.risk_interval`), and
+  ``risk.png``, every group's annual frequency with its interval and its service-life
+  probability;
+* ``mitigation.csv`` (with ``[[mitigation]]``): every mitigation against ``none``
+  (:func:`rocking.analysis.compare_mitigations`: the ratio of the annual frequencies, or
+  of the medians without a hazard, the verdict and the likely reason of a worse one) and
+  the isolator's displacement at 475 and 2475 years with P(reaching the clearance);
+* ``report.md``: a short markdown summary linking the above. The campaign's records are
+  checked at the isolators' and the building's periods
+  (:func:`rocking.motions.check_records_fit`): a warning and a note where they fall more
+  than 10 % below EN 1998-1.
 
 A table with a ``floor`` column (a campaign with ``[building]``) is grouped by (model,
 block, floor): every file above has a ``floor`` column (and ``height_ratio`` when the
@@ -113,7 +124,9 @@ TAIL_NOTE = 0.1
 """A risk whose share from the hazard curve's extrapolated tails exceeds this gets a note
 (the number rests on the power-law extension beyond the curve's ends)."""
 RISK_COLUMNS = ("fit", "state", "label", "median", "beta", "im_unit", "annual_frequency",
-                "tail_share", "probability", "t_years", "annual_frequency_lower_bound",
+                "tail_share", "probability", "t_years", "annual_frequency_low",
+                "annual_frequency_high", "probability_low", "probability_high",
+                "interval_level", "interval_source", "annual_frequency_lower_bound",
                 "annual_frequency_upper_bound", "probability_lower_bound",
                 "probability_upper_bound", "hazard", "approximate", "note")
 """The columns of ``risk.csv`` after the group's (model, mitigation, block, floor). The
@@ -121,7 +134,10 @@ RISK_COLUMNS = ("fit", "state", "label", "median", "beta", "im_unit", "annual_fr
 frequency (and probability) of a step fragility at the IM bounds its outcomes give (the
 largest IM without failure, the smallest with): bounds only under that step model, not
 statistical confidence bounds (a fragility could rise below the largest IM run without
-failure)."""
+failure). ``annual_frequency_low``/``_high`` and ``probability_low``/``_high``: the
+central ``interval_level`` interval (0.9: the 5th and 95th percentiles) propagated from the
+fit's bootstrap and the hazard's fractile curves when it has them (``interval_source``;
+:func:`rocking.analysis.hazard.risk_interval`); NaN for a group without a fit."""
 
 CLEARANCE_FIT = "overturned_or_clearance"
 """The ``fit`` of the combined failure of a group whose runs were stopped at the isolator's
@@ -440,8 +456,13 @@ def _risk_row(f, curve: HazardCurve, t: float) -> dict:
         note = (f"{100 * r.tail_share:.0f}% of it from the power-law tails beyond the hazard "
                 f"curve ({_g(curve.im[0])}..{_g(curve.im[-1])} {curve.unit}): it rests on "
                 "that extrapolation")
+    lo, hi = r.annual_frequency_interval
+    pl, ph = r.probability_interval_in(t)
     return {"median": f.median, "beta": f.beta, "annual_frequency": r.annual_frequency,
-            "tail_share": r.tail_share, "probability": r.probability_in(t), "note": note}
+            "tail_share": r.tail_share, "probability": r.probability_in(t),
+            "annual_frequency_low": lo, "annual_frequency_high": hi, "probability_low": pl,
+            "probability_high": ph, "interval_level": r.interval_level,
+            "interval_source": r.interval_source, "note": note}
 
 
 def _bounds(ok: pd.DataFrame, im: dict, curve: HazardCurve, t: float,
@@ -529,7 +550,9 @@ def _risk_rows(key: dict, ok: pd.DataFrame, im: dict, fit, curves, labels: list[
     curve, t = site["curve"], site["t_years"]
     nan = math.nan
     base = {**key, "im_unit": im["unit"], "t_years": t, "hazard": curve.label,
-            "approximate": curve.approximate,
+            "approximate": curve.approximate, "annual_frequency_low": nan,
+            "annual_frequency_high": nan, "probability_low": nan, "probability_high": nan,
+            "interval_level": nan, "interval_source": "",
             "annual_frequency_lower_bound": nan, "annual_frequency_upper_bound": nan,
             "probability_lower_bound": nan, "probability_upper_bound": nan}
     x = ok[im["column"]].to_numpy(float)
@@ -586,48 +609,151 @@ def _plot_name(name: str, blocks) -> str:
     return f"{2 * r * math.sin(a):.3g} × {2 * r * math.cos(a):.3g} m block (blocks[{i}])"
 
 
+MARKERS = ("o", "s", "^", "D", "v", "P", "X")
+"""Markers of the groups of a plot (with the colours: no two groups look alike)."""
+LINESTYLES = ("-", "-.", (0, (5, 1)), ":")
+"""Line styles of the groups' fits (the combined failure is always dashed)."""
+
+
+def _fit_range(d: pd.DataFrame, fit) -> np.ndarray:
+    """IMs to draw a fit over: the levels run and the fit's median +- 2 beta, within a
+    factor 4 of the levels (a fit with a large beta or a median far beyond the data must
+    not stretch the axis over decades where nothing was run)."""
+    lo = np.nanmin(d["im"]) if len(d) else fit.median
+    hi = np.nanmax(d["im"]) if len(d) else fit.median
+    a = max(min(lo, fit.median * math.exp(-2.0 * fit.beta)), lo / 4.0)
+    b = min(max(hi, fit.median * math.exp(2.0 * fit.beta)), hi * 4.0)
+    return np.geomspace(a, b, 150)
+
+
 def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> Path:
     """P(overturn) vs IM of one model: stripes with Wilson bars, fits with bands; the IM's
     unit in mathtext (``m/s$^2$``), the blocks named by :func:`_plot_name` (and their
-    floor), the legend beside the axes (it covered the curves of the weaker blocks)."""
-    fig, ax = figure(figsize=(8.6, 3.8))
+    floor), the legend beside the axes (it covered the curves of the weaker blocks).
+    Each group has its own colour, marker and line style, and its points are shifted
+    a little along the IM (a few %, in log) so that groups with the same outcomes (every
+    floor of an isolated block at P = 0) do not hide one another. A group with runs
+    stopped at the isolator's clearance also shows P(overturned or clearance reached)
+    per level (filled markers) and its fit (dashed): the y label names both."""
+    fig, ax = figure(figsize=(9.2, 4.0))
     unit = unit_label(im["unit"])
+    n_groups = len(groups)
+    any_clear = False
     for i, (key, pt, fit, *clear) in enumerate(groups):
         c = PALETTE[i % len(PALETTE)]
+        mk = MARKERS[i % len(MARKERS)]
+        ls = LINESTYLES[i % len(LINESTYLES)]
+        shift = math.exp(0.025 * (i - (n_groups - 1) / 2)) if n_groups > 1 else 1.0
         d = pt[(pt["n"] > 0) & pt["im"].notna()]
         yerr = np.vstack([d["p_overturn"] - d["ci_lower"], d["ci_upper"] - d["p_overturn"]])
         lab = _plot_name(key["block_name"], blocks)
         lab += f", {_where(key)}" if _where(key) else ""
         if fit is not None:
-            lo = np.nanmin(d["im"]) if len(d) else fit.median
-            hi = np.nanmax(d["im"]) if len(d) else fit.median
-            x = np.geomspace(min(lo, fit.median * math.exp(-2.0 * fit.beta)),
-                             max(hi, fit.median * math.exp(2.0 * fit.beta)), 150)
-            ax.plot(x, fit.probability(x), color=c, lw=1.2)
+            x = _fit_range(d, fit)
+            ax.plot(x, fit.probability(x), color=c, lw=1.3, ls=ls)
             if fit.n_boot:
                 b = fit.band(x)
                 ax.fill_between(x, b["lower"], b["upper"], color=c, alpha=0.18, lw=0)
             lab += f"\nmedian {_g(fit.median)}{' ' + unit if unit else ''}, beta {_g(fit.beta, 2)}"
-        if "n_clearance_exceeded" in pt and pt["n_clearance_exceeded"].sum():
+        stopped = "n_clearance_exceeded" in pt and bool(pt["n_clearance_exceeded"].sum())
+        if stopped:
+            any_clear = True
             lab += (f"\n{int(pt['n_clearance_exceeded'].sum())} runs stopped at the "
-                    "clearance\n(counted as not overturned)")
-        cf = clear[0] if clear and clear[0] else None
-        if cf is not None:  # the combined failure, dashed (no band: not the stripes' fit)
-            lo = np.nanmin(d["im"]) if len(d) else cf.median
-            hi = np.nanmax(d["im"]) if len(d) else cf.median
-            x = np.geomspace(min(lo, cf.median * math.exp(-2.0 * cf.beta)),
-                             max(hi, cf.median * math.exp(2.0 * cf.beta)), 150)
-            ax.plot(x, cf.probability(x), color=c, lw=1.2, ls="--")
-            lab += (f"\ndashed: {CLEARANCE_LABEL},\nmedian {_g(cf.median)}"
-                    f"{' ' + unit if unit else ''}, beta {_g(cf.beta, 2)}")
-        ax.errorbar(d["im"], d["p_overturn"], yerr=np.clip(yerr, 0, None), fmt="o", ms=4,
-                    mfc="none", color=c, capsize=2, lw=0.8, label=lab)
-    style_axes(ax, im_label(im["name"], im["unit"]), "P(overturn)")
+                    "clearance")
+        ax.errorbar(d["im"] * shift, d["p_overturn"], yerr=np.clip(yerr, 0, None), fmt=mk,
+                    ms=4.5, mfc="none", color=c, capsize=2, lw=0.8,
+                    label=lab + ("\nopen: overturned" if stopped else ""))
+        if stopped:  # the combined failure per level, filled, and its fit dashed
+            k = (d["n_overturned"] + d["n_clearance_exceeded"]).to_numpy(int)
+            n = d["n"].to_numpy(int)
+            ci = np.array([wilson_interval(int(a), int(b)) for a, b in zip(k, n, strict=True)])
+            pc = k / n
+            cl = f"filled: {CLEARANCE_LABEL}"
+            cf = clear[0] if clear and clear[0] else None
+            if cf is not None:
+                x = _fit_range(d, cf)
+                ax.plot(x, cf.probability(x), color=c, lw=1.3, ls="--")
+                cl += (f"\n(dashed fit: median {_g(cf.median)}"
+                       f"{' ' + unit if unit else ''}, beta {_g(cf.beta, 2)})")
+            ax.errorbar(d["im"] / shift, pc, yerr=np.clip(np.vstack([pc - ci[:, 0],
+                                                                      ci[:, 1] - pc]), 0,
+                                                           None),
+                        fmt=mk, ms=4.5, color=c, capsize=2, lw=0.8, label=cl)
+    ims = np.concatenate([g[1]["im"].dropna().to_numpy(float) for g in groups] or [[]])
+    ims = ims[ims > 0]
+    if ims.size and ims.max() > 8 * ims.min():  # levels spread over a decade: log axis
+        ax.set_xscale("log")
+    ylabel = (f"P(overturn), P({CLEARANCE_LABEL})" if any_clear else "P(overturn)")
+    style_axes(ax, im_label(im["name"], im["unit"]), ylabel)
     ax.set_ylim(-0.03, 1.03)
-    ax.set_title(f"{model}: P(overturn) per level (95% Wilson bars), lognormal fits "
+    what = (f"P(overturn) and P({CLEARANCE_LABEL})" if any_clear else "P(overturn)")
+    ax.set_title(f"{model}: {what} per level (95% Wilson bars), lognormal fits "
                  "(95% bands)", fontsize=10)
     ax.legend(frameon=False, fontsize="small", loc="upper left", bbox_to_anchor=(1.02, 1.0),
               borderaxespad=0.0, labelspacing=0.9)
+    return save_figure(fig, path, dpi=DPI)
+
+
+def _plot_risk(rk: pd.DataFrame, site: dict, path: Path) -> Path | None:
+    """The risk of every group at a glance (for a director): the annual frequency of
+    overturning (and of overturned or clearance reached) with its interval, one row per
+    group, on a log axis, the probability over the service life written beside it; a
+    group without a fit shows the bound of a step fragility (a triangle) if it has one.
+    A group with runs stopped at the isolator's clearance shows only its "overturned or
+    clearance reached" row (its overturning row counts those runs as survivors)."""
+    keep = rk[rk["fit"].isin(["overturning", CLEARANCE_FIT])]
+    rows = []
+    for _, r in keep.iterrows():
+        d = r.to_dict()
+        if d["fit"] == "overturning" and ((keep["fit"] == CLEARANCE_FIT)
+                                          & _same_group(keep, d)).any():
+            continue  # runs stopped at the moat count as survivors there: not shown
+        lam = d["annual_frequency"]
+        up = d.get("annual_frequency_upper_bound", math.nan)
+        if not (math.isfinite(lam) or math.isfinite(up)):
+            continue
+        rows.append(d)
+    if not rows:
+        return None
+    t = site["t_years"]
+    names = list(dict.fromkeys(_run_name(d) for d in rows))
+    fig, ax = figure(figsize=(9.0, 1.2 + 0.42 * len(rows)))
+    labels = []
+    for y, d in enumerate(rows):
+        c = PALETTE[names.index(_run_name(d)) % len(PALETTE)]
+        comb = d["fit"] == CLEARANCE_FIT
+        labels.append(f"{_group_name(d['block_name'], d)} — {_run_name(d)}"
+                      + (f"\n({CLEARANCE_LABEL})" if comb else ""))
+        lam = d["annual_frequency"]
+        if math.isfinite(lam):
+            lo, hi = d.get("annual_frequency_low", math.nan), d.get(
+                "annual_frequency_high", math.nan)
+            err = (np.array([[lam - lo], [hi - lam]]) if math.isfinite(lo)
+                   and math.isfinite(hi) else None)
+            ax.errorbar([lam], [y], xerr=err, fmt="s" if comb else "o", color=c, ms=6,
+                        mfc="white" if comb else c, capsize=3, lw=1.2)
+            p = f"P({_g(t, 6)} yr) {_g(d['probability'], 2)}"
+            if math.isfinite(d.get("probability_low", math.nan)):
+                p += f" ({_g(d['probability_low'], 2)}–{_g(d['probability_high'], 2)})"
+            ax.annotate(p, (hi if err is not None else lam, y), xytext=(8, 0),
+                        textcoords="offset points", va="center", fontsize=8)
+        else:
+            up = d["annual_frequency_upper_bound"]
+            ax.plot([up], [y], "<", color=c, ms=7)
+            ax.annotate(f"at most {_g(up, 2)}/yr (no fit: a step-fragility bound)",
+                        (up, y), xytext=(8, 0), textcoords="offset points",
+                        va="center", fontsize=8)
+    ax.set_yticks(range(len(rows)), labels, fontsize=8)
+    ax.invert_yaxis()
+    ax.set_xscale("log")
+    lo_x, hi_x = ax.get_xlim()
+    ax.set_xlim(lo_x, hi_x * 30)  # room for the probabilities
+    style_axes(ax, "annual frequency (per year)")
+    lv = rk["interval_level"].dropna()
+    what = (f"bars: {100 * float(lv.iloc[0]):.0f} % interval" if len(lv) else "no interval")
+    ax.set_title(f"Risk at the site: annual frequency and P({_g(t, 6)} yr) ({what})"
+                 + (" — APPROXIMATE hazard" if site["curve"].approximate else ""),
+                 fontsize=10)
     return save_figure(fig, path, dpi=DPI)
 
 
@@ -696,6 +822,24 @@ def _source_text(src: dict) -> str:
     return out
 
 
+def _span(lo, hi) -> str:
+    """``"lo–hi"`` of an interval, ``"–"`` without one."""
+    if not (isinstance(lo, float | int) and math.isfinite(lo) and math.isfinite(hi)):
+        return "–"
+    return f"{_g(lo, 2)}–{_g(hi, 2)}"
+
+
+def _interval_words(rk: pd.DataFrame) -> str:
+    """What the intervals of ``rk`` are (their level and sources), for report.md."""
+    lv = rk["interval_level"].dropna() if "interval_level" in rk else pd.Series([], float)
+    if lv.empty:
+        return "no interval: the fits have no bootstrap and the hazard no fractile curves"
+    src = sorted({str(v) for v in rk["interval_source"] if v and v == v})
+    return (f"{100 * float(lv.iloc[0]):.0f} % interval (the {50 * (1 - float(lv.iloc[0])):g}th "
+            f"and {100 - 50 * (1 - float(lv.iloc[0])):g}th percentiles) from "
+            + "; ".join(src))
+
+
 def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
     """The risk section of ``report.md``."""
     c, t = site["curve"], site["t_years"]
@@ -716,17 +860,22 @@ def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
             "curve extended beyond its ends as power laws with its end slopes; tails: the "
             f"share of lambda from those extensions. P({_g(t, 6)} yr) = 1 - exp(-lambda t). "
             "A group without a fit has no number: the note gives the rate of the IM up to "
-            "which nothing overturned (or from which everything did).", ""]
+            "which nothing overturned (or from which everything did).",
+            f"Intervals: {_interval_words(rk)} (rocking.analysis.hazard.risk_interval).",
+            ""]
     ov = rk[rk["fit"] == "overturning"]
     by = "mitigation" if "mitigation" in rk.columns else "model"
     ty = f"P({_g(t, 6)} yr)"
     for _, f in ov.groupby(by, sort=False):
         out += [f"### {_run_name(f.iloc[0].to_dict())}: overturning", ""]
         rows = [[_group_name(r["block_name"], r.to_dict()), _g(r["annual_frequency"]),
-                 _g(r["probability"]), _g(100 * r["tail_share"], 2) + " %"
+                 _span(r["annual_frequency_low"], r["annual_frequency_high"]),
+                 _g(r["probability"]), _span(r["probability_low"], r["probability_high"]),
+                 _g(100 * r["tail_share"], 2) + " %"
                  if math.isfinite(r["tail_share"]) else "–", r["note"] or ""]
                 for _, r in f.iterrows()]
-        out += _md_table(["block", "annual frequency (/yr)", ty, "tails", "note"], rows)
+        out += _md_table(["block", "annual frequency (/yr)", "interval (/yr)", ty,
+                          "interval", "tails", "note"], rows)
     for _, f in rk[rk["fit"] == CLEARANCE_FIT].groupby(by, sort=False):
         out += [f"### {_run_name(f.iloc[0].to_dict())}: {CLEARANCE_LABEL}", "",
                 "The runs stopped at the isolator's clearance (clearance_exceeded) are no "
@@ -735,10 +884,13 @@ def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
                 "failure='overturned_or_clearance'), the conservative counterpart of the "
                 "overturning rows above, which count them as survivors.", ""]
         rows = [[_group_name(r["block_name"], r.to_dict()), _g(r["annual_frequency"]),
-                 _g(r["probability"]), _g(100 * r["tail_share"], 2) + " %"
+                 _span(r["annual_frequency_low"], r["annual_frequency_high"]),
+                 _g(r["probability"]), _span(r["probability_low"], r["probability_high"]),
+                 _g(100 * r["tail_share"], 2) + " %"
                  if math.isfinite(r["tail_share"]) else "–", r["note"] or ""]
                 for _, r in f.iterrows()]
-        out += _md_table(["block", "annual frequency (/yr)", ty, "tails", "note"], rows)
+        out += _md_table(["block", "annual frequency (/yr)", "interval (/yr)", ty,
+                          "interval", "tails", "note"], rows)
     ds = rk[rk["fit"] == "damage_states"]
     if len(ds):
         out += ["### Damage states", "",
@@ -754,7 +906,7 @@ def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
 
 
 def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
-              counts=(), risk=None, site=None) -> str:
+              counts=(), risk=None, site=None, mitigation=None) -> str:
     unit = f" ({im['unit']})" if im["unit"] else ""
     src = ("the im column (motions scaled to intensity levels)" if im["column"] == "im"
            else "the PGA of each run as run (no intensity scaling)")
@@ -787,6 +939,8 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
         out += _md_table(["block", f"median{unit}", "beta", "runs", "failed", "note"], rows)
     if risk is not None:
         out += _risk_md(risk, site)
+    if mitigation is not None:
+        out += _mitigation_md(mitigation, im, site)
     out += _by_mitigation(po, unit)
     out += _by_floor(po, unit)
     out += ["## P(overturn) per level", "",
@@ -869,6 +1023,159 @@ def _by_floor(po: pd.DataFrame, unit: str) -> list[str]:
         out += [f"### {model}, {name}", ""]
         out += _md_table(["level", f"IM{unit}", *heads], rows)
     return out
+
+
+# --------------------------------------------------------------------------- mitigations
+
+def _compare(t: pd.DataFrame, im: dict, site, manifest: dict, n_boot: int, seed):
+    """:func:`rocking.analysis.mitigation.compare_mitigations` of the campaign's runs
+    (grouped by block and floor; the site's hazard; the isolators' periods and the
+    building's first period from the manifest): ``(table, note)``, ``(None, note)`` when
+    it cannot be made."""
+    from ..analysis.mitigation import compare_mitigations
+
+    col, name = im["column"], im["name"]
+    tt = t.drop(columns=[c for c in ("mitigation_name",) if c in t.columns])
+    if col != name:  # the fits carry the IM's name (checked against the hazard's)
+        tt = tt.drop(columns=[name], errors="ignore").rename(columns={col: name})
+    iso = {m["name"]: float(m["options"]["isolation_period"])
+           for m in manifest.get("mitigations") or ()
+           if isinstance(m, dict) and "isolation_period" in (m.get("options") or {})}
+    b = manifest.get("building") or {}
+    t1 = float(b["periods"][0]) if b.get("periods") else None
+    by = [c for c in ("block_name", "floor", "height_ratio") if c in tt.columns]
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            cmp = compare_mitigations(
+                tt, im=name, im_unit=im["unit"], by=by,
+                hazard=site["curve"] if site is not None else None, n_boot=n_boot,
+                seed=seed, t_years=site["t_years"] if site is not None else 50.0,
+                building_period=t1, isolation_periods=iso or None)
+    except (ParameterError, SimulationError, ValueError) as e:
+        return None, f"mitigations not compared: {_line(e)}"
+    return cmp.table, ""
+
+
+def _records_fit(manifest: dict) -> list[str]:
+    """The campaign's records checked at the periods that matter (the isolators' periods,
+    the building's first period) by :func:`rocking.motions.check_records_fit` (a
+    :class:`~rocking.motions.RecordFitWarning` each, and the messages for report.md);
+    nothing when there are no such periods or the motions are not records."""
+    from ..motions import Record, catalog
+    from ..motions.ec8_records import check_records_fit
+
+    why = {f"the isolation period of {m['name']!r}": float(m["options"]["isolation_period"])
+           for m in manifest.get("mitigations") or ()
+           if isinstance(m, dict) and "isolation_period" in (m.get("options") or {})}
+    b = manifest.get("building") or {}
+    if b.get("periods"):
+        why["the building's first period"] = float(b["periods"][0])
+    mo = manifest.get("motions") or {}
+    if not why or not isinstance(mo, dict) or "kind" not in mo:
+        return []
+    params = dict(mo.get("params") or {})
+    ctx = catalog.Context(base_dir=Path(manifest.get("spec_dir") or "."))
+    try:
+        recs = [catalog.build(mo["kind"], ctx, **params, **({mo["sweep"]: v} if mo.get(
+            "sweep") else {})) for v in (mo.get("values") or [None])]
+    except (ParameterError, OSError, ValueError, TypeError, KeyError):
+        return []
+    recs = [r for r in recs if isinstance(r, Record)]
+    if not recs:
+        return []
+    ground = params.get("ground") if mo["kind"] == "ec8_earthquake" else None
+    st = params.get("spectrum_type", 1) if ground else 1
+    return check_records_fit(recs, why, ground=ground, spectrum_type=st,
+                             what="the campaign's records", stacklevel=3)
+
+
+def _ratio_text(r) -> str:
+    """``"2.27 x none's annual frequency"`` (or its median), ``"–"`` without one."""
+    af = r.get("annual_frequency_ratio", math.nan)
+    if isinstance(af, float) and math.isfinite(af):
+        return f"{_g(af)} × the annual frequency"
+    m = r.get("median_ratio", math.nan)
+    if isinstance(m, float) and math.isfinite(m):
+        return f"{_g(m)} × the median"
+    return "–"
+
+
+def _mitigation_md(cmp: pd.DataFrame, im: dict, site) -> list[str]:
+    """The section of ``report.md`` that compares the mitigations with "none"."""
+    unit = f" {im['unit']}" if im["unit"] else ""
+    out = ["## Mitigations compared with none", "",
+           "Each mitigation against the block as it stands (\"none\"), group by group "
+           "(rocking.analysis.compare_mitigations; failure: overturned, or also the moat "
+           "reached for an isolator whose runs stopped there): the ratio of its annual "
+           "frequency of failure to none's (with a hazard, else of its median), the verdict, "
+           "and for a mitigation that is **worse** the likely reason the runs show.", ""]
+    rows = []
+    for _, r in cmp.iterrows():
+        d = r.to_dict()
+        where = _where(d)
+        verdict = str(d["verdict"]).upper() if d["verdict"] == "worse" else str(d["verdict"])
+        rows.append([str(d["block_name"]) + (f", {where}" if where else ""),
+                     str(d["mitigation"]), str(d["failure"]).replace("_", " "),
+                     _g(d["annual_frequency"]) if site is not None else _g(d["median"]),
+                     _ratio_text(d) if d["verdict"] != "reference" else "1", verdict,
+                     d["reason"] or ""])
+    out += _md_table(["block", "mitigation", "failure",
+                      "annual frequency (/yr)" if site is not None else f"median{unit}",
+                      "ratio to none", "verdict", "likely reason"], rows)
+    cols = [c for c in cmp.columns if c.startswith("displacement_median_")]
+    if cols and cmp["displacement_max"].notna().any():
+        periods = [c.removeprefix("displacement_median_") for c in cols]
+        out += ["### The isolator's displacement demand", "",
+                "At the IM of each return period of the site's hazard: the median and 84th "
+                "percentile of the base displacement (m) of the runs, interpolated between "
+                "the levels run (no extrapolation: – beyond them; ≥: runs stopped at the "
+                "moat, a lower bound), and P(reaching the clearance) there; the annual "
+                "frequency of reaching the clearance and its "
+                f"probability in {_g(site['t_years'], 6)} years.", ""]
+        rows = []
+        for _, r in cmp[cmp["displacement_max"].notna()].iterrows():
+            d = r.to_dict()
+            where = _where(d)
+            cells = []
+            cap = d["displacement_max"] if d.get("n_clearance_exceeded", 0) else math.inf
+
+            def at_least(v, cap=cap):  # a quantile at the moat: runs stopped there
+                return f"≥ {_g(v)}" if math.isfinite(v) and v >= cap * (1 - 1e-9) else _g(v)
+
+            for T in periods:
+                cells += [f"{_g(d['im_' + T])}{unit}",
+                          f"{at_least(d['displacement_median_' + T])} / "
+                          f"{at_least(d['displacement_p84_' + T])}",
+                          _g(d["p_clearance_" + T], 2)]
+            rows.append([str(d["block_name"]) + (f", {where}" if where else ""),
+                         str(d["mitigation"]), *cells,
+                         _g(d["clearance_annual_frequency"]),
+                         _g(d["clearance_probability"])])
+        heads = []
+        for T in periods:
+            heads += [f"IM {T}", f"median / p84 {T} (m)", f"P(clearance) {T}"]
+        out += _md_table(["block", "mitigation", *heads, "clearance reached (/yr)",
+                          f"P({_g(site['t_years'], 6)} yr)"], rows)
+    return out
+
+
+def mitigation_lines(result: dict) -> list[str]:
+    """The terminal's lines of the comparison of mitigations: per group and mitigation
+    its ratio to none and the verdict, a worse one with its likely reason."""
+    cmp = result.get("mitigation")
+    if cmp is None:
+        return []
+    lines = []
+    for _, r in cmp[cmp["verdict"] != "reference"].iterrows():
+        d = r.to_dict()
+        where = _where(d)
+        head = f"{d['mitigation']} / {d['block_name']}" + (f", {where}" if where else "")
+        text = f"{head}: {_ratio_text(d)} of none, {d['verdict']}"
+        if d["verdict"] == "worse":
+            text = f"{head}: WORSE than none ({_ratio_text(d)} of none): {d['reason']}"
+        lines.append(text)
+    return lines
 
 
 # --------------------------------------------------------------------------- public
@@ -958,11 +1265,26 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
             notes.append("hazard given at report time: " + site["curve"].label + (
                 f" (replaces the store's [hazard] {site['replaces']!r})" if site["replaces"]
                 else ""))
+    notes += _records_fit(manifest)
+    cmp = None
+    if mit:
+        cmp, why = _compare(t[~failed], im, site, manifest, n_boot, seed)
+        if cmp is not None:
+            with atomic_path(out / "mitigation.csv") as tmp:
+                cmp.to_csv(tmp, index=False, float_format="%.6g")
+            files.append(out / "mitigation.csv")
+        else:
+            notes.append(why)
     if pel_rows:
         with atomic_path(out / "pelicun.csv") as tmp:
             pd.concat(pel_rows).to_csv(tmp, float_format="%.6g")
         files.append(out / "pelicun.csv")
     images = []
+    if rk is not None:
+        p = _plot_risk(rk, site, out / "risk.png")
+        if p is not None:
+            images.append(("risk at the site", p))
+            files.append(p)
     for model, groups in by_model.items():
         stem = _safe(groups[0][0].get("mitigation", model))
         p = _plot_model(model, groups, im, out / f"p_overturn_{stem}.png",
@@ -970,12 +1292,13 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         images.append((model, p))
         files.append(p)
     md = _markdown(manifest, im, len(t), n_excl, fr, po, images, notes, n_states,
-                   counts=run_lines, risk=rk, site=site)
+                   counts=run_lines, risk=rk, site=site, mitigation=cmp)
     atomic_write(out / "report.md", md)
     files.append(out / "report.md")
     return {"files": files, "fragility": fr, "p_overturn": po, "notes": notes, "im": im,
             "n_runs": len(t), "n_excluded": n_excl, "run_notes": run_lines,
             "run_alerts": run_alerts, **run_counts,
+            **({} if cmp is None else {"mitigation": cmp}),
             **({} if site is None else {"risk": rk, "hazard": _hazard_info(site)})}
 
 
@@ -1013,7 +1336,16 @@ def summary_lines(result: dict) -> list[str]:
                              f"(± {_g(q.beta_se, 2)}), {q.n_exceed} of {q.n} runs failed")
             else:
                 lines.append(f"{head} {q.note}")
-    return lines + risk_lines(result)
+    return lines + risk_lines(result) + mitigation_lines(result)
+
+
+def _interval_part(r) -> str:
+    """`` (90 % interval: ... per year, P ...)`` of a risk row, ``""`` without one."""
+    lo, hi = r.get("annual_frequency_low", math.nan), r.get("annual_frequency_high", math.nan)
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        return ""
+    return (f" ({100 * r['interval_level']:.0f} % interval: {_span(lo, hi)} per year, "
+            f"probability {_span(r['probability_low'], r['probability_high'])})")
 
 
 def _stop_part(note) -> str:
@@ -1053,7 +1385,8 @@ def risk_lines(result: dict) -> list[str]:
                         else "") + ")" if r["tail_share"] >= 0.005 else "")
             lines.append(f"{head} annual frequency of overturning "
                          f"{_g(r['annual_frequency'])} per year, {_g(t, 6)}-year probability "
-                         f"{_g(r['probability'])}{tails}{_stop_part(r['note'])}{tag}")
+                         f"{_g(r['probability'])}{_interval_part(r)}{tails}"
+                         f"{_stop_part(r['note'])}{tag}")
         else:
             lines.append(f"{head} {r['note']}{tag}")
         for _, q in rk[(rk["fit"] == CLEARANCE_FIT) & _same_group(rk, d)].iterrows():
@@ -1065,12 +1398,13 @@ def risk_lines(result: dict) -> list[str]:
                 lines.append(f"{head} {CLEARANCE_LABEL} (runs {STOPPED} count as "
                              f"failures): annual frequency {_g(q['annual_frequency'])} per "
                              f"year, {_g(t, 6)}-year probability {_g(q['probability'])}"
-                             f"{tails}{tag}")
+                             f"{_interval_part(q)}{tails}{tag}")
             else:
                 lines.append(f"{head} {CLEARANCE_LABEL} (runs {STOPPED} count as "
                              f"failures): {q['note']}{tag}")
     return lines
 
 
-__all__ = ["report", "summary_lines", "risk_lines", "REQUIRED_COLUMNS", "PELICUN_DEMAND",
+__all__ = ["report", "summary_lines", "risk_lines", "mitigation_lines", "REQUIRED_COLUMNS",
+           "PELICUN_DEMAND",
            "RISK_COLUMNS", "CLEARANCE_FIT", "CLEARANCE_LABEL"]

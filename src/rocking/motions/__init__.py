@@ -13,6 +13,9 @@ Earthquake input:
 * synthetic spectrum-compatible records: :func:`synthetic`, the paper's set of 30
   :func:`seed_earthquakes` (:func:`paper_earthquake`, :func:`earthquake_motion`) and
   :func:`check_compatibility` (EN 1998-1 §3.2.3.1.2);
+* sets compatible with EN 1998-1 on each ground type, to 4 s (isolators):
+  :func:`ec8_earthquakes`, :func:`ec8_earthquake`; :func:`check_records_fit` warns when a
+  study's records fall short of the target at the periods that matter;
 * processing of real records (:mod:`rocking.motions.processing`): :func:`resample`,
   :func:`bandpass`, :func:`baseline_correct`, and :func:`intensity_measures` (PGA, PGV,
   PGD, Arias intensity, significant duration).
@@ -20,6 +23,7 @@ Earthquake input:
 
 from .base import Motion
 from .ec8 import DesignSpectrum, ec8_spectrum, paper_target
+from .ec8_records import RecordFitWarning, check_records_fit, ec8_earthquake, ec8_earthquakes
 from .ground import GroundMotion
 from .harmonic import HanningSine, Sine
 from .io import builtin_records, builtin_sets, read_record, write_csv
@@ -61,6 +65,7 @@ __all__ = [
     "response_spectrum", "response_spectra", "sdof_response",
     "synthetic", "Envelope", "seed_earthquakes", "paper_earthquake", "earthquake_motion",
     "check_compatibility", "Compatibility",
+    "ec8_earthquakes", "ec8_earthquake", "check_records_fit", "RecordFitWarning",
     "stochastic_records",
     "resample", "bandpass", "baseline_correct", "velocity", "displacement", "pga", "pgv",
     "pgd", "arias_intensity", "significant_duration", "intensity_measures",

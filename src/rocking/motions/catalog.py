@@ -243,6 +243,21 @@ def _earthquake(p: EarthquakeParams, ctx: Context) -> Motion:
     return paper_earthquake(p.number)
 
 
+@dataclass(frozen=True)
+class EC8EarthquakeParams(Options):
+    number: int = option(REQUIRED, help="record of the set (rocking.motions.ec8_earthquakes)",
+                         lo=1, hi=10, lo_open=False, kind=int, required=True)
+    ground: str = option(REQUIRED, help="EN 1998-1 ground type of the set's spectrum",
+                         choices=("A", "B", "C", "D", "E"), kind=str, required=True)
+    spectrum_type: int = option(1, help="EN 1998-1 spectrum type: 1 (large earthquakes) "
+                                "or 2 (magnitude below about 5.5)", choices=(1, 2), kind=int)
+
+
+def _ec8_earthquake(p: EC8EarthquakeParams, ctx: Context) -> Motion:
+    from .ec8_records import ec8_earthquake
+    return ec8_earthquake(p.number, p.ground, p.spectrum_type)
+
+
 def _set_names() -> tuple[str, ...]:
     from .io import builtin_sets
     return tuple(builtin_sets())
@@ -450,6 +465,11 @@ KINDS: dict[str, MotionKind] = {k.name: k for k in (
                "(rocking.motions.paper_earthquake)", EarthquakeParams, _earthquake,
                lambda p: f"seed:{p.number:02d}", sweep=("number",),
                every=lambda: tuple(range(1, 31))),
+    MotionKind("ec8_earthquake", "synthetic earthquakes compatible with EN 1998-1 on a "
+               "ground type, to 4 s (rocking.motions.ec8_earthquakes)", EC8EarthquakeParams,
+               _ec8_earthquake,
+               lambda p: f"ec8-{p.spectrum_type}{p.ground}:{p.number:02d}", sweep=("number",),
+               every=lambda: tuple(range(1, 11))),
     MotionKind("ground_motion", "horizontal and vertical components "
                "(rocking.motions.GroundMotion)", GroundParams, _ground,
                lambda p: (f"{p.set}:h{p.horizontal}" if p.set is not None
