@@ -39,7 +39,7 @@ import click
 
 from .._atomic import fsync_dir, fsync_file, replace, temporary_name
 from ..errors import ParameterError, StoreError
-from .common import CONTEXT, hazard_option_words, json_default, one_line
+from .common import CONTEXT, force_option, hazard_option_words, json_default, one_line
 
 
 def _duration(seconds: float) -> str:
@@ -118,6 +118,7 @@ def _executor(out, executor, scheduler, dask_local, window) -> str:
               help="Print the number of simulations, chunks and an estimated time; run "
                    "nothing.")
 @click.option("--quiet", is_flag=True, help="No progress bar.")
+@force_option
 def run_cmd(**options):
     """Run the campaign SPEC (TOML) into the store --out."""
     try:

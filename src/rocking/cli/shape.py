@@ -32,7 +32,7 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..units import G
-from .common import CONTEXT, check_positive, integer, json_default, number
+from .common import CONTEXT, check_positive, force_option, integer, json_default, number
 
 TEXT_COLUMNS = (("phi_deg", "phi", 1.0, "{:7.1f}"), ("alpha_plus", "alpha+", None, "{:8.3f}"),
                 ("alpha_minus", "alpha-", None, "{:8.3f}"), ("p_plus", "p+", 1.0, "{:7.4f}"),
@@ -170,6 +170,7 @@ class ShapeRequest:
 @click.option("--out", type=click.Path(file_okay=False),
               help="Write directions.csv, polar.png and shape.json to this folder.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (SI units, angles in rad).")
+@force_option
 def shape_cmd(**options):
     """Mass properties and rocking parameters of a 3-D mesh (STL, OBJ, PLY) in every
     direction of horizontal shaking; the weakest and strongest directions."""

@@ -89,6 +89,7 @@ from .common import (
     building_options,
     check_positive,
     declared_value,
+    force_option,
     in_flag_words,
     integer,
     json_default,
@@ -669,6 +670,7 @@ def _write_outputs(req: SimulateRequest, resp, summary: dict) -> None:
               help="Write response.csv, summary.json and theta.png to this folder.")
 @click.option("--json", "as_json", is_flag=True,
               help="Print the summary (summary.json's content, SI units) as JSON.")
+@force_option
 def simulate_cmd(**options):
     """Simulate one block under one base motion (on a floor of a building: --building)."""
     req = SimulateRequest.from_options(**options)
