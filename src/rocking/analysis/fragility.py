@@ -197,10 +197,13 @@ def check_separation(x: np.ndarray, y: np.ndarray, what: str = "failed") -> None
                              "fitted; add weaker IM levels")
     lo_fail, hi_safe = x[y].min(), x[~y].max()
     if lo_fail >= hi_safe:
+        where = (f"between im = {hi_safe:g} and {lo_fail:g}" if lo_fail > hi_safe
+                 else f"near im = {lo_fail:g}")
         raise ParameterError(
-            f"{what} is perfectly separated by the IM (every record failed at im >= "
-            f"{lo_fail:g} and none above im = {hi_safe:g}): the likelihood has no maximum "
-            "(beta -> 0); add records or levels between them")
+            f"{what} is perfectly separated by the IM (every record that failed is at im "
+            f">= {lo_fail:g}, none below; every record that did not is at im <= "
+            f"{hi_safe:g}): the likelihood has no maximum (beta -> 0); add records or "
+            f"levels {where}")
     if x[y].max() <= x[~y].min():
         raise ParameterError(f"{what}: failures happen only at lower IM than the survivals; "
                              "a fragility curve must increase with the IM")

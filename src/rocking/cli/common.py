@@ -250,6 +250,10 @@ def make_block(specimen=None, params=None, width=None, height=None, mass=None, a
         raise type(e)(msg) from None
     try:
         block = build(given)
+    except UnitSlipWarning as w:  # refused (force_option): in the flags' words
+        if form != "rectangular":
+            raise
+        raise UnitSlipWarning(f"--width {width} --height {height}: {one_line(w)}") from None
     except ParameterError as e:  # valid keys, but no block (sizes beyond floating point)
         if form == "mesh":
             raise type(e)(one_line(in_flag_words(e, words))) from None

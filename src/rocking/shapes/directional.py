@@ -78,7 +78,7 @@ import numpy as np
 
 from .._validate import as_int, warn_implausible
 from ..errors import ParameterError
-from ..units import G, parse_quantity
+from ..units import G, parse_quantity, split_quantity
 
 #: The columns of the table of :func:`directional_parameters`, one row per direction.
 COLUMNS = ("phi", "phi_deg", "h", "b_plus", "b_minus", "radius_of_gyration", "alpha_plus",
@@ -323,6 +323,14 @@ def parse_direction(value):
     if isinstance(value, bool) or not isinstance(value, int | float | str):
         raise ParameterError("direction must be an angle (a number in deg, '30deg'), "
                              f"'weakest' or 'strongest'; got {value!r}")
+    if isinstance(value, str) and split_quantity(value) is None:  # a word: a misspelt name?
+        import difflib
+
+        near = difflib.get_close_matches(value.strip().lower(), NAMED_DIRECTIONS, n=1,
+                                         cutoff=0.6)
+        hint = f"; did you mean {near[0]!r}?" if near else ""
+        raise ParameterError(f"direction: {value!r} is not a direction{hint} (an angle in "
+                             "deg such as 30 or '30deg', 'weakest' or 'strongest')")
     return parse_quantity(value, "angle", name="direction", default_unit="deg")
 
 
