@@ -71,12 +71,14 @@ the limit and the hint). A density outside
 or a mesh larger than 50 m, a building's first period above 20 s."""
 
 
-def check_plausible(kind: str, value: float, name: str, *, shown: str | None = None) -> bool:
+def check_plausible(kind: str, value: float, name: str, *, shown: str | None = None,
+                    hint: str | None = None) -> bool:
     """Warn (:class:`~rocking.errors.UnitSlipWarning`, one line) when ``value`` (SI) is
     outside :data:`PLAUSIBLE_LIMITS` ``[kind]``; ``name`` names it, ``shown`` is the value
-    as the user gave it (default: ``value`` in the SI unit). Returns whether it is
-    inside."""
-    lo, hi, unit, why, hint = PLAUSIBLE_LIMITS[kind]
+    as the user gave it (default: ``value`` in the SI unit), ``hint`` replaces the limit's
+    hint. Returns whether it is inside."""
+    lo, hi, unit, why, own_hint = PLAUSIBLE_LIMITS[kind]
+    hint = own_hint if hint is None else hint
     if lo <= value <= hi:
         return True
     rng = (f"{lo:,.0f}-{hi:,.0f} {unit}" if kind == "density" else

@@ -159,8 +159,8 @@ class DirectionSweep:
         ax.set_ylim(0.0, 1.05)
         ax.set_theta_zero_location("E")
         ax.set_theta_direction(1)
-        ax.set_xlabel("angle: direction of shaking phi (deg from the body's x axis, "
-                      "counter-clockwise)", fontsize=9)
+        ax.set_xlabel("angle: direction of shaking phi (deg)\nfrom the body's x axis, "
+                      "counter-clockwise", fontsize=9)
         if own or title is not None:
             scale = f" x {self.scale:g}" if self.scale != 1.0 else ""
             ax.set_title(title if title is not None else
@@ -168,8 +168,8 @@ class DirectionSweep:
                          f"({self.model})\nradius: max |θ| / α (1: overturned)",
                          fontsize=10)
         if own and (ovt.any() or worst or label):
-            ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(-0.05, -0.08),
-                      frameon=False, ncol=3)
+            fig.legend(*ax.get_legend_handles_labels(), fontsize=8,
+                       loc="outside lower center", frameon=False, ncol=3)
         return fig
 
 
@@ -355,9 +355,14 @@ def plot_sweeps(sweeps, labels=None, *, reference=None, ax=None):
     for i, (sw, lab) in enumerate(zip(sweeps, labels, strict=True)):
         sw.plot(ax, label=lab, worst=False, color=PALETTE[i % len(PALETTE)])
     if reference is not None:
-        for ph in (reference, reference + math.pi):
-            ax.plot([ph, ph], [0.0, 1.05], color="k", lw=1.0, ls="--")
-    ax.legend(fontsize=8, loc="lower left", bbox_to_anchor=(-0.1, -0.12), frameon=False)
+        for k, ph in enumerate((reference, reference + math.pi)):
+            ax.plot([ph, ph], [0.0, 1.05], color="k", lw=1.0, ls="--",
+                    label=f"reference: {math.degrees(reference) % 360:.0f} deg"
+                    if k == 0 else None)
+    if not ax.get_title():
+        ax.set_title("Peak rocking by direction\nradius: max |θ| / α (1: overturned, x)",
+                     fontsize=10)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.05, 1.0), frameon=False)
     return ax.figure
 
 
@@ -484,8 +489,8 @@ class DirectionFragility:
         axp.set_theta_direction(1)
         axp.set_title(f"Median {im_name} of overturning (g)\nby direction phi (deg from "
                       "the body's x axis, ccw)", fontsize=10)
-        axp.legend(fontsize=8, loc="upper left", bbox_to_anchor=(-0.1, -0.1),
-                   frameon=False)
+        fig.legend(*axp.get_legend_handles_labels(), fontsize=8, loc="outside lower left",
+                   frameon=False, ncol=2)
         keys = sorted(self.fits, key=lambda i: self.fits[i].median)
         if len(keys) > curves:
             pick = np.unique(np.round(np.linspace(0, len(keys) - 1, max(curves, 1))))
@@ -500,6 +505,8 @@ class DirectionFragility:
             axc.set_title("Fragility curves of the weakest to the strongest directions",
                           fontsize=10)
             style_axes(axc, f"{im_name} (m/s$^2$)", "probability of overturning")
+            top = axc.secondary_xaxis("top", functions=(lambda x: x / G, lambda x: x * G))
+            top.set_xlabel("(g)", fontsize=9)
         else:
             axc.set_axis_off()
             axc.text(0.5, 0.5, "no direction has a fragility fit\n(too few runs, or "

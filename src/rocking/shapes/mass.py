@@ -61,7 +61,8 @@ def resolve_mass(volume: float, density=None, mass=None) -> tuple[float, float]:
     mass = positive("mass", mass, "kg")
     rho = mass / volume
     if check_plausible("density", rho, "the mass over the mesh's volume",
-                       shown=f"{mass:g} kg / {volume:.4g} m^3 = {rho:,.0f} kg/m^3"):
+                       shown=f"{mass:g} kg / {volume:.4g} m^3 = {rho:,.4g} kg/m^3",
+                       hint="the mesh in other units (units='mm'), or the mass not in kg?"):
         if rho > DENSE:
             warn_implausible(f"the mass over the mesh's volume is {mass:g} kg / "
                              f"{volume:.4g} m^3 = {rho:,.0f} kg/m^3, denser than steel "

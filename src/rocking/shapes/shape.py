@@ -447,7 +447,7 @@ def load_shape(path, *, density=None, mass=None, up="z", repair=None, tol=None,
     >>> box = load_shape("box.stl", density=2000.0)
     >>> round(box.mass, 3), round(box.h, 6)  # 2000 kg/m^3 x 0.48 m^3; h = H/2
     (960.0, 1.0)
-    >>> round(load_shape("box.stl", mass=100.0, units="cm").height, 6)  # a 2 cm box
+    >>> round(load_shape("box.stl", mass=0.001, units="cm").height, 6)  # a 2 cm box, 1 g
     0.02
     """
     import os
