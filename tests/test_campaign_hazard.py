@@ -315,8 +315,9 @@ def test_an_im_mismatch_of_a_file_and_the_cli_exit_code(oq, tmp_path, capsys):
     ('file = "h.csv"\nformat = "xml"', "hazard.format"),
     ('file = "h.csv"\nt_years = 0', "hazard.t_years"),
     ('file = "h.csv"\ncolour = 1', "hazard.colour"),
-    ('pga_475 = 0.25', "hazard.pga_475"),
-    ('pga_475 = "0.25"', "hazard.pga_475"),
+    ('pga_475 = true', "hazard.pga_475"),  # a bare number is in g (issue 31); not a bool
+    ('pga_475 = "0.25 parsec"', "hazard.pga_475"),
+    ('pga_475 = -0.25', "hazard.pga_475"),
     ('pga_475 = "0.25g"\nk = -1', "hazard.k"),
     ('pga_475 = "0.25g"\nk = 3\npga_2475 = "0.4g"', "hazard.k"),
     ('pga_475 = "0.25g"\npga_2475 = "0.2g"', "hazard.pga_2475"),

@@ -37,7 +37,7 @@ def box_ply(tmp_path_factory):
 
 def printed(out: str, which: str) -> dict:
     """``phi_deg``, ``alpha`` (rad) and ``uplift`` (m/s^2) of the line ``which:``."""
-    m = re.search(rf"^{which}:\s+phi = (\S+) deg, side ([+-]): alpha = (\S+) rad .*uplift "
+    m = re.search(rf"^{which}:\s+phi = (\S+) deg, side ([+-])[^:]*: alpha = (\S+) rad .*uplift "
                   r"(\S+) m/s\^2", out, re.M)
     assert m, out
     return {"phi_deg": float(m[1]), "side": m[2], "alpha": float(m[3]),
@@ -150,3 +150,48 @@ def test_bad_meshes_are_one_line(capsys, tmp_path):
                               "hull", "--json")
     assert code == 0 and "warning:" in err and "Traceback" not in err
     assert math.isclose(json.loads(out)["volume"], A * B * C, rel_tol=1e-9)
+
+
+def test_weakest_is_one_direction_in_the_api_the_block_the_command_and_its_plot(
+        capsys, tmp_path):
+    """Issue 31 item 3: weakest_direction (sampled), Shape.weakest (exact),
+    Block.from_mesh(direction="weakest"), ``rocking shape`` (text, JSON) and its polar plot
+    name the same direction, by the phi whose "+" side is the weak one (the statue's weak
+    side is "-" at the first sampled minimum, 74 deg: the mirror of 254.4 deg)."""
+    import rocking
+    from rocking.shapes import directional_parameters, strongest_direction
+
+    sh = load_example(density=2600.0)
+    exact = sh.weakest()
+    tab = directional_parameters(sh, 360)
+    sampled = weakest_direction(tab)
+    assert sampled.side == exact.side == "+"
+    gap = abs((sampled.phi_deg - exact.phi_deg + 180.0) % 360.0 - 180.0)
+    assert gap <= 1.0, (sampled.phi_deg, exact.phi_deg)  # same phi, not its mirror
+    row = tab.loc[sampled.index]  # the row at the named phi, its "+" side the weak one
+    assert math.isclose(row["phi"], sampled.phi) and row["alpha_plus"] == sampled.alpha
+    assert row["uplift_plus"] <= row["uplift_minus"]
+    blk = rocking.Block.from_mesh(example_mesh_path(), density=2600.0, direction="weakest")
+    assert math.isclose(blk.alpha_plus, exact.alpha, rel_tol=1e-12)
+    assert blk.alpha_plus <= blk.alpha_minus
+    strong = strongest_direction(tab)
+    assert strong.side == "+" and tab.loc[strong.index, "alpha_plus"] == strong.alpha
+    code, out, err = run_main(capsys, "shape", example_mesh_path(), "--density", "2600",
+                              "--out", str(tmp_path))
+    assert code == 0, err
+    w = printed(out, "weakest")
+    assert w["side"] == "+" and math.isclose(w["phi_deg"], exact.phi_deg, abs_tol=1e-4)
+    assert printed(out, "strongest")["side"] == "+"
+    js = json.loads((tmp_path / "shape.json").read_text())
+    assert js["weakest"]["side"] == js["strongest"]["side"] == "+"
+    assert math.isclose(js["weakest"]["phi_deg"], exact.phi_deg, abs_tol=1e-9)
+    # the plot of that run marks the same direction (its label and its marker)
+    from rocking.shapes import plot_directional
+
+    fig = plot_directional(tab, weakest=exact)
+    marks = [ln for ln in fig.axes[1].lines if len(ln.get_xdata()) == 1]
+    assert math.isclose(marks[0].get_xdata()[0], exact.phi)
+    assert f"{exact.phi_deg:.1f} deg, side +" in marks[0].get_label()
+    fig = plot_directional(tab)  # the table's own: the same phi within its sampling
+    marks = [ln for ln in fig.axes[1].lines if len(ln.get_xdata()) == 1]
+    assert abs((math.degrees(marks[0].get_xdata()[0]) - exact.phi_deg + 180) % 360 - 180) <= 1

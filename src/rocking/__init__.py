@@ -20,6 +20,7 @@ import importlib.util
 import sys
 
 from ._numba_cache import ensure_numba_cache
+from ._validate import PLAUSIBLE_LIMITS
 from .blocks import Block, Stack, housner_mu, specimen
 from .errors import (
     IdentificationError,
@@ -33,6 +34,7 @@ from .errors import (
     SpecimenError,
     StoreError,
     UnitError,
+    UnitSlipWarning,
 )
 from .results import BatchResponse, DEMResponse, Response
 from .units import G
@@ -97,5 +99,6 @@ __all__ = [
     "Block", "Stack", "housner_mu", "specimen", "simulate", "simulate_many", "Response",
     "BatchResponse", "DEMResponse", "MODELS", "G", "RockingError", "ParameterError",
     "RecordError", "SpecimenError", "UnitError", "OutputTooLargeError", "IdentificationError",
-    "SimulationError", "SpecError", "StoreError", "PlausibilityWarning", "__version__",
+    "SimulationError", "SpecError", "StoreError", "PlausibilityWarning", "UnitSlipWarning",
+    "PLAUSIBLE_LIMITS", "__version__",
 ]

@@ -21,7 +21,8 @@ import warnings
 
 import numpy as np
 
-from .errors import ParameterError, PlausibilityWarning
+from .errors import ParameterError, PlausibilityWarning, UnitSlipWarning
+from .units import G
 
 _PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__)) + os.sep
 
@@ -86,6 +87,46 @@ def warn_deprecated(message: str) -> None:
     """A one-line :class:`DeprecationWarning` attributed to the first caller outside the
     package (:func:`warn_implausible`)."""
     warn_implausible(message, DeprecationWarning)
+
+
+PLAUSIBLE_LIMITS = {
+    "density": (300.0, 25_000.0, "kg/m^3",
+                "lighter than most woods, or denser than any metal: osmium is 22,590",
+                "2.6 g/cm^3 (t/m^3) is 2600 kg/m^3"),
+    "site_pga": (0.0, 2.0 * G, "m/s^2",
+                 "no code gives a site PGA near it",
+                 "2.45 m/s^2 is 0.25 g, not 2.45 g"),
+    "size": (0.0, 50.0, "m", "larger than 50 m",
+             "a mesh in mm read as m? units='mm' (--units mm); 170 mm is 0.17 m"),
+    "building_period": (0.0, 20.0, "s",
+                        "the tallest buildings have a first period of about 10 s",
+                        "0.5 s typed as 500?"),
+}
+"""The one set of limits beyond which a value is surely a unit slip, shared by the Python
+API (a :class:`~rocking.errors.UnitSlipWarning`) and the command line (a refusal unless
+``--force``): ``kind -> (low, high, SI unit, why, hint)`` (the message states the value,
+the limit and the hint). A density outside
+300-25,000 kg/m^3, a site's reference PGA (``pga_475``, ``pga_2475``) above 2 g, a block
+or a mesh larger than 50 m, a building's first period above 20 s."""
+
+
+def check_plausible(kind: str, value: float, name: str, *, shown: str | None = None,
+                    hint: str | None = None) -> bool:
+    """Warn (:class:`~rocking.errors.UnitSlipWarning`, one line) when ``value`` (SI) is
+    outside :data:`PLAUSIBLE_LIMITS` ``[kind]``; ``name`` names it, ``shown`` is the value
+    as the user gave it (default: ``value`` in the SI unit), ``hint`` replaces the limit's
+    hint. Returns whether it is inside."""
+    lo, hi, unit, why, own_hint = PLAUSIBLE_LIMITS[kind]
+    hint = own_hint if hint is None else hint
+    if lo <= value <= hi:
+        return True
+    rng = (f"{lo:,.0f}-{hi:,.0f} {unit}" if kind == "density" else
+           "2 g" if kind == "site_pga" else f"{hi:g} {unit}")
+    where = "outside" if kind == "density" else "above"
+    given = shown if shown is not None else f"{value:g} {unit}"
+    warn_implausible(f"{name} = {given} is {where} {rng}: a unit slip? ({hint})",
+                     UnitSlipWarning)
+    return False
 
 
 def _is_bool(value) -> bool:

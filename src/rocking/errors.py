@@ -185,13 +185,37 @@ class PlausibilityWarning(UserWarning):
     >>> with warnings.catch_warnings(record=True) as caught:
     ...     warnings.simplefilter("always")
     ...     block = rocking.Block.rectangular(0.17, 170.0)
-    >>> caught[0].category.__name__
-    'PlausibilityWarning'
+    >>> issubclass(caught[0].category, rocking.PlausibilityWarning)  # a UnitSlipWarning
+    True
     >>> print(caught[0].message)
     Block.rectangular: height 170 m is above 50 m; check the units ...
     """
 
 
+class UnitSlipWarning(PlausibilityWarning):
+    """A value that is surely a unit slip: outside the limits of
+    :data:`rocking.PLAUSIBLE_LIMITS` (a density outside 300-25,000 kg/m^3, a site PGA
+    above 2 g, a block or mesh larger than 50 m, a building period above 20 s). The
+    Python API warns (one line); the command line refuses it (exit code 2) unless
+    ``--force``, with the same limits.
+
+    Examples
+    --------
+    A statue's density typed in t/m^3 (2.6 for 2600 kg/m^3):
+
+    >>> import warnings
+    >>> import rocking
+    >>> from rocking.shapes import Shape
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     box = Shape.box(0.4, 0.6, 2.0, density=2.6)
+    >>> caught[0].category.__name__
+    'UnitSlipWarning'
+    >>> print(caught[0].message)
+    density = 2.6 kg/m^3 is outside 300-25,000 kg/m^3: a unit slip? ...
+    """
+
+
 __all__ = ["RockingError", "ParameterError", "SpecimenError", "RecordError", "UnitError",
            "OutputTooLargeError", "IdentificationError", "SimulationError",
-           "SpecError", "StoreError", "PlausibilityWarning"]
+           "SpecError", "StoreError", "PlausibilityWarning", "UnitSlipWarning"]

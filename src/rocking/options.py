@@ -127,9 +127,12 @@ def check_option(name: str, value, m: dict):
         lo = -math.inf if m["lo"] is None else m["lo"]
         hi = math.inf if m["hi"] is None else m["hi"]
         unit = f" {m['unit']}" if m.get("unit") else ""
+        shown = range_text(m) + unit
+        if m.get("quantity") == "ratio" and 1.0 < x <= 100.0 and lo < x / 100.0 < hi:
+            shown += (f" (a ratio: {x:g} % is {x / 100.0:g}, give {x / 100.0:g} or "
+                      f"{x:g}%)")  # a percentage typed as a number
         x = in_range(name, x, lo, hi, lo_open=m["lo_open"] or m["lo"] is None,
-                     hi_open=m["hi_open"] or m["hi"] is None,
-                     shown=range_text(m) + unit)
+                     hi_open=m["hi_open"] or m["hi"] is None, shown=shown)
     if kind is int:
         if x != int(x):
             raise ParameterError(f"{name} must be a whole number, got {value!r}")

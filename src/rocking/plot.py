@@ -26,6 +26,14 @@ from .motions import Motion, Record
 #: Colours of the overlaid curves (colour-blind safe, Okabe-Ito).
 PALETTE = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000")
 
+#: Line styles of the overlaid curves, cycled with :data:`PALETTE` (a curve stays
+#: distinguishable in grey print and for colour-blind readers).
+LINESTYLES = ("-", "--", "-.", ":", (0, (5, 1, 1, 1, 1, 1)), (0, (8, 2)), (0, (1, 3)))
+
+#: The ``gid`` of a fragility curve drawn by :meth:`rocking.analysis.FragilityFit.plot`
+#: (the next curve on the same axes takes the next colour and line style).
+CURVE_GID = "rocking.fragility_curve"
+
 
 def _has_display() -> bool:
     if sys.platform in ("darwin", "win32"):
@@ -144,7 +152,8 @@ def plot_response(resp, ax=None, deg: bool = True, label: str | None = None, *,
     label : str, optional
         Legend entry; a legend is drawn when given.
     show_alpha : bool
-        Draw the critical angle ``+-alpha`` of the block as dashed lines.
+        Draw the critical angles as dashed lines: ``+-alpha`` for a symmetric block,
+        ``alpha_plus`` and ``-alpha_minus`` (each side's own) for an asymmetric one.
     title : str, optional
     **kw
         Passed to ``Axes.plot`` (``color``, ``linewidth``, ...).
@@ -181,12 +190,20 @@ def plot_response(resp, ax=None, deg: bool = True, label: str | None = None, *,
     _draw_response(ax, resp, deg, label, color, True, **kw)
     block = getattr(resp, "block", None)
     if show_alpha and block is not None and getattr(block, "alpha", None):
-        a = math.degrees(block.alpha) if deg else block.alpha
-        for y in (a, -a):
+        ap = getattr(block, "alpha_plus", block.alpha)
+        am = getattr(block, "alpha_minus", block.alpha)
+        ap, am = (math.degrees(ap), math.degrees(am)) if deg else (ap, am)
+        if ap == am:  # symmetric: one +-alpha
+            marks = ((ap, r"$\pm\alpha$"), (-am, None))
+        else:  # each side's own overturning angle
+            u = "°" if deg else " rad"
+            marks = ((ap, rf"$\alpha_+$ = {ap:.3g}{u}"), (-am, rf"$-\alpha_-$ = {-am:.3g}{u}"))
+        for y, text in marks:
             ax.axhline(y, color="0.45", linestyle="--", linewidth=0.8)
-        ax.annotate(r"$\pm\alpha$", xy=(1.0, a), xycoords=("axes fraction", "data"),
-                    xytext=(2, 0), textcoords="offset points", va="center", fontsize=8,
-                    color="0.35")
+            if text:
+                ax.annotate(text, xy=(1.0, y), xycoords=("axes fraction", "data"),
+                            xytext=(2, 0), textcoords="offset points", va="center",
+                            fontsize=8, color="0.35")
     ax.axhline(0.0, color="0.3", linewidth=0.6)
     style_axes(ax, "time t (s)", _angle_label(deg))
     t = np.asarray(resp.t, dtype=float)

@@ -323,6 +323,46 @@ def _cuts(params: np.ndarray) -> np.ndarray:
     return np.cumsum(np.column_stack([p[:, 1], np.exp(p[:, 2:])]), axis=1)
 
 
+def missing_states_message(missing, n_states: int, thresholds=None) -> str:
+    """The one-line refusal of :func:`fragility_curves` when a damage state has no record:
+    which states are empty, in words, and what to change.
+
+    Examples
+    --------
+    >>> from rocking.analysis.damage import missing_states_message
+    >>> print(missing_states_message([], 0))  # doctest: +NORMALIZE_WHITESPACE
+    state: no record reached a damage state (every record is in state 0, undamaged), so
+    there is no curve to fit; add stronger IM levels
+    >>> print(missing_states_message([3], 3, (0.25, 0.5)))  # doctest: +NORMALIZE_WHITESPACE
+    state: no record is in damage state 3 (DS3: overturning) of the states 0..3; every
+    state needs records to fit its curve; add stronger IM levels
+    """
+    if n_states < 1:
+        return ("state: no record reached a damage state (every record is in state 0, "
+                "undamaged), so there is no curve to fit; add stronger IM levels")
+    names = (state_labels(thresholds) if thresholds is not None else
+             [f"DS{k}" for k in range(1, n_states + 1)])
+
+    def name(k):
+        return "0 (undamaged)" if k == 0 else (
+            f"{k} ({names[k - 1]})" if ":" in names[k - 1] else str(k))
+
+    listed = ", ".join(name(k) for k in missing)
+    what = "damage states" if len(missing) > 1 else "damage state"
+    todo = []
+    if 0 in missing:
+        todo.append("weaker IM levels")
+    if n_states in missing:
+        todo.append("stronger IM levels")
+    if any(0 < k < n_states for k in missing):
+        todo.append("levels in between")
+    fix = f"add {' and '.join(todo)}" + (
+        " (or change the thresholds)" if thresholds is not None
+        and any(0 < k < n_states for k in missing) else "")
+    return (f"state: no record is in {what} {listed} of the states 0..{n_states}; every "
+            f"state needs records to fit its curve; {fix}")
+
+
 def fragility_curves(im, state=None, *, ratio=None, overturned=None,
                      thresholds=DEFAULT_THRESHOLDS, method: str = "common_beta",
                      n_boot: int = 1000, seed: int | None = 0, bootstrap: str = "normal",
@@ -380,9 +420,7 @@ def fragility_curves(im, state=None, *, ratio=None, overturned=None,
         n_states = int(s.max())
     missing = sorted(set(range(n_states + 1)) - set(s.tolist()))
     if missing or n_states < 1:
-        raise ParameterError(f"state: no record is in damage state(s) {missing or [1]} "
-                             f"(of 0..{max(n_states, 1)}); every state needs records "
-                             "(change the thresholds or the IM levels)")
+        raise ParameterError(missing_states_message(missing, n_states, t))
     labels = tuple(state_labels(t) if t is not None else
                    [f"DS{k}" for k in range(1, n_states + 1)])
     n_boot, rng, bootstrap = check_n_boot(n_boot), make_rng(seed), check_bootstrap(bootstrap)

@@ -111,10 +111,14 @@ class DirectionSweep:
         """The worst direction (rad)."""
         return float(self.worst["phi"])
 
-    def plot(self, ax=None, *, label: str | None = None, mirror: bool = True):
+    def plot(self, ax=None, *, label: str | None = None, mirror: bool = True,
+             title: str | None = None, worst: bool = True, color=None):
         """max ``|theta|`` / alpha against ``phi`` on polar axes (overturned directions at
-        the rim, marked x); ``mirror`` also draws ``phi + 180`` deg (the same response).
-        Returns the figure.
+        the rim, marked x); ``mirror`` also draws ``phi + 180`` deg (the same response);
+        ``worst`` marks the worst direction (a radial line). The axes are labelled (the
+        direction from the body's x axis, the radial quantity) and titled (the pair, its
+        load factor, the model; ``title`` replaces it; on a given ``ax`` only when
+        ``title`` is given). Returns the figure.
 
         Examples
         --------
@@ -130,11 +134,14 @@ class DirectionSweep:
         ('polar', 9)
         >>> int(sw.table["overturned"].sum()), len(ax.lines[1].get_xdata())  # x at the rim
         (2, 4)
+        >>> bool(ax.get_title()), bool(ax.get_xlabel())
+        (True, True)
         """
-        if ax is None:
+        own = ax is None
+        if own:
             from matplotlib.figure import Figure
 
-            fig = Figure(figsize=(5.0, 5.0), layout="constrained")
+            fig = Figure(figsize=(5.6, 6.0), layout="constrained")
             ax = fig.add_subplot(projection="polar")
         fig = ax.figure
         t = self.table.sort_values("phi")
@@ -148,11 +155,27 @@ class DirectionSweep:
         o = np.argsort(phi % (2 * math.pi))
         phi, r, ovt = phi[o] % (2 * math.pi), r[o], ovt[o]
         line, = ax.plot(np.append(phi, phi[0]), np.append(r, r[0]), marker="o", ms=3,
-                        label=label)
-        ax.plot(phi[ovt], r[ovt], "x", color=line.get_color(), ms=8)
+                        label=label, color=color)
+        ax.plot(phi[ovt], r[ovt], "x", color=line.get_color(), ms=8,
+                label="overturned" if own and ovt.any() else None)
+        if worst:
+            w = self.worst_phi
+            ax.plot([w, w], [0.0, 1.05], color=line.get_color(), lw=1.0, ls=":",
+                    label=f"worst: {math.degrees(w) % 360:.0f} deg" if own else None)
         ax.set_ylim(0.0, 1.05)
         ax.set_theta_zero_location("E")
         ax.set_theta_direction(1)
+        ax.set_xlabel("angle: direction of shaking phi (deg)\nfrom the body's x axis, "
+                      "counter-clockwise", fontsize=9)
+        if own or title is not None:
+            scale = f" x {self.scale:g}" if self.scale != 1.0 else ""
+            ax.set_title(title if title is not None else
+                         f"Peak rocking by direction: {self.pair.name}{scale} "
+                         f"({self.model})\nradius: max |θ| / α (1: overturned)",
+                         fontsize=10)
+        if own and (ovt.any() or worst or label):
+            fig.legend(*ax.get_legend_handles_labels(), fontsize=8,
+                       loc="outside lower center", frameon=False, ncol=3)
         return fig
 
 
@@ -340,13 +363,16 @@ def plot_sweeps(sweeps, labels=None, *, reference=None, ax=None):
         ax = fig.add_subplot(projection="polar")
     labels = labels or [f"scale {s.scale:g}" for s in sweeps]
     for i, (sw, lab) in enumerate(zip(sweeps, labels, strict=True)):
-        sw.plot(ax, label=lab)
-        ax.lines[-2].set_color(PALETTE[i % len(PALETTE)])
-        ax.lines[-1].set_color(PALETTE[i % len(PALETTE)])
+        sw.plot(ax, label=lab, worst=False, color=PALETTE[i % len(PALETTE)])
     if reference is not None:
-        for ph in (reference, reference + math.pi):
-            ax.plot([ph, ph], [0.0, 1.05], color="k", lw=1.0, ls="--")
-    ax.legend(fontsize=8, loc="lower left", bbox_to_anchor=(-0.1, -0.12), frameon=False)
+        for k, ph in enumerate((reference, reference + math.pi)):
+            ax.plot([ph, ph], [0.0, 1.05], color="k", lw=1.0, ls="--",
+                    label=f"reference: {math.degrees(reference) % 360:.0f} deg"
+                    if k == 0 else None)
+    if not ax.get_title():
+        ax.set_title("Peak rocking by direction\nradius: max |θ| / α (1: overturned, x)",
+                     fontsize=10)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.05, 1.0), frameon=False)
     return ax.figure
 
 
@@ -397,6 +423,109 @@ class DirectionFragility:
     runs: pd.DataFrame
     fits: dict
     im: str
+    mirrored: bool = False
+    """Whether ``phi + 180`` deg is the mirror of ``phi`` (the same outcome: a
+    :class:`~rocking.shapes.Shape` or a symmetric block), drawn by :meth:`plot`."""
+
+    def plot(self, *, curves: int = 4, title: str | None = None):
+        """The fragility by direction, for a report: left, the median ``im`` of overturning
+        (g) against the direction on polar axes (a dot per fitted direction; where no fit
+        exists, a radial bar from the bound below to the bound above, an open end where
+        the data give none); the weakest direction (the smallest median) marked. Right, the
+        fragility curves of up to ``curves`` directions (the weakest, the strongest and
+        evenly between, by median; distinct colours and line styles,
+        :meth:`~rocking.analysis.FragilityFit.plot`). Returns the figure.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.analysis import direction_fragility
+        >>> from rocking.motions import HorizontalPair, Record
+        >>> pulse = np.sin(2 * np.pi * np.arange(0.0, 1.0, 0.005))  # a 1 Hz one-sine, m/s^2
+        >>> pair = HorizontalPair(Record(3.0 * pulse, 0.005), Record(pulse, 0.005))
+        >>> df = direction_fragility(rocking.specimen(2), [pair], [1.0, 2.0, 4.0, 8.0], 2,
+        ...                          duration=5.0, n_boot=0)
+        >>> fig = df.plot()
+        >>> [ax.name for ax in fig.axes], bool(fig.axes[0].get_title())
+        (['polar', 'rectilinear'], True)
+        """
+        from matplotlib.figure import Figure
+
+        from ..plot import LINESTYLES, style_axes
+
+        t = self.table
+        fig = Figure(figsize=(11.0, 5.0), layout="constrained")
+        axp = fig.add_subplot(1, 2, 1, projection="polar")
+        axc = fig.add_subplot(1, 2, 2)
+        im_name = {"larger": "PGA (larger component)", "resultant": "peak resultant PGA",
+                   "geomean": "PGA (geometric mean)"}[self.im]
+        phis = t.phi.to_numpy(float)
+        med = t["median"].to_numpy(float) / G
+        lo = t.median_lower_bound.to_numpy(float) / G
+        hi = t.median_upper_bound.to_numpy(float) / G
+        top = 1.15 * float(np.nanmax(np.concatenate([med, lo, hi, [1e-3]])))
+        shifts = (0.0, math.pi) if self.mirrored else (0.0,)
+        fitted = np.isfinite(med)
+        if fitted.any():
+            x = np.concatenate([(phis[fitted] + sh) % (2 * math.pi) for sh in shifts])
+            y = np.concatenate([med[fitted]] * len(shifts))
+            o = np.argsort(x)
+            x, y = x[o], y[o]
+            if fitted.all() and (self.mirrored or np.ptp(phis) > 1.5 * math.pi):
+                x, y = np.append(x, x[0]), np.append(y, y[0])
+            axp.plot(x, y, "-o", ms=4, color=PALETTE[0], lw=1.2, label="median of the fit")
+        for k, sh in enumerate(shifts):
+            ph = (phis + sh) % (2 * math.pi)
+            for i in np.flatnonzero(~fitted):
+                a, b = lo[i], hi[i]
+                if np.isnan(a) and np.isnan(b):
+                    continue
+                a0 = 0.0 if np.isnan(a) else a
+                b0 = top if np.isnan(b) else b
+                axp.plot([ph[i], ph[i]], [a0, b0], color=PALETTE[1], lw=3, alpha=0.7,
+                         solid_capstyle="butt",
+                         label=("no fit: bounds of the median" if k == 0 and i ==
+                                np.flatnonzero(~fitted)[0] else None))
+        est = np.where(fitted, med, np.where(np.isfinite(hi), hi, np.inf))
+        if np.isfinite(est).any():
+            w = int(np.argmin(est))
+            wphi = float(phis[w])
+            axp.plot([wphi, wphi], [0.0, top], color="k", ls="--", lw=1.0,
+                     label=f"weakest: {math.degrees(wphi):.0f} deg "
+                           f"({'median' if fitted[w] else 'median below'} "
+                           f"{est[w]:.3g} g)")
+        axp.set_ylim(0.0, top)
+        axp.set_theta_zero_location("E")
+        axp.set_theta_direction(1)
+        axp.set_title(f"Median {im_name} of overturning (g)\nby direction phi (deg from "
+                      "the body's x axis, ccw)", fontsize=10)
+        fig.legend(*axp.get_legend_handles_labels(), fontsize=8, loc="outside lower left",
+                   frameon=False, ncol=2)
+        keys = sorted(self.fits, key=lambda i: self.fits[i].median)
+        if len(keys) > curves:
+            pick = np.unique(np.round(np.linspace(0, len(keys) - 1, max(curves, 1))))
+            keys = [keys[int(j)] for j in pick]
+        for n, i in enumerate(keys):
+            f = self.fits[i]
+            f.plot(axc, data=False, band=len(keys) == 1,
+                   color=PALETTE[n % len(PALETTE)], ls=LINESTYLES[n % len(LINESTYLES)],
+                   label=f"{t.phi_deg.iloc[i]:.0f} deg: median {f.median / G:.3g} g, "
+                         f"beta {f.beta:.2f}")
+        if keys:
+            axc.set_title("Fragility curves of the weakest to the strongest directions",
+                          fontsize=10)
+            style_axes(axc, f"{im_name} (m/s$^2$)", "probability of overturning")
+            top = axc.secondary_xaxis("top", functions=(lambda x: x / G, lambda x: x * G))
+            top.set_xlabel("(g)", fontsize=9)
+        else:
+            axc.set_axis_off()
+            axc.text(0.5, 0.5, "no direction has a fragility fit\n(too few runs, or "
+                     "outcomes separated by the level:\nthe bounds of the median, left)",
+                     ha="center",
+                     va="center", transform=axc.transAxes)
+        fig.suptitle(title or f"Overturning fragility by direction ({len(t)} directions, "
+                     f"{len(self.runs)} runs)", fontsize=11)
+        return fig
 
 
 def direction_fragility(body, pairs, levels, directions=None, *, im: str = "larger",
@@ -494,7 +623,8 @@ def direction_fragility(body, pairs, levels, directions=None, *, im: str = "larg
             row.update(median_lower_bound=lo, median_upper_bound=hi,
                        note=f"no fragility fit ({why}): bounds of the median")
         rows.append(row)
-    return DirectionFragility(table=pd.DataFrame(rows), runs=runs, fits=fits, im=im)
+    return DirectionFragility(table=pd.DataFrame(rows), runs=runs, fits=fits, im=im,
+                              mirrored=mirrored)
 
 
 # ====================================================================== 3-D: headings

@@ -38,7 +38,7 @@ from scipy.stats import norm
 from .._atomic import atomic_path
 from .._validate import in_range
 from ..errors import ParameterError, SimulationError
-from ..plot import PALETTE, figure, im_label, style_axes, unit_label
+from ..plot import CURVE_GID, LINESTYLES, PALETTE, figure, im_label, style_axes, unit_label
 from ..results import jsonable
 from ..units import ACCELERATION, G
 
@@ -197,10 +197,13 @@ def check_separation(x: np.ndarray, y: np.ndarray, what: str = "failed") -> None
                              "fitted; add weaker IM levels")
     lo_fail, hi_safe = x[y].min(), x[~y].max()
     if lo_fail >= hi_safe:
+        where = (f"between im = {hi_safe:g} and {lo_fail:g}" if lo_fail > hi_safe
+                 else f"near im = {lo_fail:g}")
         raise ParameterError(
-            f"{what} is perfectly separated by the IM (every record failed at im >= "
-            f"{lo_fail:g} and none above im = {hi_safe:g}): the likelihood has no maximum "
-            "(beta -> 0); add records or levels between them")
+            f"{what} is perfectly separated by the IM (every record that failed is at im "
+            f">= {lo_fail:g}, none below; every record that did not is at im <= "
+            f"{hi_safe:g}): the likelihood has no maximum (beta -> 0); add records or "
+            f"levels {where}")
     if x[y].max() <= x[~y].min():
         raise ParameterError(f"{what}: failures happen only at lower IM than the survivals; "
                              "a fragility curve must increase with the IM")
@@ -512,9 +515,14 @@ class FragilityFit:
                              directional=directional, path=path)
 
     def plot(self, ax=None, *, level: float = 0.95, band: bool = True, data: bool = True,
-             im=None, label: str | None = None, color=None):
+             im=None, label: str | None = None, color=None, ls=None):
         """The curve, its bootstrap band and the data (the failed fraction of each stripe,
         or the Kaplan-Meier estimate of the IDA capacities); returns the Axes.
+
+        Several fits drawn on one ``ax`` get distinct colours and line styles (the ``k``-th
+        fragility curve on the axes: :data:`rocking.plot.PALETTE` and
+        :data:`rocking.plot.LINESTYLES`, unless ``color`` / ``ls`` are given), and the
+        legend stands outside the data, to the right of the axes.
 
         Examples
         --------
@@ -533,13 +541,15 @@ class FragilityFit:
 
         if ax is None:
             _, ax = figure()
-        color = color or PALETTE[0]
+        k = sum(ln.get_gid() == CURVE_GID for ln in ax.lines)  # curves already drawn
+        color = color or PALETTE[k % len(PALETTE)]
+        ls = ls or LINESTYLES[k % len(LINESTYLES)]
         lo, hi = self.im_range
         x = (_as_im("im", im) if im is not None else
              np.geomspace(min(lo, self.median * math.exp(-2.5 * self.beta)),
                           max(hi, self.median * math.exp(2.5 * self.beta)), 200))
         unit = unit_label(self.im_unit)
-        ax.plot(x, self.probability(x), color=color,
+        ax.plot(x, self.probability(x), color=color, ls=ls, gid=CURVE_GID,
                 label=label or f"{self.label}: median {self.median:.3g}"
                                f"{' ' + unit if unit else ''}, beta {self.beta:.2f}")
         if band and self.n_boot:
@@ -550,7 +560,17 @@ class FragilityFit:
             self._plot_data(ax, color)
         style_axes(ax, self.im_axis_label, "probability of exceedance")
         ax.set_ylim(-0.02, 1.02)
-        ax.legend(frameon=False, fontsize="small")
+        handles, labels = ax.get_legend_handles_labels()
+        bands = [i for i, t in enumerate(labels) if "% band (" in t]
+        if len(bands) > 1:  # one entry, in grey, for the bands of every curve
+            from matplotlib.patches import Patch
+
+            first = labels[bands[0]]
+            handles = [h for i, h in enumerate(handles) if i not in bands] + [
+                Patch(color="0.6", alpha=0.35, lw=0)]
+            labels = [t for i, t in enumerate(labels) if i not in bands] + [first]
+        ax.legend(handles, labels, frameon=False, fontsize="small", loc="upper left",
+                  bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
         return ax
 
     def _plot_data(self, ax, color):

@@ -96,6 +96,41 @@ def _positive(name: str, value) -> float:
     return v
 
 
+def code_pga(name: str, value, unit: str = "g") -> float:
+    """A code PGA (``pga_475``, ``pga_2475``) in ``unit``: a bare number in ``unit``
+    (default g), or a string with its unit (``"0.25g"``, ``"2.45m/s^2"``; a bare string
+    is in ``unit``), the same forms as the campaign spec's; > 0. A site PGA above 2 g
+    (:data:`rocking.PLAUSIBLE_LIMITS`) gets a :class:`~rocking.errors.UnitSlipWarning`.
+
+    Examples
+    --------
+    >>> from rocking.analysis.hazard import code_pga
+    >>> code_pga("pga_475", 0.25), round(code_pga("pga_475", "2.4516625m/s^2"), 9)
+    (0.25, 0.25)
+    """
+    from .._validate import check_plausible
+    from ..units import acceleration_factor, parse_quantity
+
+    try:
+        factor = acceleration_factor(unit)
+    except ParameterError:
+        factor = None  # a unit of the user's own (a label): bare numbers only
+    if isinstance(value, str):
+        if factor is None:
+            raise ParameterError(f"{name}: a value with a unit ({value!r}) needs an "
+                                 f"acceleration unit=, got unit={unit!r}")
+        si = parse_quantity(value, "acceleration", name=name, default_unit=unit)
+        v = _positive(name, si / factor)
+    else:
+        if isinstance(value, bool):
+            raise ParameterError(f"{name} must be a number > 0 (in {unit}) or a string "
+                                 f"with its unit such as '0.25g', got {value!r}")
+        v = _positive(name, value)
+    if factor is not None:
+        check_plausible("site_pga", v * factor, name, shown=f"{value!r} ({v:g} {unit})")
+    return v
+
+
 #: Second-column header words of :meth:`HazardCurve.from_csv` (shown in its refusals).
 RATE_WORDS = ("rate", "annual rate", "lambda", "AFE", "MAFE", "frequency", "1/yr",
               "per year")
@@ -561,7 +596,10 @@ class HazardCurve:
                         label: str = ""):
         """EN 1998-1 2.1(4) note: ``lambda(a) = (1/475) (a / a_475)^-k``, k of the order of
         3; with ``pga_2475`` the slope is that of the two return periods,
-        ``k = ln(2475/475) / ln(a_2475 / a_475)``. Flagged ``approximate``.
+        ``k = ln(2475/475) / ln(a_2475 / a_475)``. Flagged ``approximate``. ``pga_475``
+        and ``pga_2475``: a bare number in ``unit`` (default g) or a string with its unit
+        (``"0.25g"``, ``"2.45m/s^2"``), as in a campaign spec (:func:`code_pga`; above
+        2 g a :class:`~rocking.errors.UnitSlipWarning`).
 
         Examples
         --------
@@ -572,10 +610,12 @@ class HazardCurve:
         (2.8083, 2.8083)
         >>> round(curve.im_at_return_period(2475), 6), curve.approximate
         (0.45, True)
+        >>> round(HazardCurve.from_code_value("0.25g").im_at_return_period(475), 9)  # a unit
+        0.25
         """
-        a = _positive("pga_475", pga_475)
+        a = code_pga("pga_475", pga_475, unit)
         if pga_2475 is not None:
-            a2 = _positive("pga_2475", pga_2475)
+            a2 = code_pga("pga_2475", pga_2475, unit)
             if a2 <= a:
                 raise ParameterError(f"pga_2475 must exceed pga_475 ({a}), got {pga_2475!r}")
             k = math.log(2475.0 / 475.0) / math.log(a2 / a)

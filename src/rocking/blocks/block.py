@@ -58,12 +58,22 @@ import math
 import sys
 from dataclasses import dataclass, field
 
-from .._validate import as_float, in_range, non_negative, positive, warn_implausible
-from ..errors import ParameterError
+from .._validate import (
+    PLAUSIBLE_LIMITS,
+    as_float,
+    check_plausible,
+    in_range,
+    non_negative,
+    positive,
+    warn_implausible,
+)
+from ..errors import ParameterError, UnitSlipWarning
 from ..units import G
 
-PLAUSIBLE_SIZE = 50.0
-"""A block width or height (m) above this gets a warning (likely mm given as m)."""
+PLAUSIBLE_SIZE = PLAUSIBLE_LIMITS["size"][1]
+"""A block width or height (m) above this gets a :class:`~rocking.errors.UnitSlipWarning`
+(likely mm given as m; the command line refuses it unless ``--force``): the limit of
+:data:`rocking.PLAUSIBLE_LIMITS`."""
 
 GRANITE_DENSITY = 2650.0
 """Density (kg/m^3) used when a polygon is given neither a mass nor a density."""
@@ -319,7 +329,8 @@ class Block:
         for what, x in (("width", width), ("height", height)):
             if x > PLAUSIBLE_SIZE:
                 warn_implausible(f"Block.rectangular: {what} {x:g} m is above 50 m; check "
-                                 "the units (width and height are in m: 170 mm is 0.17)")
+                                 "the units (width and height are in m: 170 mm is 0.17)",
+                                 UnitSlipWarning)
         if mass is not None:
             mass = positive("mass", mass, "kg")
         if thickness is not None:
@@ -416,8 +427,9 @@ class Block:
         if mass is not None:
             mass = positive("mass", mass, "kg")
         elif density is not None:
-            mass = positive("density", density, "kg/m^3") * props["area"] * (
-                1.0 if thickness is None else thickness)
+            rho = positive("density", density, "kg/m^3")
+            check_plausible("density", rho, "density")
+            mass = rho * props["area"] * (1.0 if thickness is None else thickness)
         (xl, _), (xr, _) = verts[0], verts[1]
         al, ar = math.atan2(cx - xl, cy), math.atan2(xr - cx, cy)
         xo = xl if al <= ar else xr
@@ -475,7 +487,8 @@ class Block:
         for what, x in (("h", h), ("b_plus", bp), ("b_minus", bm)):
             if x > PLAUSIBLE_SIZE:
                 warn_implausible(f"Block.from_geometry: {what} {x:g} m is above 50 m; check "
-                                 "the units (lengths are in m: 170 mm is 0.17)")
+                                 "the units (lengths are in m: 170 mm is 0.17)",
+                                 UnitSlipWarning)
         if mass is not None:
             mass = positive("mass", mass, "kg")
         if mu is not None:

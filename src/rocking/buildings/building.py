@@ -106,7 +106,7 @@ import numpy as np
 from scipy.linalg import eigh
 from scipy.optimize import brentq
 
-from .._validate import as_int, in_range, positive, warn_implausible
+from .._validate import as_int, check_plausible, in_range, positive, warn_implausible
 from ..errors import ParameterError
 
 MAX_DAMPING = 1.0
@@ -378,6 +378,7 @@ class Building:
             raise ParameterError("periods must be one or more modal periods (s)")
         for i, t in enumerate(T):
             positive(f"periods[{i}]", t, "s")
+        check_plausible("building_period", float(T.max()), "the building's first period")
         self.periods = T
         self.damping = _damping(damping, T.size)
         g = np.atleast_1d(np.asarray(participation, dtype=float))

@@ -22,13 +22,15 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from .._validate import PLAUSIBLE_LIMITS
 from ..errors import ParameterError
 from ..options import REQUIRED, Options, option
 from .building import DEFAULT_CONTINUOUS_MODES, MAX_CONTINUOUS_MODES, MAX_STOREYS, Building
 
-MAX_PERIOD = 20.0
+MAX_PERIOD = PLAUSIBLE_LIMITS["building_period"][1]
 """Longest first-mode period a building may have (s): the tallest buildings have T1 of
-about 10 s; a larger value is a unit mistake (500 for 0.5 s)."""
+about 10 s; a larger value is a unit mistake (500 for 0.5 s). The limit of
+:data:`rocking.PLAUSIBLE_LIMITS` (the Python constructors warn above it)."""
 
 
 def _period(help_: str = "first-mode period"):

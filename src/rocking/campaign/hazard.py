@@ -56,11 +56,12 @@ HAZARD_KEYS = {
     "unit": "CSV: the IM's unit if the header states none (g, m/s^2, ...)",
     "investigation_time": "CSV of a probability of exceedance (header `poe`): the years T "
                           "it refers to, > 0; read as rate = -ln(1 - poe)/T",
-    "pga_475": "instead of file: the reference PGA at 475 years with its unit (\"0.25g\", "
-               "\"2.45m/s^2\"), EN 1998-1 2.1(4): lambda = (1/475) (a / a_475)^-k, "
-               "an approximation (labelled so)",
+    "pga_475": "instead of file: the reference PGA at 475 years, a number in g (0.25) or "
+               "with its unit (\"0.25g\", \"2.45m/s^2\"), EN 1998-1 2.1(4): lambda = "
+               "(1/475) (a / a_475)^-k, an approximation (labelled so)",
     "k": "with pga_475: the slope of the power law, (0, 20]; default 3 (EN 1998-1 note)",
-    "pga_2475": "with pga_475, instead of k: the PGA at 2475 years (sets k)",
+    "pga_2475": "with pga_475, instead of k: the PGA at 2475 years (sets k), in the same "
+                "forms",
     "t_years": f"the service life of the probability 1 - exp(-lambda t), years, (0, "
                f"{MAX_T_YEARS:g}]; default {DEFAULT_T_YEARS:g}",
     "label": "the curve's name in the report (default: from the file or the code value)",

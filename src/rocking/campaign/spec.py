@@ -1043,12 +1043,14 @@ def _hazard(raw: dict, base_dir: Path, motions: MotionAxis) -> dict | None:
 
 
 def _quantity(key: str, v) -> float:
-    """An acceleration with its unit (``"0.25g"``, ``"2.45m/s^2"``), in m/s^2, > 0."""
-    if not isinstance(v, str):
-        _fail(key, f"must be an acceleration with its unit such as \"0.25g\", got "
-                   f"{type(v).__name__} {v!r}")
+    """A code PGA, in m/s^2, > 0: a bare number in g (the unit of
+    :meth:`rocking.analysis.HazardCurve.from_code_value`) or a string with its unit
+    (``"0.25g"``, ``"2.45m/s^2"``)."""
+    if isinstance(v, bool) or not isinstance(v, str | int | float):
+        _fail(key, f"must be a PGA: a number in g (0.25) or a string with its unit such as "
+                   f"\"0.25g\", got {type(v).__name__} {v!r}")
     try:
-        a = parse_quantity(v, "acceleration", name=key)
+        a = parse_quantity(v, "acceleration", name=key, default_unit="g")
     except ParameterError as e:
         _fail(key, str(e).removeprefix(key).lstrip(": "))
     if not a > 0:

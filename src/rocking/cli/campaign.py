@@ -15,6 +15,15 @@ Parquet store.
 are moved into ``STORE/quarantine/`` and recomputed) and refuses a different spec. Ctrl-C
 stops cleanly: every finished chunk is kept (exit code 130).
 
+**Long campaigns.** Before it starts, ``run`` bounds the time of the simulations left with
+a per-model cost constant (:data:`SECONDS_PER_RUN_BOUND`: an upper bound of one
+simulation's time on the local executor). Where the bound exceeds an hour, a short timing
+(:func:`rocking.campaign.estimate`: a few motions built and 48 simulations per model, 4 of
+a slow one) estimates the time; above an hour it prints one line ``estimated time: ...``
+first, and above a day (:data:`REFUSE_SECONDS`) it refuses without ``--yes`` (exit code 2).
+The estimate is that of the local executor on this machine (a Dask cluster divides it by
+its workers, roughly).
+
 ``verify`` exit codes: 0 every chunk matches its record (the store may be incomplete),
 1 problems found (each named on its own line, or a damaged manifest), 2 bad input (not a
 store). The report is written into a temporary folder and its files renamed into
@@ -39,7 +48,35 @@ import click
 
 from .._atomic import fsync_dir, fsync_file, replace, temporary_name
 from ..errors import ParameterError, StoreError
-from .common import CONTEXT, hazard_option_words, json_default, one_line
+from .common import CONTEXT, force_option, hazard_option_words, json_default, one_line
+
+SECONDS_PER_RUN_BOUND = {"fast": 0.05, "slow": 10.0}
+"""An upper bound of one simulation's time (s) on the local executor: a model flagged
+``slow`` (the DEM) and the others. The classical models take about 2 ms per simulation of
+a 20 s earthquake on 2 cores (``rocking campaign run --dry-run`` of ``examples/site.toml``):
+a campaign whose bound is under :data:`NOTICE_SECONDS` starts without a timing."""
+NOTICE_SECONDS = 3600.0
+"""A campaign estimated to run longer (s) prints its estimate first."""
+REFUSE_SECONDS = 86400.0
+"""A campaign estimated to run longer (s) is refused without ``--yes``."""
+
+
+def long_run_estimate(spec, n_left: int) -> float | None:
+    """The estimated seconds of ``n_left`` simulations of ``spec`` on the local executor
+    (module docstring, "Long campaigns"), or None where the per-model bound is under
+    :data:`NOTICE_SECONDS` (no timing is run)."""
+    from ..campaign import estimate
+    from ..models.registry import MODELS
+
+    if n_left <= 0:
+        return None
+    runs = spec.runs
+    bound = sum(SECONDS_PER_RUN_BOUND["slow" if MODELS[name].slow else "fast"]
+                for name, _ in runs) / len(runs) * n_left
+    if bound < NOTICE_SECONDS:
+        return None
+    e = estimate(spec)
+    return e["estimated_seconds"] * n_left / max(spec.n_sims, 1)
 
 
 def _duration(seconds: float) -> str:
@@ -47,6 +84,8 @@ def _duration(seconds: float) -> str:
     if s < 120:
         return f"{seconds:.3g} s"
     h, rem = divmod(s, 3600)
+    if h >= 48:
+        return f"{h} h ({h / 24:.3g} days)"
     return f"{h} h {rem // 60:02d} min" if h else f"{rem // 60} min {rem % 60:02d} s"
 
 
@@ -70,10 +109,12 @@ class RunRequest:
     window: int | None
     dry_run: bool
     quiet: bool
+    yes: bool = False
+    """Run a campaign estimated to take more than a day (:data:`REFUSE_SECONDS`)."""
 
     @classmethod
     def from_options(cls, *, spec, out, executor, scheduler, dask_local, window, dry_run,
-                     quiet):
+                     quiet, yes=False):
         """The request of the command's options (click's values): the spec is read before
         the executor's options are checked, and ``--dry-run`` checks none of them."""
         from ..campaign import read_spec
@@ -82,7 +123,8 @@ class RunRequest:
         if not dry_run:
             executor = _executor(out, executor, scheduler, dask_local, window)
         return cls(spec=s, out=out, executor=executor, scheduler=scheduler,
-                   dask_local=dask_local, window=window, dry_run=dry_run, quiet=quiet)
+                   dask_local=dask_local, window=window, dry_run=dry_run, quiet=quiet,
+                   yes=bool(yes))
 
 
 def _executor(out, executor, scheduler, dask_local, window) -> str:
@@ -118,6 +160,9 @@ def _executor(out, executor, scheduler, dask_local, window) -> str:
               help="Print the number of simulations, chunks and an estimated time; run "
                    "nothing.")
 @click.option("--quiet", is_flag=True, help="No progress bar.")
+@click.option("--yes", is_flag=True,
+              help="Run a campaign estimated to take more than a day (refused without it).")
+@force_option
 def run_cmd(**options):
     """Run the campaign SPEC (TOML) into the store --out."""
     try:
@@ -165,9 +210,39 @@ def _dry_run(req: RunRequest) -> int:
     return 0
 
 
+def _left(spec, out) -> int:
+    """The simulations of ``spec`` not yet in the store ``out`` (all without a store, or
+    a store of another spec: run refuses it)."""
+    from ..campaign import status
+    if out is not None and Path(out, "manifest.json").is_file():
+        try:
+            st = status(out)
+        except (StoreError, ParameterError):
+            return spec.n_sims
+        if st.get("spec_hash", spec.hash) == spec.hash:
+            return int(st["sims_remaining"])
+    return spec.n_sims
+
+
+def _check_duration(req: RunRequest) -> None:
+    """One line with the estimate of a campaign longer than an hour; above a day, a
+    refusal without ``--yes`` (module docstring, "Long campaigns")."""
+    n_left = _left(req.spec, req.out)
+    seconds = long_run_estimate(req.spec, n_left)
+    if seconds is None or seconds < NOTICE_SECONDS:
+        return
+    line = (f"estimated time: {_duration(seconds)} for {n_left:,} simulations with the "
+            "local executor on this machine (from a short timing)")
+    if seconds > REFUSE_SECONDS and not req.yes:
+        raise ParameterError(f"{line}: more than a day; give --yes to run it, or make the "
+                             "campaign smaller (fewer levels, motions or samples)")
+    click.echo(line, err=True)
+
+
 def _run(req: RunRequest) -> int:
     """Run the campaign into its store."""
     from ..campaign import run
+    _check_duration(req)
     st = run(req.spec, req.out, executor=req.executor, scheduler=req.scheduler,
              dask_local=req.dask_local, window=req.window, progress=not req.quiet,
              log=lambda m: click.echo(m, err=True))

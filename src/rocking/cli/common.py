@@ -28,6 +28,7 @@ from ..errors import (
     RecordError,
     RockingError,
     SimulationError,
+    UnitSlipWarning,
 )
 from ..options import check_option, describe_field
 from ..units import parse_quantity
@@ -255,6 +256,10 @@ def make_block(specimen=None, params=None, width=None, height=None, mass=None, a
         raise type(e)(msg) from None
     try:
         block = build(given)
+    except UnitSlipWarning as w:  # refused (force_option): in the flags' words
+        if form != "rectangular":
+            raise
+        raise UnitSlipWarning(f"--width {width} --height {height}: {one_line(w)}") from None
     except ParameterError as e:  # valid keys, but no block (sizes beyond floating point)
         if form == "mesh":
             raise type(e)(one_line(in_flag_words(e, words))) from None
@@ -762,6 +767,34 @@ def error_report(e: BaseException) -> tuple[str, int] | None:
     if isinstance(e, SimulationError):
         return one_line(e), 1
     return None
+
+
+# ------------------------------------------------------------------- unit slips, --force
+FORCE_HELP = ("Run with a value that is surely a unit slip (a density outside 300-25,000 "
+              "kg/m^3, a site PGA above 2 g, a block or mesh larger than 50 m: "
+              "rocking.PLAUSIBLE_LIMITS), with a warning instead of a refusal.")
+
+
+def force_option(f):
+    """Decorator (below ``@click.command``) adding ``--force`` to a command: without it, a
+    :class:`~rocking.errors.UnitSlipWarning` of the library (the limits of
+    :data:`rocking.PLAUSIBLE_LIMITS`, the same as the Python API's warnings) is a refusal:
+    one line ``error: ...; give --force to run with it`` and exit code 2."""
+    import functools
+    import warnings
+
+    @functools.wraps(f)
+    def wrapper(*args, force=False, **kwargs):
+        with warnings.catch_warnings():
+            if not force:
+                warnings.simplefilter("error", UnitSlipWarning)
+            try:
+                return f(*args, **kwargs)
+            except UnitSlipWarning as w:
+                raise ParameterError(f"{one_line(str(w))}; give --force to run with it "
+                                     "anyway") from None
+
+    return click.option("--force", is_flag=True, help=FORCE_HELP)(wrapper)
 
 
 # ------------------------------------------------------------------------- hazard curves

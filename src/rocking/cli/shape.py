@@ -32,7 +32,7 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..units import G
-from .common import CONTEXT, check_positive, integer, json_default, number
+from .common import CONTEXT, check_positive, force_option, integer, json_default, number
 
 TEXT_COLUMNS = (("phi_deg", "phi", 1.0, "{:7.1f}"), ("alpha_plus", "alpha+", None, "{:8.3f}"),
                 ("alpha_minus", "alpha-", None, "{:8.3f}"), ("p_plus", "p+", 1.0, "{:7.4f}"),
@@ -43,10 +43,14 @@ TEXT_COLUMNS = (("phi_deg", "phi", 1.0, "{:7.1f}"), ("alpha_plus", "alpha+", Non
 
 
 def _direction(shape, phi: float) -> dict:
-    """One direction's summary: phi, the weaker side, its alpha and uplift acceleration."""
+    """One direction's summary: phi, the weaker side, its alpha and uplift acceleration,
+    named as everywhere by the ``phi`` whose "+" side is the weaker one
+    (:class:`rocking.shapes.Direction`)."""
     q = shape.parameters(phi)
-    side = "+" if q["uplift_plus"] <= q["uplift_minus"] else "-"
-    key = "plus" if side == "+" else "minus"
+    if q["uplift_minus"] < q["uplift_plus"]:
+        phi = (phi + math.pi) % (2.0 * math.pi)
+        q = shape.parameters(phi)
+    side, key = "+", "plus"
     return {"phi": phi, "phi_deg": math.degrees(phi), "side": side,
             "alpha": q[f"alpha_{key}"], "alpha_deg": math.degrees(q[f"alpha_{key}"]),
             "uplift": q[f"uplift_{key}"], "uplift_g": q[f"uplift_{key}"] / G,
@@ -98,7 +102,8 @@ def _lines(s: dict, text_table) -> list[str]:
     lines.append("")
     for which in ("weakest", "strongest"):
         d = s[which]
-        lines.append(f"{which + ':':10s} phi = {d['phi_deg']:.4f} deg, side {d['side']}: "
+        lines.append(f"{which + ':':10s} phi = {d['phi_deg']:.4f} deg, side {d['side']} "
+                     f"(tips towards {(d['phi_deg'] + 180.0) % 360.0:.1f} deg): "
                      f"alpha = {d['alpha']:.10g} rad ({d['alpha_deg']:.4f} deg), uplift "
                      f"{d['uplift']:.6g} m/s^2 = {d['uplift_g']:.6g} g")
     return lines
@@ -165,6 +170,7 @@ class ShapeRequest:
 @click.option("--out", type=click.Path(file_okay=False),
               help="Write directions.csv, polar.png and shape.json to this folder.")
 @click.option("--json", "as_json", is_flag=True, help="Print JSON (SI units, angles in rad).")
+@force_option
 def shape_cmd(**options):
     """Mass properties and rocking parameters of a 3-D mesh (STL, OBJ, PLY) in every
     direction of horizontal shaking; the weakest and strongest directions."""
@@ -193,7 +199,8 @@ def _write(req: ShapeRequest, shape, s: dict, table) -> None:
     d = Path(req.out)
     d.mkdir(parents=True, exist_ok=True)
     table.to_csv(d / "directions.csv", index=False)
-    fig = plot_directional(table, title=f"{shape.name}: {shape.mass:.4g} kg")
+    fig = plot_directional(table, title=f"{shape.name}: {shape.mass:.4g} kg",
+                           weakest=shape.weakest())
     fig.savefig(d / "polar.png", dpi=120)
     (d / "shape.json").write_text(json.dumps(s, indent=1, default=json_default))
 

@@ -84,6 +84,7 @@ import warnings
 from pathlib import Path
 
 import click
+import numpy as np
 
 from .._atomic import atomic_write
 from .._validate import as_float
@@ -100,6 +101,7 @@ from .common import (
     building_options,
     check_positive,
     declared_value,
+    force_option,
     in_flag_words,
     integer,
     json_default,
@@ -781,6 +783,7 @@ def _write_outputs(req: SimulateRequest, resp, summary: dict) -> None:
               help="Write response.csv, summary.json and theta.png to this folder.")
 @click.option("--json", "as_json", is_flag=True,
               help="Print the summary (summary.json's content, SI units) as JSON.")
+@force_option
 def simulate_cmd(**options):
     """Simulate one block under one base motion (on a floor of a building: --building)."""
     req = SimulateRequest.from_options(**options)
@@ -838,6 +841,18 @@ def row_output_text(d: dict) -> str:
     return f"{v:.6g} {d['unit']}"
 
 
+def _of_alpha(resp, block) -> str:
+    """max ``|theta|`` over alpha; for an asymmetric block, each side's peak over its own
+    alpha (the histories' peaks)."""
+    th = resp.max_abs_theta
+    if block.symmetric or resp.theta is None or len(resp.theta) == 0:
+        return f"{th / block.alpha:.3g} alpha"
+    theta = np.asarray(resp.theta, dtype=float)
+    tp, tm = max(float(np.nanmax(theta)), 0.0), max(float(-np.nanmin(theta)), 0.0)
+    return (f"{tp / block.alpha_plus:.3g} alpha+ on side +, {tm / block.alpha_minus:.3g} "
+            "alpha- on side -")
+
+
 def _text_lines(resp, block, model: str, linear: bool, mdesc: dict, fdesc, outputs: dict):
     """The text report of one run: block, motion, max angle, outcome, the model's row
     outputs."""
@@ -849,7 +864,7 @@ def _text_lines(resp, block, model: str, linear: bool, mdesc: dict, fdesc, outpu
              f"motion      {mdesc.get('repr', 'free rocking')}{on}  [{model}"
              f"{', linear' if linear else ''}]",
              (f"max |theta| {math.degrees(th):.4g} deg ({th:.6g} rad, "
-              f"{th / block.alpha:.3g} alpha)" if th is not None
+              f"{_of_alpha(resp, block)})" if th is not None
               else f"states      {', '.join(resp.state_names)} (no planar angle)"),
              f"overturned  yes, at t = {resp.overturn_time:.4g} s" if resp.overturned
              else "overturned  no"]

@@ -78,7 +78,7 @@ import numpy as np
 
 from .._validate import as_int, warn_implausible
 from ..errors import ParameterError
-from ..units import G, parse_quantity
+from ..units import G, parse_quantity, split_quantity
 
 #: The columns of the table of :func:`directional_parameters`, one row per direction.
 COLUMNS = ("phi", "phi_deg", "h", "b_plus", "b_minus", "radius_of_gyration", "alpha_plus",
@@ -197,9 +197,19 @@ def directional_parameters(shape, directions=360):
 
 @dataclass(frozen=True)
 class Direction:
-    """One direction of a directional table: ``phi`` (rad), ``phi_deg``, the ``side``
-    ("+" or "-") that uplifts first there, its ``alpha`` (rad) and ``uplift`` acceleration
-    (m/s^2; ``uplift_g`` in g), and ``index``, the table's row label.
+    """One named direction (the weakest, the strongest): ``phi`` (rad, in [0, 2 pi)),
+    ``phi_deg``, the ``side`` that uplifts first there, its ``alpha`` (rad) and ``uplift``
+    acceleration (m/s^2; ``uplift_g`` in g), and ``index``, the table's row label (the row
+    at ``phi``; the row at ``phi - pi`` where the table has no row at ``phi``; None for
+    :meth:`Shape.weakest`).
+
+    **The convention** (one for every function, command, table and plot; the shapes
+    guide): the side is always "+". ``phi`` and ``phi + pi`` are the same pivot line with
+    the sides swapped, so a direction can be named two ways; the package names it by the
+    ``phi`` whose "+" side is the weak (or strong) one. Then the planar block of that
+    direction (:meth:`rocking.Block.from_shape`, ``Block.from_mesh(direction="weakest")``)
+    has ``alpha_plus == alpha``, and a positive ground acceleration along ``e_phi`` tips
+    the body over that side, towards ``phi + 180`` deg (the module docstring).
 
     Examples
     --------
@@ -225,7 +235,10 @@ class Direction:
 
 def pick(table, which: str) -> Direction:
     """The row of the smallest (``which="weakest"``) or largest (``"strongest"``)
-    ``min(uplift_plus, uplift_minus)`` of a directional table (first one on ties)."""
+    ``min(uplift_plus, uplift_minus)`` of a directional table (first one on ties), as a
+    :class:`Direction` in the package's convention: its side is always "+" (see
+    :class:`Direction`). Where the row's weaker side is "-", the direction returned is the
+    row's mirror ``phi + pi`` (the same pivot line, the sides swapped)."""
     missing = [c for c in ("phi", "uplift_plus", "uplift_minus", "alpha_plus", "alpha_minus")
                if c not in getattr(table, "columns", ())]
     if missing or len(table) == 0:
@@ -234,17 +247,22 @@ def pick(table, which: str) -> Direction:
     up = np.minimum(table["uplift_plus"].to_numpy(), table["uplift_minus"].to_numpy())
     i = int(np.argmin(up) if which == "weakest" else np.argmax(up))
     row = table.iloc[i]
-    side = "+" if row["uplift_plus"] <= row["uplift_minus"] else "-"
-    key = "plus" if side == "+" else "minus"
-    return Direction(phi=float(row["phi"]), phi_deg=math.degrees(float(row["phi"])),
-                     side=side, alpha=float(row[f"alpha_{key}"]),
-                     uplift=float(row[f"uplift_{key}"]), uplift_g=float(row[f"uplift_{key}"]) / G,
-                     index=table.index[i])
+    phi, key, index = float(row["phi"]), "plus", table.index[i]
+    if row["uplift_minus"] < row["uplift_plus"]:  # the weaker side is "-": take the mirror
+        phi, key = (phi + math.pi) % (2.0 * math.pi), "minus"
+        gap = np.abs((table["phi"].to_numpy(float) - phi + math.pi) % (2.0 * math.pi)
+                     - math.pi)
+        if gap.min() < 1e-9:
+            index = table.index[int(np.argmin(gap))]
+    return Direction(phi=phi, phi_deg=math.degrees(phi), side="+",
+                     alpha=float(row[f"alpha_{key}"]), uplift=float(row[f"uplift_{key}"]),
+                     uplift_g=float(row[f"uplift_{key}"]) / G, index=index)
 
 
 def weakest_direction(table) -> Direction:
     """The direction of the table with the smallest uplift acceleration
-    ``min(uplift_plus, uplift_minus)`` and its side. The table samples the directions:
+    ``min(uplift_plus, uplift_minus)``, named by the ``phi`` whose "+" side is the weak one
+    (the convention of :class:`Direction`). The table samples the directions:
     the exact minimum is at a normal of the support hull's edge nearest to the centre of
     mass (the support function's minimum); :meth:`Shape.weakest` gives it.
 
@@ -262,7 +280,8 @@ def weakest_direction(table) -> Direction:
 
 
 def strongest_direction(table) -> Direction:
-    """The direction of the table whose smaller uplift acceleration is the largest.
+    """The direction of the table whose smaller uplift acceleration is the largest, named
+    by the ``phi`` whose "+" side is the weaker of the two there (:class:`Direction`).
 
     Examples
     --------
@@ -304,6 +323,14 @@ def parse_direction(value):
     if isinstance(value, bool) or not isinstance(value, int | float | str):
         raise ParameterError("direction must be an angle (a number in deg, '30deg'), "
                              f"'weakest' or 'strongest'; got {value!r}")
+    if isinstance(value, str) and split_quantity(value) is None:  # a word: a misspelt name?
+        import difflib
+
+        near = difflib.get_close_matches(value.strip().lower(), NAMED_DIRECTIONS, n=1,
+                                         cutoff=0.6)
+        hint = f"; did you mean {near[0]!r}?" if near else ""
+        raise ParameterError(f"direction: {value!r} is not a direction{hint} (an angle in "
+                             "deg such as 30 or '30deg', 'weakest' or 'strongest')")
     return parse_quantity(value, "angle", name="direction", default_unit="deg")
 
 
@@ -311,7 +338,9 @@ def resolve_direction(shape, direction) -> float:
     """The angle ``phi`` (rad) of one :func:`parse_direction` result for ``shape``:
     ``"weakest"`` is :meth:`Shape.weakest` (exact: the normal of the support edge nearest
     to the centre of mass), ``"strongest"`` the largest smaller uplift acceleration over
-    3600 directions refined by a bounded search; an angle is returned as it is.
+    3600 directions refined by a bounded search, each named by the ``phi`` whose "+" side
+    is the weaker one (the convention of :class:`Direction`); an angle is returned as it
+    is.
 
     Examples
     --------
@@ -340,6 +369,9 @@ def resolve_direction(shape, direction) -> float:
         r = minimize_scalar(minus_uplift, bounds=(d.phi - step, d.phi + step),
                             method="bounded", options={"xatol": 1e-10})
         phi = float(r.x) if r.fun <= -d.uplift else d.phi
+        q = shape.parameters(phi)
+        if q["uplift_minus"] < q["uplift_plus"]:  # the side is "+" (Direction)
+            phi += math.pi
         return phi % (2.0 * math.pi)
     return float(direction)
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import positive
+from .._validate import check_plausible, positive, warn_implausible
 from ..errors import ParameterError
 
 
@@ -40,16 +40,35 @@ def volume_properties(vertices, faces) -> dict:
     return {"volume": volume, "com": com, "inertia": inertia}
 
 
+DENSE = 8000.0
+"""A density derived from a given mass (kg/m^3) above which a plausibility warning asks
+whether the mass and the mesh belong together (denser than steel and cast iron; a solid
+bronze or lead body is rare, a hollow statue's closed mesh gives less)."""
+
+
 def resolve_mass(volume: float, density=None, mass=None) -> tuple[float, float]:
-    """``(mass, density)`` from exactly one of them (kg/m^3 or kg)."""
+    """``(mass, density)`` from exactly one of them (kg/m^3 or kg). A density outside
+    :data:`rocking.PLAUSIBLE_LIMITS` (given, or the mass over the volume) gets a
+    :class:`~rocking.errors.UnitSlipWarning`; a mass that makes the body denser than
+    :data:`DENSE` a plausibility warning."""
     if (density is None) == (mass is None):
         raise ParameterError("give exactly one of density (kg/m^3) and mass (kg), got "
                              + ("both" if density is not None else "neither"))
     if density is not None:
         density = positive("density", density, "kg/m^3")
+        check_plausible("density", density, "density")
         return density * volume, density
     mass = positive("mass", mass, "kg")
-    return mass, mass / volume
+    rho = mass / volume
+    if check_plausible("density", rho, "the mass over the mesh's volume",
+                       shown=f"{mass:g} kg / {volume:.4g} m^3 = {rho:,.4g} kg/m^3",
+                       hint="the mesh in other units (units='mm'), or the mass not in kg?"):
+        if rho > DENSE:
+            warn_implausible(f"the mass over the mesh's volume is {mass:g} kg / "
+                             f"{volume:.4g} m^3 = {rho:,.0f} kg/m^3, denser than steel "
+                             "(7,850): is the mass that of this mesh, and the mesh to scale "
+                             "(units)?")
+    return mass, rho
 
 
 __all__ = ["resolve_mass", "volume_properties"]

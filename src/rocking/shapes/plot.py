@@ -8,13 +8,15 @@ from ..units import G
 from .directional import weakest_direction
 
 
-def plot_directional(table, *, title: str | None = None):
+def plot_directional(table, *, title: str | None = None, weakest=None):
     """A :class:`matplotlib.figure.Figure` with two polar panels against the direction of
     shaking ``phi``: the smaller critical angle ``alpha_min`` (deg) and the smaller uplift
     acceleration ``min(uplift_plus, uplift_minus)`` (g; dashed: the 3-D body's,
     ``uplift_3d``, lower where the shaking crosses a support edge obliquely), the weakest
-    direction marked (:func:`rocking.shapes.weakest_direction`). No pyplot state is
-    touched.
+    direction marked: ``weakest`` (a :class:`rocking.shapes.Direction`, e.g. the exact
+    :meth:`rocking.shapes.Shape.weakest`) or, when None, the table's
+    (:func:`rocking.shapes.weakest_direction`); named as everywhere by the ``phi`` whose
+    "+" side is the weak one. No pyplot state is touched.
 
     Examples
     --------
@@ -30,7 +32,7 @@ def plot_directional(table, *, title: str | None = None):
     """
     from matplotlib.figure import Figure
 
-    weak = weakest_direction(table)
+    weak = weakest_direction(table) if weakest is None else weakest
     order = np.argsort(table["phi"].to_numpy() % (2 * np.pi))
     phi = table["phi"].to_numpy()[order]
     alpha = np.degrees(table["alpha_min"].to_numpy()[order])

@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validate import as_float, warn_implausible
+from .._validate import PLAUSIBLE_LIMITS, as_float, check_plausible, warn_implausible
 from ..errors import ParameterError
 from ..units import G
 from .directional import Direction, side_arrays
@@ -41,8 +41,10 @@ from .mesh import count_parts, read_mesh, size_of, validated
 from .rest import rest_tolerance, resting_up
 from .support import contact_tolerance, frame, inside_margin, support_hull
 
-PLAUSIBLE_HEIGHT = 50.0
-"""A body taller than this (m) gets a warning (likely a mesh in mm read as m)."""
+PLAUSIBLE_HEIGHT = PLAUSIBLE_LIMITS["size"][1]
+"""A body larger than this (m) in any direction gets a
+:class:`~rocking.errors.UnitSlipWarning` (likely a mesh in mm read as m; the command line
+refuses it unless ``--force``): the limit of :data:`rocking.PLAUSIBLE_LIMITS`."""
 
 
 class MeshRepairWarning(UserWarning):
@@ -145,9 +147,9 @@ class Shape:
         z = v @ fr[2]
         zmin = float(z.min())
         height = float(z.max()) - zmin
-        if height > PLAUSIBLE_HEIGHT:
-            warn_implausible(f"the mesh is {height:g} m tall along up={up!r}: is it in mm? "
-                             "(units='mm')")
+        size = float(np.ptp(v, axis=0).max())
+        check_plausible("size", size, "the mesh's largest extent",
+                        shown=f"{size:.4g} m ({height:.4g} m tall along up={up!r})")
         local = np.column_stack([(v - com) @ fr[0], (v - com) @ fr[1], z - zmin])
         tol_m = contact_tolerance(tol, height)
         patch, hull2 = support_hull(local, tol_m)
@@ -462,7 +464,7 @@ def load_shape(path, *, density=None, mass=None, up="z", repair=None, tol=None,
     >>> box = load_shape("box.stl", density=2000.0)
     >>> round(box.mass, 3), round(box.h, 6)  # 2000 kg/m^3 x 0.48 m^3; h = H/2
     (960.0, 1.0)
-    >>> round(load_shape("box.stl", mass=100.0, units="cm").height, 6)  # a 2 cm box
+    >>> round(load_shape("box.stl", mass=0.001, units="cm").height, 6)  # a 2 cm box, 1 g
     0.02
     """
     import os
