@@ -113,6 +113,15 @@ point (3,), the options and the tolerances (m, m/s; ``v_up``: the speed that mar
 uplift, :mod:`rocking.models.rigid3d`), ``rim`` (3,): a cylinder's radius and its rims'
 heights from the centre of mass (radius 0: not a cylinder)."""
 
+STEP_P = 7.5e-4
+"""The default step times the body's frequency parameter ``p`` (Eq 3): the planar-limit
+convergence study (``docs/guide/rigid3d.rst``) gives a largest tilt error below 1 % of the
+amplitude over four impacts at ``h p = 7.5e-4``."""
+
+STEP_MAX = 2e-4
+"""The largest default step (s): the record's samples (5 to 10 ms) and the shortest pulses
+are resolved at least 25 times over."""
+
 STATUS_NONFINITE = 1
 """The state became non-finite."""
 
@@ -265,18 +274,30 @@ def _chol_solve(S, b, n):
 
 
 @njit(cache=True)
-def _stick(mp, n_act, rho, bias, vf, Lf, J, P, S, y, S2, lam, H, W):
+def _add_line(S, N):
+    """``S += N N^T`` (6 x 6)."""
+    for a in range(6):
+        for b in range(6):
+            S[a, b] += N[a] * N[b]
+
+
+@njit(cache=True)
+def _stick(mp, n_act, rho, bias, vf, Lf, J, P, S, y, S2, lam, H, W, N):
     """The impulses ``P`` (in place) if every contact sticks; False if the contacts do not
-    fix the body (fewer than three, or collinear). With ``H_i`` the map from the body's
-    velocity ``(v, w)`` to contact ``i``'s (``v + w x rho_i``) and ``S = sum H_i^T H_i``
-    (6 x 6): the body's velocity that stops every contact, ``U_i + bias_i e_z = 0``, is
-    ``S^-1 sum H_i^T (-bias_i e_z)`` (0 without bias); the generalized impulse ``Lam``
-    that brings the free motion there (``m dv``, ``J dw``) is spread over the contacts with
+    hold the body (fewer than two). With ``H_i`` the map from the body's velocity ``(v, w)``
+    to contact ``i``'s (``v + w x rho_i``) and ``S = sum H_i^T H_i`` (6 x 6): the body's
+    velocity that stops every contact, ``U_i + bias_i e_z = 0``, is
+    ``S^-1 sum H_i^T (-bias_i e_z)`` (0 without bias). Contacts on one line (an edge: two
+    corners) leave the rotation about it free, ``N = (rho_0 x e, e)``: ``N N^T`` is added
+    to ``S`` (which does not change the stopping velocities, ``H_i N = 0``), and the
+    velocity is the stopping one plus the rotation about the edge that keeps the momentum
+    along ``N`` (the kinetic metric's projection). The generalized impulse ``Lam`` that
+    brings the free motion there (``m dv``, ``J dw - dL``) is spread over the contacts with
     the least norm, ``P_i = H_i S^-1 Lam``. A candidate only: the caller checks it against
     the contact laws (:func:`_residual`). ``J``: the inertia tensor in the ground's frame;
-    ``S``, ``y``, ``S2``, ``lam``, ``H``, ``W``: work arrays (6, 6), (6,), (6, 6), (6,),
-    (3, 6), (n,)."""
-    if n_act < 3:
+    ``S``, ``y``, ``S2``, ``lam``, ``H``, ``W``, ``N``: work arrays (6, 6), (6,), (6, 6),
+    (6,), (3, 6), (n,), (6,)."""
+    if n_act < 2:
         return False
     for a in range(6):
         y[a] = 0.0
@@ -311,10 +332,44 @@ def _stick(mp, n_act, rho, bias, vf, Lf, J, P, S, y, S2, lam, H, W):
         for b in range(a):
             S[a, b] = S[b, a]
     for a in range(6):
+        lam[a] = y[a]
         for b in range(6):
             S2[a, b] = S[a, b]
-    if not _chol_solve(S, y, 6):
-        return False
+    line = n_act == 2 or not _chol_solve(S, y, 6)
+    if line:  # the contacts on one line: its direction e from the farthest pair
+        j = 1
+        dmax = 0.0
+        for i in range(1, n_act):
+            d = ((rho[i, 0] - rho[0, 0]) ** 2 + (rho[i, 1] - rho[0, 1]) ** 2
+                 + (rho[i, 2] - rho[0, 2]) ** 2)
+            if d > dmax:
+                dmax, j = d, i
+        if not dmax > 0.0:
+            return False
+        dl = math.sqrt(dmax)
+        ex = (rho[j, 0] - rho[0, 0]) / dl
+        ey = (rho[j, 1] - rho[0, 1]) / dl
+        ez = (rho[j, 2] - rho[0, 2]) / dl
+        rx, ry, rz = rho[0, 0], rho[0, 1], rho[0, 2]
+        N[0], N[1], N[2] = ry * ez - rz * ey, rz * ex - rx * ez, rx * ey - ry * ex
+        N[3], N[4], N[5] = ex, ey, ez
+        _add_line(S2, N)
+        for a in range(6):
+            y[a] = lam[a]
+            for b in range(6):
+                S[a, b] = S2[a, b]
+        if not _chol_solve(S, y, 6):
+            return False
+        # the rotation about the line that keeps the momentum along N
+        jx, jy, jz = _mv(J, y[3], y[4], y[5])
+        num = mp.mass * (N[0] * (vf[0] - y[0]) + N[1] * (vf[1] - y[1])
+                         + N[2] * (vf[2] - y[2])) \
+            + N[3] * (Lf[0] - jx) + N[4] * (Lf[1] - jy) + N[5] * (Lf[2] - jz)
+        jx, jy, jz = _mv(J, ex, ey, ez)
+        den = mp.mass * (N[0] ** 2 + N[1] ** 2 + N[2] ** 2) + ex * jx + ey * jy + ez * jz
+        sN = num / den
+        for a in range(6):
+            y[a] += sN * N[a]
     # the generalized impulse: m (v+ - vf), J w+ - L
     wx, wy, wz = _mv(J, y[3], y[4], y[5])
     y[0] = mp.mass * (y[0] - vf[0])
@@ -361,6 +416,8 @@ def _stick(mp, n_act, rho, bias, vf, Lf, J, P, S, y, S2, lam, H, W):
                     S[a, b] += wt * (H[0, a] * H[0, b] + H[1, a] * H[1, b]) \
                         + H[2, a] * H[2, b]
             W[i] = wt
+        if line:
+            _add_line(S, N)
         for a in range(6):
             y[a] = lam[a]
         if not _chol_solve(S, y, 6):
@@ -381,7 +438,7 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, wnn, wt, P
     place), for the free velocities ``vf`` and momentum ``Lf``: the velocity change ``dv``
     and momentum change ``dL`` (in place; ``J`` the inertia tensor in the ground's frame,
     ``Jinv`` its inverse; ``wnn``, ``wt``, ``Pw``, ``ws6`` (3, 6, 6), ``ws`` (2, 6), ``wn``
-    (n,): work arrays). With three contacts or more, the solution with every contact sticking
+    (n,): work arrays). With two contacts or more, the solution with every contact sticking
     (:func:`_stick`) is tried first: exact when it satisfies the laws (a body held still
     by its support converges slowly in Gauss-Seidel). Returns the number of sweeps (0:
     the sticking solution held; -1: not converged in ``max_iter`` sweeps, the impulses
@@ -408,11 +465,11 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, wnn, wt, P
         wt[i, 1], wt[i, 2], wt[i, 3] = w11 / det, -b_ / det, w00 / det  # W_tt^-1
         vscale += abs(bias[i])
     vscale += math.sqrt(vf[0] ** 2 + vf[1] ** 2 + vf[2] ** 2) + 1e-300
-    if n_act >= 3:  # a support that may hold the body still: try every contact sticking
+    if n_act >= 2:  # a support that may hold the body still: try every contact sticking
         for i in range(n_act):
             Pw[i, 0], Pw[i, 1], Pw[i, 2] = P[i, 0], P[i, 1], P[i, 2]
         if _stick(mp, n_act, rho, bias, vf, Lf, J, P, ws6[0], ws[0], ws6[1], ws[1],
-                  ws6[2][:3], wn):
+                  ws6[2][:3], wn, ws6[2][3]):
             _effect(mp, n_act, rho, P, dv, dL)
             if _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL) <= mp.tol * vscale:
                 return 0
@@ -767,7 +824,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         dL[0] = dL[1] = dL[2] = 0.0
         sweeps = -2
         if n_act > 0:
-            if n_act >= 3:
+            if n_act >= 2:
                 _world_inv_inertia(RM, I, J)
             sweeps = _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, wnn,
                                      wt, Pw, ws6, ws, wn)
@@ -924,8 +981,12 @@ class Rigid3dOptions(ModelOptions):
         0.0, lo=0.0, hi=1.0, lo_open=False,
         help="Newton's normal coefficient of restitution (default 0: plastic impacts, "
              "which give Housner's Eq 4 in the planar limit)")
-    step: float = option(1e-4, unit="s", lo=0.0, hi=0.01,
-                         help="time step h (s); made to divide dt_out")
+    step: float | None = option(
+        None, unit="s", lo=0.0, hi=0.01,
+        help="time step h (s; made to divide dt_out); None: STEP_P / p (p the frequency "
+             "parameter of the body's weakest direction, Eq 3), at most STEP_MAX = 2e-4 s, "
+             "which keeps max |theta| within 1 % of the classical model in the planar limit "
+             "(docs/guide/rigid3d.rst)")
     direction: float = option(0.0, unit="deg", lo=-360.0, hi=360.0, lo_open=False,
                               help="direction (deg) along which a single horizontal motion "
                                    "acts, counter-clockwise from the body's x axis")
@@ -1011,6 +1072,7 @@ class Rigid3d(Model):
     def __init__(self, block, options=None):
         super().__init__(block, options)
         self._geom = self._geometry()  # the hull, once (kernel_params changes nothing)
+        self._p = None
         self._rim = np.zeros(3)
         cyl = cylinder_of(self.block)
         if cyl is not None:
@@ -1059,6 +1121,17 @@ class Rigid3d(Model):
         base_point = np.array([cx, cy, -shape.h])
         return verts, is_base, base_point
 
+    def default_step(self) -> float:
+        """The step (s): the option ``step``, or ``STEP_P / p`` (``p`` of the weakest
+        direction) at most ``STEP_MAX`` (before it is made to divide ``dt_out``)."""
+        if self.options.step is not None:
+            return float(self.options.step)
+        if self._p is None:
+            shape = self.block
+            p = shape.parameters(shape.weakest().phi)["p_plus"]
+            self._p = float(p)
+        return min(STEP_MAX, STEP_P / self._p)
+
     def size(self) -> float:
         """The body's size (m): the largest distance between two hull vertices."""
         return self._size
@@ -1067,7 +1140,7 @@ class Rigid3d(Model):
         o = self.options
         verts, is_base, base_point = self._geom
         inertia = np.array(self.block.inertia_local, dtype=np.float64)
-        n = max(1, int(math.ceil(dt_out / o.step - 1e-9)))
+        n = max(1, int(math.ceil(dt_out / self.default_step() - 1e-9)))
         size = self.size()
         return Rigid3dParams(
             float(self.block.mass), inertia, np.linalg.inv(inertia), verts, is_base,
