@@ -1162,11 +1162,10 @@ class Rigid3d(Model):
             raise ParameterError("state0: the quaternion q0..q3 must not be zero")
         y = y.copy()
         y[3:7] /= qn
-        verts = self._geom[0]
         from scipy.spatial.transform import Rotation
 
         R = Rotation.from_quat([y[4], y[5], y[6], y[3]]).as_matrix()
-        zmin = float(np.min(y[2] + verts @ R[2]))
+        zmin = lowest(self.block, y[2], R)
         if zmin < -1e-6 * self.size():
             raise ParameterError(f"state0: the body is {-zmin:.3g} m below the ground")
         return y
@@ -1216,6 +1215,19 @@ def cylinder_of(shape):
     return None
 
 
+def lowest(shape, z, R) -> float:
+    """The height (m) of the lowest point of ``shape`` with its centre of mass at height
+    ``z`` and turned by the rotation matrix ``R`` (a cylinder's rims exactly, else the
+    hull's vertices)."""
+    cyl = cylinder_of(shape)
+    if cyl is not None:
+        r, height = cyl
+        tilt = math.hypot(R[2, 0], R[2, 1])
+        return z + min(-shape.h * R[2, 2], (height - shape.h) * R[2, 2]) - r * tilt
+    pts = np.asarray(shape.hull_points()) - np.array([0.0, 0.0, shape.h])
+    return float(np.min(z + pts @ R[2]))
+
+
 def polygon_centroid(xy) -> tuple[float, float]:
     """The area centroid of a counter-clockwise polygon (k, 2) (its vertex if k < 3)."""
     xy = np.asarray(xy, dtype=np.float64)
@@ -1247,14 +1259,18 @@ def rest_state(shape, tilt0: float = 0.0, direction: float = 0.0) -> np.ndarray:
     half = 0.5 * abs(tilt0)
     q = np.array([math.cos(half), *(math.sin(half) * axis)])
     pts = np.asarray(shape.hull_points()) - np.array([0.0, 0.0, shape.h])
-    base = pts[pts[:, 2] <= -shape.h + shape.tol]
-    pivot = base[np.argmin(base @ (sign * ed))]  # the support's extreme point towards -sign e_d
+    cyl = cylinder_of(shape)
+    if cyl is not None:  # the rim's exact point
+        pivot = np.array([-sign * cyl[0] * c, -sign * cyl[0] * s, -shape.h])
+    else:
+        base = pts[pts[:, 2] <= -shape.h + shape.tol]
+        pivot = base[np.argmin(base @ (sign * ed))]  # the support's extreme point there
     from scipy.spatial.transform import Rotation
 
     R = Rotation.from_quat([q[1], q[2], q[3], q[0]]).as_matrix()
     # the pivot stays where it was: com + R pivot = pivot0 = (0, 0, h) + pivot
     com = np.array([0.0, 0.0, shape.h]) + pivot - R @ pivot
-    com[2] -= float(np.min(com[2] + pts @ R[2]))  # the lowest point on the ground
+    com[2] -= lowest(shape, com[2], R)  # the lowest point on the ground
     y[:3] = com
     y[3:7] = q
     return y
