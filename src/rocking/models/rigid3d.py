@@ -467,8 +467,9 @@ def _stick_set(mp, m, rho_s, bias_s, vf, Lf, Jinv, J, P_s, ws6, ws, wn, N):
 def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, wn, N, sub):
     """Active-set polishing of a Gauss-Seidel iterate ``P``: the contacts it loads
     (``P_n > 0``) all sticking (:func:`_stick`; one contact: its 3 x 3 Delassus block),
-    the others free. Where that satisfies every contact's laws to ``tol`` it is a
-    solution, exact: ``P``, ``dv``, ``dL`` are set to it (True). A body that starts to
+    the others free, dropping the one that pulls most until none pulls. Where that
+    satisfies every contact's laws to ``tol`` it is a solution, exact: ``P``, ``dv``,
+    ``dL`` are set to it (True). A body that starts to
     rock on the edge of a base of many vertices is solved so; Gauss-Seidel alone spends
     thousands of sweeps on the unloaded ones. ``sub``: the work arrays (rho, bias, P,
     candidate P, index, dv, dL)."""
@@ -482,22 +483,23 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
             m += 1
     if m == 0 or m == n_act:
         return False
-    for _ in range(4):  # drop the contacts that pull, and solve again
+    for _ in range(n_act):  # drop the contact that pulls most, and solve again
         if not _stick_set(mp, m, rho_s, bias_s, vf, Lf, Jinv, J, P_s, ws6, ws, wn, N):
             return False
-        k = 0
+        worst = -1
         for c in range(m):
-            if P_s[c, 2] >= 0.0:
-                sidx[k] = sidx[c]
-                rho_s[k, 0], rho_s[k, 1], rho_s[k, 2] = rho_s[c, 0], rho_s[c, 1], rho_s[c, 2]
-                bias_s[k] = bias_s[c]
-                P_s[k, 0], P_s[k, 1], P_s[k, 2] = P_s[c, 0], P_s[c, 1], P_s[c, 2]
-                k += 1
-        if k == m:
+            if P_s[c, 2] < 0.0 and (worst < 0 or P_s[c, 2] < P_s[worst, 2]):
+                worst = c
+        if worst < 0:
             break
-        if k == 0:
+        if m == 1:
             return False
-        m = k
+        m -= 1
+        for c in range(worst, m):
+            sidx[c] = sidx[c + 1]
+            rho_s[c, 0], rho_s[c, 1], rho_s[c, 2] = rho_s[c + 1, 0], rho_s[c + 1, 1], \
+                rho_s[c + 1, 2]
+            bias_s[c] = bias_s[c + 1]
     for i in range(n_act):
         Pc[i, 0] = Pc[i, 1] = Pc[i, 2] = 0.0
     for c in range(m):
