@@ -15,8 +15,15 @@ contact candidate), so the error in alpha is the polygon's own, ``alpha_n`` of t
 direction against the circle's ``atan(r / h)``, listed beside the exact cylinder
 (``Shape.cylinder``: its rims are exact, 8 candidates whatever the drawing's segments).
 
-Run: ``python benchmarks/bench_rigid3d.py [--quick]`` (``--quick``: 2 s of record, fewer
-prisms; every section).
+Convergence (``--convergence PNG``, not in ``--quick``): the planar limit against the
+classical model (box 0.25 x 0.5 x 1 m, friction 2, restitution 0): the largest tilt error
+of free rocking from alpha / 2 (2 s, four impacts) and of a sine along x at 1.5 g
+tan(alpha) (1.5 s) relative to the amplitude, the first impact's ratio against Eq 4, and
+the exact cylinder's against its closed form, for steps from 1 ms to 25 us; the table and
+the figure of ``docs/guide/rigid3d.rst``.
+
+Run: ``python benchmarks/bench_rigid3d.py [--quick] [--convergence PNG]`` (``--quick``:
+2 s of record, fewer prisms; every section).
 """
 
 from __future__ import annotations
@@ -25,6 +32,8 @@ import argparse
 import math
 import time
 import warnings
+
+import numpy as np
 
 import rocking
 from rocking.models.rigid3d import Rigid3d
@@ -56,10 +65,81 @@ def row(name, body, motion, duration, repeat=3):
     return s * 20.0 / duration
 
 
+def tilt_of(states):
+    q = states[:, 3:7]
+    return 2.0 * np.arcsin(np.clip(np.hypot(q[:, 1], q[:, 2]), 0.0, 1.0))
+
+
+def convergence(png):
+    """The planar-limit convergence table, and its figure in ``png``."""
+    from rocking import G
+    from rocking.models.rigid3d import STEP_P
+    from rocking.motions import Sine
+
+    box = Shape.box(0.25, 0.5, 1.0, density=2500.0)
+    blk = rocking.Block.rectangular(width=0.25, height=1.0)
+    th0 = 0.5 * blk.alpha
+    free = rocking.simulate(blk, None, model="housner", duration=2.0, theta0=th0,
+                            dt_out=1e-3)
+    sine = Sine.from_acceleration(2.0, 1.5 * G * math.tan(blk.alpha), 1.5)
+    forced = rocking.simulate(blk, sine, model="housner", duration=1.5, dt_out=1e-3)
+    r_, height = 0.2, 1.2
+    cyl = Shape.cylinder(r_, height, density=2500.0)
+    hc = 0.5 * height
+    mu_cyl = 1 - 2 * r_**2 / (5 * r_**2 / 4 + 4 * hc**2 / 3)
+    kw = {"model": "rigid3d", "friction": 2.0}
+    steps = (1e-3, 5e-4, 2.5e-4, 2e-4, 1e-4, 5e-5, 2.5e-5)
+    rows = []
+    print("== convergence in the planar limit (box 0.25 x 0.5 x 1 m; cylinder r 0.2 m, "
+          "H 1.2 m)")
+    print(f"  {'h (s)':>8} {'h p':>8} {'free':>9} {'forced':>9} {'Eq 4':>9} {'cylinder':>9}"
+          "   (largest tilt error / amplitude; |ratio - closed form|)")
+    for h in steps:
+        a = rocking.simulate(box, None, duration=2.0, tilt0=th0, dt_out=1e-3, step=h, **kw)
+        e_free = np.max(np.abs(tilt_of(a.states) - np.abs(free.theta))) / th0
+        b = rocking.simulate(box, sine, duration=1.5, dt_out=1e-3, step=h, **kw)
+        e_forced = (np.max(np.abs(tilt_of(b.states) - np.abs(forced.theta)))
+                    / forced.max_abs_theta)
+        ratios = []
+        for body, t0, mu in ((box, th0, blk.mu), (cyl, 0.5 * math.atan(r_ / hc), mu_cyl)):
+            c = rocking.simulate(body, None, duration=0.6, tilt0=t0, dt_out=h, step=h, **kw)
+            k = int(round(c.impact_times[0] / h))
+            ratios.append(abs(c.states[k, 11] / c.states[k - 1, 11] - mu))
+        rows.append((h, e_free, e_forced, *ratios))
+        print(f"  {h:8.2g} {h * blk.p:8.2g} {e_free:9.2e} {e_forced:9.2e} {ratios[0]:9.2e}"
+              f" {ratios[1]:9.2e}")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    arr = np.array(rows)
+    fig, ax = plt.subplots(figsize=(6.4, 4.2), constrained_layout=True)
+    for j, label in enumerate(("free rocking: max tilt error / amplitude",
+                               "forced (sine 1.5 g tan alpha): max error / amplitude",
+                               "box impact ratio - Eq 4",
+                               "cylinder impact ratio - closed form"), start=1):
+        ax.loglog(arr[:, 0], arr[:, j], "o-", label=label)
+    ax.loglog(arr[:, 0], arr[:, 0] * (arr[-1, 1] / arr[-1, 0]), "k:", label="slope 1")
+    h_def = STEP_P / blk.p
+    ax.axvline(h_def, color="grey", lw=0.8)
+    ax.axhline(0.01, color="grey", lw=0.8, ls="--")
+    ax.text(h_def, 3e-2, " default step\n (7.5e-4 / p)", fontsize=8, color="grey")
+    ax.set_xlabel("time step h (s)")
+    ax.set_ylabel("error")
+    ax.set_title("rigid3d against the classical model (planar limit)", fontsize=10)
+    ax.legend(fontsize=7, loc="lower right")
+    fig.savefig(png, dpi=110)
+    print(f"  figure: {png}")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="2 s of record, fewer prisms")
+    ap.add_argument("--convergence", metavar="PNG", help="the convergence study's figure")
     args = ap.parse_args(argv)
+    if args.convergence and not args.quick:
+        convergence(args.convergence)
     duration = 2.0 if args.quick else 20.0
     repeat = 1 if args.quick else 3
     pair = HorizontalPair.builtin("rinaldi")

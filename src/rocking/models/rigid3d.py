@@ -8,7 +8,10 @@ The body is a :class:`rocking.shapes.Shape` (a mesh; :meth:`rocking.shapes.Shape
 box); its contact points are the vertices of its convex hull (a box: its 8 corners), which
 is exact for a convex polyhedron on a plane (a plane touches a convex polyhedron at a
 vertex, an edge or a face, and the forces on an edge or a face are equivalent to forces at
-its vertices). A rectangular :class:`rocking.Block` with its ``width``, ``height`` (and
+its vertices). A :meth:`rocking.shapes.Shape.cylinder` is exact: its contact candidates
+are computed on its two rims each step (:func:`_rim_points`: the lowest point, the
+opposite one and the two between; flat on its base, turned to the horizontal load). A
+rectangular :class:`rocking.Block` with its ``width``, ``height`` (and
 ``thickness``: the depth; its width if not given) is taken as that box.
 
 Frame: the ground's frame, which translates with the ground (it never rotates): ``x``, ``y``
@@ -22,9 +25,11 @@ the quaternion ``q0..q3`` (body to ground; 1, 0, 0, 0 at rest), ``vx, vy, vz`` t
 of mass's velocity relative to the ground (m/s) and ``wx, wy, wz`` the angular velocity in
 the body's frame (rad/s).
 
-Scheme (Moreau-Jean, midpoint, fixed step ``h``; Jean 1999, "The non-smooth contact
-dynamics method", Comput. Methods Appl. Mech. Engrg. 177:235-257; Acary and Brogliato
-2008, "Numerical methods for nonsmooth dynamical systems", Ch. 10). With ``L = R I w`` the
+Scheme (Moreau-Jean, midpoint, fixed step ``h``: by default ``STEP_P / p``, at most
+``STEP_MAX``, from the planar-limit convergence study of ``docs/guide/rigid3d.rst``; Jean
+1999, "The non-smooth contact dynamics method", Comput. Methods Appl. Mech. Engrg.
+177:235-257; Acary and Brogliato 2008, "Numerical methods for nonsmooth dynamical
+systems", Ch. 10). With ``L = R I w`` the
 angular momentum about the centre of mass in the ground's frame (``R`` the rotation of the
 quaternion, ``I`` the inertia tensor in the body's frame):
 
@@ -41,7 +46,13 @@ quaternion, ``I`` the inertia tensor in the body's frame):
    impulse by its diagonal Delassus term, the tangential one by a projected gradient step
    on the disc ``|P_t| <= mu P_n``, whose fixed points are exactly Coulomb's law), warm
    started from the previous step's impulses, until the contact laws hold in velocity to
-   ``tol`` times the free velocity;
+   ``tol`` times the free velocity. Exact shortcuts, each taken only where it satisfies
+   every contact law: every contact sticking (:func:`_stick`: one 6 x 6 solve; an edge
+   keeps its rotation), tried first; the iterate's loaded contacts sticking alone
+   (:func:`_polish`, an active set), every 25 sweeps; a body at rest skips the step while
+   its support holds it (:func:`_holds`: the centre of pressure inside the contacts' hull,
+   the load inside the friction cone; necessary and sufficient on a plane). The contact
+   candidates are the vertices within reach of the ground (:func:`_candidates`).
 4. end: ``x+ = x_M + h/2 v+``, ``q+ = q_M exp(h/2 w+)`` with ``w+ = R_M^T J_M^-1 L+``
    (the quaternion renormalised), and the state's ``w = I^-1 R+^T L+``.
 
