@@ -1177,7 +1177,8 @@ class Rigid3d(Model):
     def __init__(self, block, options=None):
         super().__init__(block, options)
         self._geom = self._geometry()  # the hull, once (kernel_params changes nothing)
-        self._p = None
+        # p of the weakest direction (Eq 3), for the default step
+        self._p = float(self.block.parameters(self.block.weakest().phi)["p_plus"])
         self._rim = np.zeros(3)
         cyl = cylinder_of(self.block)
         if cyl is not None:
@@ -1231,10 +1232,6 @@ class Rigid3d(Model):
         direction) at most ``STEP_MAX`` (before it is made to divide ``dt_out``)."""
         if self.options.step is not None:
             return float(self.options.step)
-        if self._p is None:
-            shape = self.block
-            p = shape.parameters(shape.weakest().phi)["p_plus"]
-            self._p = float(p)
         return min(STEP_MAX, STEP_P / self._p)
 
     def size(self) -> float:
