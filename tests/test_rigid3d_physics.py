@@ -271,3 +271,39 @@ def test_cylinder_kernel_matches_the_plain_reference(cylinder):
     want = reference.simulate(mp, lambda t: K.ground_acc3(*spec, t), r.states[0], duration)
     np.testing.assert_allclose(r.states, want, rtol=0, atol=1e-9)
     assert np.ptp(r.states[:, 12]) > 0.1 and r.unconverged_steps == 0  # it wobbled
+
+
+def test_rest_hands_over_at_the_friction_limit():
+    """A squat box at rest under a slow horizontal ramp (friction 0.3) starts to slide when
+    the ramp reaches friction x g (the at-rest shortcut hands the step back exactly there),
+    then with the relative acceleration -(a - friction g), without rocking. (The onset of
+    slip on four corners is where Gauss-Seidel converges slowly: a few steps there miss
+    tol at max_iter 2000, none at 20000 with tol 1e-7; the motion is the closed form.)"""
+    squat = Shape.box(1.0, 0.8, 0.2, density=2500.0)
+    mu, dt, duration = 0.3, 1e-3, 1.0
+    t = np.arange(0.0, duration + dt, dt)
+    slope = 1.5 * mu * G / duration
+    r = rocking.simulate(squat, Record(slope * t, dt, name="ramp"), model="rigid3d",
+                         duration=duration, friction=mu, dt_out=0.01, direction=40.0)
+    assert slope * r.uplift_time == pytest.approx(mu * G, rel=2e-3)
+    t_s = mu * G / slope  # x'' = -(slope t - mu g) after t_s
+    s = np.where(r.t > t_s, -slope * (r.t - t_s) ** 3 / 6.0, 0.0)
+    d = math.radians(40.0)
+    np.testing.assert_allclose(r.states[:, 0], s * math.cos(d), atol=2e-6)
+    np.testing.assert_allclose(r.states[:, 1], s * math.sin(d), atol=2e-6)
+    assert r.max_tilt < 1e-12 and r.unconverged_steps <= 3
+
+
+def test_vertical_pulse_beyond_g_lifts_the_body_off():
+    """At rest on the ground, a downward ground pulse of 1.5 g: the body leaves the ground
+    at once and, relative to it, rises at 0.5 g with no rotation (its momentum follows the
+    uniform field, its angular momentum stays 0)."""
+    from rocking.motions import GroundMotion, Rectangular
+
+    body = Shape.box(0.4, 0.3, 0.6, density=2000.0)
+    motion = GroundMotion(Rectangular(0.0, 1.0), -Rectangular(1.5 * G, 0.2))
+    r = rocking.simulate(body, motion, model="rigid3d", duration=0.2, dt_out=0.01)
+    assert r.lifted_off and r.lift_off_time < 0.01
+    np.testing.assert_allclose(r.states[:, 9], 0.5 * G * r.t, atol=1e-9)
+    np.testing.assert_allclose(r.states[:, 2] - body.h, 0.25 * G * r.t**2, atol=1e-9)
+    assert np.max(np.abs(r.states[:, 10:])) < 1e-12 and r.max_tilt < 1e-12
