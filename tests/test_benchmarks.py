@@ -40,6 +40,7 @@ LAST = {
     "bench_import.py": "import rocking; rocking.simulate",
     "bench_motions.py": "pyrotd",
     "bench_overturning.py": "mavroeidis_papageorgiou ",
+    "bench_rigid3d.py": "cost per hull vertex",
     "bench_selection.py": "(goal < 5 s)",
     "bench_shapes.py": "total (goal < 2 s)",
     "bench_step_loop.py": "min..max of pairs",

@@ -16,7 +16,8 @@ base at z = 0: the centre of mass is at ``(0, 0, h)``), ``inertia_local`` (the i
 tensor in the frame), ``h`` (the centre of mass's height above the base), ``height``,
 ``support`` (the contact patch's convex hull, (k, 2), counter-clockwise, in the frame's
 horizontal coordinates relative to the centre of mass's vertical), ``support_area``,
-``contact_points`` (the patch's size), ``tol`` (m), ``repaired`` (the convex hull was used).
+``contact_points`` (the patch's size), ``tol`` (m), ``repaired`` (the convex hull was used),
+``primitive`` (an exact body the mesh stands for: ``("cylinder", r, H)``; else None).
 
 Per direction: :func:`rocking.shapes.directional_parameters` (the table),
 :meth:`Shape.parameters` (one direction as a dict), :meth:`rocking.Block.from_shape` (the
@@ -100,6 +101,7 @@ class Shape:
     name: str = ""
     repaired: bool = False
     source: str | None = None
+    primitive: tuple | None = None
     _hull: list = field(default_factory=list, init=False, repr=False)
 
     # ------------------------------------------------------------------ constructors
@@ -216,27 +218,28 @@ class Shape:
         return cls.from_arrays(v, f, density=density, mass=mass, name=name)
 
     @classmethod
-    def cylinder(cls, radius, height, *, segments=64, density=None, mass=None,
+    def cylinder(cls, radius, height, *, density=None, mass=None, segments=64,
                  name="cylinder") -> Shape:
-        """A circular cylinder standing on an end, as the regular prism of ``segments``
-        sides inscribed in it (its mass properties are the prism's, exact: the volume is
-        ``n/2 r^2 sin(2 pi/n) H``, ``I_zz = m r^2 (2 + cos(2 pi/n)) / 6``; both tend to the
-        cylinder's, ``pi r^2 H`` and ``m r^2 / 2``, as ``1 - O(n^-2)``). Exactly one of
-        ``density`` (kg/m^3) and ``mass`` (kg).
+        """A circular cylinder of ``radius`` and ``height`` (m) standing on an end, exact:
+        its mass properties are the cylinder's, ``V = pi r^2 H``, ``I_zz = m r^2 / 2``,
+        ``I_xx = I_yy = m (3 r^2 + H^2) / 12``, and :mod:`rocking.models.rigid3d` touches
+        the ground with its rims' exact lowest points (``primitive = ("cylinder", r, H)``).
+        The mesh, the regular prism of ``segments`` sides inscribed in it, is for drawing
+        and for the planar analyses (its support is that polygon: within ``1 - cos(pi /
+        segments)`` of the circle). Exactly one of ``density`` (kg/m^3) and ``mass`` (kg).
 
         Examples
         --------
         >>> import math
         >>> from rocking.shapes import Shape
-        >>> c = Shape.cylinder(0.3, 1.0, segments=128, mass=100.0)
-        >>> izz = 100.0 * 0.3**2 * (2 + math.cos(2 * math.pi / 128)) / 6  # the prism's
-        >>> bool(abs(c.inertia_local[2, 2] / izz - 1) < 1e-12), round(c.h, 6)
-        (True, 0.5)
-        >>> round(float(c.inertia_local[2, 2]) / (100.0 * 0.3**2 / 2), 4)  # the cylinder's
-        0.9996
-        >>> len(c.hull_points()), c.contact_points  # the rims; the base's rim and centre
-        (256, 129)
+        >>> c = Shape.cylinder(0.3, 1.0, mass=100.0)
+        >>> c.primitive, round(c.volume / (math.pi * 0.3**2), 12), round(c.h, 12)
+        (('cylinder', 0.3, 1.0), 1.0, 0.5)
+        >>> np.round(np.diag(c.inertia_local), 10).tolist()  # m(3r^2+H^2)/12, ..., m r^2/2
+        [10.5833333333, 10.5833333333, 4.5]
         """
+        import dataclasses
+
         from .._validate import as_int, positive
 
         r = positive("radius", radius, "m")
@@ -252,7 +255,16 @@ class Shape:
         for i in range(n):
             j = (i + 1) % n
             f += [[bot, j, i], [top, n + i, n + j], [i, j, n + j], [i, n + j, n + i]]
-        return cls.from_arrays(v, np.array(f), density=density, mass=mass, name=name)
+        prism = cls.from_arrays(v, np.array(f), density=1.0, name=name)
+        volume = math.pi * r * r * c
+        m, rho = resolve_mass(volume, density, mass)
+        inertia = np.diag([m * (3 * r * r + c * c) / 12, m * (3 * r * r + c * c) / 12,
+                           m * r * r / 2])
+        return dataclasses.replace(
+            prism, mass=float(m), density=float(rho), volume=volume,
+            com=np.array([0.0, 0.0, 0.5 * c]), inertia=inertia,
+            inertia_local=prism.frame @ inertia @ prism.frame.T, h=0.5 * c,
+            primitive=("cylinder", r, c))
 
     def __post_init__(self):
         for name in ("vertices", "faces", "com", "inertia", "frame", "local_vertices",

@@ -88,6 +88,33 @@ def solve_contacts(W, u_free, bias, mu, P0, tol, max_iter, vscale, trace=None):
     return P
 
 
+def rim_points(mp, R, a, dirb):
+    """A cylinder's contact candidates (8, 3) in the body's frame (the scheme of
+    :func:`rocking.models.rigid3d._rim_points`, derived in the ground's frame): on each
+    rim, the point nearest the ground (the rim's centre minus r times the downward vertical
+    projected on the rim's plane), the opposite one and the two between; flat on the base
+    (the rim's height varies by less than ``gap_tol``), the direction of the horizontal
+    inertial load ``-a`` (``dirb``: the last direction, a list of 2 kept in place)."""
+    r, zb, zt = mp.rim
+    axis = R[:, 2]
+    down = np.array([0.0, 0.0, -1.0])
+    d = down - (down @ axis) * axis  # the steepest descent in the rim's plane
+    if 2.0 * r * np.linalg.norm(d) <= mp.gap_tol:
+        load = -np.array([a[0], a[1], 0.0])
+        dl = R.T @ load
+        if np.hypot(dl[0], dl[1]) > 0.0:
+            dirb[:] = dl[:2] / np.hypot(dl[0], dl[1])
+        elif np.linalg.norm(d) > 0.0:
+            db = R.T @ d
+            dirb[:] = db[:2] / np.hypot(db[0], db[1])
+    else:
+        db = R.T @ d
+        dirb[:] = db[:2] / np.hypot(db[0], db[1])
+    c, s = r * dirb[0], r * dirb[1]
+    ring = [(c, s), (-c, -s), (-s, c), (s, -c)]
+    return np.array([(x, y, z) for z in (zb, zt) for x, y in ring])
+
+
 def simulate(mp, accel, y0, t_end, trace=None):
     """The states (steps + 1, 13) of a run of ``t_end`` (s) with the kernel parameters ``mp``
     (:class:`rocking.models.rigid3d.Rigid3dParams`) under the ground acceleration
@@ -97,6 +124,8 @@ def simulate(mp, accel, y0, t_end, trace=None):
     m = mp.mass
     I = np.asarray(mp.inertia)
     Iinv = np.asarray(mp.inv_inertia)
+    cyl = mp.rim[0] > 0.0
+    dirb = [1.0, 0.0]
     verts = np.asarray(mp.verts)
     nv = len(verts)
     x = np.array(y0[0:3], dtype=float)
@@ -118,6 +147,8 @@ def simulate(mp, accel, y0, t_end, trace=None):
         Jinv = RM @ Iinv @ RM.T
         w_w = Jinv @ L
         f = np.array([-a[0], -a[1], -(G + a[2])])
+        if cyl:
+            verts = rim_points(mp, RM, a, dirb)
         vf = v + h * f
         act, rho, bias = [], [], []
         now = np.zeros(nv, bool)
