@@ -255,7 +255,8 @@ class Shape:
         for i in range(n):
             j = (i + 1) % n
             f += [[bot, j, i], [top, n + i, n + j], [i, j, n + j], [i, n + j, n + i]]
-        prism = cls.from_arrays(v, np.array(f), density=1.0, name=name)
+        prism = cls.from_arrays(v, np.array(f), density=1000.0,
+                                 name=name)  # its mass properties are replaced below
         volume = math.pi * r * r * c
         m, rho = resolve_mass(volume, density, mass)
         inertia = np.diag([m * (3 * r * r + c * c) / 12, m * (3 * r * r + c * c) / 12,
