@@ -176,6 +176,27 @@ def test_failed_runs_are_excluded_and_counted(tmp_path):
     assert fa["median"] == pytest.approx(fb["median"], rel=1e-12)
 
 
+def test_planar_runs_that_left_the_ground_are_neither_survivors_nor_overturns(tmp_path):
+    """A planar model stops a run where g + a_v <= 0 (lifted_off), which it cannot
+    represent: counting such runs as survivors would make the fragility unsafe. They are
+    left out of every count and fit, as failed runs are, and the note says why."""
+    t = _synthetic(3.0, 0.4, seed=6)
+    t["lifted_off"] = False
+    strong = t["im"] > 6.0  # the strong levels, where a vertical component exceeds g
+    lift = strong & (np.random.default_rng(7).random(len(t)) < 0.5)
+    t.loc[lift, "lifted_off"] = True
+    t.loc[lift, "overturned"] = False  # the stopped run neither overturned nor survived
+    t.loc[lift, "damage_state"] = 0
+    a = report(t, _manifest(), tmp_path / "a")
+    b = report(t[~lift].reset_index(drop=True), _manifest(), tmp_path / "b")
+    cols = ["level", "n", "n_overturned", "p_overturn"]
+    pd.testing.assert_frame_equal(a["p_overturn"][cols], b["p_overturn"][cols])
+    fa, fb = (r["fragility"].iloc[0] for r in (a, b))
+    assert fa["median"] == pytest.approx(fb["median"], rel=1e-12)
+    assert f"{int(lift.sum())} of {len(t)} runs of a planar model left the ground" in (
+        tmp_path / "a" / "report.md").read_text()
+
+
 def test_without_im_scaling_the_im_is_the_pga_of_each_run(tmp_path):
     t = _synthetic(3.0, 0.4, seed=5).drop(columns="im")
     t["pga"] = t["pga"] * np.exp(0.05 * np.random.default_rng(6).standard_normal(len(t)))

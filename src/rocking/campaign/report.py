@@ -56,7 +56,10 @@ The IM is the table's ``im`` column when the campaign scaled its motions to inte
 levels (name and unit from ``manifest["im"]``, so every run of a level has the same IM),
 else the PGA of each run as run (``pga``, m/s^2): the points of a level are then drawn at
 the median PGA of its runs, while the fit uses each run's own PGA. Runs with a non-zero
-``status`` (numerical failure) are left out of every count and fit, and counted. Runs
+``status`` (numerical failure) are left out of every count and fit, and counted; so are
+the runs a planar model stopped because the block left the ground (``lifted_off``: the
+vertical acceleration exceeded g, which a planar model cannot represent; ``status``
+:data:`STATUS_LIFTED_OFF` in the report's table), neither overturned nor survived. Runs
 still rocking when they ended (``settled`` false: neither at rest nor overturned at the
 spec's ``duration``, or ``max_free_time`` after their motion) are counted as survivors,
 with the max|theta|/alpha they reached, and flagged: their number is in ``report.md``, in
@@ -157,6 +160,11 @@ _FIT_ERRORS = (ParameterError, SimulationError, ValueError, np.linalg.LinAlgErro
 
 # --------------------------------------------------------------------------- input
 
+STATUS_LIFTED_OFF = 90
+"""The ``status`` the report gives a planar run stopped at lift-off (``lifted_off``): left
+out of every count and fit, and counted."""
+
+
 def _check(table, manifest) -> tuple[pd.DataFrame, dict, tuple]:
     """The table with typed columns, the IM ``{"name", "unit", "column"}``, thresholds."""
     if not isinstance(manifest, Mapping):
@@ -190,6 +198,13 @@ def _check(table, manifest) -> tuple[pd.DataFrame, dict, tuple]:
             if not t[col].isin([0, 1, True, False]).all():
                 raise ParameterError(f"table: column {col} must be boolean")
             t[col] = t[col].astype(bool)
+    if "lifted_off" in t.columns and "model" in t.columns:
+        # a planar model stops a run where the block leaves the ground (g + a_v <= 0), which
+        # it cannot represent: neither overturned nor survived, so it is left out of every
+        # count and fit, as a failed run is, and counted (a 3-D model follows the flight)
+        planar = t["model"].map(lambda m: bool(MODELS[m].tags.get("planar", True))
+                                if m in MODELS else True)
+        t.loc[t["lifted_off"] & planar & (t["status"] == 0), "status"] = STATUS_LIFTED_OFF
     thresholds = manifest.get("thresholds")
     thresholds = tuple(DEFAULT_THRESHOLDS if thresholds is None else
                        (float(v) for v in thresholds))
@@ -1212,11 +1227,17 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     out.mkdir(parents=True, exist_ok=True)
     failed = t["status"] != 0
     n_excl = int(failed.sum())
+    n_lift = int((t["status"] == STATUS_LIFTED_OFF).sum())
     run_lines, run_alerts, run_counts = _run_counts(t)
     notes = []
-    if n_excl:
-        notes.append(f"{n_excl} of {len(t)} runs failed numerically (status != 0) and are "
-                     "excluded")
+    if n_excl - n_lift:
+        notes.append(f"{n_excl - n_lift} of {len(t)} runs failed numerically (status != 0) "
+                     "and are excluded")
+    if n_lift:
+        notes.append(f"{n_lift} of {len(t)} runs of a planar model left the ground (the "
+                     "vertical acceleration exceeded g: lifted_off), which the planar model "
+                     "cannot represent; they are neither overturned nor survived and are "
+                     "excluded from every count and fit (model='rigid3d' follows the flight)")
     po_parts, fr_rows, pel_rows, by_model, risk_rows = [], [], [], {}, []
     any_stopped = bool(_stopped(t[~failed]).any())  # p_overturn.csv: n_clearance_exceeded
     floor = [c for c in ("floor", "height_ratio") if c in t.columns]
