@@ -1101,7 +1101,8 @@ def lognormal_risks(median, beta, curve: HazardCurve, *, factor: float = 1.0,
     z = z_lo[:, None] + (10.0 - z_lo)[:, None] * t[None, :]
     u = np.log(med / factor)[:, None] + beta[:, None] * z
     logf = _log_rates(curve, u, score) - 0.5 * z * z - 0.5 * math.log(2.0 * math.pi)
-    return np.trapezoid(np.exp(logf), z, axis=1)
+    with np.errstate(over="ignore"):  # a degenerate bootstrap draw: an infinite rate
+        return np.trapezoid(np.exp(logf), z, axis=1)
 
 
 def risk_interval(fit, curve: HazardCurve, *, level: float = INTERVAL_LEVEL, seed=0,
