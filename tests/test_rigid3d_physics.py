@@ -307,3 +307,28 @@ def test_vertical_pulse_beyond_g_lifts_the_body_off():
     np.testing.assert_allclose(r.states[:, 9], 0.5 * G * r.t, atol=1e-9)
     np.testing.assert_allclose(r.states[:, 2] - body.h, 0.25 * G * r.t**2, atol=1e-9)
     assert np.max(np.abs(r.states[:, 10:])) < 1e-12 and r.max_tilt < 1e-12
+
+
+def _bevelled_box():
+    """A box with 45-degree-ish bevels at its base: base +-0.1 m, the bevel rising to
+    +-0.15 m at 5 mm, 0.4 m deep, 1 m tall (the bevel touches at a tilt of atan(5/50))."""
+    from rocking.shapes.mesh import convex_hull
+
+    sec = [(-0.1, 0.0), (0.1, 0.0), (0.15, 0.005), (0.15, 1.0), (-0.15, 1.0), (-0.15, 0.005)]
+    v, f = convex_hull(np.array([(x, y, z) for y in (-0.2, 0.2) for x, z in sec]))
+    return Shape.from_arrays(v, f, density=2000.0)
+
+
+def test_landing_on_a_bevel_is_not_an_overturn():
+    """The overturn rule (issue 30: the tilt reached pi/2, or the body came to rest on
+    another face): a vertex off the base that touches while the body rocks over its base,
+    the bevel, does not stop the run; the body rocks on and lands back; a larger pulse
+    overturns it for real (tilt pi/2)."""
+    from rocking.motions.pulses import OneSine
+
+    body = _bevelled_box()
+    bevel = math.atan2(0.005, 0.05)
+    r = rocking.simulate(body, OneSine(0.3 * G, 0.5), model="rigid3d")
+    assert r.max_tilt > bevel and not r.overturned and r.settled
+    r = rocking.simulate(body, OneSine(0.8 * G, 0.5), model="rigid3d")
+    assert r.overturned and r.max_tilt >= 0.5 * math.pi - 1e-3

@@ -68,8 +68,12 @@ Eq 4, ``mu = 1 - 1.5 sin^2(alpha)``, emerges with no parameter to calibrate
 Outputs
 -------
 ``max_tilt`` the largest angle of the body's initial up axis from the vertical; an
-*overturn* is the body landing on a hull vertex that is not on its base (it fell onto
-another face): the run stops there (``overturn_time``; ``overturn_azimuth``, deg, the
+*overturn* is, whichever comes first: the tilt reaching pi/2; the ground touched by a hull
+vertex at least as high above the base as the centre of mass (a body that lies on another
+face: the head of a fallen statue, the top corner of a box on its side); or the body held
+at rest on a support that is not its base (it came to rest on another face). A vertex off
+the base but lower, a bevel or a settled rock's neighbouring vertex, touched while the body
+rocks, is not an overturn. The run stops there (``overturn_time``; ``overturn_azimuth``, deg, the
 bearing of the fall counter-clockwise from the ground's ``x`` axis: where the tilted up
 axis points); ``uplift_time`` when the body first left its rest position (a base vertex
 above the ground, a slide or a twist beyond ``1e-6`` of its size, or a velocity relative to
@@ -825,6 +829,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     t_over = math.nan
     az_over = math.nan
     over = False
+    on_other = False
     at_rest = False
     resting = False
     n_hp = 0
@@ -933,6 +938,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
             if sweeps < 0:
                 n_unconv += 1
         impact = False
+        on_other = False
         for c in range(n_cand):
             i = cand[c]
             P_prev[i, 0] = P_prev[i, 1] = P_prev[i, 2] = 0.0
@@ -942,7 +948,9 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
             if not was_active[i] and un_minus[c] < -mp.v_impact:
                 impact = True
             if mp.is_base[i] == 0.0:
-                over = True
+                on_other = True
+                if verts[i, 2] >= 0.0:
+                    over = True  # a point as high as the centre of mass (at rest) touches
         for c in range(n_cand):
             i = cand[c]
             was_active[i] = now_active[i]
@@ -981,6 +989,8 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         # outputs of the step
         tilt = math.atan2(math.sqrt(R[0, 2] ** 2 + R[1, 2] ** 2), R[2, 2])
         max_tilt = max(max_tilt, tilt)
+        if tilt >= 0.5 * math.pi:
+            over = True
         sx = x + R[0, 0] * bpx + R[0, 1] * bpy + R[0, 2] * bpz - b0x
         sy = y + R[1, 0] * bpx + R[1, 1] * bpy + R[1, 2] * bpz - b0y
         slide = math.sqrt(sx * sx + sy * sy)
@@ -1010,6 +1020,8 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
                     base_up = True
         if n_base_seen < n_base:
             base_up = True
+        if resting and on_other:  # held at rest on a vertex off its base: another face
+            over = True
         if t_lift != t_lift and zmin > mp.lift_tol:
             t_lift = t1
         if t_up != t_up and (vn + wn_new * size > mp.v_up or base_up or slide > mp.lift_tol
