@@ -325,6 +325,23 @@ def test_direction_fragility_of_a_symmetric_block_is_mirror_symmetric(rinaldi):
         assert a[k] == pytest.approx(b[k], rel=1e-9, nan_ok=True)
 
 
+def test_direction_fragility_leaves_out_the_runs_that_lift_off(rinaldi):
+    """Where the scaled vertical component exceeds g the planar block leaves the ground and
+    its run stops (lifted_off): neither an overturn nor a survival. Counted as survivals
+    (the old behaviour) they would lower P(overturn) at the strongest levels; they are
+    left out of the fit and counted in n_lifted_off."""
+    from rocking.analysis import direction_fragility
+
+    blk = rocking.specimen(2)
+    levels = np.geomspace(2.0, 20.0, 8)  # m/s^2: the vertical (0.96 g at 8.6) exceeds g
+    fr = direction_fragility(blk, rinaldi, levels, [0.0], n_boot=0)
+    lifted = fr.runs.lifted_off.to_numpy()
+    assert lifted.any() and not lifted.all()
+    row = fr.table.iloc[0]
+    assert row.n_lifted_off == lifted.sum() and row.n == (~lifted).sum()
+    assert row.n_overturned == fr.runs.overturned[~lifted].sum()
+
+
 def test_direction_fragility_refusals(shape, rinaldi):
     from rocking.analysis import direction_fragility
 

@@ -371,3 +371,19 @@ def test_a_tiny_real_campaign_of_housner_and_isolated_runs():
     assert row(comp, "none")["n"] == len(motions)
     fig = plot_mitigations(comp)
     assert isinstance(fig, Figure)
+
+
+def test_planar_runs_that_lift_off_are_left_out_like_failed_runs():
+    """A planar run stopped because the block left the ground (lifted_off) neither
+    overturned nor survived: the comparison is the one without those rows."""
+    t = draw({"none": 2.0, "iso": 4.0}, seed=5)
+    t["model"] = "housner"
+    t["lifted_off"] = False
+    lift = (t["pga"] > 3.0) & (np.random.default_rng(6).random(len(t)) < 0.5)
+    t.loc[lift, "lifted_off"] = True
+    t.loc[lift, "overturned"] = False  # what a stopped run reports must not count
+    a = compare_mitigations(t, n_boot=0).table
+    b = compare_mitigations(t[~lift].reset_index(drop=True), n_boot=0).table
+    for m in ("none", "iso"):
+        ra, rb = (x[x["mitigation"] == m].iloc[0] for x in (a, b))
+        assert ra["median"] == pytest.approx(rb["median"], rel=1e-12)

@@ -604,13 +604,18 @@ def direction_fragility(body, pairs, levels, directions=None, *, im: str = "larg
     runs["overturned"] = np.asarray(res.overturned, dtype=bool)
     runs["overturn_time"] = np.asarray(res.overturn_time, dtype=float)
     runs["uplift_time"] = np.asarray(res.uplift_time, dtype=float)
+    # a planar block stopped where g + a_v <= 0 (it left the ground, which a planar model
+    # cannot represent) neither overturned nor survived: left out of the fits, counted
+    runs["lifted_off"] = np.asarray(res.lifted_off, dtype=bool)
     rows, fits = [], {}
     for i, phi in enumerate(phis):
-        g = runs[runs.direction == i]
+        g_all = runs[runs.direction == i]
+        g = g_all[~g_all.lifted_off]
         x, y = g.level.to_numpy(float), g.overturned.to_numpy(bool)
         b = dblocks[i]
         row = {"phi": float(phi), "phi_deg": math.degrees(phi), "alpha_plus": b.alpha_plus,
-               "alpha_minus": b.alpha_minus, "n": len(g), "n_overturned": int(y.sum()),
+               "alpha_minus": b.alpha_minus, "n": len(g),
+               "n_lifted_off": int(g_all.lifted_off.sum()), "n_overturned": int(y.sum()),
                "median": math.nan, "beta": math.nan, "median_se": math.nan,
                "median_lower_bound": math.nan, "median_upper_bound": math.nan, "note": ""}
         fit, lo, hi, why = fit_or_bounds(x, y, n_boot=n_boot, seed=seed,

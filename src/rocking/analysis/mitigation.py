@@ -496,6 +496,22 @@ class MitigationComparison:
         return plot_mitigations(self, **kw)
 
 
+def _lifted_planar(table) -> np.ndarray:
+    """The runs a planar model stopped because the block left the ground (``lifted_off``:
+    ``g + a_v <= 0``, which it cannot represent): neither overturned nor survived, so left
+    out of the comparison, as failed runs are (a 3-D model follows the flight)."""
+    if "lifted_off" not in table:
+        return np.zeros(len(table), bool)
+    lifted = table["lifted_off"].fillna(False).to_numpy(bool)
+    if "model" not in table:
+        return lifted
+    from ..models.registry import MODELS
+
+    planar = table["model"].map(lambda m: bool(MODELS[m].tags.get("planar", True))
+                                if m in MODELS else True).to_numpy(bool)
+    return lifted & planar
+
+
 def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=None,
                         hazard=None, clearance=None, n_boot=200, seed=0,
                         reference=REFERENCE, return_periods=(), t_years=50.0,
@@ -630,7 +646,7 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
     status = (pd.to_numeric(table["status"], errors="coerce").fillna(0).to_numpy(float)
               if "status" in table else np.zeros(len(table)))
     bad_im = ~(np.isfinite(x_all) & (x_all > 0))
-    excluded = (status != 0) | bad_im
+    excluded = (status != 0) | bad_im | _lifted_planar(table)
     disp_all = (pd.to_numeric(table["max_base_displacement"], errors="coerce").to_numpy(float)
                 if "max_base_displacement" in table else np.full(len(table), np.nan))
     flag_all = _flags(table, "clearance_exceeded")
