@@ -105,7 +105,8 @@ from ..analysis.hazard import HazardCurve, probability_in, risk
 from ..errors import ParameterError, SimulationError
 from ..models import require_planar
 from ..models.registry import MODELS
-from ..plot import PALETTE, figure, im_label, save_figure, style_axes, unit_label
+from ..plot import (PALETTE, figure, im_label, plain_log_ticks, save_figure, style_axes,
+                    unit_label)
 from ..units import G
 from . import hazard as site_hazard
 from .plan import row_output_columns
@@ -257,9 +258,12 @@ def _group_name(name: str, key: dict) -> str:
 
 def _run_name(key: dict) -> str:
     """What a group ran: its mitigation and model (``isolated-2.5s (isolated)``), or its
-    model."""
+    model; a mitigation named as its model once (``isolated``, not ``isolated
+    (isolated)``)."""
     m = key.get("mitigation")
-    return str(key["model"]) if m is None else f"{m} ({key['model']})"
+    if m is None or str(m) == str(key["model"]):
+        return str(key["model"])
+    return f"{m} ({key['model']})"
 
 
 def _im_label(im: dict) -> str:
@@ -701,6 +705,8 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
     ylabel = (f"P(overturn), P({CLEARANCE_LABEL})" if any_clear else "P(overturn)")
     style_axes(ax, im_label(im["name"], im["unit"]), ylabel)
     ax.set_ylim(-0.03, 1.03)
+    if ax.get_xscale() == "log":
+        plain_log_ticks(ax)  # 0.5, 1, 2, 5 rather than 3 x 10^0 beside 4 x 10^0
     what = (f"P(overturn) and P({CLEARANCE_LABEL})" if any_clear else "P(overturn)")
     ax.set_title(f"{model}: {what} per level (95% Wilson bars), lognormal fits "
                  "(95% bands)", fontsize=10)
