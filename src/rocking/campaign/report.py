@@ -105,8 +105,7 @@ from ..analysis.hazard import HazardCurve, probability_in, risk
 from ..errors import ParameterError, SimulationError
 from ..models import require_planar
 from ..models.registry import MODELS
-from ..plot import (PALETTE, figure, im_label, plain_log_ticks, save_figure, style_axes,
-                    unit_label)
+from ..plot import PALETTE, figure, im_label, plain_log_ticks, save_figure, style_axes, unit_label
 from ..units import G
 from . import hazard as site_hazard
 from .plan import row_output_columns
