@@ -1077,11 +1077,13 @@ def _compare(t: pd.DataFrame, im: dict, site, manifest: dict, n_boot: int, seed)
     return cmp.table, ""
 
 
-def _records_fit(manifest: dict) -> list[str]:
+def records_fit(manifest: dict, *, stacklevel: int = 3) -> list[str]:
     """The campaign's records checked at the periods that matter (the isolators' periods,
     the building's first period) by :func:`rocking.motions.check_records_fit` (a
     :class:`~rocking.motions.RecordFitWarning` each, and the messages for report.md);
-    nothing when there are no such periods or the motions are not records."""
+    nothing when there are no such periods or the motions are not records. Called by the
+    report and, before any run, by :func:`rocking.campaign.run` and ``rocking campaign run
+    --dry-run`` (``manifest``: :func:`~rocking.campaign.store.manifest_for` of the spec)."""
     from ..motions import Record, catalog
     from ..motions.ec8_records import check_records_fit
 
@@ -1107,7 +1109,7 @@ def _records_fit(manifest: dict) -> list[str]:
     ground = params.get("ground") if mo["kind"] == "ec8_earthquake" else None
     st = params.get("spectrum_type", 1) if ground else 1
     return check_records_fit(recs, why, ground=ground, spectrum_type=st,
-                             what="the campaign's records", stacklevel=3)
+                             what="the campaign's records", stacklevel=stacklevel)
 
 
 def _ratio_text(r) -> str:
@@ -1291,7 +1293,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
             notes.append("hazard given at report time: " + site["curve"].label + (
                 f" (replaces the store's [hazard] {site['replaces']!r})" if site["replaces"]
                 else ""))
-    notes += _records_fit(manifest)
+    notes += records_fit(manifest)
     cmp = None
     if mit:
         cmp, why = _compare(t[~failed], im, site, manifest, n_boot, seed)

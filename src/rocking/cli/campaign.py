@@ -198,6 +198,9 @@ def _dry_run(req: RunRequest) -> int:
                f"chunks of {e['chunk_size']}")
     click.echo(f"estimated time with the local executor: "
                f"{_duration(e['estimated_seconds'])} (from {e['sampled']} sample runs)")
+    from ..campaign.report import records_fit
+    from ..campaign.store import manifest_for
+    records_fit(manifest_for(s))  # records that understate an isolator: said before a run
     if s.hazard is not None:
         h = s.hazard
         click.echo(f"hazard: {h['label']} ({h['im_name']} in {h['unit']}, {len(h['im'])} "
