@@ -691,6 +691,10 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
             if cf is not None:
                 x = _fit_range(d, cf)
                 ax.plot(x, cf.probability(x), color=c, lw=1.3, ls="--")
+                if cf.n_boot:  # its band too, as the title says of every fit
+                    b = cf.band(x)
+                    ax.fill_between(x, b["lower"], b["upper"], color=c, alpha=0.10, lw=0,
+                                    hatch="//")
                 cl += (f"\n(dashed fit: median {_g(cf.median)}"
                        f"{' ' + unit if unit else ''}, beta {_g(cf.beta, 2)})")
             ax.errorbar(d["im"] / shift, pc, yerr=np.clip(np.vstack([pc - ci[:, 0],
