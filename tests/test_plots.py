@@ -109,6 +109,32 @@ def test_direction_fragility_plot_marks_the_smallest_median_and_draws_bounds():
     assert np.allclose(curves[0].get_ydata(), first.probability(x))
 
 
+def test_direction_fragility_plot_draws_directions_of_one_fit_once():
+    """Directions with the same outcomes have the same fit: one curve, named by each (a
+    second curve would hide under the first)."""
+    import pandas as pd
+
+    from rocking.analysis import DirectionFragility
+    im = np.repeat([1.0, 2.0, 3.0, 4.0, 6.0], 40)
+    failed = np.tile(np.arange(40), 5) < np.round(40 * norm.cdf(np.log(im / 3) / 0.4))
+    same = fragility(im, failed, n_boot=0, im_name="pga", im_unit="m/s^2")
+    other = fragility(im, np.tile(np.arange(40), 5) < np.round(
+        40 * norm.cdf(np.log(im / 2) / 0.3)), n_boot=0, im_name="pga", im_unit="m/s^2")
+    phi = np.radians([0.0, 45.0, 90.0])
+    fits = {0: same, 1: other, 2: same}
+    table = pd.DataFrame({"phi": phi, "phi_deg": np.degrees(phi),
+                          "median": [f.median for f in fits.values()],
+                          "beta": [f.beta for f in fits.values()],
+                          "median_lower_bound": np.nan, "median_upper_bound": np.nan})
+    fig = DirectionFragility(table, pd.DataFrame(), fits, "larger").plot()
+    axc = fig.axes[1]
+    curves = [ln for ln in axc.lines if ln.get_gid() == "rocking.fragility_curve"]
+    labels = [t.get_text() for t in axc.get_legend().get_texts()]
+    assert len(curves) == 2
+    assert any(x.startswith("0 and 90 deg: ") for x in labels), labels
+    assert any(x.startswith("45 deg: ") for x in labels), labels
+
+
 @pytest.mark.parametrize("asym", [True, False])
 def test_theta_plot_draws_each_sides_alpha(asym):
     block = (rocking.Block.from_geometry(h=0.8, b_plus=0.2, b_minus=0.25,

@@ -82,6 +82,47 @@ def style_axes(ax, xlabel: str | None = None, ylabel: str | None = None):
     return ax
 
 
+def plain_log_ticks(ax, axis: str = "x"):
+    """Label a log ``axis`` with plain numbers (``0.5``, ``1``, ``2``, ``5``) instead of
+    ``3 x 10^0``: majors at the decades, the minors 2 and 5 of each decade labelled when
+    the axis spans at most three decades (beyond, the decades alone). Call after the
+    scale and limits are set.
+
+    Examples
+    --------
+    >>> from rocking.plot import figure, plain_log_ticks
+    >>> fig, ax = figure()
+    >>> _ = ax.plot([0.5, 8.0], [0, 1]); ax.set_xscale("log")
+    >>> plain_log_ticks(ax)
+    >>> fig.canvas.draw()
+    >>> lo, hi = ax.get_xlim()
+    >>> def shown(minor):
+    ...     return [t.get_text() for t in ax.get_xticklabels(minor=minor)
+    ...             if t.get_text() and lo <= t.get_position()[0] <= hi]
+    >>> shown(False), shown(True)
+    (['1'], ['0.5', '2', '5'])
+    """
+    from matplotlib.ticker import FuncFormatter, LogLocator
+
+    a = ax.xaxis if axis == "x" else ax.yaxis
+    lo, hi = sorted(ax.get_xlim() if axis == "x" else ax.get_ylim())
+    few = lo > 0 and hi / lo <= 1e3
+
+    def major(v, _):
+        return f"{v:g}"
+
+    def minor(v, _):
+        if not few or v <= 0:
+            return ""
+        m = v / 10 ** np.floor(np.log10(v) + 1e-9)
+        return f"{v:g}" if np.isclose(m, 2) or np.isclose(m, 5) else ""
+
+    a.set_major_locator(LogLocator(base=10))
+    a.set_minor_locator(LogLocator(base=10, subs=np.arange(2, 10)))
+    a.set_major_formatter(FuncFormatter(major))
+    a.set_minor_formatter(FuncFormatter(minor))
+
+
 _IM_NAMES = {"pga": "PGA", "pgv": "PGV", "pgd": "PGD", "arias": "Arias intensity",
              "pga_ratio": r"PGA / ($g\,\tan\alpha$)",
              "pgv_ratio": r"PGV $p$ / ($g\,\tan\alpha$)",

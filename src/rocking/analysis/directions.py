@@ -505,18 +505,22 @@ class DirectionFragility:
         if len(keys) > curves:
             pick = np.unique(np.round(np.linspace(0, len(keys) - 1, max(curves, 1))))
             keys = [keys[int(j)] for j in pick]
-        for n, i in enumerate(keys):
+        same: dict = {}  # directions with the same fit (the same outcomes): one curve
+        for i in keys:
             f = self.fits[i]
-            f.plot(axc, data=False, band=len(keys) == 1,
+            same.setdefault((round(f.median, 9), round(f.beta, 9)), []).append(i)
+        for n, group in enumerate(same.values()):
+            f = self.fits[group[0]]
+            where = " and ".join(f"{t.phi_deg.iloc[i]:.0f}" for i in group)
+            f.plot(axc, data=False, band=len(same) == 1,
                    color=PALETTE[n % len(PALETTE)], ls=LINESTYLES[n % len(LINESTYLES)],
-                   label=f"{t.phi_deg.iloc[i]:.0f} deg: median {f.median / G:.3g} g, "
-                         f"beta {f.beta:.2f}")
+                   label=f"{where} deg: median {f.median / G:.3g} g, beta {f.beta:.2f}")
         if keys:
             axc.set_title("Fragility curves of the weakest to the strongest directions",
                           fontsize=10)
             style_axes(axc, f"{im_name} (m/s$^2$)", "probability of overturning")
             top = axc.secondary_xaxis("top", functions=(lambda x: x / G, lambda x: x * G))
-            top.set_xlabel("(g)", fontsize=9)
+            top.set_xlabel(f"{im_name} (g)", fontsize=9)
         else:
             axc.set_axis_off()
             axc.text(0.5, 0.5, "no direction has a fragility fit\n(too few runs, or "

@@ -28,7 +28,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import ParameterError
-from ..plot import PALETTE, im_label, style_axes, unit_label
+from ..plot import PALETTE, im_label, plain_log_ticks, style_axes, unit_label
 from ..units import acceleration_unit, parse_quantity
 from .fragility import (
     IM_UNITS,
@@ -1183,6 +1183,7 @@ def plot_mitigations(comparison: MitigationComparison, *, band: bool = False,
                    "P(failure)" if both else f"P({comparison.failure.replace('_', ' ')})")
         ax.set_xscale("log")
         ax.set_ylim(-0.02, 1.02)
+        plain_log_ticks(ax)
         title = (", ".join(f"{_BY_WORDS.get(c, c)} {v}" for c, v in zip(by, gkey, strict=True))
                  if by else "")
         if title:

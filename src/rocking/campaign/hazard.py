@@ -62,6 +62,11 @@ HAZARD_KEYS = {
     "k": "with pga_475: the slope of the power law, (0, 20]; default 3 (EN 1998-1 note)",
     "pga_2475": "with pga_475, instead of k: the PGA at 2475 years (sets k), in the same "
                 "forms",
+    "fractiles": "with an OpenQuake file: the model's fractile exports of the same "
+                 "calculation (a list of files relative to the spec, "
+                 "`hazard_curve-quantile-0.05-PGA_<id>.csv`, ...; at least two), read at "
+                 "the same site: the risk's interval then includes the hazard's "
+                 "uncertainty",
     "t_years": f"the service life of the probability 1 - exp(-lambda t), years, (0, "
                f"{MAX_T_YEARS:g}]; default {DEFAULT_T_YEARS:g}",
     "label": "the curve's name in the report (default: from the file or the code value)",
@@ -103,18 +108,30 @@ def parse_site(text):
 
 
 def read_hazard(path, *, format: str = "auto", site=None, im=None, unit=None,
-                label: str = "", investigation_time=None, max_distance_km=None
-                ) -> tuple[HazardCurve, dict]:
+                label: str = "", investigation_time=None, max_distance_km=None,
+                fractiles=()) -> tuple[HazardCurve, dict]:
     """The hazard curve in ``path`` and its source (file name, sha256, format, site; for
     an OpenQuake export its metadata and the ``site_distance_km`` of a site given by
     [lon, lat], refused beyond ``max_distance_km`` (default
     :data:`~rocking.analysis.hazard.MAX_SITE_DISTANCE_KM`); for a CSV of a probability of
-    exceedance its ``investigation_time``, :meth:`HazardCurve.from_csv`). Errors
-    (:class:`~rocking.errors.ParameterError`) start with the argument's name: ``file``,
-    ``format``, ``site``, ``im``, ``unit``, ``investigation_time``, ``max_distance_km``."""
+    exceedance its ``investigation_time``, :meth:`HazardCurve.from_csv`). ``fractiles``:
+    an OpenQuake export's fractile exports (paths; at least two), read at the same site
+    (:meth:`HazardCurve.from_openquake`), each named in the source with its sha256 and q.
+    Errors (:class:`~rocking.errors.ParameterError`) start with the argument's name:
+    ``file``, ``format``, ``site``, ``im``, ``unit``, ``investigation_time``,
+    ``max_distance_km``, ``fractiles``."""
     p = Path(path)
     if not p.is_file():
         raise ParameterError(f"file: no such hazard-curve file {str(path)!r}")
+    if isinstance(fractiles, str | Path):
+        fractiles = [fractiles]
+    fractiles = [Path(f) for f in (fractiles or ())]
+    for f in fractiles:
+        if not f.is_file():
+            raise ParameterError(f"fractiles: no such hazard-curve file {str(f)!r}")
+    if len(fractiles) == 1:
+        raise ParameterError(f"fractiles: give at least two fractile exports (e.g. "
+                             f"quantile-0.05 and quantile-0.95), got one: {fractiles[0].name}")
     if format not in FORMATS:
         raise ParameterError(f"format must be one of {', '.join(FORMATS)}, got {format!r}")
     fmt = file_format(p) if format == "auto" else format
@@ -135,8 +152,21 @@ def read_hazard(path, *, format: str = "auto", site=None, im=None, unit=None,
                 raise ParameterError("max_distance_km applies with a site given as "
                                      "[lon, lat] only (a row index is that site)")
             dmax = MAX_SITE_DISTANCE_KM if max_distance_km is None else max_distance_km
-            curve = HazardCurve.from_openquake(p, site=s, label=label, max_distance_km=dmax)
+            try:
+                curve = HazardCurve.from_openquake(p, site=s, label=label,
+                                                   max_distance_km=dmax,
+                                                   fractiles=fractiles)
+            except ParameterError as e:  # a fractile file's own error: say which key
+                msg = str(e)
+                if fractiles and not msg.startswith(("fractiles", "site")) and any(
+                        f.name in msg for f in fractiles):
+                    raise ParameterError(f"fractiles: {msg.removeprefix('path: ')}") from None
+                raise
             meta = getattr(curve, "metadata", {})
+            if fractiles:
+                src["fractiles"] = [{"file": f.name, "sha256": sha256(f), "q": q}
+                                    for f, q in zip(fractiles, _quantiles(fractiles),
+                                                    strict=True)]
             src["site"] = list(s) if isinstance(s, tuple) else s
             src.update({k: meta[k] for k in ("site_index", "lon", "lat",
                                              "site_distance_km", "investigation_time",
@@ -145,6 +175,9 @@ def read_hazard(path, *, format: str = "auto", site=None, im=None, unit=None,
             if isinstance(s, tuple):
                 src["max_distance_km"] = float(dmax)
         else:
+            if fractiles:
+                raise ParameterError("fractiles applies to an OpenQuake export only (its "
+                                     "quantile exports: a CSV states no fractile)")
             for k, v in (("site", site), ("max_distance_km", max_distance_km)):
                 if v is not None:
                     raise ParameterError(f"{k} applies to an OpenQuake export only (a CSV "
@@ -157,13 +190,28 @@ def read_hazard(path, *, format: str = "auto", site=None, im=None, unit=None,
         msg = str(e)
         if msg.startswith("im_name"):  # from_csv's im_name is this im
             msg = "im" + msg.removeprefix("im_name")
-        if not re.match(r"(site|im|unit|format|investigation_time|max_distance_km)\b", msg):
+        if not re.match(r"(site|im|unit|format|investigation_time|max_distance_km|fractiles)\b",
+                        msg):
             msg = "file: " + msg.removeprefix("path: ")
         raise ParameterError(msg) from None
     except (OSError, UnicodeDecodeError, ValueError) as e:
         raise ParameterError(f"file: cannot read {p.name} as a hazard curve "
                              f"({type(e).__name__}: {str(e).splitlines()[0][:100]})") from None
     return curve, src
+
+
+def _quantiles(paths) -> list:
+    """The fractile q of each OpenQuake quantile export (its ``kind`` metadata, else its
+    name), as :meth:`HazardCurve.from_openquake` reads it; None where neither says."""
+    out = []
+    for f in paths:
+        try:
+            first = Path(f).read_text(encoding="utf-8", errors="replace").split("\n", 1)[0]
+        except OSError:
+            first = ""
+        m = re.search(r"quantile-([0-9.]+)", first + " " + Path(f).name)
+        out.append(float(m.group(1).rstrip(".")) if m else None)
+    return out
 
 
 def code_value(pga_475: float, *, k=None, pga_2475=None, label: str = ""

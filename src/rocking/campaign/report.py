@@ -105,7 +105,7 @@ from ..analysis.hazard import HazardCurve, probability_in, risk
 from ..errors import ParameterError, SimulationError
 from ..models import require_planar
 from ..models.registry import MODELS
-from ..plot import PALETTE, figure, im_label, save_figure, style_axes, unit_label
+from ..plot import PALETTE, figure, im_label, plain_log_ticks, save_figure, style_axes, unit_label
 from ..units import G
 from . import hazard as site_hazard
 from .plan import row_output_columns
@@ -257,9 +257,12 @@ def _group_name(name: str, key: dict) -> str:
 
 def _run_name(key: dict) -> str:
     """What a group ran: its mitigation and model (``isolated-2.5s (isolated)``), or its
-    model."""
+    model; a mitigation named as its model once (``isolated``, not ``isolated
+    (isolated)``)."""
     m = key.get("mitigation")
-    return str(key["model"]) if m is None else f"{m} ({key['model']})"
+    if m is None or str(m) == str(key["model"]):
+        return str(key["model"])
+    return f"{m} ({key['model']})"
 
 
 def _im_label(im: dict) -> str:
@@ -688,6 +691,10 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
             if cf is not None:
                 x = _fit_range(d, cf)
                 ax.plot(x, cf.probability(x), color=c, lw=1.3, ls="--")
+                if cf.n_boot:  # its band too, as the title says of every fit
+                    b = cf.band(x)
+                    ax.fill_between(x, b["lower"], b["upper"], color=c, alpha=0.10, lw=0,
+                                    hatch="//")
                 cl += (f"\n(dashed fit: median {_g(cf.median)}"
                        f"{' ' + unit if unit else ''}, beta {_g(cf.beta, 2)})")
             ax.errorbar(d["im"] / shift, pc, yerr=np.clip(np.vstack([pc - ci[:, 0],
@@ -701,6 +708,8 @@ def _plot_model(model: str, groups: list, im: dict, path: Path, blocks=None) -> 
     ylabel = (f"P(overturn), P({CLEARANCE_LABEL})" if any_clear else "P(overturn)")
     style_axes(ax, im_label(im["name"], im["unit"]), ylabel)
     ax.set_ylim(-0.03, 1.03)
+    if ax.get_xscale() == "log":
+        plain_log_ticks(ax)  # 0.5, 1, 2, 5 rather than 3 x 10^0 beside 4 x 10^0
     what = (f"P(overturn) and P({CLEARANCE_LABEL})" if any_clear else "P(overturn)")
     ax.set_title(f"{model}: {what} per level (95% Wilson bars), lognormal fits "
                  "(95% bands)", fontsize=10)
@@ -1072,11 +1081,13 @@ def _compare(t: pd.DataFrame, im: dict, site, manifest: dict, n_boot: int, seed)
     return cmp.table, ""
 
 
-def _records_fit(manifest: dict) -> list[str]:
+def records_fit(manifest: dict, *, stacklevel: int = 3) -> list[str]:
     """The campaign's records checked at the periods that matter (the isolators' periods,
     the building's first period) by :func:`rocking.motions.check_records_fit` (a
     :class:`~rocking.motions.RecordFitWarning` each, and the messages for report.md);
-    nothing when there are no such periods or the motions are not records."""
+    nothing when there are no such periods or the motions are not records. Called by the
+    report and, before any run, by :func:`rocking.campaign.run` and ``rocking campaign run
+    --dry-run`` (``manifest``: :func:`~rocking.campaign.store.manifest_for` of the spec)."""
     from ..motions import Record, catalog
     from ..motions.ec8_records import check_records_fit
 
@@ -1102,7 +1113,7 @@ def _records_fit(manifest: dict) -> list[str]:
     ground = params.get("ground") if mo["kind"] == "ec8_earthquake" else None
     st = params.get("spectrum_type", 1) if ground else 1
     return check_records_fit(recs, why, ground=ground, spectrum_type=st,
-                             what="the campaign's records", stacklevel=3)
+                             what="the campaign's records", stacklevel=stacklevel)
 
 
 def _ratio_text(r) -> str:
@@ -1286,7 +1297,7 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
             notes.append("hazard given at report time: " + site["curve"].label + (
                 f" (replaces the store's [hazard] {site['replaces']!r})" if site["replaces"]
                 else ""))
-    notes += _records_fit(manifest)
+    notes += records_fit(manifest)
     cmp = None
     if mit:
         cmp, why = _compare(t[~failed], im, site, manifest, n_boot, seed)

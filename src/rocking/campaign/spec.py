@@ -57,6 +57,7 @@
     file = "hazard_curve-mean-PGA_0.csv"   # an OpenQuake export or a CSV (IM, rate)
     site = 0                      # OpenQuake: a row index or [lon, lat]
     # max_distance_km = 50        # OpenQuake, site = [lon, lat]: refused farther away
+    # fractiles = ["hazard_curve-quantile-0.05-PGA_0.csv", "hazard_curve-quantile-0.95-PGA_0.csv"]
     # investigation_time = 50     # a CSV of poe in T years: rate = -ln(1 - poe)/T
     t_years = 50                  # service life: P = 1 - exp(-lambda t)
     # or: pga_475 = "0.25g" and k = 3 (EN 1998-1 code value: an approximation)
@@ -1017,13 +1018,21 @@ def _hazard(raw: dict, base_dir: Path, motions: MotionAxis) -> dict | None:
                    if "investigation_time" in t else None)
             dmax = (_number("hazard.max_distance_km", t["max_distance_km"], 0, math.inf,
                             lo_open=True) if "max_distance_km" in t else None)
+            fr = t.get("fractiles", [])
+            if isinstance(fr, str):
+                fr = [fr]
+            if not isinstance(fr, list):
+                _fail("hazard.fractiles", f"must be a list of fractile files, got "
+                                          f"{_toml(fr)}")
+            fr = [Path(base_dir) / _string(f"hazard.fractiles[{i}]", f)
+                  for i, f in enumerate(fr)]
             curve, source = site_hazard.read_hazard(path, format=fmt, site=site, im=im,
                                                     unit=unit, label=label,
                                                     investigation_time=inv,
-                                                    max_distance_km=dmax)
+                                                    max_distance_km=dmax, fractiles=fr)
         else:
             for k in ("format", "site", "im", "unit", "investigation_time",
-                      "max_distance_km"):
+                      "max_distance_km", "fractiles"):
                 if k in t:
                     _fail(f"hazard.{k}", "applies with file only (pga_475 is a code value)")
             a = _quantity("hazard.pga_475", t["pga_475"])

@@ -198,6 +198,9 @@ def _dry_run(req: RunRequest) -> int:
                f"chunks of {e['chunk_size']}")
     click.echo(f"estimated time with the local executor: "
                f"{_duration(e['estimated_seconds'])} (from {e['sampled']} sample runs)")
+    from ..campaign.report import records_fit
+    from ..campaign.store import manifest_for
+    records_fit(manifest_for(s))  # records that understate an isolator: said before a run
     if s.hazard is not None:
         h = s.hazard
         click.echo(f"hazard: {h['label']} ({h['im_name']} in {h['unit']}, {len(h['im'])} "
@@ -379,14 +382,15 @@ class ReportRequest:
 
     @classmethod
     def from_options(cls, *, store, out, hazard, site, investigation_time, max_distance_km,
-                     t_years):
+                     t_years, fractiles=()):
         """The request of the command's options (click's values)."""
         from ..campaign.hazard import check_t_years, parse_site, read_hazard
 
         if t_years is not None:
             t_years = check_t_years(t_years, "--t-years")
         for name, v in (("--site", site), ("--investigation-time", investigation_time),
-                        ("--max-distance-km", max_distance_km)):
+                        ("--max-distance-km", max_distance_km),
+                        ("--fractiles", fractiles or None)):
             if v is not None and hazard is None:
                 raise ParameterError(f"{name} applies with --hazard (the store's [hazard] "
                                      "holds one site's curve, read as its spec says)")
@@ -395,8 +399,11 @@ class ReportRequest:
             try:
                 read = read_hazard(hazard, site=None if site is None else parse_site(site),
                                    investigation_time=investigation_time,
-                                   max_distance_km=max_distance_km)
+                                   max_distance_km=max_distance_km,
+                                   fractiles=list(fractiles or ()))
             except ParameterError as e:
+                if str(e).startswith("fractiles"):
+                    raise ParameterError("--" + str(e)) from None
                 msg = _option_names(str(e))
                 raise ParameterError(msg if msg.startswith("--") else
                                      f"--hazard {msg.removeprefix('file: ')}") from None
@@ -416,6 +423,10 @@ class ReportRequest:
 @click.option("--investigation-time", "investigation_time", default=None, type=float,
               metavar="YEARS", help="With --hazard, a CSV of a probability of exceedance "
                                     "(poe): the years T it refers to; rate = -ln(1 - poe)/T.")
+@click.option("--fractiles", "fractiles", multiple=True, metavar="FILE",
+              help="With --hazard, an OpenQuake export: one of the model's fractile exports "
+                   "(hazard_curve-quantile-0.05-PGA_<id>.csv), repeated (at least two); the "
+                   "risk's interval then includes the hazard's uncertainty.")
 @click.option("--max-distance-km", "max_distance_km", default=None, type=float, metavar="KM",
               help="With --hazard, an OpenQuake export and --site LON,LAT: refuse a nearest "
                    "site farther than this (default 50 km).")
