@@ -332,3 +332,17 @@ def test_landing_on_a_bevel_is_not_an_overturn():
     assert r.max_tilt > bevel and not r.overturned and r.settled
     r = rocking.simulate(body, OneSine(0.8 * G, 0.5), model="rigid3d")
     assert r.overturned and r.max_tilt >= 0.5 * math.pi - 1e-3
+
+
+def test_a_blocks_own_alpha_p_mu_are_not_silently_dropped():
+    """A rectangular Block becomes the box of its geometry: identified parameters that
+    differ from it (Table II, E) are named in a warning; a geometric block runs quietly."""
+    import warnings
+
+    from rocking.errors import PlausibilityWarning
+
+    with pytest.warns(PlausibilityWarning, match=r"alpha = 0\.163.*mu = 0\.973.*not used"):
+        Rigid3d.check_block(rocking.specimen(2, params="experimental"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        Rigid3d.check_block(rocking.Block.rectangular(width=0.2, height=1.0, thickness=0.3))

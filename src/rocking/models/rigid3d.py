@@ -1139,7 +1139,27 @@ def box_of(block):
                              f"rocking.Block with width and height; got {block!r}")
     depth = block.thickness if block.thickness is not None else block.width
     kw = {"mass": block.mass} if block.mass else {"density": 1000.0}
+    _warn_unused_params(block)
     return Shape.box(block.width, depth, block.height, name=block.name or "box", **kw)
+
+
+def _warn_unused_params(block) -> None:
+    """Warn where a rectangular block carries alpha, p or mu other than its geometry's
+    (Eqs 2-4: a specimen's identified parameters, a ``with_params`` restitution): the 3-D
+    body is made of the width, height and thickness alone, its restitution emerges from
+    its impacts, so those values would be silently unused."""
+    from ..blocks import Block
+
+    geo = Block.rectangular(width=block.width, height=block.height)
+    diff = [f"{k} = {getattr(block, k):.4g} (geometry: {getattr(geo, k):.4g})"
+            for k in ("alpha", "p", "mu")
+            if abs(getattr(block, k) - getattr(geo, k)) > 1e-2 * abs(getattr(geo, k))]
+    if diff:
+        warn_implausible(
+            f"model 'rigid3d' makes the block {block.name or ''!s} a box of its width, "
+            f"height and thickness only: its {', '.join(diff)} are not used (the 3-D body's "
+            "restitution emerges from its impacts: Eq 4 in the planar limit; give "
+            "restitution= for Newton's law, or a rocking.shapes.Shape.box)")
 
 
 class Rigid3d(Model):
