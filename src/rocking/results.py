@@ -634,8 +634,9 @@ class BatchResponse:
     """Summaries of a batch of simulations, one entry per motion (numpy arrays).
 
     ``overturn_time``, ``uplift_time`` and ``lift_off_time`` are NaN where the event did
-    not happen; ``lifted_off`` marks the runs stopped because the block left the ground
-    (``g + a_v <= 0`` under a vertical motion, classical and CCRR models).
+    not happen; ``lifted_off`` marks the runs in which the block left the ground (``g + a_v
+    <= 0`` under a vertical motion): a planar model (classical, CCRR) stops there, which
+    decides neither an overturn nor a survival; ``rigid3d`` follows the flight.
     ``theta``/``omega`` (shape ``(n_motions, n_times)``) are present only when histories
     were requested; after the end of a run (an overturn, or the block at rest after the
     motion) they are NaN. ``status`` is 0 for a successful run (see ``errors=`` of

@@ -207,8 +207,9 @@ GENERIC_OUTPUTS = (
     Output("overturned", "", True, "the body overturned"),
     Output("overturn_time", "s", False, "when it overturned (NaN: never)"),
     Output("uplift_time", "s", False, "when it first left its rest position (NaN: never)"),
-    Output("lift_off_time", "s", False, "when the base fell away (g + a_v <= 0) and a model "
-                                        "that cannot represent flight stopped (NaN: never)"),
+    Output("lift_off_time", "s", False, "when the body first left the ground entirely (a "
+                                        "planar model, which cannot represent flight, stops "
+                                        "there: g + a_v <= 0; NaN: never)"),
 )
 """The outputs every model has (:attr:`Model.outputs` starts with them)."""
 
