@@ -387,3 +387,19 @@ def test_planar_runs_that_lift_off_are_left_out_like_failed_runs():
     for m in ("none", "iso"):
         ra, rb = (x[x["mitigation"] == m].iloc[0] for x in (a, b))
         assert ra["median"] == pytest.approx(rb["median"], rel=1e-12)
+
+
+def test_overlapping_intervals_are_not_a_verdict():
+    """Two mitigations whose annual frequencies differ by less than the records leave
+    uncertain (their intervals overlap) are "not distinguishable", not "better" or "worse"
+    (the issue's anchors: 5.45e-5 against 4.99e-5 per year)."""
+    from rocking.analysis.mitigation import verdict_of
+
+    none = pd.Series({"annual_frequency": 4.99e-5, "annual_frequency_low": 3e-5,
+                      "annual_frequency_high": 8e-5})
+    close = pd.Series({"annual_frequency": 5.45e-5, "annual_frequency_low": 3.5e-5,
+                       "annual_frequency_high": 9e-5})
+    far = pd.Series({"annual_frequency": 2e-4, "annual_frequency_low": 1.2e-4,
+                     "annual_frequency_high": 3e-4})
+    assert verdict_of(close, none) == "not distinguishable"
+    assert verdict_of(far, none) == "worse" and verdict_of(none, far) == "better"

@@ -62,9 +62,12 @@ COLUMNS = (
 )
 """The per-return-period columns of the isolator's demand follow (:func:`demand_columns`)."""
 
-VERDICTS = ("reference", "better", "worse", "same", "not known")
+VERDICTS = ("reference", "better", "worse", "same", "not distinguishable", "not known")
 """``verdict`` of a mitigation against the reference ("none"): its annual frequency of
-failure (with a hazard), else its median, compared with the reference's."""
+failure (with a hazard), else its median, compared with the reference's; "not
+distinguishable" where both annual frequencies have intervals (``annual_frequency_low`` /
+``_high``) and they overlap: the difference of the estimates is within what the records
+leave uncertain, so neither "better" nor "worse" is claimed."""
 AMPLIFY_BAND = (0.7, 1.4)
 """An isolator whose period is within this ratio of the building's period is near
 resonance with the floor's motion (a likely reason for an isolator that makes it worse)."""
@@ -1006,15 +1009,25 @@ def _verdicts(out: pd.DataFrame, by, reference, mit_col, table, keys: dict, diag
             if r["mitigation"] == ref:
                 out.loc[i, "verdict"] = "reference"
                 continue
-            v = _verdict(r, r0)
+            v = verdict_of(r, r0)
             out.loc[i, "verdict"] = v
             if v == "worse":
                 out.loc[i, "reason"] = _reason(r, diag.get(keys[i], {}), building_period)
 
 
-def _verdict(r, r0) -> str:
+def verdict_of(r, r0) -> str:
+    """The verdict (:data:`VERDICTS`) of the comparison row ``r`` against the reference's
+    row ``r0``: by the annual frequency (not distinguishable where both intervals exist and
+    overlap), else the bounds of the annual frequency, else the medians."""
     af, af0 = r["annual_frequency"], r0["annual_frequency"]
     if math.isfinite(af) and math.isfinite(af0):
+        lo, hi = r.get("annual_frequency_low", math.nan), r.get("annual_frequency_high",
+                                                                 math.nan)
+        lo0, hi0 = r0.get("annual_frequency_low", math.nan), r0.get("annual_frequency_high",
+                                                                    math.nan)
+        if (af != af0 and all(math.isfinite(v) for v in (lo, hi, lo0, hi0))
+                and lo <= hi0 and lo0 <= hi):
+            return "not distinguishable"
         return "worse" if af > af0 else "better" if af < af0 else "same"
     up, lo = r["annual_frequency_upper_bound"], r["annual_frequency_lower_bound"]
     if math.isfinite(af0) and math.isfinite(up) and up < af0:
