@@ -111,7 +111,7 @@ def support_base_point(shape) -> np.ndarray:
     """The base point of a :class:`~rocking.shapes.Shape` relative to its centre of mass
     in the body's frame (m, (3,)): the area centroid of its support at rest, on the
     ground (as :mod:`rocking.models.rigid3d` measures the slide)."""
-    from .models.rigid3d import polygon_centroid  # lazy: the models import this module
+    from .shapes.support import polygon_centroid
 
     cx, cy = polygon_centroid(np.asarray(shape.support))
     return np.array([cx, cy, -float(shape.h)])
@@ -272,11 +272,11 @@ class Response:
         q = self._quaternions()
         if q is None:
             return None
-        from .models import get_model  # lazy: the models import this module
-
-        shape = get_model(self.model).check_block(self.block)
+        # the base point the model measured the slide from (Model.info), or the shape's
+        bp = self.info.get("base_point")
+        bp = support_base_point(self.block) if bp is None else np.asarray(bp, float)
         return base_point_path(self.states[:, [self.state_names.index(n) for n in "xyz"]],
-                               q, support_base_point(shape))
+                               q, bp)
 
     @property
     def slide(self) -> np.ndarray | None:

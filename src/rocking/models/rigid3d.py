@@ -105,6 +105,7 @@ from numba import njit, prange
 from .._validate import warn_implausible
 from ..errors import ParameterError
 from ..motions._kernel import ground_acc3
+from ..shapes.support import polygon_centroid
 from ..units import G
 from .base import (
     GENERIC_OUTPUTS,
@@ -1336,6 +1337,8 @@ class Rigid3d(Model):
 
     def info(self, dt_out=None):
         out = super().info(dt_out)
+        # the base point (m, body frame, from the centre of mass): the slide's reference
+        out["base_point"] = [float(v) for v in self._geom[2]]
         if dt_out is not None:
             out["step_used"] = self.kernel_params(dt_out, 0.0, 0.0).step
         return out
@@ -1366,19 +1369,6 @@ def lowest(shape, z, R) -> float:
         return z + min(-shape.h * R[2, 2], (height - shape.h) * R[2, 2]) - r * tilt
     pts = np.asarray(shape.hull_points()) - np.array([0.0, 0.0, shape.h])
     return float(np.min(z + pts @ R[2]))
-
-
-def polygon_centroid(xy) -> tuple[float, float]:
-    """The area centroid of a counter-clockwise polygon (k, 2) (its vertex if k < 3)."""
-    xy = np.asarray(xy, dtype=np.float64)
-    if len(xy) < 3:
-        c = xy.mean(axis=0)
-        return float(c[0]), float(c[1])
-    x, y = xy[:, 0], xy[:, 1]
-    x1, y1 = np.roll(x, -1), np.roll(y, -1)
-    cr = x * y1 - x1 * y
-    a = 0.5 * cr.sum()
-    return float(((x + x1) * cr).sum() / (6 * a)), float(((y + y1) * cr).sum() / (6 * a))
 
 
 def rest_state(shape, tilt0: float = 0.0, direction: float = 0.0) -> np.ndarray:

@@ -113,3 +113,23 @@ def inside_margin(hull_xy, point) -> float:
 
 __all__ = ["DEFAULT_TOL", "contact_tolerance", "frame", "inside_margin", "support_hull",
            "up_vector"]
+
+
+def polygon_centroid(xy) -> tuple[float, float]:
+    """The area centroid of a counter-clockwise polygon (k, 2) (its vertex if k < 3).
+
+    Examples
+    --------
+    >>> from rocking.shapes.support import polygon_centroid
+    >>> polygon_centroid([[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]])
+    (1.0, 0.5)
+    """
+    xy = np.asarray(xy, dtype=np.float64)
+    if len(xy) < 3:
+        c = xy.mean(axis=0)
+        return float(c[0]), float(c[1])
+    x, y = xy[:, 0], xy[:, 1]
+    x1, y1 = np.roll(x, -1), np.roll(y, -1)
+    cr = x * y1 - x1 * y
+    a = 0.5 * cr.sum()
+    return float(((x + x1) * cr).sum() / (6 * a)), float(((y + y1) * cr).sum() / (6 * a))
