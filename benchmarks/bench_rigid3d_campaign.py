@@ -6,11 +6,11 @@ every core the process may use, one compiled parallel call per chunk; the record
 and the bodies settled once): four bodies (a slender box 0.2 x 0.2 x 1.0 m, a squat box
 0.3 x 0.4 x 1.2 m, the exact cylinder r = 0.15 m, H = 1.0 m, and the example statue,
 ``rocking.shapes.example``, 2600 kg/m^3) x the two built-in three-component pairs
-(``rinaldi``: Northridge 1994, 20 s; ``duzce``: Kocaeli 1999 at Duzce, 27 s; each with
-its vertical) x 25 headings (0-345.6 deg) x 50 load factors (0.05-2.5): 10,000 runs, each
-to the record's end and then on until the body is at rest or has overturned (the
-campaign's default), at the model's default step. Summaries only (no histories),
-``chunk_size = 500``.
+(``rinaldi``: Northridge 1994, 20 s, 0.87 g; ``duzce``: Kocaeli 1999 at Duzce, 27 s,
+0.36 g; each with its vertical) x 25 headings (0-345.6 deg) x 50 load factors
+(0.05-2.5): 10,000 runs, each to the record's end and then on until the body is at rest
+or has overturned (the campaign's default), at the model's default step. Summaries only
+(no histories), ``chunk_size = 500``.
 
 The kernels are compiled (or loaded from numba's cache) by a tiny campaign first, not
 timed. Printed: the wall time, the process's CPU time (all threads), the machine's load
