@@ -41,6 +41,7 @@ LAST = {
     "bench_motions.py": "pyrotd",
     "bench_overturning.py": "mavroeidis_papageorgiou ",
     "bench_rigid3d.py": "cost per hull vertex",
+    "bench_rigid3d_campaign.py": "10^4 runs extrapolated",
     "bench_selection.py": "(goal < 5 s)",
     "bench_shapes.py": "total (goal < 2 s)",
     "bench_step_loop.py": "min..max of pairs",

@@ -70,6 +70,56 @@ def test_issue_command_line_writes_response_summary_and_plots(tmp_path):
     assert not (out / "theta.png").exists()
 
 
+def test_out_writes_the_page_and_with_animate_the_gif(tmp_path):
+    """--out writes motion.html (on by default), which embeds this run: the same times,
+    positions and quaternions as the library's response, the box's 12 triangles; with
+    --animate the GIF too, one frame per 1/12 s of the response. --no-html: no page."""
+    from PIL import Image
+
+    from rocking.viewer3d import frame_indices, frame_times, read_page_data
+
+    out = tmp_path / "out"
+    invoke("simulate", "--model", "rigid3d", "--box", "0.3", "0.4", "1.2", "--pair",
+           "Rinaldi228", "Rinaldi318", "--heading", "30", "--duration", "1.5", *FAST,
+           "--out", out, "--animate")
+    r = rocking.simulate(Shape.box(0.3, 0.4, 1.2, density=1000.0),
+                         HorizontalPair.builtin("Rinaldi228", "Rinaldi318"),
+                         model="rigid3d", heading=30.0, duration=1.5, step=2e-3, dt_out=0.01)
+    data = read_page_data(out / "motion.html")
+    idx = frame_indices(len(r.t), r.t[1] - r.t[0], 60.0)
+    names = list(r.state_names)
+    np.testing.assert_allclose(data["t"], r.t[idx], atol=1e-9)
+    np.testing.assert_allclose(np.reshape(data["pos"], (-1, 3)),
+                               r.states[idx][:, [names.index(n) for n in "xyz"]], atol=1e-7)
+    q = r.states[idx][:, [names.index(f"q{i}") for i in range(4)]]
+    np.testing.assert_allclose(np.reshape(data["quat"], (-1, 4)),
+                               q / np.linalg.norm(q, axis=1)[:, None], atol=1e-8)
+    assert len(data["faces"]) == 3 * 12
+    text = (out / "motion.html").read_text("utf-8")
+    assert "http://" not in text.split("<script")[0] and "0.3 x 0.4 x 1.2 m box" in text
+    assert Image.open(out / "motion.gif").n_frames == len(frame_times(r.t[-1], 12.0, 1.0))
+    out2 = tmp_path / "out2"
+    invoke("simulate", "--model", "rigid3d", "--box", "0.3", "0.4", "1.2", "--record",
+           "Rinaldi228", "--duration", "0.2", *FAST, "--out", out2, "--no-html")
+    assert (out2 / "summary.json").exists()
+    assert not (out2 / "motion.html").exists() and not (out2 / "motion.gif").exists()
+
+
+@pytest.mark.parametrize("args, name", [
+    (("--model", "rigid3d", "--box", "1", "1", "1", "--record", "Rinaldi228", "--animate"),
+     "animate"),
+    (("--model", "rigid3d", "--box", "1", "1", "1", "--record", "Rinaldi228", "--html"),
+     "html"),
+    (("--specimen", "2", "--record", "Rinaldi228", "--out", "x", "--animate"), "animate"),
+    (("--specimen", "2", "--record", "Rinaldi228", "--out", "x", "--html"), "html"),
+])
+def test_viewer_flags_need_out_and_rigid3d(capsys, args, name, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run_main(capsys, "simulate", *args)
+    assert_one_line_error(code, err, name)
+    assert not (tmp_path / "x").exists()
+
+
 def test_built_in_pair_on_the_example_mesh():
     """--mesh with built-in record names: the whole mesh as a 3-D body."""
     mesh = example.example_mesh_path()

@@ -264,22 +264,37 @@ def mesh_directions(value) -> list:
 
 
 @functools.lru_cache(maxsize=16)
-def _load(path: str, stamp: tuple, density, mass, up, units, repair):
+def _load(path: str, stamp: tuple, density, mass, up, units, repair, settle=False):
     from .. import shapes  # lazy: trimesh
 
     return shapes.load_shape(path, density=density, mass=mass, up=up, repair=repair,
-                             units=units)
+                             units=units, settle=settle)
 
 
-def load_mesh(f: MeshForm):
-    """The :class:`rocking.shapes.Shape` of a mesh form (cached per file content stamp)."""
+def load_mesh(f: MeshForm, *, settle: bool = False):
+    """The :class:`rocking.shapes.Shape` of a mesh form (cached per file content stamp);
+    ``settle=True``: settled into its resting pose (:func:`rocking.shapes.load_shape`)."""
     path = os.path.abspath(os.fspath(f.mesh))
     try:
         st = os.stat(path)
         stamp = (st.st_mtime_ns, st.st_size)
     except OSError:
         stamp = ()
-    return _load(path, stamp, f.density, f.mass, f.up, f.units, f.repair)
+    return _load(path, stamp, f.density, f.mass, f.up, f.units, f.repair, settle)
+
+
+def load_body(f: MeshForm):
+    """The 3-D body of a mesh form for ``rigid3d`` (:func:`make_body`): the mesh on its
+    declared base (``up``) where its centre of mass's vertical falls inside that base's
+    patch (the model then settles it exactly, warning where it rolls onto another face:
+    :func:`rocking.models.rigid3d.settled_body`); a mesh with no such base (a scanned rock
+    on three points, whose lowest vertex alone is within the planar tolerance) settled
+    under gravity from ``up`` into its resting pose (``settle=True``): no tolerance to
+    choose either way, as issue 30 asks."""
+    try:
+        return load_mesh(f)
+    except ParameterError:
+        return load_mesh(f, settle=True)  # a bad file or mass is refused again here
 
 
 def resolve_direction(shape, direction) -> float:
@@ -556,12 +571,13 @@ PLANAR_MESH_KEYS = ("direction", "mu", "plinth_width", "plinth_depth", "plinth_h
 def make_body(mapping: dict, *, name: str | None = None, base_dir=None):
     """The 3-D body (:class:`rocking.shapes.Shape`) described by ``mapping``, for a 3-D
     model (``rigid3d``): ``box = [lx, ly, lz]``, ``cylinder = [radius, height]``, a
-    ``mesh`` (the whole mesh: its mass properties, contact on its hull), or a rectangular
-    block (``width``, ``height``, ``thickness``: the box ``width`` x ``thickness`` (its
-    width if not given) x ``height``) or a ``specimen`` (its box). ``density`` or ``mass``
-    (a box or cylinder without either: :data:`DEFAULT_DENSITY`). A mesh's planar keys
-    (``direction``, ``mu``, a plinth) are refused: a 3-D model takes the direction of a
-    single horizontal motion as its option ``direction``.
+    ``mesh`` (the whole mesh: its mass properties, contact on its hull; one with no flat
+    base, a rock on three points, settled into its resting pose: :func:`load_body`), or a
+    rectangular block (``width``, ``height``, ``thickness``: the box ``width`` x
+    ``thickness`` (its width if not given) x ``height``) or a ``specimen`` (its box).
+    ``density`` or ``mass`` (a box or cylinder without either: :data:`DEFAULT_DENSITY`).
+    A mesh's planar keys (``direction``, ``mu``, a plinth) are refused: a 3-D model takes
+    the direction of a single horizontal motion as its option ``direction``.
 
     Examples
     --------
@@ -582,7 +598,7 @@ def make_body(mapping: dict, *, name: str | None = None, base_dir=None):
                 f"{planar[0]}: a key of the mesh's planar block; a 3-D model (rigid3d) "
                 "takes the whole mesh (set where a single horizontal motion acts with its "
                 "option direction, deg, and a pair's orientation with heading)")
-        body = load_mesh(form.Params(**values))
+        body = load_body(form.Params(**values))
     elif form.name in ("box", "cylinder"):
         body = form.make(form.Params(**values))
     else:

@@ -555,6 +555,10 @@ class SimulateRequest:
     """``dt_out`` and ``max_free_time``, where given."""
     out: str | None
     as_json: bool
+    html: bool = True
+    """A 3-D model: ``--out`` writes the page ``motion.html`` (``--no-html``: not)."""
+    animate: bool = False
+    """A 3-D model: ``--out`` writes the animation ``motion.gif`` (``--animate``)."""
 
     @classmethod
     def from_options(cls, *, specimen, params_set, width, height, alpha, p, mu, model,
@@ -563,7 +567,7 @@ class SimulateRequest:
                      load_factor, theta0, omega0, linear, dt_out, building, storeys,
                      building_period, building_damping, building_params, floor,
                      height_ratio, out, as_json, box=None, cylinder=None, pair=None,
-                     **model_flags):
+                     html=None, animate=False, **model_flags):
         """The request of the command's options (click's values; ``model_flags``: the
         generated flags of the models' options). A 3-D model (``rigid3d``): the body, pair
         and direction of :mod:`rocking.cli.simulate3d`."""
@@ -579,8 +583,9 @@ class SimulateRequest:
                 building_period=building_period, building_damping=building_damping,
                 building_params=building_params, floor=floor, height_ratio=height_ratio,
                 out=out, as_json=as_json, box=box, cylinder=cylinder, pair=pair,
-                model_flags=model_flags)
+                model_flags=model_flags, html=html, animate=animate)
         refuse_3d_flags(model, box, cylinder, pair)
+        simulate3d.refuse_viewer_flags(model, html, animate)
         block, binfo = make_block(specimen, params_set, width, height, None, alpha, p, mu,
                                   allow_classical=True)
         mot, mdesc, sim_dur = make_motion(motion, freq, amp, tp, duration, record, units, dt,
@@ -612,8 +617,10 @@ class SimulateRequest:
                          max_free_time, record, vertical, vertical_factor, units, dt,
                          earthquake, load_factor, theta0, omega0, linear, dt_out, building,
                          storeys, building_period, building_damping, building_params, floor,
-                         height_ratio, out, as_json, box, cylinder, pair, model_flags):
+                         height_ratio, out, as_json, box, cylinder, pair, model_flags,
+                         html=None, animate=False):
         """The request of a 3-D model (:mod:`rocking.cli.simulate3d`)."""
+        simulate3d.check_viewer_flags(out, html, animate)
         for flag, v in (("theta0", theta0), ("omega0", omega0)):
             if v is not None:
                 raise ParameterError(f"{flag}: --model {model} has no planar angle; give its "
@@ -659,7 +666,7 @@ class SimulateRequest:
         return cls(block=body, block_info=binfo, motion=mot, motion_info=mdesc,
                    floor_info=fdesc, duration=sim_dur, model=model, options=options,
                    linear=False, theta0=None, omega0=None, run=run, out=out,
-                   as_json=as_json)
+                   as_json=as_json, html=html is not False, animate=bool(animate))
 
     @property
     def is_3d(self) -> bool:
@@ -712,8 +719,10 @@ def _write_outputs(req: SimulateRequest, resp, summary: dict) -> None:
         what = (simulate3d.motion_title(mdesc, req.options) if mdesc.get("type") == "pair"
                 else f"{_motion_title(mdesc)}, direction "
                      f"{req.options.get('direction', 0.0):g} deg")
-        simulate3d.write_plots(resp, f"{req.block.name or 'body'}: {what}", folder)
-        plots = ", ".join(simulate3d.PLOTS)
+        title = f"{req.block.name or 'body'}: {what}"
+        simulate3d.write_plots(resp, title, folder)
+        plots = ", ".join(simulate3d.PLOTS + simulate3d.write_viewer(
+            resp, title, folder, html=req.html, gif=req.animate))
     else:
         _theta_png(resp, req.block, req.motion_info, folder / "theta.png", req.floor_info)
         plots = "theta.png"
@@ -780,7 +789,14 @@ def _write_outputs(req: SimulateRequest, resp, summary: dict) -> None:
 @click.option("--height-ratio", "height_ratio", metavar="X",
               help="Instead of --floor: the height z/H in [0, 1] (a continuous building).")
 @click.option("--out", type=click.Path(file_okay=False),
-              help="Write response.csv, summary.json and theta.png to this folder.")
+              help="Write response.csv, summary.json and theta.png to this folder "
+                   "(rigid3d: three plots and the page motion.html).")
+@click.option("--html/--no-html", "html", default=None,
+              help="rigid3d with --out: write motion.html, a self-contained page that "
+                   "plays the motion in a browser (default: on; about 0.7 MB).")
+@click.option("--animate", is_flag=True,
+              help="rigid3d with --out: also write motion.gif, an animation of the body "
+                   "(about 2 s per 5 s of motion).")
 @click.option("--json", "as_json", is_flag=True,
               help="Print the summary (summary.json's content, SI units) as JSON.")
 @force_option
