@@ -596,6 +596,86 @@ def _r3d_sliding() -> float:
     return float(2.0 * math.hypot(r.states[-1, 0], r.states[-1, 1]) / r.t[-1] ** 2)
 
 
+def _r3d_uplift(shape, psi_deg: float, a_up: float, duration: float = 2.0) -> float:
+    """The acceleration (m/s^2) at which a slow ramp of ground acceleration along
+    ``psi_deg`` lifts ``shape`` (rigid3d, sticking friction)."""
+    from ..motions import Record
+
+    dt = 1e-3
+    t = np.arange(0.0, duration + dt, dt)
+    slope = 1.5 * a_up / duration
+    r = _simulate(shape, Record(slope * t, dt, name="ramp"), model="rigid3d",
+                  duration=duration, dt_out=0.01, direction=psi_deg, friction=2.0)
+    return float(slope * r.uplift_time)
+
+
+def _r3d_box_uplift_ref() -> float:
+    from ..shapes import Shape
+
+    box = Shape.box(0.25, 0.5, 1.0, density=2500.0)
+    return float(box.parameters(math.radians(37.0))["uplift_3d_plus"])
+
+
+def _r3d_box_uplift() -> float:
+    from ..shapes import Shape
+
+    box = Shape.box(0.25, 0.5, 1.0, density=2500.0)
+    return _r3d_uplift(box, 37.0, _r3d_box_uplift_ref())
+
+
+R3D_CYL = (0.2, 1.2)  # m: radius, height
+
+
+def _r3d_cylinder_ratio() -> float:
+    """The cylinder's angular-velocity ratio across its first impact, rocking in a plane on
+    its rim (rigid3d, exact rims, sticking friction, step 5e-5 s)."""
+    from ..shapes import Shape
+
+    r_, height = R3D_CYL
+    cyl = Shape.cylinder(r_, height, density=2500.0)
+    h = 5e-5
+    alpha = math.atan(r_ / (0.5 * height))
+    r = _simulate(cyl, None, model="rigid3d", duration=0.6, tilt0=0.5 * alpha, friction=2.0,
+                  dt_out=h, step=h)
+    k = int(round(r.impact_times[0] / h))
+    w = r.states[:, 11]
+    return float(w[k] / w[k - 1])
+
+
+def _r3d_flight_momentum() -> float:
+    """The largest relative change of the angular momentum (about the centre of mass,
+    ground frame) of a spinning box thrown off the ground by a vertical pulse of -1.5 g,
+    while it flies (no contact: every step's vertices above the ground)."""
+    from ..motions import GroundMotion, Record
+    from ..shapes import Shape
+
+    box = Shape.box(0.3, 0.4, 0.5, density=2000.0)
+    from ..models.rigid3d import rest_state
+
+    y0 = rest_state(box)
+    y0[10:13] = (0.3, -0.2, 1.0)  # spinning, body frame (rad/s)
+    dt = 1e-3
+    n = 400
+    az = np.where(np.arange(n) * dt < 0.1, -1.5 * G, 0.0)
+    motion = GroundMotion(Record(np.zeros(n), dt, name="still"), Record(az, dt, name="up"))
+    r = _simulate(box, motion, model="rigid3d", duration=0.3, state0=y0, dt_out=1e-3,
+                  step=1e-4, friction=0.7)
+    from scipy.spatial.transform import Rotation
+
+    I = np.asarray(box.inertia_local)
+    q = r.states[:, 3:7]
+    R = Rotation.from_quat(q[:, [1, 2, 3, 0]]).as_matrix()
+    L = np.einsum("nij,jk,nk->ni", R, I, r.states[:, 10:13])
+    z = r.states[:, 2]
+    verts = np.asarray(box.hull_points()) - np.array([0.0, 0.0, box.h])
+    low = z + np.min(np.einsum("nj,kj->nk", R[:, 2, :], verts), axis=1)
+    flying = low > 1e-4
+    if flying.sum() < 20:
+        raise RuntimeError("the box did not fly")
+    Lf = L[flying]
+    return float(np.max(np.linalg.norm(Lf - Lf[0], axis=1)) / np.linalg.norm(Lf[0]))
+
+
 CASES: tuple[Case, ...] = (
     Case(
         name="housner-free-period",
@@ -859,6 +939,43 @@ CASES: tuple[Case, ...] = (
             "rock (its uplift needs a > g b/h = 5 g).",
         reference=lambda: 0.2 * G, compute=_r3d_sliding, unit="m/s^2", tolerance=1e-9,
         group="three-d"),
+    Case(
+        name="rigid3d-uplift-any-heading", reference_kind="equation",
+        source=HOUSNER_1963,
+        what="ground acceleration (m/s^2) at which a slow ramp along 37 deg from its x axis "
+             "lifts a 0.25 x 0.5 x 1.0 m box (rigid3d)",
+        how="The static balance of a rigid body on its support (Housner's uplift criterion "
+            "generalised to any heading): it uplifts when a = g t(psi)/h, t the distance "
+            "from the centre of mass's vertical to the support's edge along the heading, "
+            "the uplift_3d_plus column of rocking.shapes.directional_parameters (computed "
+            "from the support polygon). Tolerance: the ramp's step (2e-3).",
+        reference=_r3d_box_uplift_ref, compute=_r3d_box_uplift, unit="m/s^2",
+        tolerance=2e-3, group="three-d"),
+    Case(
+        name="rigid3d-cylinder-restitution", reference_kind="equation",
+        source=("Srinivasan, M. and Ruina, A. (2008). Rocking and rolling: a can that appears "
+                "to rock might actually roll. Physical Review E 78, 066601"),
+        what="angular-velocity ratio across the first impact of an exact cylinder (r = 0.2 m, "
+             "H = 1.2 m) rocking in a plane on its rim (rigid3d, restitution 0)",
+        how="Housner's momentum balance for the cylinder's section: 1 - 2 r^2/(5 r^2/4 + "
+            "4 h^2/3), h the half-height (issue 30; derived here: the angular momentum about "
+            "the new contact point is kept, with I_O = m (5 r^2/4 + 4 h^2/3)). Tolerance: "
+            "the scheme's first-order error at the impact at step 5e-5 s.",
+        reference=lambda: 1 - 2 * R3D_CYL[0] ** 2 / (5 * R3D_CYL[0] ** 2 / 4
+                                                     + 4 * (0.5 * R3D_CYL[1]) ** 2 / 3),
+        compute=_r3d_cylinder_ratio, tolerance=5e-4, tolerance_kind="abs", group="three-d"),
+    Case(
+        name="rigid3d-flight-angular-momentum", reference_kind="textbook",
+        source="Euler's laws of motion: a free rigid body keeps its angular momentum (any "
+               "dynamics textbook, e.g. Goldstein (1980), Classical Mechanics, Ch. 5)",
+        what="largest relative change of the angular momentum of a spinning box thrown off "
+             "the ground by a vertical pulse of -1.5 g, while it flies",
+        how="Gravity acts at the centre of mass: no torque, so the angular momentum about "
+            "the centre of mass is constant in flight; the scheme advances it exactly (the "
+            "rotation of each half step is the exact one of the body's angular velocity), "
+            "so the change is rounding.",
+        reference=lambda: 0.0, compute=_r3d_flight_momentum, tolerance=1e-9,
+        tolerance_kind="abs", group="three-d"),
     _table2_case(
         1, "alpha", 0.242, known_tolerance=4e-3,
         known="Eq 2 on Table I's 2b = 0.25 m, 2h = 1.000 m gives atan(0.125/0.5) = 0.2450 "
