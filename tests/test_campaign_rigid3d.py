@@ -111,7 +111,8 @@ def test_end_to_end_store_fragility_and_risk(tmp_path):
     assert np.isfinite(over["median"]) and over["median"] > 0
     risk = res["risk"]
     assert np.isfinite(risk[risk["fit"] == "overturning"]["annual_frequency"]).all()
-    assert (tmp_path / "report" / "report.md").exists()
+    md = (tmp_path / "report" / "report.md").read_text()
+    assert "pool the 2 headings" in md and "too narrow" in md  # said, not hidden
 
 
 @pytest.mark.parametrize("extra, blocks, key", [

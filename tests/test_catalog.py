@@ -26,6 +26,7 @@ from rocking.motions import (
     stochastic_records,
 )
 from rocking.motions import catalog as C
+from rocking.motions.ec8_records import ec8_earthquake
 from rocking.units import G
 
 # one example per kind: (catalog parameters, the same motion built by its class)
@@ -49,6 +50,7 @@ EXAMPLES = {
                       lambda: GroundMotion.builtin("duzce", horizontal=2)),
     "stochastic": ({"index": 3, "dt": 0.02}, lambda: stochastic_records(1, seed=5, start=3,
                                                                         dt=0.02)[0]),
+    "ec8_earthquake": ({"number": 2, "ground": "C"}, lambda: ec8_earthquake(2, "C", 1)),
 }
 
 

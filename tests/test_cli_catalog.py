@@ -111,6 +111,8 @@ CASES = [
                        "vertical_factor": 0.5}, 1.0, None),
     (["--record", "{h}", "--vertical", "{v}", "--units", "m/s^2"],
      "ground_motion", {"file": "{h}", "vertical_file": "{v}", "units": "m/s^2"}, 1.0, None),
+    (["--motion", "ec8_earthquake", "--param", "number=2", "--param", "ground=C"],
+     "ec8_earthquake", {"number": 2, "ground": "C"}, 1.0, None),
 ]
 NOT_FROM_THE_CLI = {"stochastic"}  # needs a seed and a generator: campaigns only
 

@@ -1244,6 +1244,12 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     if n_excl - n_lift:
         notes.append(f"{n_excl - n_lift} of {len(t)} runs failed numerically (status != 0) "
                      "and are excluded")
+    if "heading" in t.columns and t["heading"].nunique() > 1:
+        notes.append(f"the fits pool the {t['heading'].nunique()} headings of every record "
+                     "(the outcome at any heading); their intervals treat the runs of one "
+                     "record at several headings as independent, which they are not: the "
+                     "intervals are too narrow (rocking.analysis.heading_sweep gives the "
+                     "headings one by one)")
     if n_lift:
         notes.append(f"{n_lift} of {len(t)} runs of a planar model left the ground (the "
                      "vertical acceleration exceeded g: lifted_off), which the planar model "

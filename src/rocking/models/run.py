@@ -100,7 +100,7 @@ def require_planar(model, what: str) -> type[Model]:
 
 def is_3d(model) -> bool:
     """True for a model of a 3-D body: its state has an orientation quaternion
-    (``q0 .. q3`` among ``Model.state_names``: ``rigid3d``), its block is a
+    (``q0`` to ``q3`` among ``Model.state_names``: ``rigid3d``), its block is a
     :class:`rocking.shapes.Shape`.
 
     Examples

@@ -515,7 +515,7 @@ def _rectangular_case(pt1: float) -> Case:
 READ_IN_NOTES = ("as read in the rocking notes of the public repository "
                  "wshwwl/wshwwl.github.com (2020/02/rock.md), which reproduce the figure; the "
                  "paper itself could not be read here")
-READ_IN_CAPTION = "as printed in the figure's caption (the caption could be read; the text not)"
+READ_IN_CAPTION = "as read in the figure's caption (the caption could be read, the text not)"
 
 
 def _printed_threshold(alpha: float, p: float, mu: float, kind: str, length: float,
