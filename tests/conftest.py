@@ -6,6 +6,7 @@ import hashlib
 import importlib
 import importlib.util
 import os
+import warnings
 from importlib import resources
 from pathlib import Path
 
@@ -126,3 +127,37 @@ def paper_cache(tmp_path_factory):
 def paper_set(paper_cache):
     """The paper's 30 synthetic earthquakes (generated once per test session)."""
     return rocking.motions.seed_earthquakes()
+
+
+@pytest.fixture(scope="session")
+def quick_report(tmp_path_factory, paper_cache):
+    """The whole quick report, built once for the session (~50 s on 2 cores):
+    ``(out, index, warnings caught while building)``. The report tests read it, and so
+    do the section tests (buildings, mitigation, a real object, fragility) when the
+    session runs the report tests (:func:`report_section`): a section is built with its
+    own :class:`rocking.report.Context` whatever the others, so its files are those of
+    ``reproduce(..., only=[its id])``."""
+    from rocking.report import reproduce
+
+    out = tmp_path_factory.mktemp("report")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        index = reproduce(out, quick=True, progress=False)
+    return out, index, caught
+
+
+def report_section(request, section_id: str) -> tuple[Path, Path, str]:
+    """``(out, index, html)`` of one report section in quick mode: the session's whole
+    quick report (:func:`quick_report`) when the session builds it anyway (it runs
+    ``test_report.py``), else ``reproduce(out, quick=True, only=[section_id])`` (a few
+    seconds); ``html`` is what the section wrote into the page."""
+    if any(item.path.name == "test_report.py" for item in request.session.items):
+        out, index, _ = request.getfixturevalue("quick_report")
+    else:
+        from rocking.report import reproduce
+
+        out = request.getfixturevalue("tmp_path_factory").mktemp(section_id)
+        index = reproduce(out, quick=True, progress=False, only=[section_id])
+    text = index.read_text(encoding="utf-8")
+    start = text.index(f'<section id="{section_id}">')
+    return out, index, text[start:text.index("</section>", start)]

@@ -1,13 +1,16 @@
 """Every script in ``benchmarks/`` runs to its end in its ``--quick`` mode (tiny inputs,
 every section), so that none rots unnoticed.
 
-Each script runs in a fresh interpreter from a temporary working directory, with
-``TMPDIR`` in the test's temporary directory (the scripts' stores, specs and caches go
-there) and the session's record cache (``ROCKING_CACHE_DIR``, see ``conftest.py``); the
-test checks the exit status, that no traceback was printed and that the script's last
-section printed its figures. About 40-50 s for all of them on 2 cores (with other jobs,
-load 2.5) and numba's cache warm; ``bench_campaign.py``, with its Dask cluster and fresh
-processes, is the longest (about 12 s).
+The scripts run one after another in one fresh interpreter (``quick_benchmarks.py``: one
+start, one import of the package and one load of numba's cached kernels for all of
+them), each as ``python SCRIPT --quick`` would run it, from its own working directory
+with ``TMPDIR`` in its own temporary folder (the scripts' stores, specs and caches go
+there) and the session's record cache (``ROCKING_CACHE_DIR``, see ``conftest.py``); what
+a script changes in the environment is put back before the next. Each test checks its
+script's exit status, that no traceback was printed and that the script's last section
+printed its figures. About 40 s for all of them on 2 cores with numba's cache warm;
+``bench_campaign.py``, with its Dask cluster and fresh processes, is the longest (about
+12 s).
 """
 
 from __future__ import annotations
@@ -55,23 +58,38 @@ def test_every_script_is_listed():
     assert SCRIPTS and set(SCRIPTS) == set(LAST), "add the new script to LAST"
 
 
-@pytest.mark.parametrize("script", SCRIPTS)
-def test_quick(script, tmp_path):
-    tmp = tmp_path / "tmp"
-    tmp.mkdir()
+@pytest.fixture(scope="module")
+def quick_runs(request, tmp_path_factory):
+    """Run the ``--quick`` mode of every script this session tests, in one fresh
+    interpreter; returns the folder of their outputs (``<script>.out``, ``.err``,
+    ``.rc``, and ``<stem>/tmp``)."""
+    out = tmp_path_factory.mktemp("bench")
+    wanted = [item.callspec.params["script"] for item in request.session.items
+              if item.path == Path(__file__) and item.originalname == "test_quick"]
     # distributed may log a worker's failed heartbeat, with its traceback, while a
     # LocalCluster shuts down (a race of its own, seen once in 14 runs): not ours to flag
-    env = dict(os.environ, TMPDIR=str(tmp), MPLBACKEND="Agg",
-               DASK_LOGGING__DISTRIBUTED="critical")
-    try:
-        p = subprocess.run([sys.executable, str(BENCH / script), "--quick"], cwd=tmp_path,
-                           env=env, capture_output=True, text=True, timeout=TIMEOUT)
-    except subprocess.TimeoutExpired as e:
-        pytest.fail(f"{script} --quick still running after {TIMEOUT} s:\n{e.stdout}")
-    tail = f"\n--- stdout\n{p.stdout[-3000:]}\n--- stderr\n{p.stderr[-3000:]}"
-    assert p.returncode == 0, f"{script} --quick exited with {p.returncode}{tail}"
-    assert "Traceback" not in p.stderr, tail
-    assert LAST[script] in p.stdout, f"{script}: last section missing{tail}"
+    env = dict(os.environ, MPLBACKEND="Agg", DASK_LOGGING__DISTRIBUTED="critical")
+    cmd = [sys.executable, str(Path(__file__).parent / "quick_benchmarks.py"), str(out),
+           str(TIMEOUT), *(str(BENCH / s) for s in wanted)]
+    p = subprocess.run(cmd, cwd=out, env=env, capture_output=True, text=True,
+                       timeout=TIMEOUT * len(wanted) + 60)
+    (out / "runner.log").write_text(f"exit {p.returncode}\n{p.stdout}\n{p.stderr}")
+    return out
+
+
+@pytest.mark.parametrize("script", SCRIPTS)
+def test_quick(script, quick_runs):
+    rc_file = quick_runs / f"{script}.rc"
+    runner = (quick_runs / "runner.log").read_text()
+    assert rc_file.exists(), f"{script} did not finish: the runner said\n{runner[-3000:]}"
+    rc = int(rc_file.read_text())
+    stdout = (quick_runs / f"{script}.out").read_text()
+    stderr = (quick_runs / f"{script}.err").read_text()
+    tail = f"\n--- stdout\n{stdout[-3000:]}\n--- stderr\n{stderr[-3000:]}"
+    assert rc == 0, f"{script} --quick exited with {rc}{tail}"
+    assert "Traceback" not in stderr, tail
+    assert LAST[script] in stdout, f"{script}: last section missing{tail}"
     # the stores and specs were removed (only what Dask or numba may leave in TMPDIR)
+    tmp = quick_runs / script.removesuffix(".py") / "tmp"
     left = [q.name for q in tmp.iterdir() if q.name.startswith(("bench-", "rocking-bench"))]
     assert not left, f"{script} left {left} in its temporary directory"

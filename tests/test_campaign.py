@@ -13,6 +13,9 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import pyarrow as pa
+import pyarrow.compute as pc
+import pyarrow.parquet as pq
 import pytest
 from cli_helpers import run_main
 
@@ -66,6 +69,33 @@ def cli(*args, **kw):
 
 
 # ------------------------------------------------------------------ reproducibility
+def parquet_rows(store: Path):
+    """Every chunk file of a store read raw with pyarrow (not through ``campaign.load``),
+    concatenated and sorted by ``sim_id``."""
+    files = sorted((store / "chunks").glob("*.parquet"))
+    assert files, store
+    table = pa.concat_tables([pq.read_table(f) for f in files])
+    return table.take(pc.sort_indices(table, [("sim_id", "ascending")]))
+
+
+def assert_bit_identical(a, b):
+    """Two pyarrow tables with the same schema (names, types, units in the field metadata)
+    and, column by column, the same bytes in every row (NaN payloads and the sign of zero
+    included: stricter than ``==``)."""
+    assert a.schema.equals(b.schema, check_metadata=True), (a.schema, b.schema)
+    assert a.num_rows == b.num_rows
+    for name in a.column_names:
+        x = a.column(name).combine_chunks()
+        y = b.column(name).combine_chunks()
+        assert x.null_count == y.null_count, name
+        if not (pa.types.is_integer(x.type) or pa.types.is_floating(x.type)):
+            assert x.to_pylist() == y.to_pylist(), name  # strings, booleans
+            continue
+        xa = np.ascontiguousarray(x.to_numpy(zero_copy_only=False))
+        ya = np.ascontiguousarray(y.to_numpy(zero_copy_only=False))
+        assert xa.dtype == ya.dtype and xa.tobytes() == ya.tobytes(), name
+
+
 @pytest.fixture(scope="module")
 def local_store(tmp_path_factory):
     """The store of the small spec in chunks of 7, run once for the module."""
@@ -80,26 +110,30 @@ def local_rows(local_store):
     return campaign.load(local_store)
 
 
-def test_rows_identical_across_chunk_sizes(tmp_path, local_rows):
+def test_rows_identical_across_chunk_sizes(tmp_path, local_rows, local_store):
     spec = write(tmp_path, SMALL.format(chunk=5))
     campaign.run(spec, tmp_path / "store", progress=False)
     other = campaign.load(tmp_path / "store")
+    assert_bit_identical(parquet_rows(local_store), parquet_rows(tmp_path / "store"))
     assert len(local_rows) == 2 * 2 * 2 * 3
     assert local_rows["sim_id"].tolist() == list(range(len(local_rows)))
-    pd.testing.assert_frame_equal(local_rows, other)
+    pd.testing.assert_frame_equal(local_rows, other, check_exact=True)
     # the draws are real: alpha varies, theta0 spans its range, noise > 0
     assert local_rows["alpha"].nunique() == len(local_rows)
     assert (local_rows["noise"] > 0).all()
 
 
-def test_rows_identical_on_a_dask_local_cluster(tmp_path, local_rows):
+def test_rows_identical_on_a_dask_local_cluster(tmp_path, local_rows, local_store):
     spec = write(tmp_path, SMALL.format(chunk=3))
     before = dict(os.environ)
     logs: list[str] = []
     st = campaign.run(spec, tmp_path / "store", executor="dask", dask_local=2,
                       progress=False, log=logs.append)
     assert st["complete"]
-    pd.testing.assert_frame_equal(local_rows, campaign.load(tmp_path / "store"))
+    pd.testing.assert_frame_equal(local_rows, campaign.load(tmp_path / "store"),
+                                  check_exact=True)
+    # the Parquet files themselves, row by row and bit for bit (other chunk sizes: 7, 3)
+    assert_bit_identical(parquet_rows(local_store), parquet_rows(tmp_path / "store"))
     # 2 workers share the cores: each runs its chunks on cores // 2 numba threads
     cores = len(os.sched_getaffinity(0))
     assert f"[{max(1, cores // 2)}] numba threads" in logs[0]

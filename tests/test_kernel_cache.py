@@ -90,3 +90,32 @@ def test_the_session_stamped_the_package():
     package = Path(importlib.util.find_spec("rocking").origin).parent
     assert re.fullmatch(r"[0-9a-f]{64}", (package / KERNEL_STAMP).read_text().strip())
     assert re.fullmatch(r"[0-9a-f]{64}", shared_kernels_hash(package))
+
+
+def test_specs_give_writable_samples_and_records_stay_read_only():
+    """numba compiles a kernel once per argument type, and a read-only array is another
+    type: a record's read-only samples in single runs, next to the batches' packed
+    (writable) samples, compiled every model's kernel twice (about 40 s more of first
+    compilation for the five planar models). Every spec hands the kernels writable
+    samples, copies: the record itself stays read-only."""
+    import numpy as np
+    import pytest
+
+    from rocking.buildings import Building, FloorMotion
+    from rocking.motions import GroundMotion, HorizontalPair, Record
+
+    rec = Record(np.array([0.0, 1.0, -0.5, 0.0]), 0.01)
+    vert = Record(np.array([0.0, 0.2, 0.0]), 0.01)
+    specs = {"record": rec.spec(), "scaled": rec.scaled(2.0).spec(),
+             "ground motion": GroundMotion(rec, vert).spec(),
+             "floor": FloorMotion(rec, Building.sdof(0.5, 0.1), floor=1).spec(),
+             "spec3": rec.spec3("30deg"), "pair": HorizontalPair(rec, rec).spec3()}
+    for name, (_, prm, samples) in specs.items():
+        assert samples.flags.writeable and samples.flags.c_contiguous, name
+        assert prm.flags.writeable, name
+    samples = specs["record"][2]
+    np.testing.assert_array_equal(samples, rec.acc)
+    samples[1] = 99.0  # a copy: the record is unchanged and still read-only
+    assert rec.acc[1] == 1.0 and not rec.acc.flags.writeable
+    with pytest.raises(ValueError):
+        rec.acc[1] = 2.0

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 import re
-import warnings
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -47,22 +46,19 @@ class _Links(HTMLParser):
 
 
 @pytest.fixture(scope="module")
-def report(tmp_path_factory):
-    out = tmp_path_factory.mktemp("report")
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        index = reproduce(out, quick=True, progress=False)
-    return out, index, caught
+def report(quick_report):
+    """The quick report (built once for the session: conftest.py)."""
+    return quick_report
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_index_written(report):
     out, index, _ = report
     assert index == out / "index.html"
     assert index.is_file()
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_no_warnings_of_its_own(report):
     """The report's own choices (the isolated model's derived restitution) are stated in
     the page, not warned about in the user's terminal (issue 33)."""
@@ -74,7 +70,7 @@ def test_no_warnings_of_its_own(report):
     assert "the restitution derived from the momentum balance" in page
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_page_references_only_existing_local_files(report):
     out, index, _ = report
     text = index.read_text(encoding="utf-8")
@@ -91,7 +87,7 @@ def test_page_references_only_existing_local_files(report):
     assert "<script" not in text.lower()
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_page_header_and_sections(report):
     _, index, _ = report
     text = index.read_text(encoding="utf-8")
@@ -108,7 +104,7 @@ def test_page_header_and_sections(report):
     assert 'class="error"' not in text
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_every_figure_is_a_png(report):
     out, _, _ = report
     pngs = sorted(out.glob("*.png"))
@@ -118,7 +114,7 @@ def test_every_figure_is_a_png(report):
         assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_table2_csv(report):
     out, _, _ = report
     df = pd.read_csv(out / "table2_parameters.csv")
@@ -140,7 +136,7 @@ def test_table2_csv(report):
             assert row[f"{k}_diff_pct"] == pytest.approx((ours - paper) / paper * 100, abs=1e-3)
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_table2_known_values(report):
     """Independent arithmetic: specimen 1 alpha = atan(0.125/0.5); specimen 4 from Table I."""
     out, _, _ = report
@@ -159,7 +155,7 @@ def test_table2_known_values(report):
                                                          rel=1e-5)
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_table4_csv(report):
     out, _, _ = report
     grid = pd.read_csv(out / "table4_grid.csv", keep_default_na=False)
@@ -188,7 +184,7 @@ def test_table4_csv(report):
     assert len(cells) == n_tested
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_figure7_csv(report):
     out, _, _ = report
     df = pd.read_csv(out / "figure7_summary.csv").set_index("quantity")
@@ -250,7 +246,7 @@ def _sections(text: str) -> dict[str, tuple[str, list[str]]]:
     return out
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_models_come_from_the_registry(report):
     out, _, _ = report
     # the free-standing block's models; a mitigation model (anchors, isolation) is not a
@@ -318,7 +314,7 @@ def test_sections_live_in_sections_package():
         assert mod.startswith("rocking.report.sections."), (sec.id, mod)
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_same_titles_and_numbers_twice(report, tmp_path):
     """A second build (quick mode) gives the same section titles, tables and CSV files."""
     out, index, _ = report
@@ -340,7 +336,7 @@ def test_same_titles_and_numbers_twice(report, tmp_path):
 
 
 # ----------------------------------------------------------------------------- issue 10
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_stochastic_sections_present(report):
     out, index, _ = report
     text = index.read_text(encoding="utf-8")
@@ -353,7 +349,7 @@ def test_stochastic_sections_present(report):
     assert "ILLUSTRATIVE" in text or "illustrative" in text
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_figure6_spectra_peak_at_the_load_frequency(report):
     out, _, _ = report
     df = pd.read_csv(out / "figure6_tests.csv")
@@ -368,7 +364,7 @@ def test_figure6_spectra_peak_at_the_load_frequency(report):
     assert spec.columns[0] == "freq_hz" and spec.shape[1] == 7
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_overturning_spectra_no_overturning_below_uplift(report):
     out, _, _ = report
     df = pd.read_csv(out / "pulses_spectra.csv")
@@ -384,7 +380,7 @@ def test_overturning_spectra_no_overturning_below_uplift(report):
     assert set(omap["mode"]) >= {0, 1, 2}  # both modes and the safe cells
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_p_overturn_non_decreasing_within_its_band(report):
     out, _, _ = report
     df = pd.read_csv(out / "probability_p_overturn.csv")
@@ -400,7 +396,7 @@ def test_p_overturn_non_decreasing_within_its_band(report):
     assert p[-1] > p[0]
 
 
-@pytest.mark.slow  # the quick report, built once for the module: ~50 s
+@pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_fragility_medians_increase_and_pelicun_table(report):
     out, _, _ = report
     fits = pd.read_csv(out / "fragility_fits.csv")

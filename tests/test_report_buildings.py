@@ -8,10 +8,10 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import report_section
 
 import rocking
 from rocking.buildings import FloorMotion
-from rocking.report import reproduce
 from rocking.report.sections import buildings as B
 from rocking.units import G
 
@@ -39,10 +39,10 @@ BLOCKS = ["specimen 2", "specimen 3", "specimen 4", "statue"]
 
 
 @pytest.fixture(scope="module")
-def section_out(tmp_path_factory):
-    """The section alone, quick mode (10 seed earthquakes, 3 PGA levels): ~5 s."""
-    out = tmp_path_factory.mktemp("buildings")
-    index = reproduce(out, quick=True, progress=False, only=["buildings"])
+def section_out(request):
+    """The section in quick mode (conftest.report_section: the session's quick report
+    when it builds one, else the section alone)."""
+    out, index, _ = report_section(request, "buildings")
     return out, index
 
 

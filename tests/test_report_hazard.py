@@ -11,11 +11,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import report_section
 from scipy.stats import norm
 
 from rocking.analysis import fragility_curves
 from rocking.analysis.hazard import HazardCurve
-from rocking.report.core import Context
 from rocking.report.sections import fragility as F
 
 
@@ -102,9 +102,10 @@ def test_risk_table_is_cornell_closed_form_tails_included():
 
 
 @pytest.fixture(scope="module")
-def section(tmp_path_factory):
-    out = tmp_path_factory.mktemp("fragility")
-    html = F.build(Context(out=out, quick=True, section_id="fragility"))
+def section(request):
+    """The fragility section in quick mode (conftest.report_section): its folder and the
+    HTML it wrote into the page."""
+    out, _, html = report_section(request, "fragility")
     return out, html
 
 

@@ -11,9 +11,9 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import report_section
 
 from rocking.motions import response_spectrum
-from rocking.report import reproduce
 from rocking.report.sections import mitigation as M
 from rocking.report.sections.fragility import HAZARD_A0, HAZARD_K, HAZARD_K0
 from rocking.units import G
@@ -25,10 +25,10 @@ BLOCKS = ["specimen 2", "specimen 3", "specimen 4", "statue"]
 
 
 @pytest.fixture(scope="module")
-def section_out(tmp_path_factory):
-    """The section alone, quick mode (3 records x 6 PGAs, 4 pulse periods): ~8 s."""
-    out = tmp_path_factory.mktemp("mitigation")
-    index = reproduce(out, quick=True, progress=False, only=["mitigation"])
+def section_out(request):
+    """The section in quick mode (conftest.report_section: the session's quick report
+    when it builds one, else the section alone)."""
+    out, index, _ = report_section(request, "mitigation")
     return out, index
 
 

@@ -11,10 +11,10 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import report_section
 
 import rocking
 from rocking.motions import GroundMotion, HorizontalPair, load_builtin
-from rocking.report import reproduce
 from rocking.report.sections import real_object as S
 from rocking.shapes import load_example
 from rocking.units import G
@@ -24,10 +24,10 @@ PNGS = ("mesh", "directional", "fragility", "sweep")
 
 
 @pytest.fixture(scope="module")
-def section_out(tmp_path_factory):
-    """The section alone, quick mode (~4 s)."""
-    out = tmp_path_factory.mktemp("real_object")
-    index = reproduce(out, quick=True, progress=False, only=["real_object"])
+def section_out(request):
+    """The section in quick mode (conftest.report_section: the session's quick report
+    when it builds one, else the section alone)."""
+    out, index, _ = report_section(request, "real_object")
     return out, index
 
 

@@ -116,7 +116,10 @@ class Motion:
         prm = np.zeros(K.NPRM)
         vals = (self.scale, *self._params())
         prm[: len(vals)] = vals
-        return self.kind, prm, np.ascontiguousarray(self._samples(), dtype=np.float64)
+        samples = np.ascontiguousarray(self._samples(), dtype=np.float64)
+        # writable, as the batches' packed samples: numba compiles a kernel again for a
+        # read-only array (a record's), minutes of first compilation for nothing
+        return self.kind, prm, samples if samples.flags.writeable else samples.copy()
 
     def acceleration(self, t) -> np.ndarray:
         """Ground acceleration (m/s^2) at times ``t`` (s); scalar in, scalar out.

@@ -16,7 +16,7 @@ from ..base import row_args, same_block, set_planar_result, store_row
 HALF_PI = 0.5 * math.pi
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _world(pos, lv, lvn, len_, nv, wv, wn, en):
     """World coordinates of the vertices, vertex normals and edge normals of every block."""
     for i in range(nv.shape[0]):
@@ -35,7 +35,7 @@ def _world(pos, lv, lvn, len_, nv, wv, wn, en):
                 en[i, k, 1] = s * x + c * y
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _find_edge(px, py, nvx, nvy, i, j, pos, wv, en, nv, rad, rr, tol):
     """Edge of block ``j`` touched by vertex (px, py) of block ``i`` (outward vertex normal
     (nvx, nvy)): ``(edge, d)`` with ``d`` the signed distance (< tol), or ``(-1, 0)``.
@@ -96,7 +96,7 @@ def _contact_law(K, Ks, cn, cs, tanphi, coh, pen, vn, vt, fs_prev, dt):
     return fn, ft, fsp
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _forces(pos, vel, t, dt, lv, lvn, len_, nv, mass, inertia, rad, rr, K, Ks, cn, cs,
             tanphi, coh, kind, prm, samples, wv, wn, en, fs, sedge, F, cf, rec):
     """Contact and body forces at positions ``pos`` with (half-step) velocities ``vel``.
