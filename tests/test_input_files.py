@@ -281,7 +281,7 @@ def csv_file(tmp_path, c, im, col, newline, extras):
     return f, x * to_unit, lam, T
 
 
-FUZZ = settings(max_examples=60, deadline=None,
+FUZZ = settings(max_examples=60, deadline=None, derandomize=True,
                 suppress_health_check=[HealthCheck.function_scoped_fixture])
 
 
@@ -339,7 +339,10 @@ def same_or_refused(read, f, original):
         assert f.name in str(e), str(e)
         assert "\n" not in str(e)
         return
-    assert curve.unit == original.unit
+    if curve.unit != original.unit:
+        # a letter put into the header made another valid unit word (m/s^2 -> mm/s^2):
+        # the file now states that unit, and it is read as stated
+        assert curve.unit in f.read_text(encoding="utf-8", errors="replace"), curve.unit
     assert np.array_equal(curve.im, original.im)
     assert np.allclose(curve.rate, original.rate, rtol=1e-12)
 
