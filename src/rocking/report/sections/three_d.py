@@ -61,7 +61,7 @@ SPEC3_CASES = (("in the plane of the width", 0.0, 0.0, 0.7),
 
 STATUE_DENSITY = 2600.0  # kg/m^3, as the real-object section
 STATUE_PAIRS = ("rinaldi", "duzce")
-STATUE_HEADINGS = (np.arange(0.0, 360.0, 90.0), np.arange(0.0, 360.0, 45.0))  # deg
+STATUE_HEADINGS = (np.arange(0.0, 360.0, 90.0), np.arange(0.0, 360.0, 90.0))  # deg
 STATUE_LEVELS = (6, 8)  # PGAs per (pair, heading): quick, default
 STATUE_PGA = (0.1, 2.0)  # g, of the larger horizontal component
 STATUE_PHIS = (np.arange(0.0, 180.0, 30.0), np.arange(0.0, 180.0, 15.0))  # deg, planar
