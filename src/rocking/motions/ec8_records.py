@@ -33,8 +33,6 @@ B-E), so that records below it understate every Type 1 site.
 from __future__ import annotations
 
 import hashlib
-import os
-import tempfile
 import warnings
 from pathlib import Path
 
@@ -45,7 +43,7 @@ from ..units import G
 from .ec8 import DesignSpectrum, ec8_parameters, ec8_spectrum
 from .records import Record
 from .spectra import response_spectrum
-from .synthetic import GEN_VERSION, Envelope, cache_dir, synthetic
+from .synthetic import GEN_VERSION, Envelope, cache_dir, save_set, synthetic
 
 __all__ = ["ec8_earthquakes", "ec8_earthquake", "check_records_fit", "spectral_shape_ratio",
            "RecordFitWarning", "EC8_COUNT", "EC8_AG", "EC8_SEED", "EC8_PERIOD_RANGE",
@@ -126,26 +124,8 @@ def _cache_file(ground: str, st: int) -> Path:
 
 
 def _save(records, path: Path, key: str) -> None:
-    """Write the set atomically; an OSError is ignored (the cache is only a speed-up)."""
-    tmp = None
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=".tmp_", suffix=".npz", dir=path.parent)
-        with os.fdopen(fd, "wb") as f:
-            np.savez(f, key=np.array(key), acc=np.stack([r.acc for r in records]),
-                     dt=np.array(records[0].dt),
-                     match_error=np.array([r.meta["match_error"] for r in records]),
-                     pga_factor=np.array([r.meta["pga_factor"] for r in records]))
-        os.replace(tmp, path)
-        tmp = None
-    except OSError:
-        pass
-    finally:
-        if tmp is not None:
-            try:
-                os.unlink(tmp)
-            except OSError:
-                pass
+    """Write the set atomically (:func:`rocking.motions.synthetic.save_set`)."""
+    save_set(records, path, key)
 
 
 def _load(path: Path, key: str, ground: str, st: int) -> tuple[Record, ...] | None:

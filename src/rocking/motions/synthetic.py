@@ -477,13 +477,20 @@ def _generate_paper() -> tuple[Record, ...]:
 
 
 def _save(records, path: Path) -> None:
-    """Write the set atomically; any OSError is ignored (the cache is only a speed-up)."""
+    """Write the paper's set atomically (:func:`save_set`)."""
+    save_set(records, path, _paper_key())
+
+
+def save_set(records, path: Path, key: str) -> None:
+    """Write a generated set of records (``acc``, ``dt``, ``numbers``, each one's
+    ``match_error`` and ``pga_factor``, and the ``key`` of its settings) to the ``.npz``
+    ``path`` atomically; an OSError is ignored (the cache is only a speed-up)."""
     tmp = None
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=".tmp_", suffix=".npz", dir=path.parent)
         with os.fdopen(fd, "wb") as f:
-            np.savez(f, key=np.array(_paper_key()),
+            np.savez(f, key=np.array(key),
                      acc=np.stack([r.acc for r in records]),
                      dt=np.array(records[0].dt),
                      numbers=np.array([r.number for r in records]),
