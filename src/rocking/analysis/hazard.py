@@ -1200,7 +1200,7 @@ def risk(fit, curve: HazardCurve, *, t_years: float = 50.0,
     (True, 0.109)
     """
     from scipy.integrate import quad
-    from scipy.stats import norm
+    from scipy.special import log_ndtr  # what scipy.stats.norm.logcdf evaluates, per call
 
     if not isinstance(curve, HazardCurve):
         raise ParameterError(f"curve must be a HazardCurve, got {type(curve).__name__}")
@@ -1217,19 +1217,28 @@ def risk(fit, curve: HazardCurve, *, t_years: float = 50.0,
     k0, k1 = curve.tail_slopes
 
     lognormal = hasattr(fit, "median") and hasattr(fit, "beta")
+    l0, l1 = float(lu[0]), float(lu[-1])
+
+    def log_rate(u):
+        # curve._log_rate for a scalar, with the same floating-point operations
+        if u < l0:
+            return ll[0] - k0 * (u - lu[0])
+        if u > l1:
+            return ll[-1] - k1 * (u - lu[-1])
+        return np.interp(u, lu, ll)
 
     def integrand(u, k):
         # |d lambda / d ln im| = k lambda(im) on a power-law piece of slope k; in logs,
         # so that the tails (lambda -> inf, P -> 0 as im -> 0) do not overflow
         if lognormal:
-            logp = float(norm.logcdf((u + math.log(c) - math.log(fit.median)) / fit.beta))
+            logp = float(log_ndtr((u + math.log(c) - math.log(fit.median)) / fit.beta))
         else:
             x = math.exp(u) * c
             if not 0.0 < x < math.inf:
                 return 0.0
             pv = float(fit.probability(x))
             logp = math.log(pv) if pv > 0 else -math.inf
-        v = logp + math.log(k) + float(curve._log_rate(u))
+        v = logp + math.log(k) + float(log_rate(u))
         return math.exp(v) if v > -745.0 else 0.0
 
     opts = {"epsabs": 0.0, "epsrel": 1e-11, "limit": 200}
