@@ -379,7 +379,7 @@ def test_simulation_error_mapping(capsys, monkeypatch):
 # ----------------------------------------------------------------------------- reproduce
 
 
-def test_reproduce_calls_report(tmp_path, monkeypatch):
+def test_reproduce_calls_report(tmp_path, monkeypatch, capsys):
     calls = []
 
     def fake_reproduce(out, quick=False, progress=True, **kw):
@@ -398,6 +398,12 @@ def test_reproduce_calls_report(tmp_path, monkeypatch):
     assert res.output.strip() == str(tmp_path / "res" / "index.html")
     invoke("reproduce", "--out", tmp_path / "res", "--full")
     assert calls[-1] == (tmp_path / "res", False, {"full": True})
+    invoke("reproduce", "--out", tmp_path / "res", "--jobs", "3")
+    assert calls[-1] == (tmp_path / "res", False, {"jobs": 3})
+    n = len(calls)
+    code, _, err = run_main(capsys, "reproduce", "--out", str(tmp_path / "res"), "--jobs", "0")
+    assert_one_line_error(code, err, "--jobs")
+    assert len(calls) == n
 
 
 def test_reproduce_failed_sections_exit_1(tmp_path, monkeypatch, capsys):

@@ -316,9 +316,10 @@ def test_sections_live_in_sections_package():
 
 @pytest.mark.slow  # the quick report, built once for the session: ~50 s
 def test_same_titles_and_numbers_twice(report, tmp_path):
-    """A second build (quick mode) gives the same section titles, tables and CSV files."""
+    """A second build (quick mode, one section after the other) gives the same section
+    titles, tables and CSV files as the first (its sections in worker processes)."""
     out, index, _ = report
-    second = reproduce(tmp_path, quick=True, progress=False, only=CHEAP)
+    second = reproduce(tmp_path, quick=True, progress=False, only=CHEAP, jobs=1)
     first_secs = _sections(index.read_text(encoding="utf-8"))
     again = _sections(second.read_text(encoding="utf-8"))
     assert list(again) == [s for s in first_secs if s in CHEAP]

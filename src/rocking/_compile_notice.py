@@ -24,6 +24,28 @@ MESSAGE = ("rocking: compiling the rocking kernels, once, about 30 s "
 _said = False
 """Whether this process has written :data:`MESSAGE` already."""
 
+_shared = None
+"""A ``multiprocessing.Value`` shared by cooperating processes (the report's workers,
+:func:`share`): set once one of them has written the line."""
+
+
+def share(flag) -> None:
+    """Say the line once for all the processes given the same ``flag`` (a
+    ``multiprocessing.Value("b", 0)``); ``None``: once for this process alone."""
+    global _shared
+    _shared = flag
+
+
+def _first() -> bool:
+    """Whether this process is the first of those sharing :data:`_shared` to say it."""
+    if _shared is None:
+        return True
+    with _shared.get_lock():
+        if _shared.value:
+            return False
+        _shared.value = 1
+        return True
+
 
 def _cached(dispatcher, sig: tuple) -> bool:
     """Whether numba's cache on disk holds ``dispatcher``'s machine code for the argument
@@ -79,8 +101,9 @@ def compile_notice(dispatcher):
         global _said
         if not _said and will_compile(dispatcher, args):
             _said = True
-            sys.stderr.write(MESSAGE + "\n")
-            sys.stderr.flush()
+            if _first():
+                sys.stderr.write(MESSAGE + "\n")
+                sys.stderr.flush()
         return dispatcher(*args)
 
     return call

@@ -2,7 +2,7 @@
 
 ::
 
-    rocking reproduce --out results [--quick] [--full]
+    rocking reproduce --out results [--quick] [--full] [--jobs N]
 """
 
 from __future__ import annotations
@@ -24,11 +24,14 @@ class ReproduceRequest:
     out: str
     quick: bool
     full: bool
+    jobs: int | None = None
 
     @classmethod
-    def from_options(cls, *, out, quick, full):
+    def from_options(cls, *, out, quick, full, jobs=None):
         """The request of the command's options (click's values)."""
-        return cls(out=out, quick=quick, full=full)
+        if jobs is not None and jobs < 1:
+            raise ParameterError(f"--jobs must be an integer >= 1, got {jobs}")
+        return cls(out=out, quick=quick, full=full, jobs=jobs)
 
     @property
     def folder(self) -> Path:
@@ -50,6 +53,9 @@ class ReproduceRequest:
               help="Output folder of the report.")
 @click.option("--quick", is_flag=True, help="Fewer, shorter simulations (for a smoke test).")
 @click.option("--full", is_flag=True, help="Also the slow sections.")
+@click.option("--jobs", type=int, default=None,
+              help="Sections built at once, each in a worker process  [default: one per "
+                   "core]; 1 builds them one after the other. The report is the same.")
 def reproduce_cmd(**options):
     """Reproduce the paper's tables and figures into OUT/index.html."""
     req = ReproduceRequest.from_options(**options)
@@ -62,6 +68,8 @@ def reproduce_cmd(**options):
     report_error = getattr(report, "ReportError", ())
     # only when asked: an older report.reproduce lacks it
     extra = {"full": True} if req.full else {}
+    if req.jobs is not None:
+        extra["jobs"] = req.jobs
     try:
         index = report.reproduce(req.folder, quick=req.quick, **extra)
     except report_error as e:  # some sections failed; the page was still written

@@ -34,10 +34,13 @@ a red box, the other sections still run, the page is written, and only then
 from __future__ import annotations
 
 import datetime as _dt
+import importlib
+import os
 import platform
 import sys
 import time
 import traceback
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -45,6 +48,7 @@ from pathlib import Path
 from .. import __version__
 from .._atomic import atomic_path, atomic_write
 from ..blocks import paper_data
+from ..errors import ParameterError
 from ..models import MODELS
 from . import html as H
 
@@ -67,17 +71,20 @@ class Section:
     title: str
     build: Callable[[Context], str]
     order: float = 100.0
+    cost: float = 1.0
 
 
 SECTIONS: dict[str, Section] = {}
 """Registered sections by id (see :func:`section`)."""
 
 
-def section(id: str, title: str, order: float = 100.0):
+def section(id: str, title: str, order: float = 100.0, cost: float = 1.0):
     """Decorator registering ``build(ctx) -> str`` as a report section.
 
     ``id`` is short and file-name safe (it prefixes the section's files and is the HTML
-    anchor); ``title`` is the heading; ``order`` sets the position in the page.
+    anchor); ``title`` is the heading; ``order`` sets the position in the page. ``cost``
+    (seconds of the default report on one core, roughly) is a scheduling hint only: with
+    several jobs the costliest sections start first (:func:`reproduce`).
 
     Examples
     --------
@@ -99,7 +106,8 @@ def section(id: str, title: str, order: float = 100.0):
         raise ValueError(f"section id must be alphanumeric (with - or _), got {id!r}")
 
     def deco(fn):
-        SECTIONS[id] = Section(id=id, title=title, build=fn, order=float(order))
+        SECTIONS[id] = Section(id=id, title=title, build=fn, order=float(order),
+                               cost=float(cost))
         return fn
 
     return deco
@@ -391,14 +399,126 @@ def _provenance(now: str, total: float, timings) -> str:
             f"<ul>{rows}</ul>\n</section>")
 
 
+def _cores() -> int:
+    """The cores this process may run on."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # pragma: no cover - not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def _build_one(sec: Section, out: Path, quick: bool, full: bool) -> tuple:
+    """``(fragment, status, seconds, failure or None)`` of one section; a section that
+    raises gets a red box with the traceback instead of its fragment."""
+    ctx = Context(out=out, quick=quick, section_id=sec.id, full=full)
+    t0 = time.perf_counter()
+    try:
+        return sec.build(ctx), "ok", time.perf_counter() - t0, None
+    except Exception as exc:  # a failing section must not kill the report
+        msg = f"{type(exc).__name__}: {exc}"
+        frag = (H.error_box(f"This section failed: {msg}",
+                            "The other sections were still computed.",
+                            traceback.format_exc()) + ctx.files_html())
+        return frag, "FAILED", time.perf_counter() - t0, msg
+
+
+def _portable(sec: Section) -> bool:
+    """Whether a worker process finds ``sec`` by importing its module: its ``build`` is a
+    module-level name of an imported module other than ``__main__``."""
+    fn = sec.build
+    mod = sys.modules.get(getattr(fn, "__module__", None) or "")
+    return (mod is not None and mod.__name__ != "__main__"
+            and getattr(mod, "__spec__", None) is not None
+            and getattr(mod, getattr(fn, "__name__", ""), None) is fn)
+
+
+def _worker_init(threads: int, said) -> None:
+    """A report worker: its share of the cores as numba threads, and the compile notice
+    said once for all the workers."""
+    import numba
+
+    from .. import _compile_notice
+
+    numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
+    _compile_notice.share(said)
+
+
+def _build_in_worker(section_id: str, module: str, out: Path, quick: bool,
+                     full: bool) -> tuple:
+    """:func:`_build_one` of the section ``section_id``, registered by importing
+    ``module`` (in a worker process), and the warnings it raised (category, message,
+    file, line)."""
+    importlib.import_module(__name__.rpartition(".")[0])  # rocking.report: every section
+    importlib.import_module(module)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")  # the caller's filters decide (_build_parallel)
+        result = _build_one(SECTIONS[section_id], out, quick, full)
+    return result, [(w.category, str(w.message), w.filename, w.lineno) for w in caught]
+
+
+def _build_parallel(secs, out: Path, quick: bool, full: bool, jobs: int, threads: int,
+                    done) -> None:
+    """Build ``secs`` in ``jobs`` spawned worker processes, the costliest first; calls
+    ``done(section, result)`` as each ends. Sections a worker cannot import are built
+    here, meanwhile. A worker's warnings are raised again here, under this process's
+    filters. Ctrl-C cancels what has not started and stops the workers."""
+    import multiprocessing as mp
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    from .. import _compile_notice
+
+    spawn = mp.get_context("spawn")
+    said = spawn.Value("b", 0)
+    ex = ProcessPoolExecutor(max_workers=jobs, mp_context=spawn, initializer=_worker_init,
+                             initargs=(threads, said))
+    registries: dict[str, dict] = {}
+    try:
+        futures = {}
+        for sec in sorted(secs, key=lambda s: (-s.cost, s.order, s.id)):
+            if _portable(sec):
+                futures[ex.submit(_build_in_worker, sec.id, sec.build.__module__, out,
+                                  quick, full)] = sec
+        _compile_notice.share(said)
+        try:
+            for sec in secs:
+                if not _portable(sec):
+                    done(sec, _build_one(sec, out, quick, full))
+        finally:
+            _compile_notice.share(None)
+        for fut in as_completed(futures):
+            sec = futures[fut]
+            try:
+                result, caught = fut.result()
+            except Exception as exc:  # the worker died (memory, a signal): say so
+                msg = f"{type(exc).__name__}: {exc}"
+                result, caught = (H.error_box(f"This section failed: {msg}",
+                                              "Its worker process ended abnormally."),
+                                  "FAILED", 0.0, msg), []
+            done(sec, result)
+            for category, message, filename, lineno in caught:
+                warnings.warn_explicit(message, category, filename, lineno,
+                                       registry=registries.setdefault(filename, {}))
+    except BaseException:
+        ex.shutdown(wait=False, cancel_futures=True)
+        raise
+    ex.shutdown(wait=True)
+
+
 def reproduce(out, quick: bool = False, full: bool = False, progress: bool = True,
-              only=None) -> Path:
+              only=None, jobs: int | None = None) -> Path:
     """Write the reproduction report ``out/index.html`` (+ PNG and CSV files); return its path.
 
     ``quick`` runs cheaper versions of the sections (for tests); ``full`` adds the parts
     too slow for the default run (``rocking reproduce --full``); the content depends on
     these flags only, never on how fast the machine is. ``progress`` prints one line per
     section on stderr; ``only`` restricts the report to some section ids.
+
+    ``jobs`` sections are built at once, each in its own worker process (spawned; the
+    costliest first, see :func:`section`), and the machine's cores are shared among them
+    as numba threads. The default is one job per core (at most one per section); ``jobs=1``
+    builds them one after the other in this process. A section never depends on another
+    nor on the number of jobs: the page and every file are the same either way. A section
+    that a worker cannot import (defined in ``__main__`` or a doctest) is built here.
     Raises :class:`ReportError` (a RuntimeError) *after* writing the page if any section
     failed.
 
@@ -428,29 +548,38 @@ def reproduce(out, quick: bool = False, full: bool = False, progress: bool = Tru
             raise ValueError(f"unknown report section(s) {unknown}; "
                              f"known: {[s.id for s in secs]}")
         secs = [s for s in secs if s.id in wanted]
+    cores = _cores()
+    if jobs is None:
+        jobs = cores
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
+        raise ParameterError(f"jobs must be an integer >= 1, got {jobs!r}")
+    jobs = min(jobs, max(1, sum(_portable(s) for s in secs)))
 
     t_all = time.perf_counter()
     mode = ", ".join(m for m, on in (("quick", quick), ("full", full)) if on)
     _log(progress, f"rocking report: {len(secs)} section(s) -> {out}"
-                   f"{f' ({mode})' if mode else ''}")
-    bodies, toc, failed, timings = [], [], {}, []
+                   f"{f' ({mode})' if mode else ''}"
+                   f"{f', {jobs} jobs' if jobs > 1 else ''}")
     width = max((len(s.title) for s in secs), default=0)
+    built: dict[str, tuple] = {}
+
+    def done(sec, result):
+        built[sec.id] = result
+        status, dt = result[1], result[2]
+        _log(progress, f"  [{len(built)}/{len(secs)}] {_ascii(sec.title):<{width}}  "
+                       f"{status:<6} {dt:6.1f} s")
+
+    if jobs == 1:
+        for sec in secs:
+            done(sec, _build_one(sec, out, quick, full))
+    else:
+        _build_parallel(secs, out, quick, full, jobs, max(1, cores // jobs), done)
+
+    bodies, toc, failed, timings = [], [], {}, []
     for i, sec in enumerate(secs, 1):
-        ctx = Context(out=out, quick=quick, section_id=sec.id, full=full)
-        t0 = time.perf_counter()
-        try:
-            frag = sec.build(ctx)
-            status = "ok"
-        except Exception as exc:  # a failing section must not kill the report
-            msg = f"{type(exc).__name__}: {exc}"
+        frag, status, dt, msg = built[sec.id]
+        if msg is not None:
             failed[sec.id] = msg
-            frag = (H.error_box(f"This section failed: {msg}",
-                                "The other sections were still computed.",
-                                traceback.format_exc()) + ctx.files_html())
-            status = "FAILED"
-        dt = time.perf_counter() - t0
-        ascii_title = _ascii(sec.title)
-        _log(progress, f"  [{i}/{len(secs)}] {ascii_title:<{width}}  {status:<6} {dt:6.1f} s")
         cls = "status-ok" if status == "ok" else "status-failed"
         toc.append(f'<li><a href="#{H.esc(sec.id)}">{H.esc(sec.title)}</a> '
                    f'<span class="small {cls}">{H.esc(status)}</span></li>')

@@ -417,7 +417,8 @@ def compute(quick: bool) -> dict:
             "spectra": floor_spectra(buildings, real, spectrum_periods(quick))}
 
 
-@section("buildings", "Beyond the paper: objects inside buildings (floor motions)", order=66)
+@section("buildings", "Beyond the paper: objects inside buildings (floor motions)",
+         order=66, cost=30)
 def build(ctx) -> str:
     res = compute(ctx.quick)
     blocks, buildings, levels = res["blocks"], res["buildings"], res["levels"]

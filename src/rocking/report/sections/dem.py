@@ -264,7 +264,7 @@ def table3_compute(quick: bool) -> dict:
 
 
 @section("table3", "Table III — the DEM parameters from the classical ones (Eqs 14-22)",
-         order=12)
+         order=12, cost=7)
 def build_table3(ctx) -> str:
     res = table3_compute(ctx.quick)
     t, st, demo, dm = res["t"], res["st"], res["demo"], res["damping"]
@@ -389,7 +389,7 @@ def _free_figure(rows):
 
 
 @section("dem_free", "Free rocking of the real shapes (Table I, cut corners): classical, CCRR, DEM",
-         order=26)
+         order=26, cost=4)
 def build_free(ctx) -> str:
     rows = free_runs(ctx.quick)
     recs = []
@@ -533,7 +533,7 @@ def _stack_figure(res):
     return fig
 
 
-@section("dem_stack", "Beyond the paper: a two-block stack under a pulse (DEM)", order=60)
+@section("dem_stack", "Beyond the paper: a two-block stack under a pulse (DEM)", order=60, cost=15)
 def build_stack(ctx) -> str:
     res = stack_compute(ctx.quick)
     sw = res["sweep"]

@@ -212,7 +212,8 @@ def _first_overturn_lf(block, rec, lfs, model):
 
 
 # ----------------------------------------------------------------------------- spectra
-@section("earthquakes", "Synthetic earthquakes — 30 records against the EC8 target", order=40)
+@section("earthquakes", "Synthetic earthquakes — 30 records against the EC8 target",
+         order=40, cost=5)
 def build_spectra(ctx) -> str:
     recs = seed_earthquakes()
     target = paper_target()
@@ -346,7 +347,8 @@ def build_spectra(ctx) -> str:
 
 
 # ----------------------------------------------------------------------------- Figure 8
-@section("figure8", "Figure 8 — specimen 2, earthquake 20, load factors 1.1 and 1.3", order=42)
+@section("figure8", "Figure 8 — specimen 2, earthquake 20, load factors 1.1 and 1.3",
+         order=42, cost=3)
 def build_figure8(ctx) -> str:
     from matplotlib.figure import Figure
 
@@ -422,7 +424,7 @@ def build_figure8(ctx) -> str:
 
 
 # ----------------------------------------------------------------------------- Figure 9
-@section("figure9", "Figure 9 — specimen 3, earthquake 18, load factor 0.5", order=44)
+@section("figure9", "Figure 9 — specimen 3, earthquake 18, load factor 0.5", order=44, cost=4)
 def build_figure9(ctx) -> str:
     from matplotlib.figure import Figure
 
@@ -652,7 +654,7 @@ def _table5_figure(res):
     return fig
 
 
-@section("table5", "Table V — dynamic and static critical angle", order=46)
+@section("table5", "Table V — dynamic and static critical angle", order=46, cost=20)
 def build_table5(ctx) -> str:
     quick = ctx.quick
     res = table5_compute(quick, full=ctx.full)

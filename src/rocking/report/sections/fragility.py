@@ -150,7 +150,7 @@ def risk_table(res: dict, curve: HazardCurve, t_years: float = SERVICE_LIFE):
 
 
 @section("fragility", "Beyond the paper: fragility curves of specimens 2-4 (IM = PGA)",
-         order=64)
+         order=64, cost=15)
 def build(ctx) -> str:
     from matplotlib.figure import Figure
 

@@ -98,7 +98,7 @@ def _figure(res: dict):
     return fig
 
 
-@section("free", "Figure 4 — free rocking of the four specimens, every model", order=25)
+@section("free", "Figure 4 — free rocking of the four specimens, every model", order=25, cost=4)
 def build(ctx) -> str:
     res = runs(dt_out=0.002 if ctx.quick else 5e-4)
     df = compare(res)

@@ -291,7 +291,7 @@ def _stiff_table(stiff: pd.DataFrame) -> str:
 
 
 @section("identification", "Table II analogue — identification from free-rocking records",
-         order=15)
+         order=15, cost=8)
 def build(ctx) -> str:
     res = runs(ctx.quick)
     df = table(res)

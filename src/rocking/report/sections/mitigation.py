@@ -426,7 +426,7 @@ def _result_table(tab, cell, caption) -> str:
 
 
 @section("mitigation", "Beyond the paper: what would make it safe (isolation, anchorage)",
-         order=67)
+         order=67, cost=20)
 def build(ctx) -> str:
     res = compute(ctx.quick)
     blocks, runs, cmp_, cmpc = (res["blocks"], res["runs"], res["comparison"],

@@ -96,7 +96,7 @@ def probability_table(quick: bool) -> pd.DataFrame:
 
 
 @section("probability", "Figure 8 / Table V as a probability — P(overturn | load factor), "
-         "specimen 2, earthquake 20", order=47)
+         "specimen 2, earthquake 20", order=47, cost=20)
 def build(ctx) -> str:
     from matplotlib.figure import Figure
 

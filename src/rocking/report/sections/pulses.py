@@ -55,7 +55,7 @@ def spectra_table(quick: bool) -> pd.DataFrame:
 
 
 @section("pulses", "Beyond the paper: overturning spectra under one-sine and one-cosine pulses",
-         order=62)
+         order=62, cost=12)
 def build(ctx) -> str:
     from matplotlib.figure import Figure
     from matplotlib.ticker import NullFormatter

@@ -325,7 +325,7 @@ def _sweep_figure(sw, weak, scales, pair):
 
 
 # ----------------------------------------------------------------------------- the page
-@section("real_object", "Beyond the paper: a real object (a 3-D mesh)", order=68)
+@section("real_object", "Beyond the paper: a real object (a 3-D mesh)", order=68, cost=4)
 def build(ctx) -> str:
     res = compute(ctx.quick)
     shape, table, weak = res["shape"], res["table"], res["weak"]

@@ -411,7 +411,7 @@ def _cells_table(mc: pd.DataFrame) -> str:
     return H.table(header, rows, caption="Measured cells: nominal acceleration and verdict")
 
 
-@section("table4", "Table IV — rocking-motion space of specimen 2", order=20)
+@section("table4", "Table IV — rocking-motion space of specimen 2", order=20, cost=8)
 def build(ctx) -> str:
     r = compute(ctx.quick)
     grid = r["grid"]

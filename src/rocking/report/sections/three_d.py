@@ -303,7 +303,7 @@ def statue_figure(tab: pd.DataFrame, fits: dict, df: pd.DataFrame):
 
 # ----------------------------------------------------------------------------- section
 @section("three_d", "Beyond the paper: in three dimensions (the 3-D rigid-body model)",
-         order=69)
+         order=69, cost=35)
 def build(ctx) -> str:
     res = planar_limit(ctx.quick)
     tab = planar_table(res)

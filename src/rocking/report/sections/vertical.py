@@ -97,7 +97,7 @@ def _fmt(x) -> str:
 
 
 @section("vertical", "Beyond the paper: the vertical ground motion (Rinaldi and Duzce)",
-         order=64)
+         order=64, cost=3)
 def build(ctx) -> str:
     from matplotlib.figure import Figure
 
