@@ -27,6 +27,7 @@ Probabilistic basis for the 2000 SAC/FEMA steel moment frame guidelines, J. Stru
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -37,7 +38,7 @@ from scipy.stats import norm
 
 from .._atomic import atomic_path
 from .._validate import in_range
-from ..errors import ParameterError, SimulationError
+from ..errors import ParameterError, PlausibilityWarning, SimulationError
 from ..plot import CURVE_GID, LINESTYLES, PALETTE, figure, im_label, style_axes, unit_label
 from ..results import jsonable
 from ..units import ACCELERATION, G
@@ -49,6 +50,11 @@ from ..units import ACCELERATION, G
 #: independent (:func:`fragility`'s ``clusters``: the runs of one ground-motion record
 #: at several headings and levels), each drawn with all its runs, and refits.
 BOOTSTRAP_METHODS = ("normal", "resample", "cluster")
+MIN_CLUSTERS = 5
+"""Fewer clusters than this make a cluster bootstrap's interval unreliable (with ``m``
+clusters there are at most ``C(2m - 1, m)`` distinct draws: 3 for two records, and many
+of them separated): :func:`fragility` warns, and :func:`rocking.analysis.heading_fragility`
+gives no interval."""
 _BAND_NAME = {"normal": "parametric bootstrap, asymptotic normal",
               "resample": "bootstrap, resampled records",
               "cluster": "bootstrap, resampled clusters"}
@@ -742,9 +748,30 @@ def _clusters(clusters, n: int, bootstrap: str) -> np.ndarray | None:
         raise ParameterError(f"clusters must be one label per outcome ({n}), got shape "
                              f"{c.shape}")
     _, inv = np.unique(c, return_inverse=True)
-    if inv.max(initial=0) < 1:
+    m = int(inv.max(initial=0)) + 1
+    if m < 2:
         raise ParameterError("clusters: at least 2 clusters are needed to resample them")
+    if m < MIN_CLUSTERS:
+        warnings.warn(f"clusters: {m} clusters are too few for a bootstrap of them (at "
+                      f"least {MIN_CLUSTERS}): its band and intervals are unreliable, "
+                      "degenerate for 2", PlausibilityWarning, stacklevel=3)
     return inv
+
+
+def bootstrap_reliable(fit: FragilityFit) -> bool:
+    """Whether a fit's bootstrap interval can be shown: at most half of its replicates
+    failed (separated outcomes: ``n_boot_failed``) and they are not all the same (a
+    bootstrap of two clusters can draw nothing new)."""
+    return (fit.n_boot > 0 and fit.n_boot_failed <= fit.n_boot
+            and np.unique(np.round(fit.boot_coef, 12), axis=0).shape[0] > 1)
+
+
+def unreliable_note(fit: FragilityFit) -> str:
+    """Why a fit's bootstrap gives no interval (:func:`bootstrap_reliable` false)."""
+    return (f"no interval: {fit.n_boot_failed} of {fit.n_boot + fit.n_boot_failed} "
+            "bootstrap replicates had separated outcomes or none differed (too few "
+            "records, or too few levels between the first overturning and the last "
+            "survival)")
 
 
 def _resample_clusters(x, y, cl, n_boot, rng):

@@ -29,7 +29,14 @@ import pandas as pd
 
 from ..errors import ParameterError
 from ..plot import LINESTYLES, PALETTE
-from .fragility import FragilityFit, fit_or_bounds, fragility
+from .fragility import (
+    MIN_CLUSTERS,
+    FragilityFit,
+    bootstrap_reliable,
+    fit_or_bounds,
+    fragility,
+    unreliable_note,
+)
 
 HEADING_FIT_COLUMNS = ("heading_deg", "n", "n_records", "n_overturned", "median", "beta",
                        "median_se", "median_ci_lower", "median_ci_upper",
@@ -47,7 +54,10 @@ class HeadingFragility:
     that have one), ``pooled`` (the fit of all headings, its bootstrap by record; None
     when the pooled outcomes give no fit, ``pooled_note`` says why), ``naive_ci`` (the
     pooled median's interval of a bootstrap of runs, for comparison: too narrow),
-    ``n_records``, ``im_name``, ``im_unit``.
+    ``n_records``, ``im_name``, ``im_unit``. With fewer than
+    :data:`~rocking.analysis.fragility.MIN_CLUSTERS` records, or where more than half of
+    a bootstrap's replicates have separated outcomes, no interval is given (NaN) and
+    ``pooled_note`` (or the heading's ``note``) says why.
 
     Examples
     --------
@@ -77,7 +87,8 @@ class HeadingFragility:
     @property
     def worst_heading(self) -> float:
         """The worst heading (deg): the smallest median (its upper bound where a heading
-        has no fit); NaN when no heading gives either."""
+        has no fit; the first of equal ones, all marked in ``table.worst``); NaN when no
+        heading gives either."""
         w = self.table[self.table["worst"]]
         return float(w["heading_deg"].iloc[0]) if len(w) else math.nan
 
@@ -113,10 +124,10 @@ class HeadingFragility:
         """
         from matplotlib.figure import Figure
 
-        from ..plot import style_axes
+        from ..plot import im_label, style_axes, unit_label
 
         t = self.table.sort_values("heading_deg")
-        unit = unit if unit is not None else (self.im_unit or "")
+        unit = unit_label(unit if unit is not None else (self.im_unit or ""))
         fig = Figure(figsize=(11.0, 5.0), layout="constrained")
         axp = fig.add_subplot(1, 2, 1, projection="polar")
         axc = fig.add_subplot(1, 2, 2)
@@ -143,7 +154,7 @@ class HeadingFragility:
                      label=f"all headings: median {pooled:.3g} {unit}")
         if fitted.any():
             x, y = h[fitted], med[fitted]
-            if fitted.all() and len(x) > 2:
+            if fitted.all() and len(x) > 2 and np.ptp(x) > 1.5 * math.pi:  # all round
                 x, y = np.append(x, x[0]), np.append(y, y[0])
             axp.plot(x, y, "-o", ms=4, color=PALETTE[0], lw=1.2,
                      label="median of each heading's fit")
@@ -163,26 +174,31 @@ class HeadingFragility:
                      label="no fit: bounds of the median" if first else None)
             first = False
         w = self.table[self.table["worst"]]
-        if len(w):
-            wh = math.radians(float(w["heading_deg"].iloc[0]))
-            axp.plot([wh, wh], [0.0, top], color="k", ls=":", lw=1.0,
-                     label=f"worst: {float(w['heading_deg'].iloc[0]):g} deg")
+        if 0 < len(w) < len(self.table):
+            for j, wd in enumerate(w["heading_deg"].to_numpy(float)):
+                axp.plot([math.radians(wd)] * 2, [0.0, top], color="k", ls=":", lw=1.0,
+                         label=None if j else "worst: " + ", ".join(
+                             f"{v:g}" for v in w["heading_deg"]) + " deg")
         axp.set_ylim(0.0, top)
         axp.set_theta_zero_location("E")
         axp.set_theta_direction(1)
-        axp.set_title(f"Median {self.im_name} of overturning ({unit})\nby heading (deg: "
+        axp.set_title(f"Median {im_label(self.im_name)} of overturning ({unit})\nby heading (deg: "
                       "the body's x axis from the first component, ccw)", fontsize=10)
         fig.legend(*axp.get_legend_handles_labels(), fontsize=8, loc="outside lower left",
                    frameon=False, ncol=2)
         picks = []
         if self.fits:
             order = sorted(self.fits, key=lambda k: self.fits[k].median)
-            picks = [order[0]] + ([order[-1]] if len(order) > 1 else [])
+            same = math.isclose(self.fits[order[0]].median, self.fits[order[-1]].median,
+                                rel_tol=1e-9)
+            picks = [order[0]] + ([order[-1]] if len(order) > 1 and not same else [])
         for n, k in enumerate(picks):
             f = self.fits[k]
             f.plot(axc, data=False, band=False, color=PALETTE[n % len(PALETTE)],
                    ls=LINESTYLES[n % len(LINESTYLES)],
-                   label=f"{'worst' if n == 0 else 'best'} heading {k:g} deg: median "
+                   label=f"{'worst' if n == 0 and len(picks) > 1 else 'best' if n else 'every'}"
+                         f" heading{'' if len(picks) < 2 else ' ' + format(k, 'g') + ' deg'}"
+                         ": median "
                          f"{f.median / scale:.3g} {unit}, beta {f.beta:.2f}")
         if self.pooled is not None:
             self.pooled.plot(axc, data=False, band=self.pooled.n_boot > 0, color=PALETTE[2],
@@ -247,6 +263,11 @@ def heading_fragility(rows: pd.DataFrame, *, im: str = "im", failed: str = "over
         raise ParameterError(f"record: the column {record!r} names {n_rec} record; a "
                              "bootstrap by record needs at least 2")
     name = im_name or im
+    note = ""
+    if n_boot and n_rec < MIN_CLUSTERS:
+        note = (f"no intervals: {n_rec} records are too few for a bootstrap by record (at "
+                f"least {MIN_CLUSTERS})")
+        n_boot = 0
     kw = {"n_boot": n_boot, "seed": seed, "im_name": name, "im_unit": im_unit}
     out, fits = [], {}
     for hv in np.unique(hd):
@@ -256,7 +277,7 @@ def heading_fragility(rows: pd.DataFrame, *, im: str = "im", failed: str = "over
                "median": math.nan, "beta": math.nan, "median_se": math.nan,
                "median_ci_lower": math.nan, "median_ci_upper": math.nan,
                "median_lower_bound": math.nan, "median_upper_bound": math.nan, "note": ""}
-        boot = "cluster" if row["n_records"] >= 2 and n_boot else "normal"
+        boot = "cluster" if row["n_records"] >= MIN_CLUSTERS and n_boot else "normal"
         try:
             fit, lo, hi, why = fit_or_bounds(
                 x[sel], y[sel], bootstrap=boot, label=f"overturning, {hv:g} deg",
@@ -266,8 +287,10 @@ def heading_fragility(rows: pd.DataFrame, *, im: str = "im", failed: str = "over
         if fit is not None:
             fits[float(hv)] = fit
             row.update(median=fit.median, beta=fit.beta, median_se=fit.median_se)
-            if fit.n_boot:
+            if boot == "cluster" and bootstrap_reliable(fit):
                 row["median_ci_lower"], row["median_ci_upper"] = fit.ci(CI_LEVEL)["median"]
+            elif boot == "cluster":
+                row["note"] = unreliable_note(fit)
         else:
             row.update(median_lower_bound=lo, median_upper_bound=hi,
                        note=f"no fragility fit ({why}): bounds of the median")
@@ -277,15 +300,19 @@ def heading_fragility(rows: pd.DataFrame, *, im: str = "im", failed: str = "over
                    np.where(np.isfinite(table["median_upper_bound"]),
                             table["median_upper_bound"], np.inf))
     table["worst"] = False
-    if np.isfinite(est).any():
-        table.loc[int(np.argmin(est)), "worst"] = True
+    if np.isfinite(est).any():  # ties (a symmetric body): every one of them
+        table["worst"] = est <= np.min(est) * (1.0 + 1e-9)
     table = table[list(HEADING_FIT_COLUMNS)]
-    pooled, note, naive = None, "", (math.nan, math.nan)
+    pooled, naive = None, (math.nan, math.nan)
     try:
         pooled = fragility(x, y, bootstrap="cluster" if n_boot else "normal",
                            clusters=rec if n_boot else None, label="overturning, all headings",
                            **kw)
-        if n_boot:
+        if n_boot and not bootstrap_reliable(pooled):
+            note = unreliable_note(pooled)
+            pooled = fragility(x, y, n_boot=0, seed=seed, label="overturning, all headings",
+                               im_name=name, im_unit=im_unit)
+        elif n_boot:
             naive = fragility(x, y, bootstrap="resample", **kw).ci(CI_LEVEL)["median"]
     except ParameterError as e:
         note = f"no pooled fit: {e}"
