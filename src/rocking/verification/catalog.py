@@ -1091,9 +1091,9 @@ CASES: tuple[Case, ...] = (
         tolerance_kind="abs", group="three-d"),
     Case(
         name="rigid3d-invariance-turn", reference_kind="textbook",
-        source="Isotropy of space: the laws of motion do not depend on the orientation of "
-               "the frame (any dynamics textbook, e.g. Landau, L. D. and Lifshitz, E. M. "
-               "(1976), Mechanics, 3rd ed., Section 9)",
+        source="Landau, L. D. and Lifshitz, E. M. (1976). Mechanics, 3rd ed., Section 9 "
+               "(the isotropy of space: the laws of motion do not depend on the frame's "
+               "orientation). Pergamon.",
         what="largest difference between a skewed body (no symmetry) under the Rinaldi "
              "three-component set and the same body turned by 37 deg about the vertical "
              "with the pair's heading turned by 37 deg (relative, rad or its path's size)",
@@ -1113,9 +1113,9 @@ CASES: tuple[Case, ...] = (
         tolerance_kind="abs", group="three-d"),
     Case(
         name="rigid3d-invariance-mirror", reference_kind="textbook",
-        source="Parity of the laws of motion: the mirror image of a motion is a motion "
-               "(any dynamics textbook, e.g. Landau, L. D. and Lifshitz, E. M. (1976), "
-               "Mechanics, 3rd ed.)",
+        source="Landau, L. D. and Lifshitz, E. M. (1976). Mechanics, 3rd ed. Pergamon "
+               "(the laws of motion are unchanged by a reflection: the mirror image of a "
+               "motion is a motion).",
         what="largest difference between the skewed body's response under the Rinaldi "
              "set and the mirrored response of its mirror image (the mesh mirrored in its "
              "x-z plane, the motion's y component negated)",
