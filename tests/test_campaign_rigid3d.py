@@ -112,7 +112,20 @@ def test_end_to_end_store_fragility_and_risk(tmp_path):
     risk = res["risk"]
     assert np.isfinite(risk[risk["fit"] == "overturning"]["annual_frequency"]).all()
     md = (tmp_path / "report" / "report.md").read_text()
-    assert "pool the 2 headings" in md and "too narrow" in md  # said, not hidden
+    assert "pool the 2 headings" in md and "bootstrap by record" in md  # said, not hidden
+    assert fit[fit["fit"] == "overturning"].shape[0] == 1
+    # a fit (or the bounds of the median) per heading, the worst one, and all headings
+    hd = res["headings"]
+    assert (tmp_path / "report" / "headings.csv").exists()
+    each = hd[hd["heading_deg"].notna()]
+    assert sorted(each["heading_deg"]) == [0.0, 45.0] and each["worst"].any()
+    est = each["median"].fillna(each["median_upper_bound"])  # the worst: the least median
+    assert (est[each["worst"]] == est.min()).all()
+    every = hd[hd["heading_deg"].isna()].iloc[0]
+    assert every["n"] == 16 and every["median"] == over["median"]
+    assert hd.loc[hd["heading_deg"].notna(), "n"].tolist() == [8, 8]
+    assert "### By heading" in md and "(worst)" in md
+    assert any(p.name.startswith("headings_rigid3d") for p in res["files"])
 
 
 @pytest.mark.parametrize("extra, blocks, key", [

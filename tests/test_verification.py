@@ -30,7 +30,12 @@ from rocking.verification import (
     run_cases,
     verification_markdown,
 )
-from rocking.verification.catalog import half_sine_mode2, one_cosine_mode2, one_sine_mode2
+from rocking.verification.catalog import (
+    half_sine_mode2,
+    one_cosine_mode2,
+    one_sine_mode2,
+    rigid3d_invariance,
+)
 from rocking.verification.core import short_source
 
 GROUPS = {"classical", "pulses", "similarity", "cross-model", "buildings", "isolation",
@@ -128,6 +133,13 @@ def test_a_documented_difference_is_shown_and_bounded():
     assert not VerificationTable([known, drift]).passed
     with pytest.raises(ValueError, match="known_tolerance"):
         _case(1.0, 1.0, known_tolerance=0.05)  # a bound without its reason
+
+
+@pytest.mark.parametrize("kind", ["turn", "mirror"])
+def test_the_invariance_cases_see_a_broken_symmetry(kind):
+    """The image's heading off by 0.5 deg (the ground motion not turned or mirrored with
+    the body): the invariance measure is far beyond its case's tolerance (1e-6)."""
+    assert rigid3d_invariance(kind, heading_error=0.5) > 1e-3
 
 
 def test_a_failing_computation_is_a_failing_row_not_an_exception():

@@ -19,7 +19,9 @@ every function returns a tidy :class:`pandas.DataFrame` or a result object with 
   horizontal components, and its worst direction (:class:`DirectionSweep`), and
   :func:`direction_fragility`, a fragility curve per direction (issue 20); its 3-D
   counterpart :func:`heading_sweep`, the body itself (``rigid3d``) at every heading of a
-  pair (:class:`HeadingSweep`; issue 30);
+  pair (:class:`HeadingSweep`; issue 30), and :func:`heading_fragility`, a fragility
+  curve per heading of a campaign's rows, the worst heading and the pooled curve with a
+  bootstrap by record (:class:`HeadingFragility`);
 * :func:`select_records`: amplitude-scaled records whose mean spectrum matches a target
   (EN 1998-1 3.2.3.1.2; :class:`SelectionResult`, :func:`default_periods`,
   :func:`uniform_hazard_spectrum` of SA hazard curves as a target; issue 21);
@@ -42,6 +44,7 @@ from .fourier import FourierSpectrum, fourier_spectrum
 from .fragility import FragilityFit, annual_frequency, fragility, fragility_ida
 from .harmonic import motion_space, plot_motion_space
 from .hazard import HazardCurve, Risk, plot_risk, probability_in, risk
+from .headings import HeadingFragility, heading_fragility
 from .ida import ida, ida_capacity, plot_ida
 from .mitigation import MitigationComparison, compare_mitigations, plot_mitigations
 from .montecarlo import MonteCarloResult, monte_carlo, wilson_interval
@@ -68,7 +71,8 @@ __all__ = [
     "fourier_spectrum", "FourierSpectrum", "overturning_spectrum", "outcome_map",
     "plot_overturning_spectrum", "plot_outcome_map", "pulse_motion", "PULSES",
     "direction_sweep", "DirectionSweep", "plot_sweeps", "direction_fragility",
-    "DirectionFragility", "heading_sweep", "HeadingSweep", "HazardCurve", "Risk", "risk",
+    "DirectionFragility", "heading_sweep", "HeadingSweep", "heading_fragility",
+    "HeadingFragility", "HazardCurve", "Risk", "risk",
     "probability_in", "plot_risk",
     "select_records", "SelectionResult", "default_periods", "uniform_hazard_spectrum",
 ]

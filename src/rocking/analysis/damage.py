@@ -424,6 +424,9 @@ def fragility_curves(im, state=None, *, ratio=None, overturned=None,
     labels = tuple(state_labels(t) if t is not None else
                    [f"DS{k}" for k in range(1, n_states + 1)])
     n_boot, rng, bootstrap = check_n_boot(n_boot), make_rng(seed), check_bootstrap(bootstrap)
+    if bootstrap == "cluster":
+        raise ParameterError("bootstrap='cluster' is for fragility(..., clusters=...); "
+                             "fragility_curves takes 'normal' or 'resample'")
     thr = None if t is None else tuple(t.tolist())
     if method == "separate":
         fits = tuple(fragility(x, s >= k, n_boot=n_boot, seed=seed, bootstrap=bootstrap,

@@ -27,6 +27,7 @@ Probabilistic basis for the 2000 SAC/FEMA steel moment frame guidelines, J. Stru
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -37,7 +38,7 @@ from scipy.stats import norm
 
 from .._atomic import atomic_path
 from .._validate import in_range
-from ..errors import ParameterError, SimulationError
+from ..errors import ParameterError, PlausibilityWarning, SimulationError
 from ..plot import CURVE_GID, LINESTYLES, PALETTE, figure, im_label, style_axes, unit_label
 from ..results import jsonable
 from ..units import ACCELERATION, G
@@ -45,10 +46,18 @@ from ..units import ACCELERATION, G
 #: How the bootstrap band is drawn: ``"normal"`` draws the curve's coefficients from
 #: the asymptotic normal distribution of the MLE (vectorised, cheap); ``"resample"``
 #: resamples the records (within each stripe when every IM value is a stripe) and
-#: refits each replicate.
-BOOTSTRAP_METHODS = ("normal", "resample")
+#: refits each replicate; ``"cluster"`` resamples clusters of runs that are not
+#: independent (:func:`fragility`'s ``clusters``: the runs of one ground-motion record
+#: at several headings and levels), each drawn with all its runs, and refits.
+BOOTSTRAP_METHODS = ("normal", "resample", "cluster")
+MIN_CLUSTERS = 5
+"""Fewer clusters than this make a cluster bootstrap's interval unreliable (with ``m``
+clusters there are at most ``C(2m - 1, m)`` distinct draws: 3 for two records, and many
+of them separated): :func:`fragility` warns, and :func:`rocking.analysis.heading_fragility`
+gives no interval."""
 _BAND_NAME = {"normal": "parametric bootstrap, asymptotic normal",
-              "resample": "bootstrap, resampled records"}
+              "resample": "bootstrap, resampled records",
+              "cluster": "bootstrap, resampled clusters"}
 
 #: SI value of one unit, for the units of pelicun's ``default_units.json`` that an IM
 #: may have (``Theta_0`` is written in the ``Demand-Unit``).
@@ -652,7 +661,7 @@ def stripe_counts(x: np.ndarray, y: np.ndarray):
 
 def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
               bootstrap: str = "normal", label: str = "failure", im_name: str = "im",
-              im_unit: str | None = None) -> FragilityFit:
+              im_unit: str | None = None, clusters=None) -> FragilityFit:
     """A lognormal fragility curve fitted by maximum likelihood (Baker 2015).
 
     ``im``: the IM of each record (> 0, SI units or dimensionless); ``failed``: its
@@ -666,8 +675,13 @@ def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
     ``(b0, b1)`` from the GLM's asymptotic normal distribution (the default: vectorised;
     its pointwise band is the Wald interval of the linear predictor mapped through Phi);
     ``"resample"`` resamples the records within each stripe (all records when some IM
-    has a single record) and refits each replicate; replicates with separated data are
-    skipped and counted in ``n_boot_failed``.
+    has a single record) and refits each replicate; ``"cluster"`` resamples the
+    ``clusters`` (one label per outcome: runs that are not independent of each other,
+    such as the runs of one ground-motion record at several headings and levels), each
+    drawn cluster with all its runs, and refits (the cluster bootstrap: Cameron, Gelbach
+    and Miller 2008, J. Econometrics; with perfectly correlated runs in clusters of ``k``
+    its interval is about ``sqrt(k)`` times the others'). Replicates with separated data
+    are skipped and counted in ``n_boot_failed``.
 
     ``im_name`` and ``im_unit`` name the IM and its unit (e.g. ``"pga"``, ``"m/s^2"``, as
     in the ``attrs`` of an :func:`~rocking.analysis.ida` table); the fit carries them to its
@@ -695,6 +709,7 @@ def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
     im_unit = _unit("im_unit", im_unit)
     x, y = records(im, failed)
     n_boot, rng, bootstrap = check_n_boot(n_boot), make_rng(seed), check_bootstrap(bootstrap)
+    cl = _clusters(clusters, x.size, bootstrap)
     check_separation(x, y)
     levels, n, k, inv = stripe_counts(x, y)
     res = _glm(levels, k, n)
@@ -708,11 +723,77 @@ def fragility(im, failed, *, n_boot: int = 1000, seed: int | None = 0,
         boot = np.empty((0, 2))
     elif bootstrap == "normal":
         boot = rng.multivariate_normal(coef, coef_cov, size=n_boot)
+    elif bootstrap == "cluster":
+        boot, n_fail = _resample_clusters(x, y, cl, n_boot, rng)
     else:
         boot, n_fail = _resample_glm(levels, n, k, x, y, inv, n_boot, rng)
     return make_fit(coef, coef_cov, "glm-probit (Baker 2015)",
                     pd.DataFrame({"im": levels, "n": n, "n_failed": k}), boot, bootstrap,
                     seed, n_fail, float(res.llf), label, im_name, im_unit)
+
+
+def _clusters(clusters, n: int, bootstrap: str) -> np.ndarray | None:
+    """The cluster label of each of the ``n`` outcomes (integers 0..m-1), checked: given
+    iff ``bootstrap == "cluster"``, one per outcome, at least two clusters."""
+    if clusters is None:
+        if bootstrap == "cluster":
+            raise ParameterError("clusters: bootstrap='cluster' needs a cluster label per "
+                                 "outcome (e.g. the record of each run)")
+        return None
+    if bootstrap != "cluster":
+        raise ParameterError(f"clusters are used by bootstrap='cluster' only, got "
+                             f"bootstrap={bootstrap!r}")
+    c = np.asarray(clusters)
+    if c.ndim != 1 or c.size != n:
+        raise ParameterError(f"clusters must be one label per outcome ({n}), got shape "
+                             f"{c.shape}")
+    _, inv = np.unique(c, return_inverse=True)
+    m = int(inv.max(initial=0)) + 1
+    if m < 2:
+        raise ParameterError("clusters: at least 2 clusters are needed to resample them")
+    if m < MIN_CLUSTERS:
+        warnings.warn(f"clusters: {m} clusters are too few for a bootstrap of them (at "
+                      f"least {MIN_CLUSTERS}): its band and intervals are unreliable, "
+                      "degenerate for 2", PlausibilityWarning, stacklevel=3)
+    return inv
+
+
+def bootstrap_reliable(fit: FragilityFit) -> bool:
+    """Whether a fit's bootstrap interval can be shown: at most half of its replicates
+    failed (separated outcomes: ``n_boot_failed``) and they are not all the same (a
+    bootstrap of two clusters can draw nothing new)."""
+    return (fit.n_boot > 0 and fit.n_boot_failed <= fit.n_boot
+            and np.unique(np.round(fit.boot_coef, 12), axis=0).shape[0] > 1)
+
+
+def unreliable_note(fit: FragilityFit) -> str:
+    """Why a fit's bootstrap gives no interval (:func:`bootstrap_reliable` false)."""
+    return (f"no interval: {fit.n_boot_failed} of {fit.n_boot + fit.n_boot_failed} "
+            "bootstrap replicates had separated outcomes or none differed (too few "
+            "records, or too few levels between the first overturning and the last "
+            "survival)")
+
+
+def _resample_clusters(x, y, cl, n_boot, rng):
+    """Bootstrap refits drawing the clusters ``cl`` (labels 0..m-1) with replacement, each
+    with all its outcomes."""
+    m = int(cl.max()) + 1
+    order = np.argsort(cl, kind="stable")
+    starts = np.searchsorted(cl[order], np.arange(m + 1))
+    members = [order[starts[j]:starts[j + 1]] for j in range(m)]
+    out, failed = [], 0
+    for _ in range(n_boot):
+        idx = np.concatenate([members[j] for j in rng.integers(0, m, m)])
+        xb, yb = x[idx], y[idx]
+        try:
+            check_separation(xb, yb)
+            lv, nb, kb, _ = stripe_counts(xb, yb)
+            r = _glm(lv, kb, nb)
+        except (ParameterError, ValueError, np.linalg.LinAlgError):
+            failed += 1
+            continue
+        out.append(np.asarray(r.params, dtype=float))
+    return (np.array(out) if out else np.empty((0, 2))), failed
 
 
 def _resample_glm(levels, n, k, x, y, inv, n_boot, rng):
@@ -809,6 +890,9 @@ def fragility_ida(capacity, censored=None, *, n_boot: int = 1000, seed: int | No
         raise ParameterError(f"capacity and censored must have the same length, got "
                              f"{cap.size} and {cens.size}")
     n_boot, rng, bootstrap = check_n_boot(n_boot), make_rng(seed), check_bootstrap(bootstrap)
+    if bootstrap == "cluster":
+        raise ParameterError("bootstrap='cluster' is for fragility(..., clusters=...); "
+                             "fragility_ida takes 'normal' or 'resample'")
     unc = cap[~cens]
     if unc.size < 2 or np.unique(unc).size < 2:
         raise ParameterError("capacity: at least two distinct uncensored capacities are "

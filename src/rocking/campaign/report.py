@@ -84,6 +84,20 @@ row's "no run overturned up to IM: at most ... per year" bound is left out when 
 stopped at or below that IM (it is no bound then; the combined row's is).
 ``p_overturn.csv`` then ends with ``n_clearance_exceeded``, those runs per level (a column
 only when some run stopped at a clearance: other campaigns' files are as before).
+
+**Headings.** A table with a ``heading`` column of several values (a 3-D campaign's heading
+axis) runs every record at every heading. Its groups' fits pool the headings (the outcome
+at a heading drawn uniformly); the runs of one record at several headings are not
+independent (the same shaking, turned), so the overturning fit's band, interval and risk
+interval come from a bootstrap that resamples records (``motion``), each with its runs at
+every heading and level (:func:`rocking.analysis.fragility`, ``bootstrap="cluster"``).
+Each group also gets a fit per heading and its worst heading
+(:func:`rocking.analysis.heading_fragility`): ``headings.csv`` (a row per heading, and one
+``heading_deg`` NaN for all headings, with the interval of a bootstrap of runs beside the
+by-record one in its note), ``headings_<model>_<block>.png`` (the medians against the
+heading) and a section of ``report.md``. The damage-state curves still draw their bands
+as if the runs were independent (the ordered probit's asymptotic normal): too narrow, as
+a note says.
 """
 
 from __future__ import annotations
@@ -100,8 +114,14 @@ import pandas as pd
 from .._atomic import atomic_path, atomic_write
 from ..analysis import DEFAULT_THRESHOLDS, fragility, fragility_curves, wilson_interval
 from ..analysis.damage import state_labels
-from ..analysis.fragility import fit_or_bounds
+from ..analysis.fragility import (
+    MIN_CLUSTERS,
+    bootstrap_reliable,
+    fit_or_bounds,
+    unreliable_note,
+)
 from ..analysis.hazard import HazardCurve, probability_in, risk
+from ..analysis.headings import HEADING_FIT_COLUMNS, heading_fragility
 from ..errors import ParameterError, SimulationError
 from ..models import require_planar
 from ..models.registry import MODELS
@@ -329,14 +349,17 @@ def _stopped_note(n: int, total: int, what: str = "not overturned") -> str:
             f"{CLEARANCE_FIT} rows count them as failures)")
 
 
-def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed):
+def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed,
+               by_record: bool = False):
     """Overturning fit and damage-state curves of one group: ``(rows, fit, curves,
     notes, clear)``; a fit that cannot be made leaves a row with a note. A group with runs
     stopped at the isolator's clearance also gets the fit of :data:`CLEARANCE_FIT`
     (overturned or clearance reached: those runs failed; ``clear`` is that fit, or None),
     and its overturning and damage-state rows say how many runs count as survivors though
     stopped (:func:`_stopped_note`). ``clear`` is ``False`` for a group without such
-    runs (its rows as before)."""
+    runs (its rows as before). ``by_record``: the overturning (and combined) fits'
+    bootstrap resamples the records (``motion``), each with all its runs (a campaign with
+    several headings)."""
     n_states = len(labels)
     base = {"n": len(ok)}
     rows, notes = [], []
@@ -351,6 +374,22 @@ def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed)
     stop = _stopped(ok)[good]
     n_stop = int(stop.sum())
     base["n"] = int(x.size)
+    boot, no_band = {"n_boot": n_boot}, ""
+    n_rec = int(ok["motion"][good].nunique())
+    if by_record and n_boot and n_rec >= MIN_CLUSTERS:
+        boot.update(bootstrap="cluster", clusters=ok["motion"].to_numpy()[good])
+    elif by_record and n_boot:  # runs of a record are not independent: no honest band
+        boot["n_boot"] = 0
+        no_band = (f"no band: {n_rec} records are too few for a bootstrap by record (at "
+                   f"least {MIN_CLUSTERS})")
+
+    def fit_of(outcome, label):  # a bootstrap by record with no interval: none shown
+        nonlocal no_band
+        f = fragility(x, outcome, seed=seed, label=label, **units, **boot)
+        if "clusters" in boot and not bootstrap_reliable(f):
+            no_band = unreliable_note(f).replace("no interval", "no band")
+            f = fragility(x, outcome, n_boot=0, seed=seed, label=label, **units)
+        return f
 
     def attempt(fn):
         if x.size == 0:
@@ -364,8 +403,7 @@ def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed)
         except _FIT_ERRORS as e:
             return None, str(e)
 
-    fit, why = attempt(lambda: fragility(x, ov, n_boot=n_boot, seed=seed,
-                                         label="overturning", **units))
+    fit, why = attempt(lambda: fit_of(ov, "overturning"))
     row = {"fit": "overturning", "state": n_states, "label": labels[-1], **base,
            "n_exceed": int(ov.sum())}
     if fit is None:
@@ -374,6 +412,7 @@ def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed)
     else:
         note = "" if math.isfinite(fit.median_se) and math.isfinite(fit.beta_se) else \
             "standard errors not finite (nearly separated data)"
+        note = "; ".join(filter(None, [note, no_band]))
         rows.append({**row, "median": fit.median, "median_se": fit.median_se,
                      "beta": fit.beta, "beta_se": fit.beta_se, "note": note})
     clear = False
@@ -381,8 +420,7 @@ def _fit_group(ok: pd.DataFrame, im: dict, labels: list[str], n_boot: int, seed)
         rows[-1]["note"] = "; ".join(filter(None, [rows[-1]["note"],
                                                    _stopped_note(n_stop, x.size)]))
         failed = ov | stop
-        clear, why = attempt(lambda: fragility(x, failed, n_boot=n_boot, seed=seed,
-                                               label=CLEARANCE_LABEL, **units))
+        clear, why = attempt(lambda: fit_of(failed, CLEARANCE_LABEL))
         crow = {"fit": CLEARANCE_FIT, "state": -1, "label": CLEARANCE_LABEL, **base,
                 "n_exceed": int(failed.sum())}
         what = (f"failures: the runs that overturned ({int(ov.sum())}) or were {STOPPED} "
@@ -930,7 +968,7 @@ def _risk_md(rk: pd.DataFrame, site: dict) -> list[str]:
 
 
 def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
-              counts=(), risk=None, site=None, mitigation=None) -> str:
+              counts=(), risk=None, site=None, mitigation=None, headings=()) -> str:
     unit = f" ({im['unit']})" if im["unit"] else ""
     src = ("the im column (motions scaled to intensity levels)" if im["column"] == "im"
            else "the PGA of each run as run (no intensity scaling)")
@@ -961,6 +999,7 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
                  _pm(r.beta, r.beta_se, 2), str(r.n), str(r.n_exceed), r.note or ""]
                 for r in f.itertuples()]
         out += _md_table(["block", f"median{unit}", "beta", "runs", "failed", "note"], rows)
+    out += list(headings)
     if risk is not None:
         out += _risk_md(risk, site)
     if mitigation is not None:
@@ -995,6 +1034,64 @@ def _markdown(manifest, im, n_runs, n_excl, fr, po, images, notes, n_states,
     if notes:
         out += ["## Notes", ""] + [f"- {n}" for n in notes] + [""]
     return "\n".join(out)
+
+
+def _by_heading(ok: pd.DataFrame, key: dict, im: dict, n_boot: int, seed, out: Path,
+                title: str):
+    """The fit of each heading of one group, its worst heading and the pooled fit by
+    record (:func:`rocking.analysis.heading_fragility`): ``(rows, markdown, images)``,
+    the rows of ``headings.csv`` (:data:`HEADING_FIT_COLUMNS` after the group's key, and
+    one row ``heading_deg`` NaN for all headings)."""
+    d = ok[np.isfinite(ok[im["column"]].to_numpy(float)) & (ok[im["column"]] > 0)]
+    unit = f" {im['unit']}" if im["unit"] else ""
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            hf = heading_fragility(d, im=im["column"], record="motion", n_boot=n_boot,
+                                   seed=seed, im_name=im["name"], im_unit=im["unit"] or None)
+    except _FIT_ERRORS as e:
+        return [], [f"### By heading: {title}", "", f"No fit by heading: {e}", ""], []
+    rows = [{**key, **r} for r in hf.table.to_dict("records")]
+    pooled = {c: math.nan for c in HEADING_FIT_COLUMNS}
+    lo, hi = hf.ci["median"]
+    naive = f"{_g(hf.naive_ci[0])}–{_g(hf.naive_ci[1])}"
+    pooled.update(n=len(d), n_records=hf.n_records, n_overturned=int(d["overturned"].sum()),
+                  median_ci_lower=lo, median_ci_upper=hi, worst=False,
+                  note=("all headings; " + (hf.pooled_note or
+                                            "the interval of a bootstrap of runs (as if "
+                                            f"independent): {naive}")))
+    if hf.pooled is not None:
+        pooled.update(median=hf.pooled.median, beta=hf.pooled.beta,
+                      median_se=hf.pooled.median_se)
+    rows.append({**key, **pooled})
+    md = [f"### By heading: {title}", "",
+          "A lognormal fit per heading (its 95 % interval from a bootstrap of the records); "
+          "where a heading's outcomes give no fit, the bounds of its median. The worst "
+          "heading has the smallest median.", ""]
+    tab = []
+    for r in hf.table.itertuples():
+        ci = (f" ({_g(r.median_ci_lower)}–{_g(r.median_ci_upper)})"
+              if math.isfinite(r.median_ci_lower) else "")
+        med = (f"{_g(r.median)}{ci}" if math.isfinite(r.median) else
+               f"between {_g(r.median_lower_bound)} and {_g(r.median_upper_bound)}")
+        tab.append([f"{r.heading_deg:g}" + (" (worst)" if r.worst else ""), str(r.n),
+                    str(r.n_overturned), med,
+                    _g(r.beta, 2) if math.isfinite(r.beta) else "–", r.note or ""])
+    md += _md_table(["heading (deg)", "runs", "overturned", f"median{unit} (95% CI)",
+                     "beta", "note"], tab)
+    if hf.pooled is not None and hf.pooled_note:
+        md += [f"All headings: median {_g(hf.pooled.median)}{unit}; {hf.pooled_note}.", ""]
+    elif hf.pooled is not None:
+        md += [f"All headings: median {_g(hf.pooled.median)}{unit}, 95 % interval "
+               f"{_g(lo)}–{_g(hi)} from a bootstrap by record ({hf.n_records} records, each "
+               f"with its runs at every heading and level); a bootstrap of runs, as if "
+               f"they were independent, gives {naive}: too narrow.", ""]
+    else:
+        md += [hf.pooled_note, ""]
+    tail = "".join("_" + _safe(str(key[c])) for c in ("mitigation", "floor") if c in key)
+    path = out / f"headings_{_safe(key['model'])}_{_safe(str(key['block_name']))}{tail}.png"
+    fig = hf.plot(title=f"{title}: overturning fragility by heading")
+    return rows, md, [(f"by heading, {title}", save_figure(fig, path, dpi=DPI))]
 
 
 def _by_mitigation(po: pd.DataFrame, unit: str) -> list[str]:
@@ -1244,18 +1341,23 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
     if n_excl - n_lift:
         notes.append(f"{n_excl - n_lift} of {len(t)} runs failed numerically (status != 0) "
                      "and are excluded")
-    if "heading" in t.columns and t["heading"].nunique() > 1:
+    headings = "heading" in t.columns and t["heading"].nunique() > 1
+    if headings:
         notes.append(f"the fits pool the {t['heading'].nunique()} headings of every record "
-                     "(the outcome at any heading); their intervals treat the runs of one "
-                     "record at several headings as independent, which they are not: the "
-                     "intervals are too narrow (rocking.analysis.heading_sweep gives the "
-                     "headings one by one)")
+                     "(the outcome at a heading drawn uniformly); the runs of one record at "
+                     "several headings are not independent, so the overturning fit's band "
+                     "and interval (and its risk interval) come from a bootstrap by record "
+                     "(each record with its runs at every heading and level); the "
+                     "damage-state curves' bands still treat the runs as independent: "
+                     "they are too narrow. headings.csv gives the fit of each heading and "
+                     "the worst heading")
     if n_lift:
         notes.append(f"{n_lift} of {len(t)} runs of a planar model left the ground (the "
                      "vertical acceleration exceeded g: lifted_off), which the planar model "
                      "cannot represent; they are neither overturned nor survived and are "
                      "excluded from every count and fit (model='rigid3d' follows the flight)")
     po_parts, fr_rows, pel_rows, by_model, risk_rows = [], [], [], {}, []
+    hd_rows, hd_md, hd_images = [], [], []
     any_stopped = bool(_stopped(t[~failed]).any())  # p_overturn.csv: n_clearance_exceeded
     floor = [c for c in ("floor", "height_ratio") if c in t.columns]
     mit = ["mitigation"] if "mitigation" in t.columns else []
@@ -1269,7 +1371,14 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         pt = _p_overturn(g, im["column"], n_states, clearance=any_stopped)
         po_parts.append(pt.assign(**key)[[*key, *pt.columns]])
         ok = g[g["status"] == 0]
-        rows, fit, curves, gnotes, clear = _fit_group(ok, im, labels, n_boot, seed)
+        rows, fit, curves, gnotes, clear = _fit_group(ok, im, labels, n_boot, seed,
+                                                      by_record=headings)
+        if headings:
+            hrows, md, img = _by_heading(ok, key, im, n_boot, seed, out,
+                                         f"{model}, {name}")
+            hd_rows += hrows
+            hd_md += md
+            hd_images += img
         fr_rows += [{**key, **r} for r in rows]
         if site is not None:
             risk_rows += _risk_rows(key, ok, im, fit, curves, labels, site, clear)
@@ -1286,8 +1395,10 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
         by_model.setdefault(model, []).append((key, pt, fit, clear))
     po = pd.concat(po_parts, ignore_index=True)
     fr = pd.DataFrame(fr_rows)
+    hd = pd.DataFrame(hd_rows) if headings else None
     files = []
-    for fname, df in (("p_overturn.csv", po), ("fragility.csv", fr)):
+    for fname, df in (("p_overturn.csv", po), ("fragility.csv", fr),
+                      *((("headings.csv", hd),) if hd is not None and len(hd) else ())):
         with atomic_path(out / fname) as tmp:
             df.to_csv(tmp, index=False, float_format="%.6g")
         files.append(out / fname)
@@ -1329,14 +1440,17 @@ def report(table: pd.DataFrame, manifest: dict, out, *, n_boot: int = N_BOOT,
                         blocks=manifest.get("blocks"))
         images.append((model, p))
         files.append(p)
+    images += hd_images
+    files += [p for _, p in hd_images]
     md = _markdown(manifest, im, len(t), n_excl, fr, po, images, notes, n_states,
-                   counts=run_lines, risk=rk, site=site, mitigation=cmp)
+                   counts=run_lines, risk=rk, site=site, mitigation=cmp, headings=hd_md)
     atomic_write(out / "report.md", md)
     files.append(out / "report.md")
     return {"files": files, "fragility": fr, "p_overturn": po, "notes": notes, "im": im,
             "n_runs": len(t), "n_excluded": n_excl, "run_notes": run_lines,
             "run_alerts": run_alerts, **run_counts,
             **({} if cmp is None else {"mitigation": cmp}),
+            **({} if hd is None else {"headings": hd}),
             **({} if site is None else {"risk": rk, "hazard": _hazard_info(site)})}
 
 
