@@ -497,7 +497,7 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
             rho_s[m, 0], rho_s[m, 1], rho_s[m, 2] = rho[i, 0], rho[i, 1], rho[i, 2]
             bias_s[m] = bias[i]
             m += 1
-    if m == 0 or m == n_act:
+    if m == 0:
         return False
     for _ in range(n_act):  # drop the contact that pulls most, and solve again
         if not _stick_set(mp, m, rho_s, bias_s, vf, Lf, Jinv, J, P_s, ws6, ws, wn, N):
@@ -506,8 +506,26 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
         for c in range(m):
             if P_s[c, 2] < 0.0 and (worst < 0 or P_s[c, 2] < P_s[worst, 2]):
                 worst = c
-        if worst < 0:
-            break
+        if worst < 0:  # none pulls: a solution if every contact's laws hold
+            for i in range(n_act):
+                Pc[i, 0] = Pc[i, 1] = Pc[i, 2] = 0.0
+            for c in range(m):
+                i = sidx[c]
+                Pc[i, 0], Pc[i, 1], Pc[i, 2] = P_s[c, 0], P_s[c, 1], P_s[c, 2]
+            _effect(mp, n_act, rho, Pc, dv2, dL2)
+            if _residual(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2) <= mp.tol * vscale:
+                for i in range(n_act):
+                    P[i, 0], P[i, 1], P[i, 2] = Pc[i, 0], Pc[i, 1], Pc[i, 2]
+                for a in range(3):
+                    dv[a], dL[a] = dv2[a], dL2[a]
+                return True
+            # not a solution (a contact outside its cone, or one pressed into the ground
+            # by the others: the set holds the body too much): drop the least loaded one.
+            # Neighbouring vertices of a many-sided base share a load that Gauss-Seidel
+            # shifts between them slowly, while the body pivots on one of them
+            for c in range(m):
+                if worst < 0 or P_s[c, 2] < P_s[worst, 2]:
+                    worst = c
         if m == 1:
             return False
         m -= 1
@@ -516,19 +534,7 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
             rho_s[c, 0], rho_s[c, 1], rho_s[c, 2] = rho_s[c + 1, 0], rho_s[c + 1, 1], \
                 rho_s[c + 1, 2]
             bias_s[c] = bias_s[c + 1]
-    for i in range(n_act):
-        Pc[i, 0] = Pc[i, 1] = Pc[i, 2] = 0.0
-    for c in range(m):
-        i = sidx[c]
-        Pc[i, 0], Pc[i, 1], Pc[i, 2] = P_s[c, 0], P_s[c, 1], P_s[c, 2]
-    _effect(mp, n_act, rho, Pc, dv2, dL2)
-    if _residual(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2) > mp.tol * vscale:
-        return False
-    for i in range(n_act):
-        P[i, 0], P[i, 1], P[i, 2] = Pc[i, 0], Pc[i, 1], Pc[i, 2]
-    for a in range(3):
-        dv[a], dL[a] = dv2[a], dL2[a]
-    return True
+    return False
 
 
 @njit(cache=True)
