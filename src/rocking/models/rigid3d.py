@@ -538,8 +538,166 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
 
 
 @njit(cache=True)
+def _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx):
+    """Active-set polishing with sticking *and* slipping contacts: from a Gauss-Seidel
+    iterate ``P``, each loaded contact sticks (inside its cone) or slips (on the cone,
+    its friction along the iterate's ``P_t``), the others are free. For that guess the
+    laws are linear: a sticking contact's velocity is zero, a slipping one's normal
+    velocity is zero and its impulse is ``P_n (e_z + mu d_i)``. With ``G`` the
+    generalized impulse directions (6 x k) and ``A`` the constrained velocity rows
+    (k x 6), the impulses ``lam`` solve ``A M^-1 G lam = r``; the least-norm solution
+    lies in the range of ``G^T``, so ``lam = G^T w`` with ``w`` (6) the least-squares
+    solution of ``(A M^-1 G G^T) w = r`` (a k x 6 problem, rank-deficient where many
+    contacts share an indeterminate load: ``lstsq`` takes the least norm). The guess
+    is then corrected (a contact that pulls is freed, a sticking one outside its cone
+    slips, a slipping one turns its friction against its slip, a free one that
+    penetrates sticks) until every contact's law holds to ``tol`` (True: ``P``, ``dv``,
+    ``dL`` set to it, exact) or 12 corrections are spent (False, ``P`` unchanged).
+    Gauss-Seidel converges slowly where a body pivots on one vertex of a many-sided
+    base while a neighbouring one slips at the cone. ``mx``: work arrays (status (n,),
+    directions (n, 2), rows (3n, 6), right-hand side (3n,), impulses (n, 3), 6 x 6,
+    dv, dL)."""
+    status, dirs, C, r, Pc, Q, dv2, dL2 = mx
+    mu = mp.friction
+    m_inv = 1.0 / mp.mass
+    for i in range(n_act):
+        status[i] = 0
+        pn = P[i, 2]
+        if pn > 0.0:
+            pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
+            if pt > 0.0 and pt >= mu * pn * (1.0 - 1e-6):
+                status[i] = 2
+                dirs[i, 0], dirs[i, 1] = P[i, 0] / pt, P[i, 1] / pt
+            else:
+                status[i] = 1
+    wfx, wfy, wfz = _mv(Jinv, Lf[0], Lf[1], Lf[2])
+    for _ in range(12):
+        # Q = G G^T: sum over sticking contacts of H_i^T H_i, over slipping ones g g^T
+        for a in range(6):
+            for b in range(6):
+                Q[a, b] = 0.0
+        k = 0
+        for i in range(n_act):
+            if status[i] == 0:
+                continue
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            for part in range(3):
+                # the rows h of u = v + w x rho: hx, hy, hz
+                C[k, 0] = 1.0 if part == 0 else 0.0
+                C[k, 1] = 1.0 if part == 1 else 0.0
+                C[k, 2] = 1.0 if part == 2 else 0.0
+                if part == 0:
+                    C[k, 3], C[k, 4], C[k, 5] = 0.0, rz, -ry
+                elif part == 1:
+                    C[k, 3], C[k, 4], C[k, 5] = -rz, 0.0, rx
+                else:
+                    C[k, 3], C[k, 4], C[k, 5] = ry, -rx, 0.0
+                k += 1
+            k -= 3
+            if status[i] == 1:
+                for part in range(3):
+                    for a in range(6):
+                        for b in range(6):
+                            Q[a, b] += C[k + part, a] * C[k + part, b]
+            else:
+                dx, dy = mu * dirs[i, 0], mu * dirs[i, 1]
+                for a in range(6):
+                    ga = C[k + 2, a] + dx * C[k, a] + dy * C[k + 1, a]
+                    for b in range(6):
+                        Q[a, b] += ga * (C[k + 2, b] + dx * C[k, b] + dy * C[k + 1, b])
+            k += 3
+        if k == 0:
+            return False
+        # the constrained rows A B with B = M^-1 Q, and r = -(A V_f + bias)
+        k = 0
+        for i in range(n_act):
+            if status[i] == 0:
+                continue
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            ufx = vf[0] + wfy * rz - wfz * ry
+            ufy = vf[1] + wfz * rx - wfx * rz
+            ufz = vf[2] + wfx * ry - wfy * rx + bias[i]
+            first = 0 if status[i] == 1 else 2
+            for part in range(first, 3):
+                hx, hy, hz = (1.0 if part == 0 else 0.0), (1.0 if part == 1 else 0.0), \
+                    (1.0 if part == 2 else 0.0)
+                if part == 0:
+                    h3, h4, h5 = 0.0, rz, -ry
+                elif part == 1:
+                    h3, h4, h5 = -rz, 0.0, rx
+                else:
+                    h3, h4, h5 = ry, -rx, 0.0
+                # (h^T M^-1) = (h_v / m, Jinv h_w) (Jinv symmetric), then times Q
+                j3, j4, j5 = _mv(Jinv, h3, h4, h5)
+                for b in range(6):
+                    C[k, b] = (hx * Q[0, b] + hy * Q[1, b] + hz * Q[2, b]) * m_inv \
+                        + j3 * Q[3, b] + j4 * Q[4, b] + j5 * Q[5, b]
+                r[k] = -(ufx if part == 0 else (ufy if part == 1 else ufz))
+                k += 1
+        w = np.linalg.lstsq(C[:k], r[:k], 1e-12)[0]
+        # lam = G^T w
+        for i in range(n_act):
+            Pc[i, 0] = Pc[i, 1] = Pc[i, 2] = 0.0
+            if status[i] == 0:
+                continue
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            px = w[0] + w[4] * rz - w[5] * ry
+            py = w[1] + w[5] * rx - w[3] * rz
+            pz = w[2] + w[3] * ry - w[4] * rx
+            if status[i] == 1:
+                Pc[i, 0], Pc[i, 1], Pc[i, 2] = px, py, pz
+            else:
+                pn = pz + mu * (dirs[i, 0] * px + dirs[i, 1] * py)
+                Pc[i, 0], Pc[i, 1], Pc[i, 2] = mu * pn * dirs[i, 0], mu * pn * dirs[i, 1], pn
+        # a contact that pulls: free the one that pulls most
+        worst = -1
+        for i in range(n_act):
+            if status[i] != 0 and Pc[i, 2] < 0.0 and (worst < 0 or Pc[i, 2] < Pc[worst, 2]):
+                worst = i
+        if worst >= 0:
+            status[worst] = 0
+            continue
+        _effect(mp, n_act, rho, Pc, dv2, dL2)
+        if _residual(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2) <= mp.tol * vscale:
+            for i in range(n_act):
+                P[i, 0], P[i, 1], P[i, 2] = Pc[i, 0], Pc[i, 1], Pc[i, 2]
+            for a in range(3):
+                dv[a], dL[a] = dv2[a], dL2[a]
+            return True
+        # correct the guess from the contacts' velocities
+        wx, wy, wz = _mv(Jinv, Lf[0] + dL2[0], Lf[1] + dL2[1], Lf[2] + dL2[2])
+        changed = False
+        for i in range(n_act):
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            ux = vf[0] + dv2[0] + wy * rz - wz * ry
+            uy = vf[1] + dv2[1] + wz * rx - wx * rz
+            un = vf[2] + dv2[2] + wx * ry - wy * rx + bias[i]
+            ut = math.sqrt(ux * ux + uy * uy)
+            if status[i] == 1:
+                pt = math.sqrt(Pc[i, 0] ** 2 + Pc[i, 1] ** 2)
+                if pt > mu * Pc[i, 2]:
+                    status[i] = 2
+                    dirs[i, 0], dirs[i, 1] = Pc[i, 0] / pt, Pc[i, 1] / pt
+                    changed = True
+            elif status[i] == 2:
+                if ut > 0.0:
+                    dx, dy = -ux / ut, -uy / ut
+                    if dx * dirs[i, 0] + dy * dirs[i, 1] < 0.0:  # the slip reversed: sticks
+                        status[i] = 1
+                    else:
+                        dirs[i, 0], dirs[i, 1] = dx, dy
+                    changed = True
+            elif un < -mp.tol * vscale:  # a free contact that penetrates
+                status[i] = 1
+                changed = True
+        if not changed:
+            return False
+    return False
+
+
+@njit(cache=True)
 def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, wnn, wt, Pw, ws6, ws,
-                    wn, sub):
+                    wn, sub, mx):
     """Projected Gauss-Seidel on the contacts ``0..n_act-1`` (lever arms ``rho``, normal
     laws ``U_n+ + bias >= 0 _|_ P_n >= 0``, impulses ``P`` warm-started and updated in
     place), for the free velocities ``vf`` and momentum ``Lf``: the velocity change ``dv``
@@ -629,9 +787,10 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, wnn, wt, P
         resid = _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL)
         if resid <= mp.tol * vscale:
             return sweeps
-        if n_act > 1 and (sweeps == 5 or sweeps % 25 == 0) and \
-                _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, wn,
-                        ws6[2][3], sub):
+        if (sweeps == 5 or sweeps % 25 == 0) and (
+                (n_act > 1 and _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL,
+                                       vscale, ws6, ws, wn, ws6[2][3], sub))
+                or _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx)):
             return sweeps
     return -1
 
@@ -778,6 +937,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     un_minus = np.empty(nv)
     gaps = np.empty(nv)
     bias = np.empty(nv)
+    closing = np.zeros(nv, dtype=np.bool_)
     wnn = np.empty(nv)
     wn = np.empty(nv)
     wt = np.empty((nv, 4))
@@ -790,6 +950,8 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     P = np.zeros((nv, 3))
     sub = (np.empty((nv, 3)), np.empty(nv), np.empty((nv, 3)), np.empty((nv, 3)),
            np.empty(nv, dtype=np.int64), np.empty(3), np.empty(3))
+    mx = (np.empty(nv, dtype=np.int64), np.empty((nv, 2)), np.empty((3 * nv, 6)),
+          np.empty(3 * nv), np.empty((nv, 3)), np.empty((6, 6)), np.empty(3), np.empty(3))
     P_prev = np.zeros((nv, 3))
     was_active = np.zeros(nv, dtype=np.bool_)
     now_active = np.zeros(nv, dtype=np.bool_)
@@ -922,8 +1084,10 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
                 gaps[n_act] = gm
                 if was_active[i] and gm > 0.0:  # a lasting contact closes its drift gap
                     bias[n_act] = 2.0 * gm / h
+                    closing[n_act] = True
                 else:  # Newton's law
                     bias[n_act] = mp.restitution * min(un, 0.0)
+                    closing[n_act] = False
                 idx[n_act] = i
                 P[n_act, 0] = P_prev[i, 0]
                 P[n_act, 1] = P_prev[i, 1]
@@ -941,7 +1105,21 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         if n_act > 0:
             _world_inv_inertia(RM, I, J)
             sweeps = _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, wnn,
-                                     wt, Pw, ws6, ws, wn, sub)
+                                     wt, Pw, ws6, ws, wn, sub, mx)
+            if sweeps < 0:
+                # the drift gaps' closing velocities can contradict each other (two
+                # contacts on a line not quite level, one closing its gap, the other
+                # just landed: no rigid motion sticks at both): solve the plain
+                # Moreau-Jean problem, no gap closed at this step (the next steps close
+                # them), from the last sweep's impulses
+                again = False
+                for c in range(n_act):
+                    if closing[c] and bias[c] != 0.0:
+                        bias[c] = 0.0
+                        again = True
+                if again:
+                    sweeps = _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv,
+                                             dL, wnn, wt, Pw, ws6, ws, wn, sub, mx)
             if sweeps < 0:
                 n_unconv += 1
         impact = False
