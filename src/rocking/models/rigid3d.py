@@ -497,7 +497,7 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
             rho_s[m, 0], rho_s[m, 1], rho_s[m, 2] = rho[i, 0], rho[i, 1], rho[i, 2]
             bias_s[m] = bias[i]
             m += 1
-    if m == 0:
+    if m == 0 or m == n_act:  # all loaded: the caller tried them all sticking
         return False
     for _ in range(n_act):  # drop the contact that pulls most, and solve again
         if not _stick_set(mp, m, rho_s, bias_s, vf, Lf, Jinv, J, P_s, ws6, ws, wn, N):
@@ -520,9 +520,12 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
                     dv[a], dL[a] = dv2[a], dL2[a]
                 return True
             # not a solution (a contact outside its cone, or one pressed into the ground
-            # by the others: the set holds the body too much): drop the least loaded one.
-            # Neighbouring vertices of a many-sided base share a load that Gauss-Seidel
-            # shifts between them slowly, while the body pivots on one of them
+            # by the others: the set holds the body too much): drop the least loaded one
+            # of a set of at most three. Neighbouring vertices of a many-sided base share
+            # a load that Gauss-Seidel shifts between them slowly, while the body pivots
+            # on one of them (a larger set: a sliding base, which no sticking set solves)
+            if m > 3:
+                return False
             for c in range(m):
                 if worst < 0 or P_s[c, 2] < P_s[worst, 2]:
                     worst = c
@@ -538,38 +541,13 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
 
 
 @njit(cache=True)
-def _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx):
-    """Active-set polishing with sticking *and* slipping contacts: from a Gauss-Seidel
-    iterate ``P``, each loaded contact sticks (inside its cone) or slips (on the cone,
-    its friction along the iterate's ``P_t``), the others are free. For that guess the
-    laws are linear: a sticking contact's velocity is zero, a slipping one's normal
-    velocity is zero and its impulse is ``P_n (e_z + mu d_i)``. With ``G`` the
-    generalized impulse directions (6 x k) and ``A`` the constrained velocity rows
-    (k x 6), the impulses ``lam`` solve ``A M^-1 G lam = r``; the least-norm solution
-    lies in the range of ``G^T``, so ``lam = G^T w`` with ``w`` (6) the least-squares
-    solution of ``(A M^-1 G G^T) w = r`` (a k x 6 problem, rank-deficient where many
-    contacts share an indeterminate load: ``lstsq`` takes the least norm). The guess
-    is then corrected (a contact that pulls is freed, a sticking one outside its cone
-    slips, a slipping one turns its friction against its slip, a free one that
-    penetrates sticks) until every contact's law holds to ``tol`` (True: ``P``, ``dv``,
-    ``dL`` set to it, exact) or 12 corrections are spent (False, ``P`` unchanged).
-    Gauss-Seidel converges slowly where a body pivots on one vertex of a many-sided
-    base while a neighbouring one slips at the cone. ``mx``: work arrays (status (n,),
-    directions (n, 2), rows (3n, 6), right-hand side (3n,), impulses (n, 3), 6 x 6,
-    dv, dL)."""
-    status, dirs, C, r, Pc, Q, dv2, dL2 = mx
+def _mixed_from(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, strict):
+    """The corrections of :func:`_mixed` from the guess in ``mx`` (status: 0 free, 1
+    sticking, 2 slipping, and the slipping contacts' friction directions); ``strict``:
+    only the friction directions are corrected, a wrong status fails."""
+    status, dirs, C, r, Pc, Q, dv2, dL2 = mx[0], mx[1], mx[2], mx[3], mx[4], mx[5], mx[6], mx[7]
     mu = mp.friction
     m_inv = 1.0 / mp.mass
-    for i in range(n_act):
-        status[i] = 0
-        pn = P[i, 2]
-        if pn > 0.0:
-            pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
-            if pt > 0.0 and pt >= mu * pn * (1.0 - 1e-6):
-                status[i] = 2
-                dirs[i, 0], dirs[i, 1] = P[i, 0] / pt, P[i, 1] / pt
-            else:
-                status[i] = 1
     wfx, wfy, wfz = _mv(Jinv, Lf[0], Lf[1], Lf[2])
     for _ in range(12):
         # Q = G G^T: sum over sticking contacts of H_i^T H_i, over slipping ones g g^T
@@ -649,13 +627,16 @@ def _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx):
             else:
                 pn = pz + mu * (dirs[i, 0] * px + dirs[i, 1] * py)
                 Pc[i, 0], Pc[i, 1], Pc[i, 2] = mu * pn * dirs[i, 0], mu * pn * dirs[i, 1], pn
-        # a contact that pulls: free the one that pulls most
-        worst = -1
+        # contacts that pull are freed
+        pulls = False
         for i in range(n_act):
-            if status[i] != 0 and Pc[i, 2] < 0.0 and (worst < 0 or Pc[i, 2] < Pc[worst, 2]):
-                worst = i
-        if worst >= 0:
-            status[worst] = 0
+            if status[i] != 0 and Pc[i, 2] < 0.0:
+                pulls = True
+                if not strict:
+                    status[i] = 0
+        if pulls:
+            if strict:
+                return False
             continue
         _effect(mp, n_act, rho, Pc, dv2, dL2)
         if _residual(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2) <= mp.tol * vscale:
@@ -676,6 +657,8 @@ def _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx):
             if status[i] == 1:
                 pt = math.sqrt(Pc[i, 0] ** 2 + Pc[i, 1] ** 2)
                 if pt > mu * Pc[i, 2]:
+                    if strict:
+                        return False
                     status[i] = 2
                     dirs[i, 0], dirs[i, 1] = Pc[i, 0] / pt, Pc[i, 1] / pt
                     changed = True
@@ -683,15 +666,101 @@ def _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx):
                 if ut > 0.0:
                     dx, dy = -ux / ut, -uy / ut
                     if dx * dirs[i, 0] + dy * dirs[i, 1] < 0.0:  # the slip reversed: sticks
+                        if strict:
+                            return False
                         status[i] = 1
                     else:
                         dirs[i, 0], dirs[i, 1] = dx, dy
                     changed = True
             elif un < -mp.tol * vscale:  # a free contact that penetrates
+                if strict:
+                    return False
                 status[i] = 1
                 changed = True
         if not changed:
             return False
+    return False
+
+
+@njit(cache=True)
+def _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, search):
+    """Active-set polishing with sticking *and* slipping contacts: from a Gauss-Seidel
+    iterate ``P``, each loaded contact sticks (inside its cone) or slips (on the cone,
+    its friction along the iterate's ``P_t``), the others are free. For that guess the
+    laws are linear: a sticking contact's velocity is zero, a slipping one's normal
+    velocity is zero and its impulse is ``P_n (e_z + mu d_i)``. With ``G`` the
+    generalized impulse directions (6 x k) and ``A`` the constrained velocity rows
+    (k x 6), the impulses ``lam`` solve ``A M^-1 G lam = r``; the least-norm solution
+    lies in the range of ``G^T``, so ``lam = G^T w`` with ``w`` (6) the least-squares
+    solution of ``(A M^-1 G G^T) w = r`` (a k x 6 problem, rank-deficient where many
+    contacts share an indeterminate load: ``lstsq`` takes the least norm). The guess
+    is then corrected (the contacts that pull are freed, a sticking one outside its cone
+    slips, a slipping one turns its friction against its slip, a free one that
+    penetrates sticks) until every contact's law holds to ``tol`` (True: ``P``, ``dv``,
+    ``dL`` set to it, exact) or 12 corrections are spent (False, ``P`` unchanged).
+    Gauss-Seidel converges slowly where a body pivots on one vertex of a many-sided
+    base while a neighbouring one slips at the cone. ``mx``: work arrays (status (n,),
+    directions (n, 2), rows (3n, 6), right-hand side (3n,), impulses (n, 3), 6 x 6,
+    dv, dL, loaded indices (n,)).
+
+    Tried where the iterate loads at most 8 contacts (each try is a least-squares
+    problem; a base sliding on many vertices is left to Gauss-Seidel). Where the
+    iterate's guess fails, it loads at most three contacts and ``search`` is
+    True, every status
+    of those (free, sticking, slipping: at most 26) is tried in turn, the friction of a
+    slipping one against the iterate's slip, then along the iterate's friction (a body
+    pivoting on an edge whose iterate has the stick and the slip of its two ends
+    swapped)."""
+    status, dirs = mx[0], mx[1]
+    loaded = mx[8]
+    mu = mp.friction
+    wx, wy, wz = _mv(Jinv, Lf[0] + dL[0], Lf[1] + dL[1], Lf[2] + dL[2])
+    m = 0
+    for i in range(n_act):
+        status[i] = 0
+        pn = P[i, 2]
+        if pn > 0.0:
+            loaded[m] = i
+            m += 1
+            pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
+            if pt > 0.0 and pt >= mu * pn * (1.0 - 1e-6):
+                status[i] = 2
+                dirs[i, 0], dirs[i, 1] = P[i, 0] / pt, P[i, 1] / pt
+            else:
+                status[i] = 1
+    if m > 8:  # a sliding base of many vertices: Gauss-Seidel is the cheaper way
+        return False
+    if _mixed_from(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, False):
+        return True
+    if not search or m == 0 or m > 3:
+        return False
+    n_codes = 3 ** m
+    for code in range(1, 2 * n_codes):
+        for i in range(n_act):
+            status[i] = 0
+        cc = code % n_codes
+        slips = False
+        for j in range(m):
+            i = loaded[j]
+            status[i] = cc % 3
+            cc //= 3
+            if status[i] == 2:  # against the iterate's slip, or along its friction
+                slips = True
+                rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+                ux = vf[0] + dv[0] + wy * rz - wz * ry
+                uy = vf[1] + dv[1] + wz * rx - wx * rz
+                ut = math.sqrt(ux * ux + uy * uy)
+                pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
+                if ut > 0.0 and (code < n_codes or not pt > 0.0):
+                    dirs[i, 0], dirs[i, 1] = -ux / ut, -uy / ut
+                elif pt > 0.0:
+                    dirs[i, 0], dirs[i, 1] = P[i, 0] / pt, P[i, 1] / pt
+                else:
+                    dirs[i, 0], dirs[i, 1] = 1.0, 0.0
+        if code % n_codes == 0 or (code >= n_codes and not slips):
+            continue
+        if _mixed_from(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, True):
+            return True
     return False
 
 
@@ -787,10 +856,12 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, wnn, wt, P
         resid = _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL)
         if resid <= mp.tol * vscale:
             return sweeps
-        if (sweeps == 5 or sweeps % 25 == 0) and (
-                (n_act > 1 and _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL,
-                                       vscale, ws6, ws, wn, ws6[2][3], sub))
-                or _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx)):
+        if n_act > 1 and (sweeps == 5 or sweeps % 25 == 0) and \
+                _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, wn,
+                        ws6[2][3], sub):
+            return sweeps
+        if (sweeps == 200 or sweeps == 800 or sweeps == mp.max_iter) and \
+                _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, True):
             return sweeps
     return -1
 
@@ -951,7 +1022,8 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     sub = (np.empty((nv, 3)), np.empty(nv), np.empty((nv, 3)), np.empty((nv, 3)),
            np.empty(nv, dtype=np.int64), np.empty(3), np.empty(3))
     mx = (np.empty(nv, dtype=np.int64), np.empty((nv, 2)), np.empty((3 * nv, 6)),
-          np.empty(3 * nv), np.empty((nv, 3)), np.empty((6, 6)), np.empty(3), np.empty(3))
+          np.empty(3 * nv), np.empty((nv, 3)), np.empty((6, 6)), np.empty(3), np.empty(3),
+          np.empty(nv, dtype=np.int64))
     P_prev = np.zeros((nv, 3))
     was_active = np.zeros(nv, dtype=np.bool_)
     now_active = np.zeros(nv, dtype=np.bool_)
