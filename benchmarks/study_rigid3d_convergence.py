@@ -12,7 +12,7 @@ Measured (the 2-core development machine, one numba thread, the two versions in 
 session; statue / cylinder / box, runs with unconverged steps and their steps, of 64):
 before the mixed stick/slip polish and the plain Moreau-Jean fallback 41/855, 16/51,
 22/37; after 12/18, 0/0, 4/4 (the box's: each the last step of a run that overturns).
-CPU time of the grid, after/before: 1.11, 1.37, 1.09.
+CPU time of the grid, after/before (best of two, run in turn): 0.62, 1.00, 1.00.
 
 Run: ``python benchmarks/study_rigid3d_convergence.py [--quick] [--max-iter N]``.
 """
