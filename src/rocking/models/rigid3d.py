@@ -49,7 +49,12 @@ quaternion, ``I`` the inertia tensor in the body's frame):
    ``tol`` times the free velocity. Exact shortcuts, each taken only where it satisfies
    every contact law: every contact sticking (:func:`_stick`: one 6 x 6 solve; an edge
    keeps its rotation), tried first; the iterate's loaded contacts sticking alone
-   (:func:`_polish`, an active set), every 25 sweeps; a body at rest skips the step while
+   (:func:`_polish`, an active set), every 25 sweeps; the iterate's loaded contacts each
+   sticking or slipping (:func:`_mixed`: a least-squares problem in the body's 6
+   velocities, the guess corrected until every law holds), after 200 and 800 sweeps and
+   at the last; where Gauss-Seidel still stalls, the step again with no drift gap closed
+   (the plain Moreau-Jean law: the gap-closing velocities of two contacts on a line that
+   is not level can contradict sticking at both); a body at rest skips the step while
    its support holds it (:func:`_holds`: the centre of pressure inside the contacts' hull,
    the load inside the friction cone; necessary and sufficient on a plane). The contact
    candidates are the vertices within reach of the ground (:func:`_candidates`).
@@ -90,7 +95,12 @@ ground is still; the run stops) or overturned; ``unconverged_steps`` (a diagnost
 steps whose contact problem did not reach ``tol`` in ``max_iter`` sweeps (their impulses
 are the last sweep's: projected Gauss-Seidel on Coulomb's non-associated law has no
 convergence guarantee; it is slow where many contacts share an indeterminate load while
-slipping, a flat base of many vertices, a rim).
+slipping, a flat base sliding on many vertices; ``docs/guide/rigid3d.rst`` gives their
+counts: 18 steps in the report's 64 statue runs, none in the cylinder's).
+
+A vertex that lands between two steps may overlap the ground by up to one step's travel
+(about 1e-4 of the body's size); the overlap is not removed (Newton's law acts on
+velocities; a drift gap is closed only while positive), see ``docs/guide/rigid3d.rst``.
 """
 
 from __future__ import annotations
@@ -497,7 +507,7 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
             rho_s[m, 0], rho_s[m, 1], rho_s[m, 2] = rho[i, 0], rho[i, 1], rho[i, 2]
             bias_s[m] = bias[i]
             m += 1
-    if m == 0 or m == n_act:
+    if m == 0 or m == n_act:  # all loaded: the caller tried them all sticking
         return False
     for _ in range(n_act):  # drop the contact that pulls most, and solve again
         if not _stick_set(mp, m, rho_s, bias_s, vf, Lf, Jinv, J, P_s, ws6, ws, wn, N):
@@ -506,8 +516,29 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
         for c in range(m):
             if P_s[c, 2] < 0.0 and (worst < 0 or P_s[c, 2] < P_s[worst, 2]):
                 worst = c
-        if worst < 0:
-            break
+        if worst < 0:  # none pulls: a solution if every contact's laws hold
+            for i in range(n_act):
+                Pc[i, 0] = Pc[i, 1] = Pc[i, 2] = 0.0
+            for c in range(m):
+                i = sidx[c]
+                Pc[i, 0], Pc[i, 1], Pc[i, 2] = P_s[c, 0], P_s[c, 1], P_s[c, 2]
+            _effect(mp, n_act, rho, Pc, dv2, dL2)
+            if _residual(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2) <= mp.tol * vscale:
+                for i in range(n_act):
+                    P[i, 0], P[i, 1], P[i, 2] = Pc[i, 0], Pc[i, 1], Pc[i, 2]
+                for a in range(3):
+                    dv[a], dL[a] = dv2[a], dL2[a]
+                return True
+            # not a solution (a contact outside its cone, or one pressed into the ground
+            # by the others: the set holds the body too much): drop the least loaded one
+            # of a set of at most three. Neighbouring vertices of a many-sided base share
+            # a load that Gauss-Seidel shifts between them slowly, while the body pivots
+            # on one of them (a larger set: a sliding base, which no sticking set solves)
+            if m > 3:
+                return False
+            for c in range(m):
+                if worst < 0 or P_s[c, 2] < P_s[worst, 2]:
+                    worst = c
         if m == 1:
             return False
         m -= 1
@@ -516,24 +547,236 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
             rho_s[c, 0], rho_s[c, 1], rho_s[c, 2] = rho_s[c + 1, 0], rho_s[c + 1, 1], \
                 rho_s[c + 1, 2]
             bias_s[c] = bias_s[c + 1]
+    return False
+
+
+@njit(cache=True)
+def _mixed_from(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, strict):
+    """The corrections of :func:`_mixed` from the guess in ``mx`` (status: 0 free, 1
+    sticking, 2 slipping, and the slipping contacts' friction directions); ``strict``:
+    only the friction directions are corrected, a wrong status fails."""
+    status, dirs, C, r, Pc, Q, dv2, dL2 = mx[0], mx[1], mx[2], mx[3], mx[4], mx[5], mx[6], mx[7]
+    mu = mp.friction
+    m_inv = 1.0 / mp.mass
+    wfx, wfy, wfz = _mv(Jinv, Lf[0], Lf[1], Lf[2])
+    for _ in range(12):
+        # Q = G G^T: sum over sticking contacts of H_i^T H_i, over slipping ones g g^T
+        for a in range(6):
+            for b in range(6):
+                Q[a, b] = 0.0
+        k = 0
+        for i in range(n_act):
+            if status[i] == 0:
+                continue
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            for part in range(3):
+                # the rows h of u = v + w x rho: hx, hy, hz
+                C[k, 0] = 1.0 if part == 0 else 0.0
+                C[k, 1] = 1.0 if part == 1 else 0.0
+                C[k, 2] = 1.0 if part == 2 else 0.0
+                if part == 0:
+                    C[k, 3], C[k, 4], C[k, 5] = 0.0, rz, -ry
+                elif part == 1:
+                    C[k, 3], C[k, 4], C[k, 5] = -rz, 0.0, rx
+                else:
+                    C[k, 3], C[k, 4], C[k, 5] = ry, -rx, 0.0
+                k += 1
+            k -= 3
+            if status[i] == 1:
+                for part in range(3):
+                    for a in range(6):
+                        for b in range(6):
+                            Q[a, b] += C[k + part, a] * C[k + part, b]
+            else:
+                dx, dy = mu * dirs[i, 0], mu * dirs[i, 1]
+                for a in range(6):
+                    ga = C[k + 2, a] + dx * C[k, a] + dy * C[k + 1, a]
+                    for b in range(6):
+                        Q[a, b] += ga * (C[k + 2, b] + dx * C[k, b] + dy * C[k + 1, b])
+            k += 3
+        if k == 0:
+            return False
+        # the constrained rows A B with B = M^-1 Q, and r = -(A V_f + bias)
+        k = 0
+        for i in range(n_act):
+            if status[i] == 0:
+                continue
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            ufx = vf[0] + wfy * rz - wfz * ry
+            ufy = vf[1] + wfz * rx - wfx * rz
+            ufz = vf[2] + wfx * ry - wfy * rx + bias[i]
+            first = 0 if status[i] == 1 else 2
+            for part in range(first, 3):
+                hx, hy, hz = (1.0 if part == 0 else 0.0), (1.0 if part == 1 else 0.0), \
+                    (1.0 if part == 2 else 0.0)
+                if part == 0:
+                    h3, h4, h5 = 0.0, rz, -ry
+                elif part == 1:
+                    h3, h4, h5 = -rz, 0.0, rx
+                else:
+                    h3, h4, h5 = ry, -rx, 0.0
+                # (h^T M^-1) = (h_v / m, Jinv h_w) (Jinv symmetric), then times Q
+                j3, j4, j5 = _mv(Jinv, h3, h4, h5)
+                for b in range(6):
+                    C[k, b] = (hx * Q[0, b] + hy * Q[1, b] + hz * Q[2, b]) * m_inv \
+                        + j3 * Q[3, b] + j4 * Q[4, b] + j5 * Q[5, b]
+                r[k] = -(ufx if part == 0 else (ufy if part == 1 else ufz))
+                k += 1
+        w = np.linalg.lstsq(C[:k], r[:k], 1e-12)[0]
+        # lam = G^T w
+        for i in range(n_act):
+            Pc[i, 0] = Pc[i, 1] = Pc[i, 2] = 0.0
+            if status[i] == 0:
+                continue
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            px = w[0] + w[4] * rz - w[5] * ry
+            py = w[1] + w[5] * rx - w[3] * rz
+            pz = w[2] + w[3] * ry - w[4] * rx
+            if status[i] == 1:
+                Pc[i, 0], Pc[i, 1], Pc[i, 2] = px, py, pz
+            else:
+                pn = pz + mu * (dirs[i, 0] * px + dirs[i, 1] * py)
+                Pc[i, 0], Pc[i, 1], Pc[i, 2] = mu * pn * dirs[i, 0], mu * pn * dirs[i, 1], pn
+        # contacts that pull are freed
+        pulls = False
+        for i in range(n_act):
+            if status[i] != 0 and Pc[i, 2] < 0.0:
+                pulls = True
+                if not strict:
+                    status[i] = 0
+        if pulls:
+            if strict:
+                return False
+            continue
+        _effect(mp, n_act, rho, Pc, dv2, dL2)
+        if _residual(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2) <= mp.tol * vscale:
+            for i in range(n_act):
+                P[i, 0], P[i, 1], P[i, 2] = Pc[i, 0], Pc[i, 1], Pc[i, 2]
+            for a in range(3):
+                dv[a], dL[a] = dv2[a], dL2[a]
+            return True
+        # correct the guess from the contacts' velocities
+        wx, wy, wz = _mv(Jinv, Lf[0] + dL2[0], Lf[1] + dL2[1], Lf[2] + dL2[2])
+        changed = False
+        for i in range(n_act):
+            rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+            ux = vf[0] + dv2[0] + wy * rz - wz * ry
+            uy = vf[1] + dv2[1] + wz * rx - wx * rz
+            un = vf[2] + dv2[2] + wx * ry - wy * rx + bias[i]
+            ut = math.sqrt(ux * ux + uy * uy)
+            if status[i] == 1:
+                pt = math.sqrt(Pc[i, 0] ** 2 + Pc[i, 1] ** 2)
+                if pt > mu * Pc[i, 2]:
+                    if strict:
+                        return False
+                    status[i] = 2
+                    dirs[i, 0], dirs[i, 1] = Pc[i, 0] / pt, Pc[i, 1] / pt
+                    changed = True
+            elif status[i] == 2:
+                if ut > 0.0:
+                    dx, dy = -ux / ut, -uy / ut
+                    if dx * dirs[i, 0] + dy * dirs[i, 1] < 0.0:  # the slip reversed: sticks
+                        if strict:
+                            return False
+                        status[i] = 1
+                    else:
+                        dirs[i, 0], dirs[i, 1] = dx, dy
+                    changed = True
+            elif un < -mp.tol * vscale:  # a free contact that penetrates
+                if strict:
+                    return False
+                status[i] = 1
+                changed = True
+        if not changed:
+            return False
+    return False
+
+
+@njit(cache=True)
+def _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, search):
+    """Active-set polishing with sticking *and* slipping contacts: from a Gauss-Seidel
+    iterate ``P``, each loaded contact sticks (inside its cone) or slips (on the cone,
+    its friction along the iterate's ``P_t``), the others are free. For that guess the
+    laws are linear: a sticking contact's velocity is zero, a slipping one's normal
+    velocity is zero and its impulse is ``P_n (e_z + mu d_i)``. With ``G`` the
+    generalized impulse directions (6 x k) and ``A`` the constrained velocity rows
+    (k x 6), the impulses ``lam`` solve ``A M^-1 G lam = r``; the least-norm solution
+    lies in the range of ``G^T``, so ``lam = G^T w`` with ``w`` (6) the least-squares
+    solution of ``(A M^-1 G G^T) w = r`` (a k x 6 problem, rank-deficient where many
+    contacts share an indeterminate load: ``lstsq`` takes the least norm). The guess
+    is then corrected (the contacts that pull are freed, a sticking one outside its cone
+    slips, a slipping one turns its friction against its slip, a free one that
+    penetrates sticks) until every contact's law holds to ``tol`` (True: ``P``, ``dv``,
+    ``dL`` set to it, exact) or 12 corrections are spent (False, ``P`` unchanged).
+    Gauss-Seidel converges slowly where a body pivots on one vertex of a many-sided
+    base while a neighbouring one slips at the cone. ``mx``: work arrays (status (n,),
+    directions (n, 2), rows (3n, 6), right-hand side (3n,), impulses (n, 3), 6 x 6,
+    dv, dL, loaded indices (n,)).
+
+    Tried where the iterate loads at most 8 contacts (each try is a least-squares
+    problem; a base sliding on many vertices is left to Gauss-Seidel). Where the
+    iterate's guess fails, it loads at most three contacts and ``search`` is
+    True, every status
+    of those (free, sticking, slipping: at most 26) is tried in turn, the friction of a
+    slipping one against the iterate's slip, then along the iterate's friction (a body
+    pivoting on an edge whose iterate has the stick and the slip of its two ends
+    swapped)."""
+    status, dirs = mx[0], mx[1]
+    loaded = mx[8]
+    mu = mp.friction
+    wx, wy, wz = _mv(Jinv, Lf[0] + dL[0], Lf[1] + dL[1], Lf[2] + dL[2])
+    m = 0
     for i in range(n_act):
-        Pc[i, 0] = Pc[i, 1] = Pc[i, 2] = 0.0
-    for c in range(m):
-        i = sidx[c]
-        Pc[i, 0], Pc[i, 1], Pc[i, 2] = P_s[c, 0], P_s[c, 1], P_s[c, 2]
-    _effect(mp, n_act, rho, Pc, dv2, dL2)
-    if _residual(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2) > mp.tol * vscale:
+        status[i] = 0
+        pn = P[i, 2]
+        if pn > 0.0:
+            loaded[m] = i
+            m += 1
+            pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
+            if pt > 0.0 and pt >= mu * pn * (1.0 - 1e-6):
+                status[i] = 2
+                dirs[i, 0], dirs[i, 1] = P[i, 0] / pt, P[i, 1] / pt
+            else:
+                status[i] = 1
+    if m > 8:  # a sliding base of many vertices: Gauss-Seidel is the cheaper way
         return False
-    for i in range(n_act):
-        P[i, 0], P[i, 1], P[i, 2] = Pc[i, 0], Pc[i, 1], Pc[i, 2]
-    for a in range(3):
-        dv[a], dL[a] = dv2[a], dL2[a]
-    return True
+    if _mixed_from(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, False):
+        return True
+    if not search or m == 0 or m > 3:
+        return False
+    n_codes = 3 ** m
+    for code in range(1, 2 * n_codes):
+        for i in range(n_act):
+            status[i] = 0
+        cc = code % n_codes
+        slips = False
+        for j in range(m):
+            i = loaded[j]
+            status[i] = cc % 3
+            cc //= 3
+            if status[i] == 2:  # against the iterate's slip, or along its friction
+                slips = True
+                rx, ry, rz = rho[i, 0], rho[i, 1], rho[i, 2]
+                ux = vf[0] + dv[0] + wy * rz - wz * ry
+                uy = vf[1] + dv[1] + wz * rx - wx * rz
+                ut = math.sqrt(ux * ux + uy * uy)
+                pt = math.sqrt(P[i, 0] ** 2 + P[i, 1] ** 2)
+                if ut > 0.0 and (code < n_codes or not pt > 0.0):
+                    dirs[i, 0], dirs[i, 1] = -ux / ut, -uy / ut
+                elif pt > 0.0:
+                    dirs[i, 0], dirs[i, 1] = P[i, 0] / pt, P[i, 1] / pt
+                else:
+                    dirs[i, 0], dirs[i, 1] = 1.0, 0.0
+        if code % n_codes == 0 or (code >= n_codes and not slips):
+            continue
+        if _mixed_from(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, True):
+            return True
+    return False
 
 
 @njit(cache=True)
 def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, wnn, wt, Pw, ws6, ws,
-                    wn, sub):
+                    wn, sub, mx):
     """Projected Gauss-Seidel on the contacts ``0..n_act-1`` (lever arms ``rho``, normal
     laws ``U_n+ + bias >= 0 _|_ P_n >= 0``, impulses ``P`` warm-started and updated in
     place), for the free velocities ``vf`` and momentum ``Lf``: the velocity change ``dv``
@@ -626,6 +869,9 @@ def _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, wnn, wt, P
         if n_act > 1 and (sweeps == 5 or sweeps % 25 == 0) and \
                 _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, wn,
                         ws6[2][3], sub):
+            return sweeps
+        if (sweeps == 200 or sweeps == 800 or sweeps == mp.max_iter) and \
+                _mixed(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, True):
             return sweeps
     return -1
 
@@ -772,6 +1018,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     un_minus = np.empty(nv)
     gaps = np.empty(nv)
     bias = np.empty(nv)
+    closing = np.zeros(nv, dtype=np.bool_)
     wnn = np.empty(nv)
     wn = np.empty(nv)
     wt = np.empty((nv, 4))
@@ -784,6 +1031,9 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     P = np.zeros((nv, 3))
     sub = (np.empty((nv, 3)), np.empty(nv), np.empty((nv, 3)), np.empty((nv, 3)),
            np.empty(nv, dtype=np.int64), np.empty(3), np.empty(3))
+    mx = (np.empty(nv, dtype=np.int64), np.empty((nv, 2)), np.empty((3 * nv, 6)),
+          np.empty(3 * nv), np.empty((nv, 3)), np.empty((6, 6)), np.empty(3), np.empty(3),
+          np.empty(nv, dtype=np.int64))
     P_prev = np.zeros((nv, 3))
     was_active = np.zeros(nv, dtype=np.bool_)
     now_active = np.zeros(nv, dtype=np.bool_)
@@ -916,8 +1166,10 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
                 gaps[n_act] = gm
                 if was_active[i] and gm > 0.0:  # a lasting contact closes its drift gap
                     bias[n_act] = 2.0 * gm / h
+                    closing[n_act] = True
                 else:  # Newton's law
                     bias[n_act] = mp.restitution * min(un, 0.0)
+                    closing[n_act] = False
                 idx[n_act] = i
                 P[n_act, 0] = P_prev[i, 0]
                 P[n_act, 1] = P_prev[i, 1]
@@ -935,7 +1187,21 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         if n_act > 0:
             _world_inv_inertia(RM, I, J)
             sweeps = _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, wnn,
-                                     wt, Pw, ws6, ws, wn, sub)
+                                     wt, Pw, ws6, ws, wn, sub, mx)
+            if sweeps < 0:
+                # the drift gaps' closing velocities can contradict each other (two
+                # contacts on a line not quite level, one closing its gap, the other
+                # just landed: no rigid motion sticks at both): solve the plain
+                # Moreau-Jean problem, no gap closed at this step (the next steps close
+                # them), from the last sweep's impulses
+                again = False
+                for c in range(n_act):
+                    if closing[c] and bias[c] != 0.0:
+                        bias[c] = 0.0
+                        again = True
+                if again:
+                    sweeps = _solve_contacts(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv,
+                                             dL, wnn, wt, Pw, ws6, ws, wn, sub, mx)
             if sweeps < 0:
                 n_unconv += 1
         impact = False
