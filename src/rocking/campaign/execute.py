@@ -110,11 +110,101 @@ def setup_worker(spec: CampaignSpec, per_host: dict | None = None, dask_worker=N
 
 
 # ------------------------------------------------------------------------- executors
+class ChunkWriter:
+    """One background thread that writes finished chunks into the store
+    (:meth:`.store.Store.write_chunk`, in the order given, then ``on_chunk(k, rows)``)
+    while the caller computes the next chunk: the writes overlap the computation (the
+    compiled batches release the GIL, and so do Parquet and the file system).
+
+    At most ``depth`` chunks wait for the writer (:meth:`put` blocks beyond: memory stays
+    a few chunks). A failure in the writer (a full disk, ...) is raised in the caller by
+    the next :meth:`put` or by :meth:`close` (the chunks queued after it are dropped, not
+    written: they are recomputed by the next run). :meth:`close` waits for every chunk
+    put before it to be written, so that an interrupted run (Ctrl-C in the computation)
+    keeps every chunk computed so far; each write is the store's own (file and record
+    atomic, :mod:`.store`), so a kill at any instant leaves what a kill of the serial
+    loop would.
+
+    Examples
+    --------
+    >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, Store, parse_spec
+    >>> from rocking.campaign.execute import ChunkWriter
+    >>> spec = parse_spec(EXAMPLE_SPEC)
+    >>> store = Store("pulses_store").prepare()
+    >>> store.lock()
+    >>> _ = store.open_for(spec)
+    >>> with ChunkWriter(store) as writer:
+    ...     for k in range(spec.n_chunks):
+    ...         writer.put(k, Campaign(spec).run_chunk(k))
+    >>> store.unlock()
+    >>> sorted(store.done())
+    [0, 1]
+    """
+
+    def __init__(self, store: Store, on_chunk: Callable | None = None, depth: int = 1):
+        import queue
+        self.store, self.on_chunk = store, on_chunk
+        self._queue: queue.Queue = queue.Queue(maxsize=max(1, depth))
+        self._error: BaseException | None = None
+        self._closed = False
+        self._thread = threading.Thread(target=self._loop, name="rocking-chunk-writer",
+                                        daemon=True)
+        self._thread.start()
+
+    def _loop(self) -> None:
+        while True:
+            item = self._queue.get()
+            if item is None:
+                return
+            if self._error is not None:
+                continue  # after a failure: drop the rest (recomputed by the next run)
+            k, table = item
+            try:
+                self.store.write_chunk(k, table)
+                if self.on_chunk is not None:
+                    self.on_chunk(k, len(table))
+            except BaseException as e:  # raised in the caller (put, close)
+                self._error = e
+
+    def _raise(self) -> None:
+        if self._error is not None:
+            err, self._error = self._error, None
+            raise err
+
+    def put(self, k: int, table) -> None:
+        """Queue chunk ``k`` (its table) for writing; raises the writer's failure, if
+        any, instead."""
+        self._raise()
+        if self._closed:
+            raise RuntimeError("the chunk writer is closed")
+        self._queue.put((k, table))
+
+    def close(self) -> None:
+        """Wait for every queued chunk to be written, stop the thread, and raise the
+        writer's failure, if any."""
+        if not self._closed:
+            self._closed = True
+            self._queue.put(None)
+            self._thread.join()
+        self._raise()
+
+    def __enter__(self) -> ChunkWriter:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        if exc[0] is None:
+            self.close()
+            return
+        try:  # the caller failed (or was interrupted): keep what was computed
+            self.close()
+        except Exception:  # noqa: S110 - the caller's exception is the one to see
+            pass
+
+
 def _run_local(campaign: Campaign, store: Store, todo: list[int], on_chunk: Callable):
-    for k in todo:
-        table = campaign.run_chunk(k)
-        store.write_chunk(k, table)
-        on_chunk(k, len(table))
+    with ChunkWriter(store, on_chunk) as writer:
+        for k in todo:
+            writer.put(k, campaign.run_chunk(k))
 
 
 def _restore(environ: dict) -> None:
@@ -188,17 +278,17 @@ def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Calla
         pending.update(client.submit(chunk_task, spec_f, k, pure=False)
                        for k in (next(queue, None) for _ in range(window)) if k is not None)
         ac = as_completed(list(pending))
-        for fut in ac:
-            k, table = fut.result()
-            store.write_chunk(k, table)
-            on_chunk(k, len(table))
-            pending.discard(fut)
-            fut.release()
-            nxt = next(queue, None)
-            if nxt is not None:
-                new = client.submit(chunk_task, spec_f, nxt, pure=False)
-                pending.add(new)
-                ac.add(new)
+        with ChunkWriter(store, on_chunk, depth=2) as writer:
+            for fut in ac:
+                k, table = fut.result()
+                writer.put(k, table)
+                pending.discard(fut)
+                fut.release()
+                nxt = next(queue, None)
+                if nxt is not None:
+                    new = client.submit(chunk_task, spec_f, nxt, pure=False)
+                    pending.add(new)
+                    ac.add(new)
     finally:
         for f in pending:
             f.cancel()
