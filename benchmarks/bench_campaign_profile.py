@@ -73,11 +73,12 @@ import time
 from pathlib import Path
 
 STAGES = ("records", "records (prange)", "plan", "batch setup", "kernels", "results",
-          "writing", "writing (thread)", "bookkeeping")
+          "writing", "bookkeeping", "records (thread)", "plan (thread)", "results (thread)",
+          "writing (thread)")
 PARALLEL = ("records (prange)", "kernels")
 """Stages inside compiled ``prange`` regions: their work divides among the cores."""
-OVERLAPPED = ("writing (thread)",)
-"""Stages in another thread, concurrent with the kernels."""
+OVERLAPPED = ("records (thread)", "plan (thread)", "results (thread)", "writing (thread)")
+"""Stages in the local executor's helper threads, concurrent with the kernels."""
 SERIAL = tuple(s for s in STAGES if s not in PARALLEL + OVERLAPPED)
 
 
@@ -131,8 +132,10 @@ class Stages:
         self.local = threading.local()
         self.lock = threading.Lock()
 
-    def wrap(self, func, stage, thread_stage=None):
-        """``func`` timed as ``stage`` (as ``thread_stage`` outside the main thread)."""
+    def wrap(self, func, stage):
+        """``func`` timed as ``stage`` (as ``stage (thread)`` outside the main thread,
+        where there is such a stage)."""
+        thread_stage = f"{stage} (thread)" if f"{stage} (thread)" in STAGES else None
         def timed(*args, **kwargs):
             stack = self.local.__dict__.setdefault("stack", [])
             stack.append([time.perf_counter(), time.thread_time(), 0.0, 0.0])
@@ -160,24 +163,31 @@ def instrumented(stages: Stages):
     from rocking.campaign import execute, plan, store
     from rocking.models import MODELS
     from rocking.motions import stochastic
-    targets = [(plan.MotionSet, "prepare", "records", None),
-               (stochastic, "_filtered", "records (prange)", None),
-               (stochastic, "_highpass", "records (prange)", None),
-               (stochastic, "_pulse_energy", "records (prange)", None),
-               (plan.Campaign, "inputs", "plan", None),
-               (plan, "simulate_many", "batch setup", None),
-               (MODELS["housner"], "batch_kernel", "kernels", None),
-               (plan.Campaign, "run_ids", "results", None),
-               (store.Store, "write_chunk", "writing", "writing (thread)"),
-               (execute, "_run_local", "bookkeeping", None)]
-    if hasattr(execute, "ChunkWriter"):  # the writer thread (issue 33): the waits
-        targets += [(execute.ChunkWriter, "put", "writing", None),
-                    (execute.ChunkWriter, "close", "writing", None)]
+    targets = [(plan.MotionSet, "prepare", "records"),
+               (stochastic, "_filtered", "records (prange)"),
+               (stochastic, "_highpass", "records (prange)"),
+               (stochastic, "_pulse_energy", "records (prange)"),
+               (plan.Campaign, "inputs", "plan"),
+               (plan, "simulate_many", "batch setup"),
+               (MODELS["housner"], "batch_kernel", "kernels"),
+               (plan.Campaign, "run_ids", "results"),
+               (store.Store, "write_chunk", "writing"),
+               (execute, "_run_local", "bookkeeping")]
+    # issue 33's pipeline, where this version has it: the main thread's waits for the
+    # chunk writer and for the inputs built ahead, the steps of run_ids
+    for cls, name, stage in (("ChunkWriter", "put", "writing"),
+                             ("ChunkWriter", "close", "writing"),
+                             ("PlanAhead", "take", "plan")):
+        if hasattr(execute, cls):
+            targets.append((getattr(execute, cls), name, stage))
+    if hasattr(plan.Campaign, "assemble"):
+        targets += [(plan.Campaign, "simulate", "results"),
+                    (plan.Campaign, "assemble", "results")]
     saved = [(obj, name, obj.__dict__[name] if isinstance(obj, type) else getattr(obj, name))
-             for obj, name, _, _ in targets]
+             for obj, name, _ in targets]
     try:
-        for obj, name, stage, other in targets:
-            setattr(obj, name, stages.wrap(getattr(obj, name), stage, other))
+        for obj, name, stage in targets:
+            setattr(obj, name, stages.wrap(getattr(obj, name), stage))
         yield
     finally:
         for obj, name, old in saved:

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from rocking import campaign
-from rocking.campaign import Campaign, Store, parse_spec
+from rocking.campaign import Campaign, Store, execute, parse_spec
 from rocking.campaign.execute import ChunkWriter
 from rocking.errors import ParameterError
 from rocking.motions import stochastic, stochastic_records
@@ -109,19 +109,21 @@ def test_a_failing_writer_surfaces_and_the_resumed_run_is_identical(whole, tmp_p
 
 
 def test_an_interrupt_keeps_every_computed_chunk(whole, tmp_path, monkeypatch):
-    """Ctrl-C while chunk 4 computes: chunks 0-3 (3 perhaps still queued for the writer)
-    are all written before the run stops; the resumed run computes only 4 and 5."""
+    """Ctrl-C while chunk 4's batches run: chunks 0-3 (3 perhaps still queued for the
+    writer) are all written before the run stops; the resumed run computes only 4 and
+    5."""
     spec, sums = whole
-    real = Campaign.run_chunk
+    real = Campaign.simulate
     computed, interrupt = [], [True]
 
-    def run_chunk(self, k):
+    def simulate(self, ids, inputs):
+        k = int(ids[0]) // self.spec.chunk_size
         if k == 4 and interrupt[0]:
             raise KeyboardInterrupt
         computed.append(k)
-        return real(self, k)
+        return real(self, ids, inputs)
 
-    monkeypatch.setattr(Campaign, "run_chunk", run_chunk)
+    monkeypatch.setattr(Campaign, "simulate", simulate)
     with pytest.raises(KeyboardInterrupt):
         campaign.run(spec, tmp_path / "s", progress=False)
     assert computed == [0, 1, 2, 3] and set(sha256s(tmp_path / "s")) == {0, 1, 2, 3}
@@ -129,6 +131,52 @@ def test_an_interrupt_keeps_every_computed_chunk(whole, tmp_path, monkeypatch):
     interrupt[0] = False
     campaign.run(spec, tmp_path / "s", progress=False)
     assert computed == [4, 5] and sha256s(tmp_path / "s") == sums
+
+
+def test_inputs_built_ahead_in_a_helper_thread(whole, tmp_path, monkeypatch):
+    """The inputs of chunk k + 1 are built in a helper thread while chunk k runs (numba's
+    threading layer here is thread-safe); a failure there surfaces in the run, after the
+    chunks before it are written, and the resumed run gives the same files."""
+    spec, sums = whole
+    real = Campaign.inputs
+    where, fail = [], [True]
+
+    def inputs(self, ids):
+        k = int(ids[0]) // self.spec.chunk_size
+        where.append((k, threading.current_thread() is threading.main_thread()))
+        if k == 3 and fail[0]:
+            raise ParameterError("inputs: chunk 3 fails")
+        return real(self, ids)
+
+    monkeypatch.setattr(Campaign, "inputs", inputs)
+    with pytest.raises(ParameterError, match="chunk 3 fails"):
+        campaign.run(spec, tmp_path / "s", progress=False)
+    if execute.threadsafe_layer():
+        assert (2, False) in where and (3, False) in where  # built ahead
+    assert set(sha256s(tmp_path / "s")) == {0, 1, 2}
+    fail[0] = False
+    campaign.run(spec, tmp_path / "s", progress=False)
+    assert sha256s(tmp_path / "s") == sums
+
+
+def test_without_a_thread_safe_layer_the_inputs_are_built_in_turn(whole, tmp_path,
+                                                                  monkeypatch):
+    """numba's ``workqueue`` layer aborts when two threads run parallel kernels (the
+    records' generator has some): then each chunk's inputs are built in the main thread,
+    and the files are the same."""
+    spec, sums = whole
+    real = Campaign.inputs
+    threads = set()
+
+    def inputs(self, ids):
+        threads.add(threading.current_thread() is threading.main_thread())
+        return real(self, ids)
+
+    monkeypatch.setattr(execute, "threadsafe_layer", lambda: False)
+    monkeypatch.setattr(Campaign, "inputs", inputs)
+    campaign.run(spec, tmp_path / "s", progress=False)
+    assert threads == {True}
+    assert sha256s(tmp_path / "s") == sums
 
 
 def test_a_closed_writer_refuses_more_chunks(tmp_path):

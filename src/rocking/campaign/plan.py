@@ -503,7 +503,27 @@ class Campaign:
         1       3  3.0       1.570796        True             3
         """
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
-        table, blocks, motions = self.inputs(ids)
+        return self.assemble(self.simulate(ids, self.inputs(ids)))
+
+    def simulate(self, ids, inputs) -> tuple:
+        """The compiled batches of simulations ``ids`` (one per model) on their
+        ``inputs`` (:meth:`inputs` of the same ``ids``): the raw results, for
+        :meth:`assemble`. :meth:`run_ids` is ``assemble(simulate(ids, inputs(ids)))``; the
+        local executor runs the three steps in three threads, chunk after chunk (the
+        inputs of the next chunk and the table of the previous one are made while the
+        batches of this one run; :mod:`.execute`).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+        >>> c = Campaign(parse_spec(EXAMPLE_SPEC))
+        >>> ids = np.array([1, 3])
+        >>> c.assemble(c.simulate(ids, c.inputs(ids))).equals(c.run_ids(ids))
+        True
+        """
+        ids = np.asarray(ids, dtype=np.int64).reshape(-1)
+        table, blocks, motions = inputs
         n = len(table)
         shared = [k for k in RESULT_COLUMNS if k in OUTPUTS_BY_NAME]
         if self.motions.kind.vertical:
@@ -532,6 +552,23 @@ class Campaign:
                 out["max_abs_theta"][idx] = res.outputs["max_tilt"]
             for k, v in res.outputs.items():
                 rows_out[k][idx] = v
+        return table, out, rows_out
+
+    def assemble(self, raw) -> pd.DataFrame:
+        """The table of :meth:`run_ids` from the raw results of :meth:`simulate`: the
+        inputs, the result columns, the damage states, the models' row outputs.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+        >>> c = Campaign(parse_spec(EXAMPLE_SPEC))
+        >>> ids = np.arange(4)
+        >>> c.assemble(c.simulate(ids, c.inputs(ids))).damage_state.tolist()
+        [0, 1, 1, 3]
+        """
+        table, out, rows_out = raw
+        n = len(table)
         table = table.assign(**out)
         table["max_abs_theta_over_alpha"] = table["max_abs_theta"] / table["alpha"]
         ok = (table["status"].to_numpy() == 0) & np.isfinite(out["max_abs_theta"])
