@@ -564,8 +564,9 @@ class Campaign:
         >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
         >>> c = Campaign(parse_spec(EXAMPLE_SPEC))
         >>> ids = np.arange(4)
-        >>> c.assemble(c.simulate(ids, c.inputs(ids))).damage_state.tolist()
-        [0, 1, 1, 3]
+        >>> rows = c.assemble(c.simulate(ids, c.inputs(ids)))
+        >>> rows.overturned.tolist(), rows.damage_state.tolist()  # overturned: the last state
+        ([False, False, False, True], [0, 0, 0, 3])
         """
         table, out, rows_out = raw
         n = len(table)
