@@ -20,28 +20,35 @@ that runs it (``time.thread_time``: insensitive to other jobs on a shared machin
   motions, validation, result arrays);
 * ``kernels``: the compiled batch kernel (numba ``prange``);
 * ``results``: the rest of ``Campaign.run_ids`` (result columns, damage states);
-* ``writing``: in the main thread, ``Store.write_chunk`` itself where the main thread
-  writes (the serial loop before issue 33), or the time it waits for the chunk writer
-  (``ChunkWriter.put`` blocked on a full queue, ``close`` waiting for the last write);
-* ``writing (thread)``: ``Store.write_chunk`` in the chunk writer's own thread (Parquet,
-  sha256, the chunk's record), while the main thread computes the next chunk;
-* ``bookkeeping``: the rest of ``campaign.run`` (store lock, manifest, check, status).
+* ``writing``: ``Store.write_chunk`` in the main thread (the serial loop before issue 33);
+* ``waits``: the main thread waiting for the local executor's helper threads (issue 33:
+  ``ChunkWriter.put`` on a full queue, ``ChunkWriter.close`` for the last writes,
+  ``PlanAhead.take`` for inputs not built yet);
+* ``bookkeeping``: the rest of ``campaign.run`` (store lock, manifest, check, status);
+* ``records (thread)``, ``plan (thread)``, ``results (thread)``, ``writing (thread)``:
+  the same work in the helper threads of the local executor (issue 33): the next chunk's
+  inputs (``PlanAhead``), the previous chunk's table (``Campaign.assemble``) and its
+  Parquet file, sha256 and record (``ChunkWriter``), while the main thread runs the
+  batches.
 
 **Serial fraction.** ``s`` is the share of the one-thread run's work that nothing
 parallelises: every main-thread stage but the two compiled parallel ones (``kernels``,
 ``records (prange)``: their work divides among the cores), over the whole work, the
-writer thread's included (``writing (thread)`` runs concurrently with the kernels, so
-only the main thread's wait for it, ``writing``, is serial; it is counted as parallel
-work, an upper bound on its cost: one more thread sharing the cores). ``s`` is computed
-from the CPU times (``time.thread_time``) with numba's ``omp`` threading layer (whose
-calling thread runs a one-thread ``prange`` itself, so that the kernels' CPU time is in
-the main thread's), else from wall times. Amdahl's law predicts the speed-up ``1 / (s + (1 - s) /
-N)`` on ``N`` cores (2, to compare with the measured 2-thread ratio, 16 and 64), and its
-limit ``1 / s``. Each stage's 1-thread / 2-thread wall-time ratio is printed too, and the
-``s`` that Amdahl's law fits to the measured 2-thread speed-up ``S2`` (``s = 2 / S2 -
-1``); on a machine shared with other jobs the 2-thread figures are noisy (the load
-average is printed before each run). What Amdahl's law leaves out: the load balance of
-the kernels' ``prange`` (runs of unequal lengths) and memory bandwidth.
+helper threads' included. The helper threads' stages (``... (thread)``) run concurrently
+with the kernels, so only the main thread's ``waits`` for them are serial; their work is
+counted as parallel work, which overstates what it costs the kernels on N cores (the
+helper threads take at most two of them, while the main thread runs only the batches).
+``s`` is computed from the CPU times (``time.thread_time``) with numba's ``omp``
+threading layer (whose calling thread runs a one-thread ``prange`` itself, so that the
+kernels' CPU time is in the main thread's), the ``waits`` in wall time (a wait costs no
+CPU, but the cores wait too), else from wall times. Amdahl's law predicts the speed-up
+``1 / (s + (1 - s) / N)`` on ``N`` cores (2, to compare with the measured 2-thread
+ratio, 16 and 64), and its limit ``1 / s``. Each stage's 1-thread / 2-thread wall-time
+ratio is printed too, and the ``s`` that Amdahl's law fits to the measured 2-thread
+speed-up ``S2`` (``s = 2 / S2 - 1``); on a machine shared with other jobs the 2-thread
+figures are noisy (the load average is printed before each run). What Amdahl's law
+leaves out: the load balance of the kernels' ``prange`` (runs of unequal lengths) and
+memory bandwidth.
 
 Runs alternate 1 and 2 threads (``numba.set_num_threads``), ``--repeat`` pairs (default
 2), each into a fresh store; the best of each is kept. ``--baseline SRC``: the same pairs
@@ -73,8 +80,8 @@ import time
 from pathlib import Path
 
 STAGES = ("records", "records (prange)", "plan", "batch setup", "kernels", "results",
-          "writing", "bookkeeping", "records (thread)", "plan (thread)", "results (thread)",
-          "writing (thread)")
+          "writing", "waits", "bookkeeping", "records (thread)", "plan (thread)",
+          "results (thread)", "writing (thread)")
 PARALLEL = ("records (prange)", "kernels")
 """Stages inside compiled ``prange`` regions: their work divides among the cores."""
 OVERLAPPED = ("records (thread)", "plan (thread)", "results (thread)", "writing (thread)")
@@ -175,9 +182,9 @@ def instrumented(stages: Stages):
                (execute, "_run_local", "bookkeeping")]
     # issue 33's pipeline, where this version has it: the main thread's waits for the
     # chunk writer and for the inputs built ahead, the steps of run_ids
-    for cls, name, stage in (("ChunkWriter", "put", "writing"),
-                             ("ChunkWriter", "close", "writing"),
-                             ("PlanAhead", "take", "plan")):
+    for cls, name, stage in (("ChunkWriter", "put", "waits"),
+                             ("ChunkWriter", "close", "waits"),
+                             ("PlanAhead", "take", "waits")):
         if hasattr(execute, cls):
             targets.append((getattr(execute, cls), name, stage))
     if hasattr(plan.Campaign, "assemble"):
@@ -212,11 +219,19 @@ def amdahl(s: float, n: int) -> float:
     return 1.0 / (s + (1.0 - s) / n)
 
 
+def basis(wall: dict, cpu: dict, layer: str) -> tuple[dict, str]:
+    """The stage times that the serial fraction is computed from (see the module
+    docstring): CPU times with the ``omp`` layer, the main thread's waits in wall time
+    (a wait costs no CPU, but the kernels wait too)."""
+    if layer != "omp":
+        return wall, "wall times"
+    return {**cpu, "waits": wall["waits"]}, "CPU times, waits in wall time"
+
+
 def serial_fraction(wall: dict, cpu: dict, layer: str) -> tuple[float, str]:
     """``(s, basis)`` of a one-thread run (see the module docstring)."""
-    t = cpu if layer == "omp" else wall
-    work = sum(t.values())
-    return sum(t[k] for k in SERIAL) / work, ("CPU" if t is cpu else "wall") + " times"
+    t, how = basis(wall, cpu, layer)
+    return sum(t[k] for k in SERIAL) / sum(t.values()), how
 
 
 def measure(args, spec_path: Path, root: Path, n: int) -> dict:
@@ -265,11 +280,11 @@ def print_tables(best: dict, n: int, title: str = "") -> float:
     print(line + f"{sum(best[1]['cpu'].values()):10.3f}"
           f"{1e6 * sum(best[1]['cpu'].values()) / n:11.1f}")
     b1 = best[1]
-    s, basis = serial_fraction(b1["wall"], b1["cpu"], b1["layer"])
-    t = b1["cpu"] if basis.startswith("CPU") else b1["wall"]
+    s, how = serial_fraction(b1["wall"], b1["cpu"], b1["layer"])
+    t, _ = basis(b1["wall"], b1["cpu"], b1["layer"])
     biggest = max(SERIAL, key=lambda k: t[k])
     work = sum(t.values())
-    print(f"\nserial fraction s (1 thread, {basis}; serial stages: {', '.join(SERIAL)}): "
+    print(f"\nserial fraction s (1 thread, {how}; serial stages: {', '.join(SERIAL)}): "
           f"{s:.4f}; biggest serial stage: {biggest} ({t[biggest]:.3f} s, "
           f"{t[biggest] / work:.2%})")
     if 2 in best:
