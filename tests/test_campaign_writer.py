@@ -163,19 +163,21 @@ def test_without_a_thread_safe_layer_the_inputs_are_built_in_turn(whole, tmp_pat
                                                                   monkeypatch):
     """numba's ``workqueue`` layer aborts when two threads run parallel kernels (the
     records' generator has some): then each chunk's inputs are built in the main thread,
-    and the files are the same."""
+    and the files are the same. Each chunk's inputs are built once (the first chunk's by
+    the check before the store is made)."""
     spec, sums = whole
     real = Campaign.inputs
-    threads = set()
+    threads, built = set(), []
 
     def inputs(self, ids):
         threads.add(threading.current_thread() is threading.main_thread())
+        built.append(int(ids[0]) // self.spec.chunk_size)
         return real(self, ids)
 
     monkeypatch.setattr(execute, "threadsafe_layer", lambda: False)
     monkeypatch.setattr(Campaign, "inputs", inputs)
     campaign.run(spec, tmp_path / "s", progress=False)
-    assert threads == {True}
+    assert threads == {True} and built == [0, 1, 2, 3, 4, 5]
     assert sha256s(tmp_path / "s") == sums
 
 

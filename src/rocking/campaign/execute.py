@@ -246,6 +246,12 @@ class PlanAhead:
         self.campaign = campaign
         self._pool = None
         self._next = None  # (chunk, future)
+        self._kept = None  # (chunk, (ids, inputs)) built before: see keep
+
+    def keep(self, k: int, built) -> None:
+        """Keep ``(ids, inputs)`` of chunk ``k``, built already (the first chunk's, by the
+        check before a new store is made): :meth:`take` hands them out once."""
+        self._kept = (k, built)
 
     def _build(self, k: int, threads: int | None = None):
         if threads is not None:  # numba's threads are per thread: the caller's
@@ -268,6 +274,9 @@ class PlanAhead:
     def take(self, k: int):
         """``(ids, inputs)`` of chunk ``k``: those built ahead (their error, if any, is
         raised here), or built now."""
+        kept, self._kept = self._kept, None
+        if kept is not None and kept[0] == k:
+            return kept[1]
         nxt, self._next = self._next, None
         if nxt is not None and nxt[0] == k:
             return nxt[1].result()
@@ -288,14 +297,18 @@ class PlanAhead:
         self.close()
 
 
-def _run_local(campaign: Campaign, store: Store, todo: list[int], on_chunk: Callable):
+def _run_local(campaign: Campaign, store: Store, todo: list[int], on_chunk: Callable,
+               first=None):
     """The local executor: chunk after chunk, three threads at work. This one runs the
     compiled batches of chunk ``k`` (:meth:`.plan.Campaign.simulate`: numba's threads)
     while a helper builds the inputs of chunk ``k + 1`` (:class:`PlanAhead`) and the
     chunk writer assembles and writes chunk ``k - 1`` (:class:`ChunkWriter`): each chunk
-    is still :meth:`.plan.Campaign.run_chunk`'s table, bit for bit."""
+    is still :meth:`.plan.Campaign.run_chunk`'s table, bit for bit. ``first``: the
+    ``(ids, inputs)`` of chunk 0 built by the check of a new store (not built twice)."""
     with ChunkWriter(store, on_chunk, finish=campaign.assemble) as writer, \
             PlanAhead(campaign) as ahead:
+        if first is not None:
+            ahead.keep(0, first)
         for i, k in enumerate(todo):
             ids, inputs = ahead.take(k)
             if i + 1 < len(todo):
@@ -448,8 +461,9 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
     if executor == "dask" and scheduler is None and dask_local is None:
         dask_local = 2
     campaign = Campaign(spec)
-    if not Store(out).exists():
-        _check_buildable(campaign)  # a spec that cannot start never leaves a store behind
+    first = None
+    if not Store(out).exists():  # a spec that cannot start never leaves a store behind
+        first = _check_buildable(campaign)
     store = Store(out).prepare()
     store.lock()
     try:
@@ -472,7 +486,7 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
 
         try:
             if todo and executor == "local":
-                _run_local(campaign, store, todo, on_chunk)
+                _run_local(campaign, store, todo, on_chunk, first)
             elif todo:
                 _run_dask(spec, store, todo, on_chunk, scheduler, dask_local,
                           window or spec.window, log)
@@ -483,16 +497,17 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
     return store.status()
 
 
-def _check_buildable(campaign: Campaign) -> None:
+def _check_buildable(campaign: Campaign):
     """Build what the first chunk needs (its motions, and every motion of a deterministic
     kind up to the cache's size; the inputs: draws, scaling to the levels), so that an
-    error surfaces before the store is created."""
+    error surfaces before the store is created. Returns the first chunk's ``(ids,
+    inputs)``, for the local executor."""
     from .plan import KEEP
     spec = campaign.spec
     first = np.arange(*campaign.chunk_range(0))
     if spec.motion_axis.kind != "stochastic":
         campaign.motions.prepare(range(min(spec.n_motions, KEEP)))
-    campaign.inputs(first)
+    return first, campaign.inputs(first)
 
 
 def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:
