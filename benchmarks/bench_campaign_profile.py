@@ -47,8 +47,9 @@ ratio, 16 and 64), and its limit ``1 / s``. Each stage's 1-thread / 2-thread wal
 ratio is printed too, and the ``s`` that Amdahl's law fits to the measured 2-thread
 speed-up ``S2`` (``s = 2 / S2 - 1``); on a machine shared with other jobs the 2-thread
 figures are noisy (the load average is printed before each run). What Amdahl's law
-leaves out: the load balance of the kernels' ``prange`` (runs of unequal lengths) and
-memory bandwidth.
+leaves out: the load balance of the kernels' ``prange`` (runs of unequal lengths: see
+``rocking.campaign.plan.balanced_order``, the order of the runs in a batch) and memory
+bandwidth.
 
 Runs alternate 1 and 2 threads (``numba.set_num_threads``), ``--repeat`` pairs (default
 2), each into a fresh store; the best of each is kept. ``--baseline SRC``: the same pairs

@@ -207,3 +207,16 @@ def test_the_record_model_cache_keeps_the_checks_and_the_records():
     fresh = stochastic_records(2, seed=3, duration=15.0)
     for a, b in zip(cached, fresh, strict=True):
         assert np.array_equal(a.values, b.values)
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 10, 250, 2000, 8000])
+def test_balanced_order_spreads_every_share_over_the_chunk(n):
+    """The batch order is a permutation, and each of numba's contiguous equal shares of
+    the batch (16 threads) takes its runs from every tenth of the chunk: no thread gets
+    one stretch of levels of one record."""
+    from rocking.campaign.plan import balanced_order
+    order = balanced_order(n)
+    assert np.array_equal(np.sort(order), np.arange(n))
+    if n >= 2000:
+        for share in np.array_split(order, 16):
+            assert set(share * 10 // n) == set(range(10))
