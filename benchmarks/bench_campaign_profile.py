@@ -57,6 +57,11 @@ alternate between the package in ``SRC`` (another checkout's ``src``, e.g. befor
 change) and this one, each in a fresh process (``--json`` is how they report), and both
 stage tables are printed with their serial fractions.
 
+``--balance``: first, each run of the first chunk timed on its own, and the share of the
+cores' time that ``prange``'s equal contiguous shares keep busy on 2, 16 and 64 threads,
+with the runs in ``sim_id`` order and in their batch order (:func:`balanced_order
+<rocking.campaign.plan.balanced_order>`).
+
 ``--uncertain``: the same campaign with ``alpha``, ``p`` and ``mu`` uncertain (those of
 ``examples/fragility.toml``): each row draws its block (the plan stage grows).
 
@@ -64,6 +69,7 @@ stage tables are printed with their serial fractions.
 
     .venv/bin/python benchmarks/bench_campaign_profile.py [--quick] [--uncertain]
         [--records 80] [--levels 250] [--repeat 2] [--baseline ../main/src]
+        [--balance]
 """
 
 from __future__ import annotations
@@ -304,6 +310,42 @@ def print_tables(best: dict, n: int, title: str = "") -> float:
     return s
 
 
+def balance(spec_path: Path, chunk: int = 0) -> None:
+    """``--balance``: each run of one chunk timed on its own (thread CPU time, one thread,
+    less the time of a run of 0.01 s), and the share of the cores' time that numba's
+    equal contiguous ``prange`` shares would keep busy on T threads, in ``sim_id`` order
+    and in the batch order of :func:`rocking.campaign.plan.balanced_order` (the mean
+    share over the slowest)."""
+    import numba
+    import numpy as np
+
+    from rocking import campaign, simulate_many
+    from rocking.campaign import plan
+    numba.set_num_threads(1)
+    spec = campaign.read_spec(spec_path)
+    c = campaign.Campaign(spec)
+    ids = np.arange(*c.chunk_range(chunk))
+    _, blocks, motions = c.inputs(ids)
+    kw = {"model": "housner", "max_free_time": spec.max_free_time, "errors": "nan"}
+
+    def cpu(i, **more):
+        t0 = time.thread_time()
+        simulate_many(blocks[i:i + 1], motions[i:i + 1], **{**kw, **more})
+        return time.thread_time() - t0
+
+    cpu(0)
+    empty = min(cpu(0, duration=0.01) for _ in range(5))
+    cost = np.clip(np.array([cpu(i) for i in range(ids.size)]) - empty, 1e-6, None)
+    order = plan.balanced_order(ids.size)
+    print(f"\nload balance, chunk {chunk} ({ids.size} runs, each run's CPU time "
+          f"{1e3 * cost.min():.2f} to {1e3 * cost.max():.2f} ms): busy share of the cores "
+          "(mean / slowest prange share), sim_id order -> batch order")
+    for T in (2, 16, 64):
+        eff = [np.mean(s := [p.sum() for p in np.array_split(cost[o], T)]) / np.max(s)
+               for o in (np.arange(ids.size), order)]
+        print(f"  {T:>2} threads: {eff[0]:.3f} -> {eff[1]:.3f}")
+
+
 def compare(args, argv) -> int:
     """``--baseline``: alternate fresh processes of the baseline package and this one."""
     import rocking
@@ -347,6 +389,8 @@ def main(argv=None) -> int:
                     help="alpha, p, mu uncertain (as in examples/fragility.toml)")
     ap.add_argument("--baseline", metavar="SRC",
                     help="compare with the package in SRC, alternating fresh processes")
+    ap.add_argument("--balance", action="store_true",
+                    help="also time each run of the first chunk: prange load balance")
     ap.add_argument("--json", metavar="FILE", help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
     if args.baseline:
@@ -382,6 +426,9 @@ def main(argv=None) -> int:
                   f"100 Hz) x {args.levels} load factors{unc}, chunk_size {spec.chunk_size} "
                   f"({spec.n_chunks} chunks), housner, local executor; {args.repeat} "
                   "pair(s), 1 and 2 threads alternating, best of each")
+            if args.balance:
+                balance(spec_path)
+                print()
             print(f"{'run':>4} {'threads':>7} {'loadavg':>16} {'wall s':>8} {'sims/s':>8}")
         best = measure(args, spec_path, root, n)
         if quiet:
