@@ -120,12 +120,12 @@ def balanced_order(n: int) -> np.ndarray:
     numba's ``prange`` hands each thread one contiguous, equal share of the batch (it
     does not balance the load), and the runs of a chunk in ``sim_id`` order come in
     stretches of unequal cost (the levels of one record: at rest, rocking, overturned
-    early). Measured on a chunk of 8,000 runs of ``bench_campaign_profile.py``'s campaign
-    (32 records x 250 levels, each run's CPU time: 0.02 to 8 ms), the slowest share on 16
-    threads takes 1 / 0.82 of the mean in ``sim_id`` order and 1 / 0.93 in this order
-    (64 threads: 1 / 0.58 and 1 / 0.85; 2,000 runs on 16 threads: 1 / 0.67 and
-    1 / 0.94). A run depends on its own inputs only (:func:`rocking.simulate_many`): the
-    rows are the same, bit for bit, in any order.
+    early). From each run's CPU time (``benchmarks/bench_campaign_profile.py --balance``:
+    0.08 to 8.8 ms) on a chunk of 8,000 runs (32 stochastic records x 250 levels), the
+    share of the cores kept busy (the mean share over the slowest) on 16 threads is 0.80
+    in ``sim_id`` order and 0.96 in this order (64 threads: 0.61 and 0.90; a chunk of
+    2,000 runs on 16 threads: 0.61 and 0.94). A run depends on its own inputs only
+    (:func:`rocking.simulate_many`): the rows are the same, bit for bit, in any order.
 
     Examples
     --------
