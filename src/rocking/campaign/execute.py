@@ -1,7 +1,9 @@
 """Running a campaign into its store: the local executor and Dask.
 
 * ``local`` (default): this process, one chunk after another, each chunk one compiled
-  batch spread over every core by numba (``prange``).
+  batch spread over every core by numba (``prange``); meanwhile one helper thread builds
+  the next chunk's inputs and another assembles and writes the previous chunk
+  (:func:`_run_local`), so that the cores rarely wait for the serial work.
 * ``dask``: chunks as tasks on a ``dask.distributed`` cluster, an existing one
   (``scheduler="tcp://host:port"``) or a ``LocalCluster`` of ``dask_local`` worker
   processes. At most ``window`` chunks are in flight (``as_completed``, refilled as chunks
@@ -110,11 +112,208 @@ def setup_worker(spec: CampaignSpec, per_host: dict | None = None, dask_worker=N
 
 
 # ------------------------------------------------------------------------- executors
-def _run_local(campaign: Campaign, store: Store, todo: list[int], on_chunk: Callable):
-    for k in todo:
-        table = campaign.run_chunk(k)
-        store.write_chunk(k, table)
-        on_chunk(k, len(table))
+class ChunkWriter:
+    """One background thread that writes finished chunks into the store
+    (:meth:`.store.Store.write_chunk`, in the order given, then ``on_chunk(k, rows)``)
+    while the caller computes the next chunk: the writes overlap the computation (the
+    compiled batches release the GIL, and so do Parquet and the file system). With
+    ``finish``, what :meth:`put` is given is ``finish(item)``'s raw material, made into
+    the chunk's table in the writer's thread (the local executor: the raw results of
+    :meth:`.plan.Campaign.simulate`, assembled by :meth:`.plan.Campaign.assemble`).
+
+    At most ``depth`` chunks wait for the writer (:meth:`put` blocks beyond: memory stays
+    a few chunks). A failure in the writer (a full disk, ...) is raised in the caller by
+    the next :meth:`put` or by :meth:`close` (the chunks queued after it are dropped, not
+    written: they are recomputed by the next run). :meth:`close` waits for every chunk
+    put before it to be written, so that an interrupted run (Ctrl-C in the computation)
+    keeps every chunk computed so far; each write is the store's own (file and record
+    atomic, :mod:`.store`), so a kill at any instant leaves what a kill of the serial
+    loop would.
+
+    Examples
+    --------
+    >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, Store, parse_spec
+    >>> from rocking.campaign.execute import ChunkWriter
+    >>> spec = parse_spec(EXAMPLE_SPEC)
+    >>> store = Store("pulses_store").prepare()
+    >>> store.lock()
+    >>> _ = store.open_for(spec)
+    >>> with ChunkWriter(store) as writer:
+    ...     for k in range(spec.n_chunks):
+    ...         writer.put(k, Campaign(spec).run_chunk(k))
+    >>> store.unlock()
+    >>> sorted(store.done())
+    [0, 1]
+    """
+
+    def __init__(self, store: Store, on_chunk: Callable | None = None, depth: int = 1,
+                 finish: Callable | None = None):
+        import queue
+        self.store, self.on_chunk, self.finish = store, on_chunk, finish
+        self._queue: queue.Queue = queue.Queue(maxsize=max(1, depth))
+        self._error: BaseException | None = None  # raised once in the caller
+        self._failed = False  # for good: nothing more is written
+        self._closed = False
+        self._thread = threading.Thread(target=self._loop, name="rocking-chunk-writer",
+                                        daemon=True)
+        self._thread.start()
+
+    def _loop(self) -> None:
+        while True:
+            item = self._queue.get()
+            if item is None:
+                return
+            if self._failed:
+                continue  # after a failure: drop the rest (recomputed by the next run)
+            k, table = item
+            try:
+                if self.finish is not None:
+                    table = self.finish(table)
+                self.store.write_chunk(k, table)
+                if self.on_chunk is not None:
+                    self.on_chunk(k, len(table))
+            except BaseException as e:  # raised in the caller (put, close)
+                self._error, self._failed = e, True
+
+    def _raise(self) -> None:
+        if self._error is not None:
+            err, self._error = self._error, None
+            raise err
+
+    def put(self, k: int, table) -> None:
+        """Queue chunk ``k`` (its table) for writing; raises the writer's failure, if
+        any, instead."""
+        self._raise()
+        if self._closed:
+            raise RuntimeError("the chunk writer is closed")
+        self._queue.put((k, table))
+
+    def close(self) -> None:
+        """Wait for every queued chunk to be written, stop the thread, and raise the
+        writer's failure, if any."""
+        if not self._closed:
+            self._closed = True
+            self._queue.put(None)
+            self._thread.join()
+        self._raise()
+
+    def __enter__(self) -> ChunkWriter:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        if exc[0] is None:
+            self.close()
+            return
+        try:  # the caller failed (or was interrupted): keep what was computed
+            self.close()
+        except Exception:  # the caller's exception is the one to see
+            pass
+
+
+def threadsafe_layer() -> bool:
+    """Whether numba's threading layer lets two threads run parallel kernels at once
+    (``tbb``, ``omp``; not ``workqueue``, which aborts). False until a parallel kernel has
+    run in this process (the layer is chosen then)."""
+    import numba
+    try:
+        return numba.threading_layer() in ("tbb", "omp")
+    except ValueError:  # no parallel kernel yet
+        return False
+
+
+class PlanAhead:
+    """One helper thread that builds the inputs of the next chunk
+    (:meth:`.plan.Campaign.inputs`: its records, draws, scaled motions and blocks) while
+    the caller runs the batches of the current one. The records' generator has parallel
+    kernels of its own, so the inputs are built ahead only where numba's threading layer
+    is thread-safe (:func:`threadsafe_layer`), else by :meth:`take`, in the caller's
+    thread, as before. The inputs are a function of the spec and the chunk only: the
+    same wherever they are built.
+
+    Examples
+    --------
+    >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+    >>> from rocking.campaign.execute import PlanAhead
+    >>> c = Campaign(parse_spec(EXAMPLE_SPEC))
+    >>> with PlanAhead(c) as ahead:
+    ...     ahead.start(1)
+    ...     ids, (table, blocks, motions) = ahead.take(1)
+    >>> ids.tolist(), table.sim_id.tolist(), len(motions)
+    ([2, 3], [2, 3], 2)
+    """
+
+    def __init__(self, campaign: Campaign):
+        self.campaign = campaign
+        self._pool = None
+        self._next = None  # (chunk, future)
+        self._kept = None  # (chunk, (ids, inputs)) built before: see keep
+
+    def keep(self, k: int, built) -> None:
+        """Keep ``(ids, inputs)`` of chunk ``k``, built already (the first chunk's, by the
+        check before a new store is made): :meth:`take` hands them out once."""
+        self._kept = (k, built)
+
+    def _build(self, k: int, threads: int | None = None):
+        if threads is not None:  # numba's threads are per thread: the caller's
+            import numba
+            numba.set_num_threads(threads)
+        ids = np.arange(*self.campaign.chunk_range(k))
+        return ids, self.campaign.inputs(ids)
+
+    def start(self, k: int) -> None:
+        """Start building the inputs of chunk ``k`` in the helper thread (where the
+        threading layer allows it; else :meth:`take` builds them)."""
+        if not threadsafe_layer():
+            return
+        import numba
+        if self._pool is None:
+            from concurrent.futures import ThreadPoolExecutor
+            self._pool = ThreadPoolExecutor(1, thread_name_prefix="rocking-plan-ahead")
+        self._next = (k, self._pool.submit(self._build, k, numba.get_num_threads()))
+
+    def take(self, k: int):
+        """``(ids, inputs)`` of chunk ``k``: those built ahead (their error, if any, is
+        raised here), or built now."""
+        kept, self._kept = self._kept, None
+        if kept is not None and kept[0] == k:
+            return kept[1]
+        nxt, self._next = self._next, None
+        if nxt is not None and nxt[0] == k:
+            return nxt[1].result()
+        if nxt is not None:
+            nxt[1].cancel()
+        return self._build(k)
+
+    def close(self) -> None:
+        """Stop the helper thread (after the build in progress, if any)."""
+        if self._pool is not None:
+            self._pool.shutdown(wait=True, cancel_futures=True)
+            self._pool = None
+
+    def __enter__(self) -> PlanAhead:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+
+def _run_local(campaign: Campaign, store: Store, todo: list[int], on_chunk: Callable,
+               first=None):
+    """The local executor: chunk after chunk, three threads at work. This one runs the
+    compiled batches of chunk ``k`` (:meth:`.plan.Campaign.simulate`: numba's threads)
+    while a helper builds the inputs of chunk ``k + 1`` (:class:`PlanAhead`) and the
+    chunk writer assembles and writes chunk ``k - 1`` (:class:`ChunkWriter`): each chunk
+    is still :meth:`.plan.Campaign.run_chunk`'s table, bit for bit. ``first``: the
+    ``(ids, inputs)`` of chunk 0 built by the check of a new store (not built twice)."""
+    with ChunkWriter(store, on_chunk, finish=campaign.assemble) as writer, \
+            PlanAhead(campaign) as ahead:
+        if first is not None:
+            ahead.keep(0, first)
+        for i, k in enumerate(todo):
+            ids, inputs = ahead.take(k)
+            if i + 1 < len(todo):
+                ahead.start(todo[i + 1])
+            writer.put(k, campaign.simulate(ids, inputs))
 
 
 def _restore(environ: dict) -> None:
@@ -188,17 +387,17 @@ def _run_dask(spec: CampaignSpec, store: Store, todo: list[int], on_chunk: Calla
         pending.update(client.submit(chunk_task, spec_f, k, pure=False)
                        for k in (next(queue, None) for _ in range(window)) if k is not None)
         ac = as_completed(list(pending))
-        for fut in ac:
-            k, table = fut.result()
-            store.write_chunk(k, table)
-            on_chunk(k, len(table))
-            pending.discard(fut)
-            fut.release()
-            nxt = next(queue, None)
-            if nxt is not None:
-                new = client.submit(chunk_task, spec_f, nxt, pure=False)
-                pending.add(new)
-                ac.add(new)
+        with ChunkWriter(store, on_chunk, depth=2) as writer:
+            for fut in ac:
+                k, table = fut.result()
+                writer.put(k, table)
+                pending.discard(fut)
+                fut.release()
+                nxt = next(queue, None)
+                if nxt is not None:
+                    new = client.submit(chunk_task, spec_f, nxt, pure=False)
+                    pending.add(new)
+                    ac.add(new)
     finally:
         for f in pending:
             f.cancel()
@@ -262,8 +461,9 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
     if executor == "dask" and scheduler is None and dask_local is None:
         dask_local = 2
     campaign = Campaign(spec)
-    if not Store(out).exists():
-        _check_buildable(campaign)  # a spec that cannot start never leaves a store behind
+    first = None
+    if not Store(out).exists():  # a spec that cannot start never leaves a store behind
+        first = _check_buildable(campaign)
     store = Store(out).prepare()
     store.lock()
     try:
@@ -286,7 +486,7 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
 
         try:
             if todo and executor == "local":
-                _run_local(campaign, store, todo, on_chunk)
+                _run_local(campaign, store, todo, on_chunk, first)
             elif todo:
                 _run_dask(spec, store, todo, on_chunk, scheduler, dask_local,
                           window or spec.window, log)
@@ -297,16 +497,17 @@ def run(spec, out, *, executor: str = "local", scheduler: str | None = None,
     return store.status()
 
 
-def _check_buildable(campaign: Campaign) -> None:
+def _check_buildable(campaign: Campaign):
     """Build what the first chunk needs (its motions, and every motion of a deterministic
     kind up to the cache's size; the inputs: draws, scaling to the levels), so that an
-    error surfaces before the store is created."""
+    error surfaces before the store is created. Returns the first chunk's ``(ids,
+    inputs)``, for the local executor."""
     from .plan import KEEP
     spec = campaign.spec
     first = np.arange(*campaign.chunk_range(0))
     if spec.motion_axis.kind != "stochastic":
         campaign.motions.prepare(range(min(spec.n_motions, KEEP)))
-    campaign.inputs(first)
+    return first, campaign.inputs(first)
 
 
 def estimate(spec: CampaignSpec, n_sample: int = 48) -> dict:

@@ -44,6 +44,7 @@ the ground motions (:class:`MotionSet`), never per run.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -108,6 +109,36 @@ def row_output_columns(models) -> dict:
 OUTPUTS_BY_NAME = {o.name: o for o in GENERIC_OUTPUTS + PLANAR_OUTPUTS}
 """The shared outputs of the models by name (:data:`rocking.models.GENERIC_OUTPUTS`,
 :data:`~rocking.models.PLANAR_OUTPUTS`): the declarations of the result columns."""
+
+
+def balanced_order(n: int) -> np.ndarray:
+    """The order in which a chunk's ``n`` runs go into their compiled batch: the
+    golden-ratio stride permutation ``j -> (j g^-1) mod n`` (``g`` the odd number
+    coprime to ``n`` nearest ``0.618 n``), so that any stretch of the batch holds runs
+    from all over the chunk.
+
+    numba's ``prange`` hands each thread one contiguous, equal share of the batch (it
+    does not balance the load), and the runs of a chunk in ``sim_id`` order come in
+    stretches of unequal cost (the levels of one record: at rest, rocking, overturned
+    early). From each run's CPU time (``benchmarks/bench_campaign_profile.py --balance``:
+    0.08 to 8.8 ms) on a chunk of 8,000 runs (32 stochastic records x 250 levels), the
+    share of the cores kept busy (the mean share over the slowest) on 16 threads is 0.80
+    in ``sim_id`` order and 0.96 in this order (64 threads: 0.61 and 0.90; a chunk of
+    2,000 runs on 16 threads: 0.61 and 0.94). A run depends on its own inputs only
+    (:func:`rocking.simulate_many`): the rows are the same, bit for bit, in any order.
+
+    Examples
+    --------
+    >>> from rocking.campaign.plan import balanced_order
+    >>> balanced_order(10).tolist()
+    [0, 3, 6, 9, 2, 5, 8, 1, 4, 7]
+    """
+    if n < 3:
+        return np.arange(n)
+    g = int(round(0.6180339887498949 * n)) | 1
+    while math.gcd(g, n) != 1:
+        g += 2
+    return np.argsort(np.arange(n) * g % n, kind="stable")
 
 
 def empty_columns(outputs, n: int) -> dict:
@@ -503,7 +534,27 @@ class Campaign:
         1       3  3.0       1.570796        True             3
         """
         ids = np.asarray(ids, dtype=np.int64).reshape(-1)
-        table, blocks, motions = self.inputs(ids)
+        return self.assemble(self.simulate(ids, self.inputs(ids)))
+
+    def simulate(self, ids, inputs) -> tuple:
+        """The compiled batches of simulations ``ids`` (one per model) on their
+        ``inputs`` (:meth:`inputs` of the same ``ids``): the raw results, for
+        :meth:`assemble`. :meth:`run_ids` is ``assemble(simulate(ids, inputs(ids)))``; the
+        local executor runs the three steps in three threads, chunk after chunk (the
+        inputs of the next chunk and the table of the previous one are made while the
+        batches of this one run; :mod:`.execute`).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+        >>> c = Campaign(parse_spec(EXAMPLE_SPEC))
+        >>> ids = np.array([1, 3])
+        >>> c.assemble(c.simulate(ids, c.inputs(ids))).equals(c.run_ids(ids))
+        True
+        """
+        ids = np.asarray(ids, dtype=np.int64).reshape(-1)
+        table, blocks, motions = inputs
         n = len(table)
         shared = [k for k in RESULT_COLUMNS if k in OUTPUTS_BY_NAME]
         if self.motions.kind.vertical:
@@ -517,6 +568,7 @@ class Campaign:
         theta0 = table["theta0"].to_numpy()
         for r in dict.fromkeys(ri.tolist()):
             idx = np.flatnonzero(ri == r)
+            idx = idx[balanced_order(idx.size)]  # the load of numba's threads
             name, options = runs[r]
             with each_warning_once():  # a model's notices: once, not once per chunk
                 res = simulate_many([blocks[i] for i in idx], [motions[i] for i in idx],
@@ -532,6 +584,24 @@ class Campaign:
                 out["max_abs_theta"][idx] = res.outputs["max_tilt"]
             for k, v in res.outputs.items():
                 rows_out[k][idx] = v
+        return table, out, rows_out
+
+    def assemble(self, raw) -> pd.DataFrame:
+        """The table of :meth:`run_ids` from the raw results of :meth:`simulate`: the
+        inputs, the result columns, the damage states, the models' row outputs.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from rocking.campaign import EXAMPLE_SPEC, Campaign, parse_spec
+        >>> c = Campaign(parse_spec(EXAMPLE_SPEC))
+        >>> ids = np.arange(4)
+        >>> rows = c.assemble(c.simulate(ids, c.inputs(ids)))
+        >>> rows.overturned.tolist(), rows.damage_state.tolist()  # overturned: the last state
+        ([False, False, False, True], [0, 0, 0, 3])
+        """
+        table, out, rows_out = raw
+        n = len(table)
         table = table.assign(**out)
         table["max_abs_theta_over_alpha"] = table["max_abs_theta"] / table["alpha"]
         ok = (table["status"].to_numpy() == 0) & np.isfinite(out["max_abs_theta"])
