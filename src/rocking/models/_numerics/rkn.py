@@ -1,0 +1,118 @@
+r"""Fixed steps of the 4th-order Runge-Kutta-Nystrom method: the ``method="rkn4"`` stepper
+of the shared step loop (:func:`rocking.models._numerics.loop.run`, ``fixed=True``).
+
+The models of the loop integrate ``theta'' = f(t, theta)`` (no ``theta'`` on the right-hand
+side), for which the Nystrom form needs 3 evaluations per step of order 4 (Hairer, Norsett
+& Wanner, *Solving ODEs I*, Sec II.14, the 3-stage method of order 4)::
+
+    k1 = f(t, th)                                   (the end of the previous step)
+    k2 = f(t + h/2, th + h/2 om + h^2/8 k1)
+    k3 = f(t + h,   th + h om   + h^2/2 k2)
+    th1 = th + h om + h^2/6 (k1 + 2 k2)
+    om1 = om + h/6 (k1 + 4 k2 + k3)
+
+plus ``f(t + h, th1)`` for the next step and the quintic Hermite dense output; Dormand-
+Prince 5(4) needs 6 (:mod:`.dopri`). There is no error control: the loop steps from
+breakpoint to breakpoint of the excitation (every sample of a record) in steps of at most
+``h_max`` (``0.05/p`` for the classical model: ``p h <= 0.05``, local error ``~(p h)^5``),
+shorter only to follow a rebound or to resolve two crossings of ``theta = 0`` hidden in a
+step. Events (impact, lift-off) are located by safeguarded Newton iteration on the length
+of the step, as with Dormand-Prince, so that the impact velocity is that of the method.
+"""
+
+from __future__ import annotations
+
+from numba import njit
+
+from . import dopri as D
+
+
+@njit(cache=True, inline="always")
+def step(acc, t, th, om, a0, h, args):
+    """One Runge-Kutta-Nystrom step of ``theta'' = acc(theta, t, *args)`` from ``(th, om)``
+    at ``t`` (``a0`` the acceleration there); returns ``(theta, omega, acc_end)``."""
+    hh = h * h
+    k2 = acc(th + 0.5 * h * om + 0.125 * hh * a0, t + 0.5 * h, *args)
+    k3 = acc(th + h * om + 0.5 * hh * k2, t + h, *args)
+    th1 = th + h * om + hh * (a0 + 2.0 * k2) / 6.0
+    om1 = om + h * (a0 + 4.0 * k2 + k3) / 6.0
+    return th1, om1, acc(th1, t + h, *args)
+
+
+@njit(cache=True)
+def may_hide_crossing(th0, om0, a0, th1, om1, a1, h, s):
+    """Whether ``s theta``, positive at both ends of the step, can reach 0 inside it: it
+    must travel ``s th0`` down and ``s th1`` up again within ``h`` at a speed of at most
+    ``|om| + h |theta''|`` (generous bounds from both ends), else no check is needed."""
+    reach = h * (abs(om0) + abs(om1)) + 2.0 * h * h * (abs(a0) + abs(a1))
+    return s * th0 + s * th1 < 2.0 * reach
+
+
+@njit(cache=True, inline="always")
+def trial(acc, args, t, th, om, a0, h, h_max, t_end, bp, s):
+    """One step from ``t`` of length ``hh = min(h, h_max, t_end - t)``, shortened onto the
+    breakpoint ``bp`` (``hit_bp``). Returns ``(hh, hit_bp, theta, omega, acc_end, ok,
+    h_next)`` like :func:`.dopri.trial`: ``ok`` False only if the step hides two crossings
+    of ``theta = 0`` on branch ``s`` (retry with half the length); ``h_next`` is ``h_max``
+    (the next breakpoint shortens it)."""
+    hh = min(h, h_max, t_end - t)
+    hit_bp = False
+    if t + hh >= bp - 1e-12:
+        hh = bp - t
+        hit_bp = True
+    th1, om1, a1 = step(acc, t, th, om, a0, hh, args)
+    if s * th1 >= 0.0 and may_hide_crossing(th, om, a0, th1, om1, a1, hh, s):
+        if D.sign_changes(th, om, a0, th1, om1, a1, hh, s) >= 2:
+            return hh, hit_bp, th1, om1, a1, False, 0.5 * hh
+    return hh, hit_bp, th1, om1, a1, True, h_max
+
+
+@njit(cache=True, inline="always")
+def locate(acc, args, t, th, om, a0, th1, om1, a1, h, s, level, rising, tol, iters):
+    """:func:`.dopri.locate` with the Runge-Kutta-Nystrom step: where ``s theta - level``
+    reaches 0 inside the step, by safeguarded Newton on the step length. Returns
+    ``(length, theta, omega, acc)`` there."""
+    x = D.hermite_root(th, om, a0, th1, om1, a1, h, s * level, 0, -s if rising else s)
+    lo, hi = 0.0, h
+    sig = x * h
+    thc, omc, ac = th1, om1, a1
+    for _ in range(iters):
+        thc, omc, ac = step(acc, t, th, om, a0, sig, args)
+        g = s * thc - level
+        past = g >= 0.0 if rising else not (g > 0.0)
+        if past:
+            hi = sig
+        else:
+            lo = sig
+        if abs(g) <= tol or hi - lo <= 1e-15 * (1.0 + t):
+            break
+        new = sig - g / (s * omc) if omc != 0.0 else -1.0
+        if not (lo < new < hi):
+            new = 0.5 * (lo + hi)
+        sig = new
+    return sig, thc, omc, ac
+
+
+@njit(cache=True, inline="always")
+def impact(acc, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k, out_th, out_om,
+           peak, imp, n_imp):
+    """:func:`.dopri.impact` with :func:`locate`: returns ``(t_impact, length,
+    omega_before, k, peak, n_imp + 1)``."""
+    sig, thc, omc, ac = locate(acc, args, t, th, om, a0, th1, om1, a1, h, s, 0.0, False, tol,
+                               40)
+    tc = t + sig
+    k, peak = D.segment(t, th, om, a0, tc, 0.0, omc, ac, sig, dt_out, k, out_th, out_om, peak)
+    if n_imp < imp.shape[0]:
+        imp[n_imp] = tc
+    return tc, sig, omc, k, peak, n_imp + 1
+
+
+@njit(cache=True, inline="always")
+def stop_inside(acc, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om, peak):
+    """:func:`.dopri.stop_inside` with the Runge-Kutta-Nystrom step."""
+    thc, omc, ac = step(acc, t, th, om, a0, tc - t, args)
+    if not (s * thc >= 0.0 and abs(thc) < D.HALF_PI):
+        return False, thc, omc, k, peak
+    k, peak = D.segment(t, th, om, a0, tc, thc, omc, ac, tc - t, dt_out, k, out_th, out_om,
+                        peak)
+    return True, thc, omc, k, peak
