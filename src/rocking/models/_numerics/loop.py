@@ -166,8 +166,12 @@ def run(acc, fstep, rhs_args, start, rest, cap, inside, impact_tol, after_impact
             t, overturned, peak = t_over, True, D.HALF_PI
             xs = on_overturn(mp, xs, s)
             break
-        k, pk = D.segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th,
-                          out_om, abs(th))
+        if fixed:
+            k, pk = F.segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th,
+                              out_om, abs(th))
+        else:
+            k, pk = D.segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th,
+                              out_om, abs(th))
         peak = max(peak, pk)
         xs = on_segment(mp, xs, s, pk)
         t = t + hh
