@@ -279,6 +279,9 @@ TAYLOR_ORDER = 10
 """Degree of the Taylor polynomial of :func:`taylor_step`: with ``p h <= 0.05`` its
 remainder is ``~(p h)^11 / 11! < 1e-21`` of the angle scale."""
 
+_INV_M = tuple(1.0 / max(m, 1) for m in range(TAYLOR_ORDER + 1))
+_INV_K2 = tuple(1.0 / ((k + 1) * (k + 2)) for k in range(TAYLOR_ORDER))
+
 
 @njit(cache=True, inline="always")
 def taylor_step(mp, args, t, th, om, a0, h):
@@ -300,8 +303,9 @@ def taylor_step(mp, args, t, th, om, a0, h):
     s, alpha, p2, lin, kind, prm, samples = args
     buf = mp.buf
     ph = buf[0]
-    u = buf[1]
-    v = buf[2]
+    dph = buf[1]  # k phi_k
+    u = buf[2]
+    v = buf[3]
     n = TAYLOR_ORDER
     q1 = ground_acc(kind, prm, samples, t + 0.25 * h) * INV_G
     q3 = ground_acc(kind, prm, samples, t + 0.75 * h) * INV_G
@@ -309,6 +313,7 @@ def taylor_step(mp, args, t, th, om, a0, h):
     a_0 = q1 - 0.25 * h * a_1
     ph[0] = alpha - s * th
     ph[1] = -s * om
+    dph[1] = ph[1]
     if lin:
         u[0], v[0] = ph[0], 1.0
     else:
@@ -316,7 +321,8 @@ def taylor_step(mp, args, t, th, om, a0, h):
     for k in range(n - 1):
         # phi_(k+2) from u_k, v_k, v_(k-1)
         vk1 = v[k - 1] if k > 0 else 0.0
-        ph[k + 2] = p2 * (u[k] - s * (a_0 * v[k] + a_1 * vk1)) / ((k + 1) * (k + 2))
+        ph[k + 2] = p2 * (u[k] - s * (a_0 * v[k] + a_1 * vk1)) * _INV_K2[k]
+        dph[k + 2] = (k + 2) * ph[k + 2]
         m = k + 1  # u_m, v_m from phi_1..phi_m
         if lin:
             u[m] = ph[m]
@@ -325,15 +331,15 @@ def taylor_step(mp, args, t, th, om, a0, h):
             su = 0.0
             sv = 0.0
             for j in range(1, m + 1):
-                su += j * ph[j] * v[m - j]
-                sv += j * ph[j] * u[m - j]
-            u[m] = su / m
-            v[m] = -sv / m
+                su += dph[j] * v[m - j]
+                sv += dph[j] * u[m - j]
+            u[m] = su * _INV_M[m]
+            v[m] = -sv * _INV_M[m]
     f = ph[n]
-    df = n * ph[n]
+    df = dph[n]
     for k in range(n - 1, 0, -1):
         f = f * h + ph[k]
-        df = df * h + k * ph[k]
+        df = df * h + dph[k]
     f = f * h + ph[0]
     a_h = a_0 + a_1 * h
     if lin:
@@ -432,7 +438,7 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t
     p_hi = max(p_p, p_m)  # the step sizes follow the faster side
     atol_th, atol_om = D.abs_tols(rtol, min(alpha_p, alpha_m), p_hi)
     fixed = fixed and (kind == RECORD or kind == NONE) and not has_vertical(prm)
-    buf = np.empty((3, TAYLOR_ORDER + 1) if fixed else (3, 1))
+    buf = np.empty((4, TAYLOR_ORDER + 1) if fixed else (4, 1))
     mp = SideParams(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, G * c_p,
                     G * c_m, rest_tol, free_rest_tol, buf)
     k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, _xs = L.run(
