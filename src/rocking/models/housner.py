@@ -275,9 +275,9 @@ SideParams = namedtuple("SideParams", [
 linear) and thresholds ``g c``, the ``linear`` flag, the rest tolerances and the work
 array of :func:`taylor_step`."""
 
-TAYLOR_ORDER = 10
+TAYLOR_ORDER = 8
 """Degree of the Taylor polynomial of :func:`taylor_step`: with ``p h <= 0.05`` its
-remainder is ``~(p h)^11 / 11! < 1e-21`` of the angle scale."""
+remainder is ``~(p h)^9 / 9! < 1e-17`` of the angle scale."""
 
 _INV_M = tuple(1.0 / max(m, 1) for m in range(TAYLOR_ORDER + 1))
 _INV_K2 = tuple(1.0 / ((k + 1) * (k + 2)) for k in range(TAYLOR_ORDER))
@@ -298,7 +298,10 @@ def taylor_step(mp, args, t, th, om, a0, h):
     recurrences of automatic differentiation; Moore 1966). The linear form has ``u =
     phi``, ``v = 1``. One sine and cosine at the start, one at the end for ``theta''``.
     ``A`` is taken from the motion at ``h/4`` and ``3h/4`` (exact on a linear piece, and
-    blind to a jump at the ends, e.g. after the end of a record).
+    blind to a jump at the ends, e.g. after the end of a record). A step from the same
+    start as the last one and no longer (the loop locating an impact inside it) evaluates
+    the last polynomial instead (the start, the side, the length and ``A`` are kept in
+    ``mp.buf[4]``).
     """
     s, alpha, p2, lin, kind, prm, samples = args
     buf = mp.buf
@@ -307,10 +310,15 @@ def taylor_step(mp, args, t, th, om, a0, h):
     u = buf[2]
     v = buf[3]
     n = TAYLOR_ORDER
+    key = buf[4]
+    if key[0] == t and key[1] == th and key[2] == om and key[3] == s and h <= key[4]:
+        # the same start as the last step (an event inside it): its polynomial
+        return _taylor_eval(ph, dph, key[5], key[6], s, alpha, p2, lin, h)
     q1 = ground_acc(kind, prm, samples, t + 0.25 * h) * INV_G
     q3 = ground_acc(kind, prm, samples, t + 0.75 * h) * INV_G
     a_1 = (q3 - q1) / (0.5 * h) if h > 0.0 else 0.0
     a_0 = q1 - 0.25 * h * a_1
+    key[0], key[1], key[2], key[3], key[4], key[5], key[6] = t, th, om, s, h, a_0, a_1
     ph[0] = alpha - s * th
     ph[1] = -s * om
     dph[1] = ph[1]
@@ -335,13 +343,20 @@ def taylor_step(mp, args, t, th, om, a0, h):
                 sv += dph[j] * u[m - j]
             u[m] = su * _INV_M[m]
             v[m] = -sv * _INV_M[m]
+    return _taylor_eval(ph, dph, a_0, a_1, s, alpha, p2, lin, h)
+
+
+@njit(cache=True, inline="always")
+def _taylor_eval(ph, dph, a_0, a_1, s, alpha, p2, lin, tau):
+    """``(theta, omega, theta'')`` at ``tau`` from the coefficients of :func:`taylor_step`."""
+    n = TAYLOR_ORDER
     f = ph[n]
     df = dph[n]
     for k in range(n - 1, 0, -1):
-        f = f * h + ph[k]
-        df = df * h + dph[k]
-    f = f * h + ph[0]
-    a_h = a_0 + a_1 * h
+        f = f * tau + ph[k]
+        df = df * tau + dph[k]
+    f = f * tau + ph[0]
+    a_h = a_0 + a_1 * tau
     if lin:
         d2 = p2 * (f - s * a_h)
     else:
@@ -438,7 +453,7 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t
     p_hi = max(p_p, p_m)  # the step sizes follow the faster side
     atol_th, atol_om = D.abs_tols(rtol, min(alpha_p, alpha_m), p_hi)
     fixed = fixed and (kind == RECORD or kind == NONE) and not has_vertical(prm)
-    buf = np.empty((4, TAYLOR_ORDER + 1) if fixed else (4, 1))
+    buf = np.full((5, TAYLOR_ORDER + 1) if fixed else (5, 7), np.nan)
     mp = SideParams(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, G * c_p,
                     G * c_m, rest_tol, free_rest_tol, buf)
     k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, _xs = L.run(
