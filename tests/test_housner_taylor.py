@@ -152,3 +152,21 @@ def test_row_of_batch_equals_single_run_and_bad_method_is_refused():
         assert one.n_impacts == b.n_impacts[i]
     with pytest.raises(ParameterError, match="method"):
         simulate(SPEC2, recs[0], method="rk4")
+
+
+def test_model_contract_with_taylor_as_default():
+    """The model contract (:func:`rocking.testing.contract.check_model`) holds with
+    ``method="taylor"``: a subclass whose options default to it."""
+    from dataclasses import dataclass
+
+    from rocking.options import option
+    from rocking.testing.contract import check_model
+
+    @dataclass(frozen=True)
+    class TaylorOptions(H.HousnerOptions):
+        method: str = option("taylor", choices=H.METHODS, help="integrator")
+
+    class HousnerTaylor(H.Housner):
+        Options = TaylorOptions
+
+    check_model(HousnerTaylor)
