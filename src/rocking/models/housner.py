@@ -85,6 +85,16 @@ record, the start and end of a pulse). The branch (pivot) is frozen within a ste
 the right-hand side is smooth; impacts are then located inside the step. Everything runs
 in one compiled numba function per simulation; :func:`rocking.simulate_many` runs a
 batch in parallel with no Python per time step.
+
+``method="taylor"`` (not the default) replaces the adaptive steps, on a record without a
+vertical component or without motion, by fixed steps of the Taylor series of Eq 1
+(:func:`taylor_step`, degree :data:`TAYLOR_ORDER`), one per sample (at most ``0.05/p``):
+the ground acceleration is linear between samples, so the series is that of the exact
+solution, and an impact inside a step is located on the step's polynomial. Every event
+and rule above is the same (the shared loop, :mod:`rocking.models._numerics.fixed`). On
+the 20 s records of ``benchmarks/bench_taylor.py`` it is 2.6 times as fast as the
+default and closer to a tight reference (median error of ``max |theta|`` 1e-10 against
+1e-8). Other motions run with Dormand-Prince.
 """
 
 from __future__ import annotations

@@ -8,9 +8,10 @@ to breakpoint of the excitation (every sample of a record) in steps of at most `
 shorter only to follow a rebound or to resolve two crossings of ``theta = 0`` hidden in a
 step. Events (impact, lift-off) are located by safeguarded Newton iteration on the length
 of the step, as with Dormand-Prince (:mod:`.dopri`), so the impact velocity is that of
-the one-step map; peaks and output samples come from the quintic Hermite interpolant of
-the step's ends (:func:`segment`), their roots by Newton or secant iteration
-(:func:`hermite_root`).
+the one-step map (which may keep its last polynomial to answer these shorter steps from
+the same start: :func:`rocking.models.housner.taylor_step`). Peaks and output samples
+come from the quintic Hermite interpolant of the step's ends (:func:`segment`), its roots
+by Newton or secant iteration (:func:`hermite_root`).
 
 A fixed 4th-order Runge-Kutta-Nystrom step (3 evaluations) was tried first and dropped:
 on 20 s records at one step per 0.01 s sample its error in ``max |theta|`` was 1e-3 to
