@@ -158,7 +158,10 @@ def run(acc, fstep, rhs_args, start, rest, cap, inside, impact_tol, after_impact
                 continue
             a_cur = acc(0.0, t, *rhs_args(mp, xs, s, kind, prm, samples))
             need_a = False
-            h = D.rebound_length(hh, 1e-6 / p_ref, h_max, om, a_cur)
+            if fixed:  # no error control: one step over the rebound is as exact
+                h = h_max
+            else:
+                h = D.rebound_length(hh, 1e-6 / p_ref, h_max, om, a_cur)
             continue
         if abs(th1) >= D.HALF_PI:
             t_over, k = D.overturn(t, th, om, a_cur, th1, om1, a1, hh, s, dt_out, k, out_th,
