@@ -5,13 +5,14 @@ r"""Fixed steps with a model's own one-step map: the stepper of the shared step 
 The model gives ``fstep(mp, args, t, theta, omega, acc0, h) -> (theta, omega, acc_end)``,
 a one-step map accurate enough to need no error control. The loop steps from breakpoint
 to breakpoint of the excitation (every sample of a record) in steps of at most ``h_max``,
-shorter only to follow a rebound or to resolve two crossings of ``theta = 0`` hidden in a
-step. Events (impact, lift-off) are located by safeguarded Newton iteration on the length
-of the step, as with Dormand-Prince (:mod:`.dopri`), so the impact velocity is that of
-the one-step map (which may keep its last polynomial to answer these shorter steps from
-the same start: :func:`rocking.models.housner.taylor_step`). Peaks and output samples
-come from the quintic Hermite interpolant of the step's ends (:func:`segment`), its roots
-by Newton or secant iteration (:func:`hermite_root`).
+shorter only to resolve two crossings of ``theta = 0`` hidden in a step (after an impact
+a step goes over the rebound whole: its return is an impact located inside it). Events
+(impact, lift-off) are located by safeguarded Newton iteration on the length of the step,
+as with Dormand-Prince (:mod:`.dopri`), so the impact velocity is that of the one-step
+map (which may keep its last polynomial to answer these shorter steps from the same
+start: :func:`rocking.models.housner.taylor_step`). Peaks and output samples come from
+the quintic Hermite interpolant of the step's ends (:func:`segment`), its roots by Newton
+or secant iteration (:func:`hermite_root`).
 
 A fixed 4th-order Runge-Kutta-Nystrom step (3 evaluations) was tried first and dropped:
 on 20 s records at one step per 0.01 s sample its error in ``max |theta|`` was 1e-3 to
