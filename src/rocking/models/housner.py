@@ -323,7 +323,7 @@ def taylor_step(mp, args, t, th, om, a0, h):
     key = buf[4]
     if key[0] == t and key[1] == th and key[2] == om and key[3] == s and h <= key[4]:
         # the same start as the last step (an event inside it): its polynomial
-        return _taylor_eval(ph, dph, key[5], key[6], s, alpha, p2, lin, h)
+        return _taylor_eval(ph, dph, key[5], key[6], s, p2, lin, th, h)
     q1 = ground_acc(kind, prm, samples, t + 0.25 * h) * INV_G
     q3 = ground_acc(kind, prm, samples, t + 0.75 * h) * INV_G
     a_1 = (q3 - q1) / (0.5 * h) if h > 0.0 else 0.0
@@ -353,25 +353,29 @@ def taylor_step(mp, args, t, th, om, a0, h):
                 sv += dph[j] * u[m - j]
             u[m] = su * _INV_M[m]
             v[m] = -sv * _INV_M[m]
-    return _taylor_eval(ph, dph, a_0, a_1, s, alpha, p2, lin, h)
+    return _taylor_eval(ph, dph, a_0, a_1, s, p2, lin, th, h)
 
 
 @njit(cache=True, inline="always")
-def _taylor_eval(ph, dph, a_0, a_1, s, alpha, p2, lin, tau):
-    """``(theta, omega, theta'')`` at ``tau`` from the coefficients of :func:`taylor_step`."""
+def _taylor_eval(ph, dph, a_0, a_1, s, p2, lin, th, tau):
+    """``(theta, omega, theta'')`` at ``tau`` from the coefficients of :func:`taylor_step`
+    from ``th``. The angle is ``th`` plus the series' increment, not ``s (alpha - phi)``:
+    near ``theta = 0`` the latter would lose it below ``alpha`` times the machine epsilon
+    (a block just uplifted, or at the top of a tiny rebound)."""
     n = TAYLOR_ORDER
-    f = ph[n]
+    g = ph[n]
     df = dph[n]
     for k in range(n - 1, 0, -1):
-        f = f * tau + ph[k]
+        g = g * tau + ph[k]
         df = df * tau + dph[k]
-    f = f * tau + ph[0]
+    inc = g * tau  # phi(tau) - phi(0)
+    f = ph[0] + inc
     a_h = a_0 + a_1 * tau
     if lin:
         d2 = p2 * (f - s * a_h)
     else:
         d2 = p2 * (math.sin(f) - s * math.cos(f) * a_h)
-    return s * (alpha - f), -s * df, -s * d2
+    return th - s * inc, -s * df, -s * d2
 
 
 @njit(cache=True, inline="always")

@@ -98,15 +98,17 @@ def trial(fstep, mp, args, t, th, om, a0, h, h_max, t_end, bp, s):
     """One step from ``t`` of length ``hh = min(h, h_max, t_end - t)``, shortened onto the
     breakpoint ``bp`` (``hit_bp``). Returns ``(hh, hit_bp, theta, omega, acc_end, ok,
     h_next)`` like :func:`.dopri.trial`: ``ok`` False only if the step hides two crossings
-    of ``theta = 0`` on branch ``s`` (retry with half the length); ``h_next`` is ``h_max``
-    (the next breakpoint shortens it)."""
+    of ``theta = 0`` on branch ``s`` (retry with half the length, down to ``1e-9 h_max``:
+    a crossing hidden in a shorter step is immaterial, and the halving must end);
+    ``h_next`` is ``h_max`` (the next breakpoint shortens it)."""
     hh = min(h, h_max, t_end - t)
     hit_bp = False
     if t + hh >= bp - 1e-12:
         hh = bp - t
         hit_bp = True
     th1, om1, a1 = fstep(mp, args, t, th, om, a0, hh)
-    if s * th1 >= 0.0 and may_hide_crossing(th, om, a0, th1, om1, a1, hh, s):
+    if (s * th1 >= 0.0 and hh > 1e-9 * h_max
+            and may_hide_crossing(th, om, a0, th1, om1, a1, hh, s)):
         if D.sign_changes(th, om, a0, th1, om1, a1, hh, s) >= 2:
             return hh, hit_bp, th1, om1, a1, False, 0.5 * hh
     return hh, hit_bp, th1, om1, a1, True, h_max
