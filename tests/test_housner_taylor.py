@@ -170,3 +170,19 @@ def test_model_contract_with_taylor_as_default():
         Options = TaylorOptions
 
     check_model(HousnerTaylor)
+
+
+def test_uplift_just_before_a_sample_keeps_the_tiny_angle():
+    """A block uplifting 1e-6 s before a sample, the ground acceleration barely above the
+    threshold: its first angles are ~1e-17 rad, below ``alpha`` times the machine epsilon,
+    and must not round to 0 (they did once, and the step was halved for ever). The run
+    ends and agrees with Dormand-Prince."""
+    thr = SPEC2.uplift_acceleration
+    ramp = np.concatenate(([0.0], np.full(300, thr / (1.0 - 1e-4))))
+    rec = Record(ramp * np.concatenate(([1.0], 1.0 + 0.3 * np.sin(np.arange(300) * 0.2))),
+                 0.01)
+    d = simulate(SPEC2, rec, rtol=1e-11, duration=3.0)
+    t = simulate(SPEC2, rec, method="taylor", duration=3.0)
+    assert t.uplift_time == d.uplift_time < 0.01
+    assert t.max_abs_theta == pytest.approx(d.max_abs_theta, rel=1e-6)
+    assert t.n_impacts == d.n_impacts
