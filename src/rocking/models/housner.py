@@ -92,7 +92,7 @@ vertical component or without motion, by fixed steps of the Taylor series of Eq 
 the ground acceleration is linear between samples, so the series is that of the exact
 solution, and an impact inside a step is located on the step's polynomial. Every event
 and rule above is the same (the shared loop, :mod:`rocking.models._numerics.fixed`). On
-the 20 s records of ``benchmarks/bench_taylor.py`` it is about 3 times as fast as the
+the 20 s records of ``benchmarks/bench_taylor.py`` it is 2.5 times as fast as the
 default and closer to a tight reference (median error of ``max |theta|`` 1e-10 against
 1e-8). Other motions run with Dormand-Prince.
 """
