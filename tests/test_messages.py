@@ -218,7 +218,7 @@ def test_report_sections_13_16_17(tmp_path, monkeypatch):
         return real(self, fig, name, caption, alt)
 
     monkeypatch.setattr(core.Context, "save_figure", capture)
-    index = reproduce(tmp_path, quick=True, progress=False,
+    index = reproduce(tmp_path, quick=True, progress=False, jobs=1,  # figures captured here
                       only=["probability", "fragility", "vertical"])
     html = index.read_text(encoding="utf-8")
     assert "0.0025000000000000022" not in html and "std 0.0025 rad" in html

@@ -61,6 +61,7 @@ class HeadingFragility:
 
     Examples
     --------
+    >>> import pandas as pd
     >>> from rocking.analysis.headings import heading_fragility
     >>> rng = np.random.default_rng(0)
     >>> cap = 2.0 * np.exp(0.4 * rng.standard_normal(40))  # one capacity per record
@@ -112,6 +113,7 @@ class HeadingFragility:
 
         Examples
         --------
+        >>> import pandas as pd
         >>> from rocking.analysis.headings import heading_fragility
         >>> rng = np.random.default_rng(0)
         >>> cap = 2.0 * np.exp(0.4 * rng.standard_normal(30))
@@ -246,6 +248,22 @@ def heading_fragility(rows: pd.DataFrame, *, im: str = "im", failed: str = "over
 
     Raises :class:`~rocking.ParameterError` when a column is missing, a heading is not
     finite, or fewer than two records are given.
+
+    Examples
+    --------
+    Two headings, the one at 90 deg weaker by construction:
+
+    >>> import pandas as pd
+    >>> from rocking.analysis import heading_fragility
+    >>> rng = np.random.default_rng(1)
+    >>> cap = 2.0 * np.exp(0.4 * rng.standard_normal(30))  # one capacity per record
+    >>> rows = pd.DataFrame([(r, h, im, bool(im >= cap[r] / (1 + 0.3 * (h == 90))))
+    ...                      for r in range(30) for h in (0.0, 90.0)
+    ...                      for im in (0.5, 1.0, 1.5, 2.0, 3.0, 4.0)],
+    ...                     columns=["motion", "heading", "im", "overturned"])
+    >>> hf = heading_fragility(rows, n_boot=20)
+    >>> hf.worst_heading, hf.n_records
+    (90.0, 30)
     """
     for k, v in (("im", im), ("failed", failed), ("heading", heading), ("record", record)):
         if not isinstance(v, str):
