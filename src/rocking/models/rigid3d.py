@@ -266,6 +266,21 @@ def _residual(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL):
 
 
 @njit(cache=True)
+def _accept(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2, vscale, P, dv, dL):
+    """Whether the candidate impulses ``Pc`` satisfy every contact law to ``tol`` (their
+    velocity changes into ``dv2``, ``dL2``); if so they become the step's ``P``, ``dv``,
+    ``dL``."""
+    _effect(mp, n_act, rho, Pc, dv2, dL2)
+    if not _residual(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2) <= mp.tol * vscale:
+        return False  # (a NaN residual too)
+    for i in range(n_act):
+        P[i, 0], P[i, 1], P[i, 2] = Pc[i, 0], Pc[i, 1], Pc[i, 2]
+    for a in range(3):
+        dv[a], dL[a] = dv2[a], dL2[a]
+    return True
+
+
+@njit(cache=True)
 def _chol_solve(S, b, n):
     """Solve ``S x = b`` in place of ``b`` for a symmetric positive definite ``S`` (n, n)
     by Cholesky (``S`` overwritten); False if ``S`` is singular (a pivot below 1e-12 of
@@ -522,12 +537,7 @@ def _polish(mp, n_act, rho, bias, P, vf, Lf, Jinv, J, dv, dL, vscale, ws6, ws, w
             for c in range(m):
                 i = sidx[c]
                 Pc[i, 0], Pc[i, 1], Pc[i, 2] = P_s[c, 0], P_s[c, 1], P_s[c, 2]
-            _effect(mp, n_act, rho, Pc, dv2, dL2)
-            if _residual(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2) <= mp.tol * vscale:
-                for i in range(n_act):
-                    P[i, 0], P[i, 1], P[i, 2] = Pc[i, 0], Pc[i, 1], Pc[i, 2]
-                for a in range(3):
-                    dv[a], dL[a] = dv2[a], dL2[a]
+            if _accept(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2, vscale, P, dv, dL):
                 return True
             # not a solution (a contact outside its cone, or one pressed into the ground
             # by the others: the set holds the body too much): drop the least loaded one
@@ -648,12 +658,7 @@ def _mixed_from(mp, n_act, rho, bias, P, vf, Lf, Jinv, dv, dL, vscale, mx, stric
             if strict:
                 return False
             continue
-        _effect(mp, n_act, rho, Pc, dv2, dL2)
-        if _residual(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2) <= mp.tol * vscale:
-            for i in range(n_act):
-                P[i, 0], P[i, 1], P[i, 2] = Pc[i, 0], Pc[i, 1], Pc[i, 2]
-            for a in range(3):
-                dv[a], dL[a] = dv2[a], dL2[a]
+        if _accept(mp, n_act, rho, bias, Pc, vf, Lf, Jinv, dv2, dL2, vscale, P, dv, dL):
             return True
         # correct the guess from the contacts' velocities
         wx, wy, wz = _mv(Jinv, Lf[0] + dL2[0], Lf[1] + dL2[1], Lf[2] + dL2[2])
