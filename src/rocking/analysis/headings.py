@@ -130,7 +130,7 @@ class HeadingFragility:
 
         t = self.table.sort_values("heading_deg")
         unit = unit_label(unit if unit is not None else (self.im_unit or ""))
-        fig = Figure(figsize=(11.0, 5.0), layout="constrained")
+        fig = Figure(figsize=(12.5, 5.4), layout="constrained")
         axp = fig.add_subplot(1, 2, 1, projection="polar")
         axc = fig.add_subplot(1, 2, 2)
         h = np.radians(t["heading_deg"].to_numpy(float)) % (2 * math.pi)
@@ -184,8 +184,9 @@ class HeadingFragility:
         axp.set_ylim(0.0, top)
         axp.set_theta_zero_location("E")
         axp.set_theta_direction(1)
-        axp.set_title(f"Median {im_label(self.im_name)} of overturning ({unit})\nby heading (deg: "
-                      "the body's x axis from the first component, ccw)", fontsize=10)
+        axp.set_title(f"Median {im_label(self.im_name)} of overturning ({unit}) by heading\n"
+                      "(deg, ccw: the body's x axis from the\npair's first component)",
+                      fontsize=10)
         fig.legend(*axp.get_legend_handles_labels(), fontsize=8, loc="outside lower left",
                    frameon=False, ncol=2)
         picks = []
