@@ -633,7 +633,8 @@ class Model:
         >>> m = rocking.MODELS["housner"].from_kwargs(rocking.Block.rectangular(0.2, 1.0),
         ...                                           linear=True)
         >>> m.info()
-        {'rtol': 1e-08, 'rest_tol': 1e-12, 'free_rest_tol': 0.001, 'linear': True}
+        {'rtol': 1e-08, 'rest_tol': 1e-12, 'free_rest_tol': 0.001, 'linear': True,
+         'method': 'dopri'}
         """
         return {k: v for k, v in self.options.to_dict().items()
                 if isinstance(v, int | float | str | bool) or v is None}
