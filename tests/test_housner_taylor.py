@@ -108,8 +108,8 @@ def test_taylor_step_converges_under_refinement():
     acceleration: the error of one step of length h falls like h^(ORDER+1)."""
     a, p = SPEC2.alpha, SPEC2.p
     buf = np.full((5, H.TAYLOR_ORDER + 1), np.nan)
-    mp = H.SideParams(a, p, 1.0, a, p, 1.0, False, p * p, p * p, 0.0, 0.0, 0.0, 0.0, 0.0,
-                      0.0, buf)
+    mp = H.TaylorSideParams(a, p, 1.0, a, p, 1.0, False, p * p, p * p, 0.0, 0.0, 0.0, 0.0,
+                            0.0, 0.0, buf)
     kind, prm, samples = rocking.motions.Record(np.full(11, 2.0), 0.1).spec()
     args = (1.0, a, p * p, False, kind, prm, samples)
     th0, om0 = 0.5 * a, 0.0

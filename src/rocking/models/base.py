@@ -410,6 +410,14 @@ class Model:
             raise ParameterError(f"block must be a {what}, got {type(block).__name__}")
         return block
 
+    def kernels(self) -> tuple:
+        """The compiled ``(kernel, batch_kernel)`` that :func:`rocking.simulate` and
+        :func:`rocking.simulate_many` call for these options: the class's by default; a
+        model whose option selects other compiled code (the classical model's
+        ``method="taylor"``) returns that pair, so that the default never compiles it."""
+        cls = type(self)
+        return cls.kernel, cls.batch_kernel
+
     # ---- to be provided by subclasses
     def kernel_params(self, dt_out: float, theta0: float, omega0: float) -> tuple:
         """The parameter tuple ``mp`` handed to the kernels (for a run with output interval

@@ -117,6 +117,7 @@ from ..motions._kernel import (
 from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
+from ._numerics import fixed as F
 from ._numerics import loop as L
 from .base import Model, ModelOptions, option, row_args, set_planar_result, store_row
 
@@ -279,11 +280,13 @@ def free_cap_sides(th, om, s, alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, t, fr
 # its parameters ``mp`` are a :data:`SideParams`, no state of its own
 SideParams = namedtuple("SideParams", [
     "alpha_p", "p_p", "mu_p", "alpha_m", "p_m", "mu_m", "lin", "p2_p", "p2_m", "c_p", "c_m",
-    "thr_p", "thr_m", "rest_tol", "free_rest_tol", "buf"])
+    "thr_p", "thr_m", "rest_tol", "free_rest_tol"])
 """The parameters of the classical model's hooks in the shared step loop: both sides'
 ``alpha``, ``p``, ``mu``, ``p^2``, uplift ratios ``c`` (``tan alpha``; ``alpha`` when
-linear) and thresholds ``g c``, the ``linear`` flag, the rest tolerances and the work
-array of :func:`taylor_step`."""
+linear) and thresholds ``g c``, the ``linear`` flag and the rest tolerances."""
+
+TaylorSideParams = namedtuple("TaylorSideParams", SideParams._fields + ("buf",))
+""":data:`SideParams` and the work array of :func:`taylor_step` (``method="taylor"``)."""
 
 TAYLOR_ORDER = 8
 """Degree of the Taylor polynomial of :func:`taylor_step`: with ``p h <= 0.05`` its
@@ -445,7 +448,7 @@ def _on_segment(mp, xs, s, pk):
 @njit(cache=True)
 def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t_end,
               t_quiet, th0, om0, rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th,
-              out_om, imp, fixed=False):
+              out_om, imp):
     """Integrate one simulation. Returns (n_out, n_impacts, max_abs_theta, overturned,
     overturn_time, uplift_time, n_steps, lift_off_time, settled).
 
@@ -456,9 +459,8 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t
     stored); ``imp`` receives impact times up to its length (impacts are counted beyond
     it). From ``t_quiet`` on the ground is still: the run stops once the block is at rest;
     a block still rocking at ``t_end > t_quiet`` is decided by :func:`free_outcome_sides`
-    (exact). ``fixed``: the Taylor steps of :func:`taylor_step` (``method="taylor"``,
-    ``rtol`` unused) instead of the adaptive Dormand-Prince steps, for a record without a
-    vertical component or no motion (other motions: Dormand-Prince).
+    (exact). Adaptive Dormand-Prince steps under ``rtol`` (:func:`integrate_taylor`: the
+    Taylor steps of ``method="taylor"``).
     """
     p2_p = p_p * p_p
     p2_m = p_m * p_m
@@ -466,23 +468,49 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t
     c_m = alpha_m if lin else math.tan(alpha_m)
     p_hi = max(p_p, p_m)  # the step sizes follow the faster side
     atol_th, atol_om = D.abs_tols(rtol, min(alpha_p, alpha_m), p_hi)
-    fixed = fixed and (kind == RECORD or kind == NONE) and not has_vertical(prm)
-    buf = np.full((5, TAYLOR_ORDER + 1) if fixed else (5, 7), np.nan)
     mp = SideParams(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, G * c_p,
-                    G * c_m, rest_tol, free_rest_tol, buf)
+                    G * c_m, rest_tol, free_rest_tol)
     k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, _xs = L.run(
-        _acc, taylor_step, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact,
-        _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,
-        atol_th, atol_om, p_hi, h_max, h_scan, dt_out, out_th, out_om, imp, fixed)
+        _acc, _acc, D.loop_trial, D.loop_stop_inside, D.loop_impact, D.segment,
+        D.rebound_length, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol,
+        _after_impact, _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0,
+        om0, rtol, atol_th, atol_om, p_hi, h_max, h_scan, dt_out, out_th, out_om, imp)
+    return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
+
+
+@njit(cache=True)
+def integrate_taylor(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t_end,
+                     t_quiet, th0, om0, rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out,
+                     out_th, out_om, imp):
+    """:func:`integrate` with the fixed Taylor steps of :func:`taylor_step`
+    (``method="taylor"``, ``rtol`` unused; :mod:`rocking.models._numerics.fixed`) on a
+    record without a vertical component or no motion; other motions: :func:`integrate`
+    (Dormand-Prince)."""
+    if not ((kind == RECORD or kind == NONE) and not has_vertical(prm)):
+        return integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples,
+                         t_end, t_quiet, th0, om0, rtol, rest_tol, free_rest_tol, h_max,
+                         h_scan, dt_out, out_th, out_om, imp)
+    p2_p = p_p * p_p
+    p2_m = p_m * p_m
+    c_p = alpha_p if lin else math.tan(alpha_p)
+    c_m = alpha_m if lin else math.tan(alpha_m)
+    p_hi = max(p_p, p_m)
+    buf = np.full((5, TAYLOR_ORDER + 1), np.nan)
+    mp = TaylorSideParams(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m,
+                          G * c_p, G * c_m, rest_tol, free_rest_tol, buf)
+    k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, _xs = L.run(
+        _acc, taylor_step, F.loop_trial, F.loop_stop_inside, F.loop_impact, F.segment,
+        F.rebound_length, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol,
+        _after_impact, _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0,
+        om0, rtol, 0.0, 0.0, p_hi, h_max, h_scan, dt_out, out_th, out_om, imp)
     return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
 
 
 HousnerParams = namedtuple("HousnerParams", [
     "alpha_p", "p_p", "mu_p", "linear", "rtol", "rest_tol", "free_rest_tol", "alpha_m", "p_m",
-    "mu_m", "fixed"])
+    "mu_m"])
 """The kernel parameters ``mp`` of the classical model: both sides' ``alpha`` (rad), ``p``
-(1/s) and ``mu``, the ``linear`` flag, the tolerances and ``fixed`` (``method="taylor"``)
-(:class:`HousnerOptions`)."""
+(1/s) and ``mu``, the ``linear`` flag and the tolerances (:class:`HousnerOptions`)."""
 
 
 @njit(cache=True)
@@ -492,7 +520,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
     k, n_imp, peak, over, t_over, t_up, n_steps, t_lift, settled = integrate(
         mp.alpha_p, mp.p_p, mp.mu_p, mp.alpha_m, mp.p_m, mp.mu_m, mp.linear, kind, prm,
         samples, t_end, t_quiet, y0[0], y0[1], mp.rtol, mp.rest_tol, mp.free_rest_tol, h_max,
-        h_scan, dt_out, hist[:, 0], hist[:, 1], imp, mp.fixed)
+        h_scan, dt_out, hist[:, 0], hist[:, 1], imp)
     set_planar_result(res, k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled)
 
 
@@ -501,7 +529,7 @@ def with_block(mp, b):
     """``mp`` with the block parameters ``b = (alpha_plus, p_plus, mu_plus, alpha_minus,
     p_minus, mu_minus)`` of a batch row."""
     return HousnerParams(b[0], b[1], b[2], mp.linear, mp.rtol, mp.rest_tol, mp.free_rest_tol,
-                         b[3], b[4], b[5], mp.fixed)
+                         b[3], b[4], b[5])
 
 
 @njit(cache=True, parallel=True)
@@ -509,6 +537,26 @@ def batch_kernel(mp, extra0, rows, blocks):
     """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
     for i in prange(rows.kinds.shape[0]):
         kernel(with_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+        store_row(i, rows)
+
+
+@njit(cache=True)
+def kernel_taylor(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp, res,
+                  extra):
+    """:func:`kernel` with :func:`integrate_taylor` (``method="taylor"``)."""
+    h_max = min(0.05 / max(mp.p_p, mp.p_m), 8.0 * h_scan)
+    k, n_imp, peak, over, t_over, t_up, n_steps, t_lift, settled = integrate_taylor(
+        mp.alpha_p, mp.p_p, mp.mu_p, mp.alpha_m, mp.p_m, mp.mu_m, mp.linear, kind, prm,
+        samples, t_end, t_quiet, y0[0], y0[1], mp.rtol, mp.rest_tol, mp.free_rest_tol, h_max,
+        h_scan, dt_out, hist[:, 0], hist[:, 1], imp)
+    set_planar_result(res, k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled)
+
+
+@njit(cache=True, parallel=True)
+def batch_kernel_taylor(mp, extra0, rows, blocks):
+    """:func:`batch_kernel` with :func:`kernel_taylor` (``method="taylor"``)."""
+    for i in prange(rows.kinds.shape[0]):
+        kernel_taylor(with_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
         store_row(i, rows)
 
 
@@ -592,5 +640,11 @@ class Housner(Model):
     def kernel_params(self, dt_out, theta0, omega0) -> tuple:
         b, o = self.block, self.options
         return HousnerParams(b.alpha_plus, b.p_plus, b.mu_plus, o.linear, o.rtol, o.rest_tol,
-                             o.free_rest_tol, b.alpha_minus, b.p_minus, b.mu_minus,
-                             o.method == "taylor")
+                             o.free_rest_tol, b.alpha_minus, b.p_minus, b.mu_minus)
+
+    def kernels(self) -> tuple:
+        """The Taylor pair (:func:`kernel_taylor`, :func:`batch_kernel_taylor`) when
+        ``method="taylor"``, else the default (Dormand-Prince) pair."""
+        if self.options.method == "taylor":
+            return kernel_taylor, batch_kernel_taylor
+        return kernel, batch_kernel

@@ -16,7 +16,14 @@ inlined makes the kernel uncacheable ("dynamic globals"). The functions:
 * ``acc(theta, t, *args)``: the right-hand side, with ``args = rhs_args(mp, xs, s, kind,
   prm, samples)`` on pivot ``s``;
 * ``fstep(mp, args, t, theta, omega, acc0, h) -> (theta, omega, acc_end)``: the model's
-  one-step map of the fixed steps (``fixed=True``, :mod:`.fixed`); never called otherwise;
+  one-step map of the fixed steps (:mod:`.fixed`); with Dormand-Prince pass ``acc``
+  (not used);
+* the stepper ``trial, stop_inside, impact, segment, rebound``: Dormand-Prince
+  (``dopri.loop_trial, dopri.loop_stop_inside, dopri.loop_impact, dopri.segment,
+  dopri.rebound_length``) or fixed steps of ``fstep`` (the same names in :mod:`.fixed`).
+  They are arguments, not a runtime flag, so that numba compiles for each model only the
+  stepper it is given (a flag compiled both: the classical model's first compilation
+  went from 24 to 44 s);
 * ``start(mp, resting, s, th0) -> xs``: the model's own state (a tuple, or a dummy
   value) at ``t = 0``;
 * ``rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, out_om, t_up)
@@ -53,17 +60,17 @@ from numba import njit
 from ...motions._kernel import has_vertical, next_breakpoint
 from . import dopri as D
 from . import events as E
-from . import fixed as F
 
 
 @njit(cache=True, inline="always")
-def run(acc, fstep, rhs_args, start, rest, cap, inside, impact_tol, after_impact, on_overturn,
-        on_segment, mp, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, atol_th, atol_om,
-        p_ref, h_max, h_scan, dt_out, out_th, out_om, imp, fixed):
+def run(acc, fstep, trial, stop_inside, impact, segment, rebound, rhs_args, start, rest, cap,
+        inside, impact_tol, after_impact, on_overturn, on_segment, mp, kind, prm, samples,
+        t_end, t_quiet, th0, om0, rtol, atol_th, atol_om, p_ref, h_max, h_scan, dt_out, out_th,
+        out_om, imp):
     """One run of a model given by its functions (module docstring) and parameters ``mp``.
-    ``fixed``: fixed steps of the model's one-step map ``fstep`` (:mod:`.fixed`; ``rtol``,
-    ``atol_*`` unused), of at most ``h_max`` from breakpoint to breakpoint, instead of the
-    adaptive Dormand-Prince steps (the default: its arithmetic is unchanged).
+    The stepper (``trial`` ... ``rebound``): the adaptive Dormand-Prince steps under
+    ``rtol``, ``atol_*``, or fixed steps of ``fstep`` (:mod:`.fixed`; the tolerances unused)
+    of at most ``h_max`` from breakpoint to breakpoint.
     ``p_ref``: the frequency parameter of the step lengths (first step ``0.01 / p_ref``,
     at least ``1e-6 / p_ref`` after an impact). Returns ``(n_out, n_impacts,
     max_abs_theta, overturned, overturn_time, uplift_time, n_steps, lift_off_time,
@@ -106,14 +113,9 @@ def run(acc, fstep, rhs_args, start, rest, cap, inside, impact_tol, after_impact
         if need_a:
             a_cur = acc(th, t, *args)
             need_a = False
-        if fixed:
-            hh, hit_bp, th1, om1, a1, ok, h_next = F.trial(
-                fstep, mp, args, t, th, om, a_cur, h, h_max, t_end,
-                next_breakpoint(kind, prm, samples, t), s)
-        else:
-            hh, hit_bp, th1, om1, a1, ok, h_next = D.trial(
-                acc, args, t, th, om, a_cur, h, h_max, t_end,
-                next_breakpoint(kind, prm, samples, t), s, atol_th, atol_om, rtol)
+        hh, hit_bp, th1, om1, a1, ok, h_next = trial(
+            acc, fstep, mp, args, t, th, om, a_cur, h, h_max, t_end,
+            next_breakpoint(kind, prm, samples, t), s, atol_th, atol_om, rtol)
         n_steps += 1
         if not ok:  # too large an error, or two crossings hidden in the step: shorter
             h = h_next
@@ -122,12 +124,8 @@ def run(acc, fstep, rhs_args, start, rest, cap, inside, impact_tol, after_impact
         tc = E.first_lift_off(prm, samples, t, t + hh, h_scan) if hv else math.nan
         if tc == tc:
             # the base falls away (g + a_v <= 0): the model cannot represent flight
-            if fixed:
-                stops, thc, omc, k, pk = F.stop_inside(fstep, mp, args, t, th, om, a_cur, tc,
-                                                       s, dt_out, k, out_th, out_om, abs(th))
-            else:
-                stops, thc, omc, k, pk = D.stop_inside(acc, args, t, th, om, a_cur, tc, s,
-                                                       dt_out, k, out_th, out_om, abs(th))
+            stops, thc, omc, k, pk = stop_inside(acc, fstep, mp, args, t, th, om, a_cur, tc,
+                                                 s, dt_out, k, out_th, out_om, abs(th))
             if stops:
                 t, th, om, peak, t_lift = tc, thc, omc, max(peak, pk), tc
                 break
@@ -141,14 +139,9 @@ def run(acc, fstep, rhs_args, start, rest, cap, inside, impact_tol, after_impact
             continue
         if s * th1 < 0.0:
             # impact inside the step: safeguarded Newton on the step length
-            if fixed:
-                t, sig, omc, k, pk, n_imp = F.impact(fstep, mp, args, t, th, om, a_cur, th1,
-                                                     om1, a1, hh, s, impact_tol(mp, s), dt_out, k,
-                                                     out_th, out_om, abs(th), imp, n_imp)
-            else:
-                t, sig, omc, k, pk, n_imp = D.impact(acc, args, t, th, om, a_cur, th1, om1,
-                                                     a1, hh, s, impact_tol(mp, s), dt_out, k,
-                                                     out_th, out_om, abs(th), imp, n_imp)
+            t, sig, omc, k, pk, n_imp = impact(acc, fstep, mp, args, t, th, om, a_cur, th1,
+                                               om1, a1, hh, s, impact_tol(mp, s), dt_out, k,
+                                               out_th, out_om, abs(th), imp, n_imp)
             peak = max(peak, pk)
             th = 0.0
             stays, om, s, xs = after_impact(mp, xs, s, t, omc, pk, kind, prm, samples,
@@ -158,10 +151,7 @@ def run(acc, fstep, rhs_args, start, rest, cap, inside, impact_tol, after_impact
                 continue
             a_cur = acc(0.0, t, *rhs_args(mp, xs, s, kind, prm, samples))
             need_a = False
-            if fixed:  # no error control: one step over the rebound is as exact
-                h = h_max
-            else:
-                h = D.rebound_length(hh, 1e-6 / p_ref, h_max, om, a_cur)
+            h = rebound(hh, 1e-6 / p_ref, h_max, om, a_cur)
             continue
         if abs(th1) >= D.HALF_PI:
             t_over, k = D.overturn(t, th, om, a_cur, th1, om1, a1, hh, s, dt_out, k, out_th,
@@ -169,12 +159,8 @@ def run(acc, fstep, rhs_args, start, rest, cap, inside, impact_tol, after_impact
             t, overturned, peak = t_over, True, D.HALF_PI
             xs = on_overturn(mp, xs, s)
             break
-        if fixed:
-            k, pk = F.segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th,
-                              out_om, abs(th))
-        else:
-            k, pk = D.segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th,
-                              out_om, abs(th))
+        k, pk = segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th, out_om,
+                        abs(th))
         peak = max(peak, pk)
         xs = on_segment(mp, xs, s, pk)
         t = t + hh
