@@ -445,6 +445,28 @@ def _on_segment(mp, xs, s, pk):
     return xs
 
 
+# the stepper of ``method="taylor"`` in the shared loop: :mod:`rocking.models._numerics.fixed`
+# with :func:`taylor_step` (named here, not passed on: module docstring of the loop)
+
+@njit(cache=True, inline="always")
+def _taylor_trial(acc, mp, args, t, th, om, a0, h, h_max, t_end, bp, s, atol_th, atol_om,
+                  rtol):
+    return F.trial(taylor_step, mp, args, t, th, om, a0, h, h_max, t_end, bp, s)
+
+
+@njit(cache=True, inline="always")
+def _taylor_stop_inside(acc, mp, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om, peak):
+    return F.stop_inside(taylor_step, mp, args, t, th, om, a0, tc, s, dt_out, k, out_th,
+                         out_om, peak)
+
+
+@njit(cache=True, inline="always")
+def _taylor_impact(acc, mp, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k, out_th,
+                   out_om, peak, imp, n_imp):
+    return F.impact(taylor_step, mp, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k,
+                    out_th, out_om, peak, imp, n_imp)
+
+
 @njit(cache=True)
 def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t_end,
               t_quiet, th0, om0, rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th,
@@ -471,10 +493,10 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t
     mp = SideParams(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, G * c_p,
                     G * c_m, rest_tol, free_rest_tol)
     k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, _xs = L.run(
-        _acc, _acc, D.loop_trial, D.loop_stop_inside, D.loop_impact, D.segment,
-        D.rebound_length, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol,
-        _after_impact, _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0,
-        om0, rtol, atol_th, atol_om, p_hi, h_max, h_scan, dt_out, out_th, out_om, imp)
+        _acc, D.loop_trial, D.loop_stop_inside, D.loop_impact, D.segment, D.rebound_length,
+        _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact, _on_overturn,
+        _on_segment, mp, kind, prm, samples, t_end, t_quiet, (th0, om0),
+        (rtol, atol_th, atol_om), p_hi, h_max, h_scan, dt_out, (out_th, out_om), imp)
     return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
 
 
@@ -499,10 +521,10 @@ def integrate_taylor(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, sam
     mp = TaylorSideParams(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m,
                           G * c_p, G * c_m, rest_tol, free_rest_tol, buf)
     k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, _xs = L.run(
-        _acc, taylor_step, F.loop_trial, F.loop_stop_inside, F.loop_impact, F.segment,
-        F.rebound_length, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol,
-        _after_impact, _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0,
-        om0, rtol, 0.0, 0.0, p_hi, h_max, h_scan, dt_out, out_th, out_om, imp)
+        _acc, _taylor_trial, _taylor_stop_inside, _taylor_impact, F.segment, F.rebound_length,
+        _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact, _on_overturn,
+        _on_segment, mp, kind, prm, samples, t_end, t_quiet, (th0, om0), (rtol, 0.0, 0.0),
+        p_hi, h_max, h_scan, dt_out, (out_th, out_om), imp)
     return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
 
 

@@ -276,26 +276,25 @@ def overturn(t, th, om, a0, th1, om1, a1, h, s, dt_out, k, out_th, out_om):
 
 
 # The stepper of the shared step loop (:func:`.loop.run`): the adaptive steps above under
-# the loop's uniform signatures (``fstep`` and ``mp`` are not used), with
+# the loop's uniform signatures (``mp`` is not used), with
 # :func:`segment` and :func:`rebound_length`. Their arithmetic is that of the functions
 # they call.
 
 @njit(cache=True, inline="always")
-def loop_trial(acc, fstep, mp, args, t, th, om, a0, h, h_max, t_end, bp, s, atol_th, atol_om,
-               rtol):
+def loop_trial(acc, mp, args, t, th, om, a0, h, h_max, t_end, bp, s, atol_th, atol_om, rtol):
     """:func:`trial` in the loop's signature."""
     return trial(acc, args, t, th, om, a0, h, h_max, t_end, bp, s, atol_th, atol_om, rtol)
 
 
 @njit(cache=True, inline="always")
-def loop_stop_inside(acc, fstep, mp, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om,
+def loop_stop_inside(acc, mp, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om,
                      peak):
     """:func:`stop_inside` in the loop's signature."""
     return stop_inside(acc, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om, peak)
 
 
 @njit(cache=True, inline="always")
-def loop_impact(acc, fstep, mp, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k,
+def loop_impact(acc, mp, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k,
                 out_th, out_om, peak, imp, n_imp):
     """:func:`impact` in the loop's signature."""
     return impact(acc, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k, out_th,

@@ -165,31 +165,9 @@ def stop_inside(fstep, mp, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om
     return True, thc, omc, k, peak
 
 
-# The stepper of the shared step loop (:func:`.loop.run`) for fixed steps: the functions
-# above under the loop's uniform signatures (``acc`` and the tolerances are not used),
-# with :func:`segment` and :func:`rebound_length`.
-
-@njit(cache=True, inline="always")
-def loop_trial(acc, fstep, mp, args, t, th, om, a0, h, h_max, t_end, bp, s, atol_th, atol_om,
-               rtol):
-    """:func:`trial` in the loop's signature."""
-    return trial(fstep, mp, args, t, th, om, a0, h, h_max, t_end, bp, s)
-
-
-@njit(cache=True, inline="always")
-def loop_stop_inside(acc, fstep, mp, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om,
-                     peak):
-    """:func:`stop_inside` in the loop's signature."""
-    return stop_inside(fstep, mp, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om, peak)
-
-
-@njit(cache=True, inline="always")
-def loop_impact(acc, fstep, mp, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k,
-                out_th, out_om, peak, imp, n_imp):
-    """:func:`impact` in the loop's signature."""
-    return impact(fstep, mp, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k,
-                  out_th, out_om, peak, imp, n_imp)
-
+# The loop's ``rebound`` for fixed steps (with :func:`segment`; a model wraps
+# :func:`trial`, :func:`stop_inside` and :func:`impact` naming its one-step map, as
+# :mod:`rocking.models.housner` does for ``method="taylor"``).
 
 @njit(cache=True)
 def rebound_length(hh, h_min, h_max, om, a):
