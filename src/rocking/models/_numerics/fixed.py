@@ -1,6 +1,8 @@
-r"""Fixed steps with a model's own one-step map: the stepper of the shared step loop
-(:func:`rocking.models._numerics.loop.run`) with ``fixed=True`` (the classical model's
-``method="taylor"``, :func:`rocking.models.housner.taylor_step`).
+r"""Fixed steps with a model's own one-step map: a stepper of the shared step loop
+(:func:`rocking.models._numerics.loop.run`), the classical model's ``method="taylor"``
+(:func:`rocking.models.housner.taylor_step`; the model wraps :func:`trial`,
+:func:`stop_inside` and :func:`impact` in functions that name its map, and passes them
+with :func:`segment` and :func:`rebound_length`).
 
 The model gives ``fstep(mp, args, t, theta, omega, acc0, h) -> (theta, omega, acc_end)``,
 a one-step map accurate enough to need no error control. The loop steps from breakpoint
