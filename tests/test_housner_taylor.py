@@ -186,3 +186,38 @@ def test_uplift_just_before_a_sample_keeps_the_tiny_angle():
     assert t.uplift_time == d.uplift_time < 0.01
     assert t.max_abs_theta == pytest.approx(d.max_abs_theta, rel=1e-6)
     assert t.n_impacts == d.n_impacts
+
+
+def test_kernels_hook_gives_the_taylor_pair_only_for_taylor():
+    """``Model.kernels()``: the driver's kernels. The Taylor pair only with
+    ``method="taylor"``; the default and the anchored block keep their class's pair (so
+    they never compile the Taylor code)."""
+    from rocking.models import anchored as A
+
+    assert H.Housner.from_kwargs(SPEC2).kernels() == (H.kernel, H.batch_kernel)
+    assert (H.Housner.from_kwargs(SPEC2, method="taylor").kernels()
+            == (H.kernel_taylor, H.batch_kernel_taylor))
+    assert A.Anchored.from_kwargs(SPEC2).kernels() == (A.kernel, A.batch_kernel)
+
+
+def test_default_run_does_not_compile_the_taylor_kernels():
+    """A fresh process running the default classical model and the anchored block
+    compiles (or loads) no Taylor specialisation."""
+    import os
+    import subprocess
+    import sys
+
+    code = (
+        "import numpy as np, rocking\n"
+        "from rocking.models import housner as H\n"
+        "from rocking.motions import Record\n"
+        "rec = Record(np.random.default_rng(0).normal(size=200), 0.01)\n"
+        "b = rocking.specimen(2)\n"
+        "rocking.simulate_many(b, [rec]); rocking.simulate(b, rec)\n"
+        "rocking.simulate(b, rec, model='anchored')\n"
+        "assert H.kernel.signatures and H.batch_kernel.signatures\n"
+        "print(len(H.kernel_taylor.signatures), len(H.batch_kernel_taylor.signatures),\n"
+        "      len(H.integrate_taylor.signatures))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         env=os.environ.copy(), timeout=600, check=True)
+    assert out.stdout.split() == ["0", "0", "0"], out.stdout + out.stderr
