@@ -414,7 +414,19 @@ class Model:
         """The compiled ``(kernel, batch_kernel)`` that :func:`rocking.simulate` and
         :func:`rocking.simulate_many` call for these options: the class's by default; a
         model whose option selects other compiled code (the classical model's
-        ``method="taylor"``) returns that pair, so that the default never compiles it."""
+        ``method="taylor"``) returns that pair, so that the default never compiles it.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.models import housner
+        >>> block = rocking.Block.rectangular(0.2, 1.0)
+        >>> rocking.MODELS["housner"].from_kwargs(block).kernels()[1] is housner.batch_kernel
+        True
+        >>> m = rocking.MODELS["housner"].from_kwargs(block, method="taylor")
+        >>> m.kernels() == (housner.kernel_taylor, housner.batch_kernel_taylor)
+        True
+        """
         cls = type(self)
         return cls.kernel, cls.batch_kernel
 
