@@ -49,6 +49,7 @@ LAST = {
     "bench_shapes.py": "total (goal < 2 s)",
     "bench_step_loop.py": "min..max of pairs",
     "bench_stochastic.py": "records/s",
+    "bench_taylor.py": "(compiled reference)",
     "bench_vertical.py": "GroundMotion(h, v)",
     "study_rest_tol.py": "ccrr section:",
     "study_rigid3d_convergence.py": "box       runs with unconverged steps",

@@ -350,9 +350,10 @@ def integrate(alpha, p, mu, q, kappa, rigid, kind, prm, samples, t_end, t_quiet,
     mp = AnchorLoopParams(alpha, p, mu, q, kappa, rigid, p2, c, th_b, rest_tol, free_rest_tol,
                           alpha_m, p_m, mu_m, p2_m, c_m, lr, lr_m)
     k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, xs = L.run(
-        _acc, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact,
-        _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,
-        atol_th, atol_om, p_hi, h_max, h_scan, dt_out, out_th, out_om, imp)
+        _acc, D.loop_trial, D.loop_stop_inside, D.loop_impact, D.segment, D.rebound_length,
+        _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact, _on_overturn,
+        _on_segment, mp, kind, prm, samples, t_end, t_quiet, (th0, om0),
+        (rtol, atol_th, atol_om), p_hi, h_max, h_scan, dt_out, (out_th, out_om), imp)
     bp, bm, tbp, tbm, fmax = xs
     if anch.shape[0] >= 5:
         anch[0] = fmax

@@ -410,6 +410,26 @@ class Model:
             raise ParameterError(f"block must be a {what}, got {type(block).__name__}")
         return block
 
+    def kernels(self) -> tuple:
+        """The compiled ``(kernel, batch_kernel)`` that :func:`rocking.simulate` and
+        :func:`rocking.simulate_many` call for these options: the class's by default; a
+        model whose option selects other compiled code (the classical model's
+        ``method="taylor"``) returns that pair, so that the default never compiles it.
+
+        Examples
+        --------
+        >>> import rocking
+        >>> from rocking.models import housner
+        >>> block = rocking.Block.rectangular(0.2, 1.0)
+        >>> rocking.MODELS["housner"].from_kwargs(block).kernels()[1] is housner.batch_kernel
+        True
+        >>> m = rocking.MODELS["housner"].from_kwargs(block, method="taylor")
+        >>> m.kernels() == (housner.kernel_taylor, housner.batch_kernel_taylor)
+        True
+        """
+        cls = type(self)
+        return cls.kernel, cls.batch_kernel
+
     # ---- to be provided by subclasses
     def kernel_params(self, dt_out: float, theta0: float, omega0: float) -> tuple:
         """The parameter tuple ``mp`` handed to the kernels (for a run with output interval
@@ -633,7 +653,8 @@ class Model:
         >>> m = rocking.MODELS["housner"].from_kwargs(rocking.Block.rectangular(0.2, 1.0),
         ...                                           linear=True)
         >>> m.info()
-        {'rtol': 1e-08, 'rest_tol': 1e-12, 'free_rest_tol': 0.001, 'linear': True}
+        {'rtol': 1e-08, 'rest_tol': 1e-12, 'free_rest_tol': 0.001, 'linear': True,
+         'method': 'dopri'}
         """
         return {k: v for k, v in self.options.to_dict().items()
                 if isinstance(v, int | float | str | bool) or v is None}

@@ -85,6 +85,16 @@ record, the start and end of a pulse). The branch (pivot) is frozen within a ste
 the right-hand side is smooth; impacts are then located inside the step. Everything runs
 in one compiled numba function per simulation; :func:`rocking.simulate_many` runs a
 batch in parallel with no Python per time step.
+
+``method="taylor"`` (not the default) replaces the adaptive steps, on a record without a
+vertical component or without motion, by fixed steps of the Taylor series of Eq 1
+(:func:`taylor_step`, degree :data:`TAYLOR_ORDER`), one per sample (at most ``0.05/p``):
+the ground acceleration is linear between samples, so the series is that of the exact
+solution, and an impact inside a step is located on the step's polynomial. Every event
+and rule above is the same (the shared loop, :mod:`rocking.models._numerics.fixed`). On
+the 20 s records of ``benchmarks/bench_taylor.py`` it is 2.5 times as fast as the
+default and closer to a tight reference (median error of ``max |theta|`` 1e-10 against
+1e-8). Other motions run with Dormand-Prince.
 """
 
 from __future__ import annotations
@@ -93,9 +103,12 @@ import math
 from collections import namedtuple
 from dataclasses import dataclass
 
+import numpy as np
 from numba import njit, prange
 
 from ..motions._kernel import (
+    NONE,
+    RECORD,
     ground_acc,
     ground_acc_hv,
     has_vertical,
@@ -104,6 +117,7 @@ from ..motions._kernel import (
 from ..units import G
 from ._numerics import dopri as D
 from ._numerics import events as E
+from ._numerics import fixed as F
 from ._numerics import loop as L
 from .base import Model, ModelOptions, option, row_args, set_planar_result, store_row
 
@@ -271,6 +285,101 @@ SideParams = namedtuple("SideParams", [
 ``alpha``, ``p``, ``mu``, ``p^2``, uplift ratios ``c`` (``tan alpha``; ``alpha`` when
 linear) and thresholds ``g c``, the ``linear`` flag and the rest tolerances."""
 
+TaylorSideParams = namedtuple("TaylorSideParams", SideParams._fields + ("buf",))
+""":data:`SideParams` and the work array of :func:`taylor_step` (``method="taylor"``)."""
+
+TAYLOR_ORDER = 8
+"""Degree of the Taylor polynomial of :func:`taylor_step`: with ``p h <= 0.05`` its
+remainder is ``~(p h)^9 / 9! < 1e-17`` of the angle scale."""
+
+_INV_M = tuple(1.0 / max(m, 1) for m in range(TAYLOR_ORDER + 1))
+_INV_K2 = tuple(1.0 / ((k + 1) * (k + 2)) for k in range(TAYLOR_ORDER))
+
+
+@njit(cache=True, inline="always")
+def taylor_step(mp, args, t, th, om, a0, h):
+    r"""One step of Eq 1 by its Taylor series (``method="taylor"``): exact up to
+    ``h^TAYLOR_ORDER`` when the ground acceleration is linear over the step (a record
+    between two samples, or no motion). Returns ``(theta, omega, theta'')`` at ``t + h``.
+
+    With ``phi = alpha_s - s theta`` (the angle of the centre of mass from the vertical
+    through the pivot) Eq 1 reads ``phi'' = p^2 (sin phi - s cos phi A(t))``, ``A = a/g``
+    linear over the step: ``A = A0 + A1 tau``. The coefficients ``phi_k`` of ``phi(t +
+    tau) = sum phi_k tau^k`` follow from ``(k+1)(k+2) phi_(k+2) = p^2 (u_k - s (A0 v_k +
+    A1 v_(k-1)))`` with ``u = sin phi``, ``v = cos phi`` and ``u' = v phi'``, ``v' = -u
+    phi'``: ``k u_k = sum_j j phi_j v_(k-j)``, ``k v_k = -sum_j j phi_j u_(k-j)`` (the
+    recurrences of automatic differentiation; Moore 1966). The linear form has ``u =
+    phi``, ``v = 1``. One sine and cosine at the start, one at the end for ``theta''``.
+    ``A`` is taken from the motion at ``h/4`` and ``3h/4`` (exact on a linear piece, and
+    blind to a jump at the ends, e.g. after the end of a record). A step from the same
+    start as the last one and no longer (the loop locating an impact inside it) evaluates
+    the last polynomial instead (the start, the side, the length and ``A`` are kept in
+    ``mp.buf[4]``).
+    """
+    s, alpha, p2, lin, kind, prm, samples = args
+    buf = mp.buf
+    ph = buf[0]
+    dph = buf[1]  # k phi_k
+    u = buf[2]
+    v = buf[3]
+    n = TAYLOR_ORDER
+    key = buf[4]
+    if key[0] == t and key[1] == th and key[2] == om and key[3] == s and h <= key[4]:
+        # the same start as the last step (an event inside it): its polynomial
+        return _taylor_eval(ph, dph, key[5], key[6], s, p2, lin, th, h)
+    q1 = ground_acc(kind, prm, samples, t + 0.25 * h) * INV_G
+    q3 = ground_acc(kind, prm, samples, t + 0.75 * h) * INV_G
+    a_1 = (q3 - q1) / (0.5 * h) if h > 0.0 else 0.0
+    a_0 = q1 - 0.25 * h * a_1
+    key[0], key[1], key[2], key[3], key[4], key[5], key[6] = t, th, om, s, h, a_0, a_1
+    ph[0] = alpha - s * th
+    ph[1] = -s * om
+    dph[1] = ph[1]
+    if lin:
+        u[0], v[0] = ph[0], 1.0
+    else:
+        u[0], v[0] = math.sin(ph[0]), math.cos(ph[0])
+    for k in range(n - 1):
+        # phi_(k+2) from u_k, v_k, v_(k-1)
+        vk1 = v[k - 1] if k > 0 else 0.0
+        ph[k + 2] = p2 * (u[k] - s * (a_0 * v[k] + a_1 * vk1)) * _INV_K2[k]
+        dph[k + 2] = (k + 2) * ph[k + 2]
+        m = k + 1  # u_m, v_m from phi_1..phi_m
+        if lin:
+            u[m] = ph[m]
+            v[m] = 0.0
+        else:
+            su = 0.0
+            sv = 0.0
+            for j in range(1, m + 1):
+                su += dph[j] * v[m - j]
+                sv += dph[j] * u[m - j]
+            u[m] = su * _INV_M[m]
+            v[m] = -sv * _INV_M[m]
+    return _taylor_eval(ph, dph, a_0, a_1, s, p2, lin, th, h)
+
+
+@njit(cache=True, inline="always")
+def _taylor_eval(ph, dph, a_0, a_1, s, p2, lin, th, tau):
+    """``(theta, omega, theta'')`` at ``tau`` from the coefficients of :func:`taylor_step`
+    from ``th``. The angle is ``th`` plus the series' increment, not ``s (alpha - phi)``:
+    near ``theta = 0`` the latter would lose it below ``alpha`` times the machine epsilon
+    (a block just uplifted, or at the top of a tiny rebound)."""
+    n = TAYLOR_ORDER
+    g = ph[n]
+    df = dph[n]
+    for k in range(n - 1, 0, -1):
+        g = g * tau + ph[k]
+        df = df * tau + dph[k]
+    inc = g * tau  # phi(tau) - phi(0)
+    f = ph[0] + inc
+    a_h = a_0 + a_1 * tau
+    if lin:
+        d2 = p2 * (f - s * a_h)
+    else:
+        d2 = p2 * (math.sin(f) - s * math.cos(f) * a_h)
+    return th - s * inc, -s * df, -s * d2
+
 
 @njit(cache=True, inline="always")
 def _rhs_args(mp, xs, s, kind, prm, samples):
@@ -336,6 +445,28 @@ def _on_segment(mp, xs, s, pk):
     return xs
 
 
+# the stepper of ``method="taylor"`` in the shared loop: :mod:`rocking.models._numerics.fixed`
+# with :func:`taylor_step` (named here, not passed on: module docstring of the loop)
+
+@njit(cache=True, inline="always")
+def _taylor_trial(acc, mp, args, t, th, om, a0, h, h_max, t_end, bp, s, atol_th, atol_om,
+                  rtol):
+    return F.trial(taylor_step, mp, args, t, th, om, a0, h, h_max, t_end, bp, s)
+
+
+@njit(cache=True, inline="always")
+def _taylor_stop_inside(acc, mp, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om, peak):
+    return F.stop_inside(taylor_step, mp, args, t, th, om, a0, tc, s, dt_out, k, out_th,
+                         out_om, peak)
+
+
+@njit(cache=True, inline="always")
+def _taylor_impact(acc, mp, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k, out_th,
+                   out_om, peak, imp, n_imp):
+    return F.impact(taylor_step, mp, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k,
+                    out_th, out_om, peak, imp, n_imp)
+
+
 @njit(cache=True)
 def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t_end,
               t_quiet, th0, om0, rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out, out_th,
@@ -350,7 +481,8 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t
     stored); ``imp`` receives impact times up to its length (impacts are counted beyond
     it). From ``t_quiet`` on the ground is still: the run stops once the block is at rest;
     a block still rocking at ``t_end > t_quiet`` is decided by :func:`free_outcome_sides`
-    (exact).
+    (exact). Adaptive Dormand-Prince steps under ``rtol`` (:func:`integrate_taylor`: the
+    Taylor steps of ``method="taylor"``).
     """
     p2_p = p_p * p_p
     p2_m = p_m * p_m
@@ -361,9 +493,38 @@ def integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t
     mp = SideParams(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m, G * c_p,
                     G * c_m, rest_tol, free_rest_tol)
     k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, _xs = L.run(
-        _acc, _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact,
-        _on_overturn, _on_segment, mp, kind, prm, samples, t_end, t_quiet, th0, om0, rtol,
-        atol_th, atol_om, p_hi, h_max, h_scan, dt_out, out_th, out_om, imp)
+        _acc, D.loop_trial, D.loop_stop_inside, D.loop_impact, D.segment, D.rebound_length,
+        _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact, _on_overturn,
+        _on_segment, mp, kind, prm, samples, t_end, t_quiet, (th0, om0),
+        (rtol, atol_th, atol_om), p_hi, h_max, h_scan, dt_out, (out_th, out_om), imp)
+    return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
+
+
+@njit(cache=True)
+def integrate_taylor(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples, t_end,
+                     t_quiet, th0, om0, rtol, rest_tol, free_rest_tol, h_max, h_scan, dt_out,
+                     out_th, out_om, imp):
+    """:func:`integrate` with the fixed Taylor steps of :func:`taylor_step`
+    (``method="taylor"``, ``rtol`` unused; :mod:`rocking.models._numerics.fixed`) on a
+    record without a vertical component or no motion; other motions: :func:`integrate`
+    (Dormand-Prince)."""
+    if not ((kind == RECORD or kind == NONE) and not has_vertical(prm)):
+        return integrate(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, kind, prm, samples,
+                         t_end, t_quiet, th0, om0, rtol, rest_tol, free_rest_tol, h_max,
+                         h_scan, dt_out, out_th, out_om, imp)
+    p2_p = p_p * p_p
+    p2_m = p_m * p_m
+    c_p = alpha_p if lin else math.tan(alpha_p)
+    c_m = alpha_m if lin else math.tan(alpha_m)
+    p_hi = max(p_p, p_m)
+    buf = np.full((5, TAYLOR_ORDER + 1), np.nan)
+    mp = TaylorSideParams(alpha_p, p_p, mu_p, alpha_m, p_m, mu_m, lin, p2_p, p2_m, c_p, c_m,
+                          G * c_p, G * c_m, rest_tol, free_rest_tol, buf)
+    k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled, _xs = L.run(
+        _acc, _taylor_trial, _taylor_stop_inside, _taylor_impact, F.segment, F.rebound_length,
+        _rhs_args, _start, _at_rest, _cap, _inside, _impact_tol, _after_impact, _on_overturn,
+        _on_segment, mp, kind, prm, samples, t_end, t_quiet, (th0, om0), (rtol, 0.0, 0.0),
+        p_hi, h_max, h_scan, dt_out, (out_th, out_om), imp)
     return k, n_imp, peak, overturned, t_over, t_up, n_steps, t_lift, settled
 
 
@@ -398,6 +559,26 @@ def batch_kernel(mp, extra0, rows, blocks):
     """The batch kernel: the kernel over the rows of :func:`rocking.models.base.row_args`."""
     for i in prange(rows.kinds.shape[0]):
         kernel(with_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
+        store_row(i, rows)
+
+
+@njit(cache=True)
+def kernel_taylor(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp, res,
+                  extra):
+    """:func:`kernel` with :func:`integrate_taylor` (``method="taylor"``)."""
+    h_max = min(0.05 / max(mp.p_p, mp.p_m), 8.0 * h_scan)
+    k, n_imp, peak, over, t_over, t_up, n_steps, t_lift, settled = integrate_taylor(
+        mp.alpha_p, mp.p_p, mp.mu_p, mp.alpha_m, mp.p_m, mp.mu_m, mp.linear, kind, prm,
+        samples, t_end, t_quiet, y0[0], y0[1], mp.rtol, mp.rest_tol, mp.free_rest_tol, h_max,
+        h_scan, dt_out, hist[:, 0], hist[:, 1], imp)
+    set_planar_result(res, k, n_imp, peak, over, t_over, t_up, n_steps, 0, t_lift, settled)
+
+
+@njit(cache=True, parallel=True)
+def batch_kernel_taylor(mp, extra0, rows, blocks):
+    """:func:`batch_kernel` with :func:`kernel_taylor` (``method="taylor"``)."""
+    for i in prange(rows.kinds.shape[0]):
+        kernel_taylor(with_block(mp, blocks[i]), *row_args(i, rows), rows.res[i], extra0)
         store_row(i, rows)
 
 
@@ -438,11 +619,24 @@ class ClassicalTolerances(ModelOptions):
                                        "which the block is at rest")
 
 
+METHODS = ("dopri", "taylor")
+"""The integrators of the classical model (``method``): ``"dopri"`` (default) adaptive
+Dormand-Prince 5(4) steps under ``rtol``; ``"taylor"`` fixed steps of the Taylor series
+of Eq 1 (:func:`taylor_step`), one per sample of a record (at most ``0.05/p`` long), with
+the same events, rules and outputs (``rtol`` is not used). The Taylor series needs the
+ground acceleration to be linear over a step: a motion other than a record without a
+vertical component runs with ``"dopri"``."""
+
+
 @dataclass(frozen=True)
 class HousnerOptions(ClassicalTolerances):
     """Options of the classical model."""
 
     linear: bool = option(False, help="small-angle form of Eq 1")
+    method: str = option("dopri", choices=METHODS,
+                         help="integrator: 'dopri' adaptive Dormand-Prince 5(4) under rtol; "
+                              "'taylor' fixed Taylor-series steps, one per record sample "
+                              "(faster on records; other motions use dopri; rtol unused)")
 
 
 class Housner(Model):
@@ -469,3 +663,10 @@ class Housner(Model):
         b, o = self.block, self.options
         return HousnerParams(b.alpha_plus, b.p_plus, b.mu_plus, o.linear, o.rtol, o.rest_tol,
                              o.free_rest_tol, b.alpha_minus, b.p_minus, b.mu_minus)
+
+    def kernels(self) -> tuple:
+        """The Taylor pair (:func:`kernel_taylor`, :func:`batch_kernel_taylor`) when
+        ``method="taylor"``, else the default (Dormand-Prince) pair."""
+        if self.options.method == "taylor":
+            return kernel_taylor, batch_kernel_taylor
+        return kernel, batch_kernel

@@ -294,7 +294,7 @@ def simulate(block, motion=None, model="housner", duration: float | None = None,
     extra = m.extra_buffers(n_out)
     res = empty_results(cls.outputs, 1)
     mp = m.kernel_params(dt_out, theta0, omega0)
-    compile_notice(cls.kernel)(mp, kind, prm, samples, duration, t_quiet, h_scan, y0, dt_out,
+    compile_notice(m.kernels()[0])(mp, kind, prm, samples, duration, t_quiet, h_scan, y0, dt_out,
                                hist, imp, res[0], extra)
     values = result_values(cls.outputs, res[0])
     k = values["n_out"]
@@ -566,8 +566,8 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
         bp = np.array([rows_of[id(b)] if id(b) in rows_of
                        else rows_of.setdefault(id(b), cls.block_row(b)) for b in blocks],
                       dtype=np.float64).reshape(n, nb)
-        compile_notice(cls.batch_kernel)(m.kernel_params(dt_out, 0.0, 0.0), m.extra_buffers(0),
-                                         rows, bp)
+        compile_notice(m.kernels()[1])(m.kernel_params(dt_out, 0.0, 0.0), m.extra_buffers(0),
+                                        rows, bp)
     else:  # one batch per distinct block (DEM) and initial state: results in place
         first: dict = {}
         groups: dict = {}
@@ -589,8 +589,8 @@ def simulate_many(block, motions, model="housner", duration: float | None = None
                     sub = sub._replace(y0=np.empty((idx.size, y.size)),
                                        states=np.empty((idx.size, 0, y.size)))
                 sub.y0[:] = y
-            compile_notice(cls.batch_kernel)(mb.kernel_params(dt_out, t0, w0),
-                                             mb.extra_buffers(0), sub, np.empty((idx.size, 0)))
+            compile_notice(mb.kernels()[1])(mb.kernel_params(dt_out, t0, w0),
+                                            mb.extra_buffers(0), sub, np.empty((idx.size, 0)))
             for name in BATCH_OUTPUTS:
                 if getattr(sub, name).shape[1:] == getattr(rows, name).shape[1:]:
                     getattr(rows, name)[idx] = getattr(sub, name)

@@ -273,3 +273,29 @@ def overturn(t, th, om, a0, th1, om1, a1, h, s, dt_out, k, out_th, out_om):
     if out_th.shape[0] > 0:
         k = emit(t, th, om, a0, t_over, s * HALF_PI, omx, a1, dt_out, k, out_th, out_om)
     return t_over, k
+
+
+# The stepper of the shared step loop (:func:`.loop.run`): the adaptive steps above under
+# the loop's uniform signatures (``mp`` is not used), with
+# :func:`segment` and :func:`rebound_length`. Their arithmetic is that of the functions
+# they call.
+
+@njit(cache=True, inline="always")
+def loop_trial(acc, mp, args, t, th, om, a0, h, h_max, t_end, bp, s, atol_th, atol_om, rtol):
+    """:func:`trial` in the loop's signature."""
+    return trial(acc, args, t, th, om, a0, h, h_max, t_end, bp, s, atol_th, atol_om, rtol)
+
+
+@njit(cache=True, inline="always")
+def loop_stop_inside(acc, mp, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om,
+                     peak):
+    """:func:`stop_inside` in the loop's signature."""
+    return stop_inside(acc, args, t, th, om, a0, tc, s, dt_out, k, out_th, out_om, peak)
+
+
+@njit(cache=True, inline="always")
+def loop_impact(acc, mp, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k,
+                out_th, out_om, peak, imp, n_imp):
+    """:func:`impact` in the loop's signature."""
+    return impact(acc, args, t, th, om, a0, th1, om1, a1, h, s, tol, dt_out, k, out_th,
+                  out_om, peak, imp, n_imp)

@@ -15,6 +15,15 @@ inlined makes the kernel uncacheable ("dynamic globals"). The functions:
 
 * ``acc(theta, t, *args)``: the right-hand side, with ``args = rhs_args(mp, xs, s, kind,
   prm, samples)`` on pivot ``s``;
+* the stepper ``trial(acc, mp, args, ...)``, ``stop_inside(acc, mp, args, ...)``,
+  ``impact(acc, mp, args, ...)``, ``segment`` and ``rebound``: Dormand-Prince
+  (``dopri.loop_trial, dopri.loop_stop_inside, dopri.loop_impact, dopri.segment,
+  dopri.rebound_length``), or fixed steps of a model's one-step map (the model's
+  wrappers of :mod:`.fixed` that name its map, with ``fixed.segment`` and
+  ``fixed.rebound_length``: the classical model's ``method="taylor"``). They are
+  arguments, not a runtime flag, so that numba compiles for each model only the stepper
+  it is given (a flag compiled both: the classical model's first compilation went from
+  24 to 44 s);
 * ``start(mp, resting, s, th0) -> xs``: the model's own state (a tuple, or a dummy
   value) at ``t = 0``;
 * ``rest(mp, xs, kind, prm, samples, t, t_lim, h_scan, dt_out, k, out_th, out_om, t_up)
@@ -54,14 +63,22 @@ from . import events as E
 
 
 @njit(cache=True, inline="always")
-def run(acc, rhs_args, start, rest, cap, inside, impact_tol, after_impact, on_overturn,
-        on_segment, mp, kind, prm, samples, t_end, t_quiet, th0, om0, rtol, atol_th, atol_om,
-        p_ref, h_max, h_scan, dt_out, out_th, out_om, imp):
-    """One run of a model given by its functions (module docstring) and parameters ``mp``.
+def run(acc, trial, stop_inside, impact, segment, rebound, rhs_args, start, rest, cap, inside,
+        impact_tol, after_impact, on_overturn, on_segment, mp, kind, prm, samples, t_end,
+        t_quiet, y0, tols, p_ref, h_max, h_scan, dt_out, hist, imp):
+    """One run of a model given by its functions (module docstring) and parameters ``mp``,
+    from ``y0 = (theta0, omega0)``, the history into ``hist = (out_th, out_om)``. The
+    stepper (``trial`` ... ``rebound``): the adaptive Dormand-Prince steps under ``tols =
+    (rtol, atol_th, atol_om)``, or the model's fixed steps (:mod:`.fixed`; ``tols``
+    unused) of at most ``h_max`` from breakpoint to breakpoint.
     ``p_ref``: the frequency parameter of the step lengths (first step ``0.01 / p_ref``,
     at least ``1e-6 / p_ref`` after an impact). Returns ``(n_out, n_impacts,
     max_abs_theta, overturned, overturn_time, uplift_time, n_steps, lift_off_time,
-    settled, xs)``."""
+    settled, xs)``. (The arguments are at most 29, and some are tuples: CPython passes a
+    call of more than 30 as ``*args``, which numba cannot inline.)"""
+    th0, om0 = y0
+    rtol, atol_th, atol_om = tols
+    out_th, out_om = hist
     hv = has_vertical(prm)
     t, th, om, peak = 0.0, th0, om0, abs(th0)
     k = n_imp = n_steps = 0
@@ -100,9 +117,9 @@ def run(acc, rhs_args, start, rest, cap, inside, impact_tol, after_impact, on_ov
         if need_a:
             a_cur = acc(th, t, *args)
             need_a = False
-        hh, hit_bp, th1, om1, a1, ok, h_next = D.trial(
-            acc, args, t, th, om, a_cur, h, h_max, t_end, next_breakpoint(kind, prm, samples, t),
-            s, atol_th, atol_om, rtol)
+        hh, hit_bp, th1, om1, a1, ok, h_next = trial(
+            acc, mp, args, t, th, om, a_cur, h, h_max, t_end,
+            next_breakpoint(kind, prm, samples, t), s, atol_th, atol_om, rtol)
         n_steps += 1
         if not ok:  # too large an error, or two crossings hidden in the step: shorter
             h = h_next
@@ -111,8 +128,8 @@ def run(acc, rhs_args, start, rest, cap, inside, impact_tol, after_impact, on_ov
         tc = E.first_lift_off(prm, samples, t, t + hh, h_scan) if hv else math.nan
         if tc == tc:
             # the base falls away (g + a_v <= 0): the model cannot represent flight
-            stops, thc, omc, k, pk = D.stop_inside(acc, args, t, th, om, a_cur, tc, s, dt_out,
-                                                   k, out_th, out_om, abs(th))
+            stops, thc, omc, k, pk = stop_inside(acc, mp, args, t, th, om, a_cur, tc, s,
+                                                 dt_out, k, out_th, out_om, abs(th))
             if stops:
                 t, th, om, peak, t_lift = tc, thc, omc, max(peak, pk), tc
                 break
@@ -126,9 +143,9 @@ def run(acc, rhs_args, start, rest, cap, inside, impact_tol, after_impact, on_ov
             continue
         if s * th1 < 0.0:
             # impact inside the step: safeguarded Newton on the step length
-            t, sig, omc, k, pk, n_imp = D.impact(acc, args, t, th, om, a_cur, th1, om1, a1,
-                                                 hh, s, impact_tol(mp, s), dt_out, k, out_th,
-                                                 out_om, abs(th), imp, n_imp)
+            t, sig, omc, k, pk, n_imp = impact(acc, mp, args, t, th, om, a_cur, th1,
+                                               om1, a1, hh, s, impact_tol(mp, s), dt_out, k,
+                                               out_th, out_om, abs(th), imp, n_imp)
             peak = max(peak, pk)
             th = 0.0
             stays, om, s, xs = after_impact(mp, xs, s, t, omc, pk, kind, prm, samples,
@@ -138,7 +155,7 @@ def run(acc, rhs_args, start, rest, cap, inside, impact_tol, after_impact, on_ov
                 continue
             a_cur = acc(0.0, t, *rhs_args(mp, xs, s, kind, prm, samples))
             need_a = False
-            h = D.rebound_length(hh, 1e-6 / p_ref, h_max, om, a_cur)
+            h = rebound(hh, 1e-6 / p_ref, h_max, om, a_cur)
             continue
         if abs(th1) >= D.HALF_PI:
             t_over, k = D.overturn(t, th, om, a_cur, th1, om1, a1, hh, s, dt_out, k, out_th,
@@ -146,8 +163,8 @@ def run(acc, rhs_args, start, rest, cap, inside, impact_tol, after_impact, on_ov
             t, overturned, peak = t_over, True, D.HALF_PI
             xs = on_overturn(mp, xs, s)
             break
-        k, pk = D.segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th,
-                          out_om, abs(th))
+        k, pk = segment(t, th, om, a_cur, t + hh, th1, om1, a1, hh, dt_out, k, out_th, out_om,
+                        abs(th))
         peak = max(peak, pk)
         xs = on_segment(mp, xs, s, pk)
         t = t + hh
