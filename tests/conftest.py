@@ -100,6 +100,26 @@ def pytest_sessionstart(session):
             print(msg)
 
 
+# ------------------------------------------------------------------ both cores (xdist)
+HEAVY_FIRST = ("test_benchmarks.py", "test_report.py", "test_docs.py")
+"""Test files started first when the suite is spread over processes (``-n auto --dist
+loadfile``, the default in ``pyproject.toml``), the costliest first (on 2 cores with a
+cold numba cache: the benchmarks' smoke runs about 120 s, the quick report 50 s, the
+documentation site 40 s), so that no long file is left to run alone at the end."""
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_collection_modifyitems(config, items):
+    """In an xdist worker, put the files of :data:`HEAVY_FIRST` first (a stable sort: the
+    collection order is kept within a file and among the other files). The controller
+    hands out whole files (``loadfile``) in the workers' order (``--no-loadscope-reorder``),
+    so a module fixture is built once and the longest files start at once."""
+    if not hasattr(config, "workerinput"):
+        return
+    rank = {name: i for i, name in enumerate(HEAVY_FIRST)}
+    items.sort(key=lambda it: rank.get(it.path.name, len(rank)))
+
+
 @pytest.fixture(scope="session")
 def records_dir() -> Path:
     """The folder of the PEER records shipped with the package."""
@@ -129,8 +149,12 @@ def paper_set(paper_cache):
     return rocking.motions.seed_earthquakes()
 
 
+QUICK_REPORT = pytest.StashKey[tuple]()
+"""Where :func:`quick_report` leaves ``(out, index)`` once built in this process."""
+
+
 @pytest.fixture(scope="session")
-def quick_report(tmp_path_factory, paper_cache):
+def quick_report(request, tmp_path_factory, paper_cache):
     """The whole quick report, built once for the session (~50 s on 2 cores):
     ``(out, index, warnings caught while building)``. The report tests read it, and so
     do the section tests (buildings, mitigation, a real object, fragility) when the
@@ -143,16 +167,22 @@ def quick_report(tmp_path_factory, paper_cache):
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         index = reproduce(out, quick=True, progress=False)
+    request.config.stash[QUICK_REPORT] = out, index
     return out, index, caught
 
 
 def report_section(request, section_id: str) -> tuple[Path, Path, str]:
     """``(out, index, html)`` of one report section in quick mode: the session's whole
-    quick report (:func:`quick_report`) when the session builds it anyway (it runs
-    ``test_report.py``), else ``reproduce(out, quick=True, only=[section_id])`` (a few
-    seconds); ``html`` is what the section wrote into the page."""
-    if any(item.path.name == "test_report.py" for item in request.session.items):
-        out, index, _ = request.getfixturevalue("quick_report")
+    quick report (:func:`quick_report`) when this process has built it, or will (it runs
+    ``test_report.py`` and the tests are not spread over processes), else
+    ``reproduce(out, quick=True, only=[section_id])`` (a few seconds); ``html`` is what
+    the section wrote into the page."""
+    built = request.config.stash.get(QUICK_REPORT, None)
+    if built is None and not hasattr(request.config, "workerinput") and any(
+            item.path.name == "test_report.py" for item in request.session.items):
+        built = request.getfixturevalue("quick_report")[:2]
+    if built is not None:
+        out, index = built
     else:
         from rocking.report import reproduce
 
