@@ -16,6 +16,7 @@ import pandas as pd
 import pytest
 from scipy.stats import norm
 
+from rocking import ParameterError
 from rocking.analysis import HazardCurve, compare_mitigations
 from rocking.analysis.mitigation import demand_columns
 
@@ -74,6 +75,28 @@ def test_no_moat_and_a_moat_are_told_apart_with_a_clearance():
     both = compare_mitigations(t, clearance="0.15m", failure="overturned_or_clearance",
                                n_boot=0).table.set_index("mitigation")
     assert both.loc["no moat", "n_failed"] == both.loc["0.15 m", "n_failed"]
+
+
+def test_each_mitigation_its_own_clearance():
+    """``clearance={mitigation: c}``: two moats of 0.1 m and 0.2 m, each counted against
+    its own (the share of runs whose base reaches it, from the displacements), the
+    column giving each row's, none for the unmitigated block; a name not in the table is
+    refused."""
+    lv = np.geomspace(1.0, 16.0, 6)
+    a = runs(lv, seed=5, name="moat 0.1", moat=0.1)
+    b = runs(lv, seed=5, name="moat 0.2", moat=0.2)
+    t = pd.concat([a, b[b["mitigation"] == "moat 0.2"]], ignore_index=True)
+    cmp = compare_mitigations(t, clearance={"moat 0.1": "10cm", "moat 0.2": 0.2}, n_boot=0)
+    r = cmp.table.set_index("mitigation")
+    assert r.loc["moat 0.1", "clearance"] == 0.1 and r.loc["moat 0.2", "clearance"] == 0.2
+    assert math.isnan(r.loc["none", "clearance"])
+    for name, c in (("moat 0.1", 0.1), ("moat 0.2", 0.2)):
+        d = t.loc[t["mitigation"] == name, "max_base_displacement"].to_numpy()
+        assert r.loc[name, "p_clearance_exceeded"] == pytest.approx((d >= c).mean())
+    assert r.loc["moat 0.1", "p_clearance_exceeded"] > r.loc["moat 0.2", "p_clearance_exceeded"]
+    assert cmp.clearance == {"moat 0.1": 0.1, "moat 0.2": 0.2}
+    with pytest.raises(ParameterError, match=r"clearance: no mitigation named \['moat'\]"):
+        compare_mitigations(t, clearance={"moat": 0.1}, n_boot=0)
 
 
 @pytest.mark.parametrize("levels", [np.geomspace(0.5, 12.0, 8), np.geomspace(1.5, 24.0, 5),
@@ -169,6 +192,8 @@ def test_campaign_report_compares_the_mitigations(tmp_path):
     assert r.loc["isolated", "annual_frequency_ratio"] == pytest.approx(
         r.loc["isolated", "annual_frequency"] / r.loc["none", "annual_frequency"], rel=1e-5)
     assert np.isfinite(r.loc["isolated", "displacement_median_475yr"])
+    # the isolator's clearance option, from the manifest (the 'none' block has none)
+    assert r.loc["isolated", "clearance"] == 0.15 and np.isnan(r.loc["none", "clearance"])
     md = (tmp_path / "r" / "report.md").read_text()
     assert "## Mitigations compared with none" in md and "| WORSE |" in md
     assert "### The isolator's displacement demand" in md

@@ -23,6 +23,7 @@ Management Agency steel moment frame guidelines, J. Struct. Eng. 128(4).
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 
 import numpy as np
 import pandas as pd
@@ -539,7 +540,9 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
     overturned is unknown, so they are not counted as survivors), else ``"overturned"``; the
     rule used is :attr:`MitigationComparison.failure`. ``by``: the grouping columns (default
     those of :data:`DEFAULT_BY` present). ``clearance`` (m or a quantity string,
-    ``"0.15m"``): the displacement capacity of the isolator. ``reference``: the unmitigated
+    ``"0.15m"``): the displacement capacity of the isolator; or ``{mitigation: clearance}``,
+    each mitigation's own (the campaign report passes its isolators' ``clearance``
+    options; a mitigation not named has none). ``reference``: the unmitigated
     entry's name; without a ``mitigation`` column and without that name, the one model of
     the group that is not a mitigation (``Model.mitigation`` false) is the reference.
 
@@ -579,7 +582,8 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
     NaN without it; a run stopped at the model's clearance has the clearance as its
     maximum), ``n_clearance_exceeded`` and ``p_clearance_exceeded`` (over all runs,
     whatever their IM: runs with ``clearance_exceeded`` or ``max_base_displacement >=
-    clearance``; NaN when neither is known), ``clearance`` (m, NaN if not given),
+    clearance``; NaN when neither is known), ``clearance`` (m, NaN if not given; with a
+    mapping, the row's mitigation's),
     ``clearance_annual_frequency`` and ``clearance_probability`` (in ``t_years``: a
     fragility of "reached the clearance" integrated over the hazard), ``note``; then, with
     a hazard, for each return period T of :data:`~.hazard.RETURN_PERIODS` (475 and 2475
@@ -629,7 +633,19 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
             im_unit) and attrs_unit.strip() != im_unit.strip():
         raise ParameterError(f"im_unit={im_unit!r} contradicts the table's own IM unit "
                              f"{attrs_unit!r} (table.attrs)")
-    clear = parse_clearance(clearance)
+    if isinstance(clearance, Mapping):  # {mitigation: clearance}: each its own
+        names = set(table[mit_col].astype(str))
+        clear_of = {str(k): parse_clearance(v) for k, v in clearance.items()}
+        if set(clear_of) - names:
+            raise ParameterError(f"clearance: no mitigation named "
+                                 f"{sorted(set(clear_of) - names)} in column {mit_col!r} "
+                                 f"(it has {sorted(names)})")
+        clear = math.nan
+    else:
+        clear_of = {}
+        clear = parse_clearance(clearance)
+    clear_rows = np.array([clear_of.get(m, clear) for m in table[mit_col].astype(str)],
+                          dtype=float)
     curve = hazard if isinstance(hazard, HazardCurve) else None
     if curve is not None:
         if im_unit is None:
@@ -655,18 +671,18 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
     flag_all = _flags(table, "clearance_exceeded")
     asked = failure
     if failure == "overturned_or_clearance" and not (
-            "clearance_exceeded" in table or (math.isfinite(clear)
+            "clearance_exceeded" in table or (np.isfinite(clear_rows).any()
                                               and "max_base_displacement" in table)):
         raise ParameterError("failure='overturned_or_clearance' needs a "
                              "'clearance_exceeded' column, or a 'max_base_displacement' "
                              "column and clearance=")
-    if math.isfinite(clear) and "max_base_displacement" not in table and (
+    if np.isfinite(clear_rows).any() and "max_base_displacement" not in table and (
             "clearance_exceeded" not in table):
         raise ParameterError("clearance: the table has no 'max_base_displacement' column "
                              "(nor 'clearance_exceeded') to compare with it")
     with np.errstate(invalid="ignore"):
-        by_disp = np.where(np.isfinite(disp_all) & math.isfinite(clear),
-                           (disp_all >= clear).astype(float), np.nan)
+        by_disp = np.where(np.isfinite(disp_all) & np.isfinite(clear_rows),
+                           (disp_all >= clear_rows).astype(float), np.nan)
     # 1: exceeded by either source; 0: known not exceeded; NaN: not known
     exceeded = np.where((flag_all == 1) | (by_disp == 1), 1.0,
                         np.where(np.isfinite(flag_all) | np.isfinite(by_disp), 0.0, np.nan))
@@ -749,7 +765,7 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
             diag[key] = {"n_failed": int(y.sum()), "n_stop_failed": int(np.sum(y & ~ovt)),
                          "n_broken_failed": int(np.sum(y & broken[ok])),
                          "clearance": (float(np.min(d_ok[own])) if own.any() and np.isfinite(
-                             d_ok[own]).any() else clear),
+                             d_ok[own]).any() else clear_of.get(mname, clear)),
                          "period": iso_T.get(mname), "floor": (
                              g["floor"].iloc[0] if "floor" in g else None)}
             row = dict(zip(by, gkey, strict=True))
@@ -765,7 +781,7 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
                 displacement_max=float(d.max()) if d.size else math.nan,
                 n_clearance_exceeded=int(known.sum()) if known.size else 0,
                 p_clearance_exceeded=float(known.mean()) if known.size else math.nan,
-                clearance=clear, note="; ".join(notes))
+                clearance=clear_of.get(mname, clear), note="; ".join(notes))
             _hazard_fields(row, fit, hz, im_unit, t_years)
             _clearance_risk(row, x, exc, curve_im, t_years)
             _demand_fields(row, demand.get(key), curve_im, periods)
@@ -781,14 +797,16 @@ def compare_mitigations(table, *, im="pga", im_unit="m/s^2", failure="auto", by=
         failure = ("overturned_or_clearance" if (out["failure"] == "overturned_or_clearance")
                    .any() else "overturned")
     out.attrs.update(im=im, im_unit=im_unit, failure=failure, reference=reference,
-                     clearance=clear, by=list(by),
+                     clearance=dict(clear_of) if clear_of else clear, by=list(by),
                      fit_method="rocking.analysis.fragility.fragility: probit GLM MLE "
                                 "(Baker 2015)",
                      hazard="Cornell et al. (2002)" if hz is not None else None)
     out.attrs.update(failure_asked=asked, return_periods=periods if curve_im is not None
                      else [], t_years=t_years)
     return MitigationComparison(out, fits, stripes, by=by, im=im, im_unit=im_unit,
-                                failure=failure, clearance=clear, reference=reference,
+                                failure=failure,
+                                clearance=dict(clear_of) if clear_of else clear,
+                                reference=reference,
                                 hazard=hz, keys=keys, demand=demand,
                                 return_periods=periods if curve_im is not None else (),
                                 t_years=t_years)

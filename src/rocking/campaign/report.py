@@ -1150,9 +1150,9 @@ def _by_floor(po: pd.DataFrame, unit: str) -> list[str]:
 
 def _compare(t: pd.DataFrame, im: dict, site, manifest: dict, n_boot: int, seed):
     """:func:`rocking.analysis.mitigation.compare_mitigations` of the campaign's runs
-    (grouped by block and floor; the site's hazard; the isolators' periods and the
-    building's first period from the manifest): ``(table, note)``, ``(None, note)`` when
-    it cannot be made."""
+    (grouped by block and floor; the site's hazard; the isolators' periods and
+    clearances and the building's first period from the manifest): ``(table, note)``,
+    ``(None, note)`` when it cannot be made."""
     from ..analysis.mitigation import compare_mitigations
 
     col, name = im["column"], im["name"]
@@ -1162,6 +1162,8 @@ def _compare(t: pd.DataFrame, im: dict, site, manifest: dict, n_boot: int, seed)
     iso = {m["name"]: float(m["options"]["isolation_period"])
            for m in manifest.get("mitigations") or ()
            if isinstance(m, dict) and "isolation_period" in (m.get("options") or {})}
+    clr = {m["name"]: m["options"]["clearance"] for m in manifest.get("mitigations") or ()
+           if isinstance(m, dict) and (m.get("options") or {}).get("clearance") is not None}
     b = manifest.get("building") or {}
     t1 = float(b["periods"][0]) if b.get("periods") else None
     by = [c for c in ("block_name", "floor", "height_ratio") if c in tt.columns]
@@ -1172,7 +1174,7 @@ def _compare(t: pd.DataFrame, im: dict, site, manifest: dict, n_boot: int, seed)
                 tt, im=name, im_unit=im["unit"], by=by,
                 hazard=site["curve"] if site is not None else None, n_boot=n_boot,
                 seed=seed, t_years=site["t_years"] if site is not None else 50.0,
-                building_period=t1, isolation_periods=iso or None)
+                building_period=t1, isolation_periods=iso or None, clearance=clr or None)
     except (ParameterError, SimulationError, ValueError) as e:
         return None, f"mitigations not compared: {_line(e)}"
     return cmp.table, ""
