@@ -135,18 +135,30 @@ def step(acc, t, th, om, a1, h, args):
 
 
 @njit(cache=True, inline="always")
-def locate(acc, args, t, th, om, a0, th1, om1, a1, h, s, level, rising, tol, iters):
+def advance(acc, args, t, th, om, a0, h):
+    """The end ``(theta, omega, acc)`` of the Dormand-Prince step of length ``h`` from ``t``
+    (:func:`step` without its error estimates): the one-step map :func:`newton_locate`
+    iterates on."""
+    thc, omc, ac, _e1, _e2 = step(acc, t, th, om, a0, h, args)
+    return thc, omc, ac
+
+
+@njit(cache=True, inline="always")
+def newton_locate(adv, p, args, t, th, om, a0, x, h, s, level, rising, tol, iters, th1, om1,
+                  a1):
     """Where ``g = s theta - level`` reaches 0 inside the step ``(t, th, om, a0) -> (th1,
     om1, a1)`` of length ``h`` (``rising``: g goes from < 0 to >= 0, else from > 0 to <= 0):
-    safeguarded Newton on the length of the Dormand-Prince step from the Hermite estimate,
-    at most ``iters`` steps, until ``|g| <= tol`` or the bracket is 1e-15 (1 + t) wide.
-    Returns ``(length, theta, omega, acc)`` there."""
-    x = hermite_root(th, om, a0, th1, om1, a1, h, s * level, 0, -s if rising else s)
+    safeguarded Newton on the step's length, from ``x h`` (an interpolant's estimate), with
+    the one-step map ``adv(p, args, t, theta, omega, acc0, length) -> (theta, omega,
+    acc)``, at most ``iters`` steps, until ``|g| <= tol`` or the bracket is 1e-15 (1 + t)
+    wide. Returns ``(length, theta, omega, acc)`` there. Shared by the adaptive steps
+    (:func:`locate`, with :func:`advance`) and the fixed ones
+    (:func:`rocking.models._numerics.fixed.locate`, with the model's map)."""
     lo, hi = 0.0, h
     sig = x * h
     thc, omc, ac = th1, om1, a1
     for _ in range(iters):
-        thc, omc, ac, _e1, _e2 = step(acc, t, th, om, a0, sig, args)
+        thc, omc, ac = adv(p, args, t, th, om, a0, sig)
         g = s * thc - level
         past = g >= 0.0 if rising else not (g > 0.0)
         if past:
@@ -160,6 +172,17 @@ def locate(acc, args, t, th, om, a0, th1, om1, a1, h, s, level, rising, tol, ite
             new = 0.5 * (lo + hi)
         sig = new
     return sig, thc, omc, ac
+
+
+@njit(cache=True, inline="always")
+def locate(acc, args, t, th, om, a0, th1, om1, a1, h, s, level, rising, tol, iters):
+    """Where ``g = s theta - level`` reaches 0 inside the step ``(t, th, om, a0) -> (th1,
+    om1, a1)`` of length ``h``: :func:`newton_locate` on the length of the Dormand-Prince
+    step (:func:`advance`) from the Hermite estimate (:func:`hermite_root`). Returns
+    ``(length, theta, omega, acc)`` there."""
+    x = hermite_root(th, om, a0, th1, om1, a1, h, s * level, 0, -s if rising else s)
+    return newton_locate(advance, acc, args, t, th, om, a0, x, h, s, level, rising, tol,
+                         iters, th1, om1, a1)
 
 
 @njit(cache=True)

@@ -179,27 +179,11 @@ def dips_below(fstep, mp, args, t, th, om, a0, th1, om1, a1, h, s):
 @njit(cache=True, inline="always")
 def locate(fstep, mp, args, t, th, om, a0, th1, om1, a1, h, s, level, rising, tol, iters):
     """:func:`.dopri.locate` with the model's step: where ``s theta - level`` reaches 0
-    inside the step, by safeguarded Newton on the step length. Returns ``(length, theta,
-    omega, acc)`` there."""
+    inside the step, by :func:`.dopri.newton_locate` on the model's one-step map from the
+    Hermite estimate (:func:`hermite_root`). Returns ``(length, theta, omega, acc)``."""
     x = hermite_root(th, om, a0, th1, om1, a1, h, s * level, 0, -s if rising else s)
-    lo, hi = 0.0, h
-    sig = x * h
-    thc, omc, ac = th1, om1, a1
-    for _ in range(iters):
-        thc, omc, ac = fstep(mp, args, t, th, om, a0, sig)
-        g = s * thc - level
-        past = g >= 0.0 if rising else not (g > 0.0)
-        if past:
-            hi = sig
-        else:
-            lo = sig
-        if abs(g) <= tol or hi - lo <= 1e-15 * (1.0 + t):
-            break
-        new = sig - g / (s * omc) if omc != 0.0 else -1.0
-        if not (lo < new < hi):
-            new = 0.5 * (lo + hi)
-        sig = new
-    return sig, thc, omc, ac
+    return D.newton_locate(fstep, mp, args, t, th, om, a0, x, h, s, level, rising, tol,
+                           iters, th1, om1, a1)
 
 
 @njit(cache=True, inline="always")
