@@ -428,3 +428,25 @@ def test_impacts_alternate_and_never_repeat_at_one_instant(impl):
     for seed in (4, 21, 36):
         r = impl(b, random_record(seed, pga=3.4, duration=10.0, band=(0.5, 15.0)), rtol=1e-9)
         assert np.all(np.diff(r.impact_times) > 0.0)
+
+
+@pytest.mark.parametrize("spec, rec, pga", [(3, 21, 5), (3, 12, 4)],
+                         ids=["overturn-or-not", "max-theta"])
+def test_a_dip_across_zero_inside_a_step_is_found_at_the_default_tolerance(spec, rec, pga):
+    """Runs of the report's fragility section (stochastic records, seed 2008) where the
+    default tolerance once stepped over a dip of ``theta`` across 0 (two impacts inside
+    one accepted step, both ends on the same side) and went on with the wrong energy: one
+    overturned where every tighter run (rtol 1e-10 to 1e-12, and the Taylor steps)
+    survives, another reached 0.041 rad against their 0.105. The steps now look for the
+    dip at the velocity's roots; the default agrees with the tight runs."""
+    from rocking.motions import stochastic_records
+    block = rocking.specimen(spec, "experimental")
+    r = stochastic_records(rec + 1, seed=2008)[rec]
+    lv = np.geomspace(0.8, 6.0, 12)[pga] * G * math.tan(block.alpha)
+    m = r.scaled(lv / r.pga)
+    d = simulate(block, m)
+    tight = [simulate(block, m, rtol=rt) for rt in (1e-10, 1e-12)]
+    for t in tight:
+        assert d.overturned == t.overturned
+        assert d.max_abs_theta == pytest.approx(t.max_abs_theta, rel=2e-3)
+        assert d.n_impacts == pytest.approx(t.n_impacts, abs=3)

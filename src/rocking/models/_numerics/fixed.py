@@ -24,8 +24,6 @@ the adaptive Dormand-Prince steps (7 evaluations) reach 1e-8.
 
 from __future__ import annotations
 
-import math
-
 from numba import njit
 
 from . import dopri as D
@@ -88,15 +86,6 @@ def segment(t0, th0, om0, a0, t1, th1, om1, a1, h, dt_out, k, out_th, out_om, pe
     return k, seg_peak(th0, om0, a0, th1, om1, a1, h, peak)
 
 
-@njit(cache=True)
-def may_hide_crossing(th0, om0, a0, th1, om1, a1, h, s):
-    """Whether ``s theta``, positive at both ends of the step, can reach 0 inside it: it
-    must travel ``s th0`` down and ``s th1`` up again within ``h`` at a speed of at most
-    ``|om| + h |theta''|`` (generous bounds from both ends), else no check is needed."""
-    reach = h * (abs(om0) + abs(om1)) + 2.0 * h * h * (abs(a0) + abs(a1))
-    return s * th0 + s * th1 < 2.0 * reach
-
-
 @njit(cache=True, inline="always")
 def trial(fstep, mp, args, t, th, om, a0, h, h_max, t_end, bp, s):
     """One step from ``t`` of length ``hh = min(h, h_max, t_end - t)``, shortened onto the
@@ -112,68 +101,11 @@ def trial(fstep, mp, args, t, th, om, a0, h, h_max, t_end, bp, s):
         hit_bp = True
     th1, om1, a1 = fstep(mp, args, t, th, om, a0, hh)
     if (s * th1 >= 0.0 and hh > 1e-9 * h_max
-            and may_hide_crossing(th, om, a0, th1, om1, a1, hh, s)):
+            and D.may_hide_crossing(th, om, a0, th1, om1, a1, hh, s)):
         if (D.sign_changes(th, om, a0, th1, om1, a1, hh, s) >= 2
-                or dips_below(fstep, mp, args, t, th, om, a0, th1, om1, a1, hh, s)):
+                or D.dips_below(th, om, a0, th1, om1, a1, hh, s)):
             return hh, hit_bp, th1, om1, a1, False, 0.5 * hh
     return hh, hit_bp, th1, om1, a1, True, h_max
-
-
-@njit(cache=True)
-def velocity_roots(om, a0, a1, h):
-    """The roots in ``(0, h)`` of ``om + a0 tau + (a1 - a0) tau^2 / (2 h)``, the velocity
-    over a step whose acceleration goes linearly from ``a0`` to ``a1`` (-1.0 for none):
-    where the angle may turn inside the step."""
-    c = 0.5 * (a1 - a0) / h
-    r1 = -1.0
-    r2 = -1.0
-    if c == 0.0:
-        if a0 != 0.0:
-            r1 = -om / a0
-    else:
-        d = a0 * a0 - 4.0 * c * om
-        if d >= 0.0:
-            q = -0.5 * (a0 + math.copysign(math.sqrt(d), a0))
-            if q != 0.0:
-                r1 = q / c
-                r2 = om / q
-            else:
-                r1 = 0.0
-    if not (0.0 < r1 < h):
-        r1 = -1.0
-    if not (0.0 < r2 < h):
-        r2 = -1.0
-    return r1, r2
-
-
-@njit(cache=True, inline="always")
-def dips_below(fstep, mp, args, t, th, om, a0, th1, om1, a1, h, s):
-    """Whether ``s theta`` (>= 0 at both ends of the step) has a minimum inside the step
-    below 0. The angle turns where the velocity vanishes; the acceleration is nearly
-    linear over a step when a crossing can hide (the angle is small and the ground
-    acceleration linear between samples), so those times are the roots of a quadratic
-    (:func:`velocity_roots`), refined by Newton steps on the one-step map's velocity and
-    acceleration; at a minimum (the velocity turning to ``+s``) the map's ``s theta < 0``
-    means a hidden crossing. Dips shorter than a quarter of the step escape
-    :func:`.dopri.sign_changes`: seen on a 20 s record, two impacts 53 us apart at
-    ``|theta| ~ 1e-7`` inside a 10 ms sample step, missed, and the run went on 23 % off
-    in ``max |theta|``."""
-    r1, r2 = velocity_roots(om, a0, a1, h)
-    for r in (r1, r2):
-        if r < 0.0:
-            continue
-        sig = r
-        for _ in range(4):
-            thm, omm, am = fstep(mp, args, t, th, om, a0, sig)
-            if s * thm < 0.0:
-                return True
-            if s * am <= 0.0:  # not a minimum of s theta (or flat): no dip here
-                break
-            new = sig - omm / am
-            if not (0.0 < new < h) or abs(new - sig) <= 1e-15 * h:
-                break
-            sig = new
-    return False
 
 
 @njit(cache=True, inline="always")
