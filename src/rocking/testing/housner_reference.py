@@ -42,7 +42,10 @@ excitation formulas are written here from the definitions in :mod:`rocking.motio
 rather than taken from the compiled motion kernel, so they are checked too.
 
 Peaks of ``|theta|`` are located as non-terminal events ``omega = 0`` on the solver's
-dense output (and at the ends of each piece).
+dense output (and at the ends of each piece). An impact whose dip across ``theta = 0`` and
+back falls inside one solver step shows no sign change at the step's ends, so its event
+is not triggered; its minimum is then a peak event on the wrong side, and the impact is
+the first root of ``theta`` before it on the dense output (:func:`_missed_impact`).
 
 *Asymmetric blocks* (:meth:`rocking.Block.from_geometry`, issue 20): on the branch ``s``
 Eq (1) uses that side's ``alpha_s`` and ``p_s``; the block at rest uplifts towards + when
@@ -556,34 +559,41 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
                 opts["first_step"] = min(fs, tb - t)
         sol = solve_ivp(rhs, (t, tb), [th, om], method=method, rtol=rtol, atol=atol,
                         events=(ev_impact, ev_over, ev_peak, ev_lift),
-                        dense_output=dt_out is not None,
-                        **opts)
+                        dense_output=True, **opts)
         n_calls += 1
         nfev += sol.nfev
         if sol.status < 0:
             raise RuntimeError(f"solve_ivp failed at t = {t}: {sol.message}")
-        for ye in sol.y_events[2]:
-            peak = max(peak, abs(ye[0]))
-        pieces.append((t, float(sol.t[-1]), sol))
-        if sol.t_events[3].size:
+        missed = _missed_impact(sol, s, t)
+        for te_p, ye in zip(sol.t_events[2], sol.y_events[2], strict=True):
+            if missed is None or te_p < missed:
+                peak = max(peak, abs(ye[0]))
+        pieces.append((t, float(sol.t[-1]) if missed is None else missed, sol))
+        if missed is not None:  # before any terminal event of this solve
+            te_imp, om_imp = missed, float(sol.sol(missed)[1])
+        elif sol.t_events[0].size and not sol.t_events[3].size and not sol.t_events[1].size:
+            te_imp, om_imp = float(sol.t_events[0][0]), float(sol.y_events[0][0][1])
+        else:
+            te_imp = None
+        if te_imp is None and sol.t_events[3].size:
             lift_off_time = float(sol.t_events[3][0])
             th, om = float(sol.y[0, -1]), float(sol.y[1, -1])
             peak = max(peak, abs(th))
             t = lift_off_time
             break
-        if sol.t_events[1].size:
+        if te_imp is None and sol.t_events[1].size:
             overturned = True
             t_over = float(sol.t_events[1][0])
             peak = HALF_PI
             t = t_over
             break
-        if sol.t_events[0].size:
-            te = float(sol.t_events[0][0])
+        if te_imp is not None:
+            te = te_imp
             stalls = stalls + 1 if te <= t else 0
             if stalls > 10_000:
                 raise RuntimeError(f"impacts do not advance in time at t = {t}")
             impacts.append(te)
-            om = mu * float(sol.y_events[0][0][1])
+            om = mu * om_imp
             th = 0.0
             t = te
             gf = 1.0 + exc.vertical(t) / G
@@ -618,6 +628,33 @@ def simulate_reference(block, motion=None, duration=None, theta0=0.0, omega0=0.0
         lift_off_time=lift_off_time,
         settled=overturned or (resting and math.isnan(lift_off_time)),
     )
+
+
+def _missed_impact(sol, s, t0):
+    """The time of an impact that the events missed, or None: a dip of ``s theta`` below 0
+    and back inside one solver step has no sign change at the step's ends, so the impact
+    event does not see it, but its minimum is a peak event (``omega = 0``) on the wrong
+    side. The impact is then the first root of ``s theta`` before that minimum, in the
+    solver step holding it, located on the dense output (a grid of 64, then
+    :func:`scipy.optimize.brentq`)."""
+    from scipy.optimize import brentq
+
+    for tp, yp in zip(sol.t_events[2], sol.y_events[2], strict=True):
+        if s * yp[0] >= 0.0:
+            continue
+        i = max(0, int(np.searchsorted(sol.t, tp)) - 1)
+        ta = max(float(sol.t[i]), t0)
+        grid = np.linspace(ta, tp, 65)
+        g = s * sol.sol(grid)[0]
+        pos = np.flatnonzero(g > 0.0)
+        if pos.size == 0:
+            return None  # no positive point to bracket from: leave it to the events
+        j = int(pos[0])
+        neg = np.flatnonzero(g[j:] <= 0.0)
+        k = j + int(neg[0])
+        return float(brentq(lambda x: s * sol.sol(x)[0], grid[k - 1], grid[k],
+                            xtol=1e-15, rtol=4 * np.finfo(float).eps))
+    return None
 
 
 def _history(pieces, dt_out, t_stop):
