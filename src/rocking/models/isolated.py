@@ -508,8 +508,12 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
             continue
         y1[0], y1[1], y1[2], y1[3] = r[0], r[1], r[2], r[3]
         d1[0], d1[1], d1[2] = r[4], r[5], r[6]
-        # ---- accepted: events. A step that hides two zero crossings is retried shorter.
-        if rock and D.sign_changes(y[0], y[1], d[0], y1[0], y1[1], d1[0], hh, s) >= 2:
+        # ---- accepted: events. A step that hides two zero crossings is retried shorter
+        # (seen at the step's quarters, or a dip below 0 where the velocity vanishes).
+        if rock and (D.sign_changes(y[0], y[1], d[0], y1[0], y1[1], d1[0], hh, s) >= 2 or (
+                s * y1[0] >= 0.0
+                and D.may_hide_crossing(y[0], y[1], d[0], y1[0], y1[1], d1[0], hh, s)
+                and D.dips_below(y[0], y[1], d[0], y1[0], y1[1], d1[0], hh, s))):
             h = 0.5 * hh
             continue
         seg[0], seg[1] = t, hh
