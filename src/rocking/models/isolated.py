@@ -511,7 +511,7 @@ def kernel(mp, kind, prm, samples, t_end, t_quiet, h_scan, y0, dt_out, hist, imp
         # ---- accepted: events. A step that hides two zero crossings is retried shorter
         # (seen at the step's quarters, or a dip below 0 where the velocity vanishes).
         if rock and (D.sign_changes(y[0], y[1], d[0], y1[0], y1[1], d1[0], hh, s) >= 2 or (
-                s * y1[0] >= 0.0
+                s * y1[0] >= 0.0 and hh > 1e-9 * h_max  # (the halving must end)
                 and D.may_hide_crossing(y[0], y[1], d[0], y1[0], y1[1], d1[0], hh, s)
                 and D.dips_below(y[0], y[1], d[0], y1[0], y1[1], d1[0], hh, s))):
             h = 0.5 * hh

@@ -287,7 +287,8 @@ def trial(acc, args, t, th, om, a0, h, h_max, t_end, bp, s, atol_th, atol_om, rt
         fac = 0.9 * err ** -0.2 if err == err else 0.1
         return hh, hit_bp, th1, om1, a1, False, hh * max(0.1, fac)
     if sign_changes(th, om, a0, th1, om1, a1, hh, s) >= 2 or (
-            s * th1 >= 0.0 and may_hide_crossing(th, om, a0, th1, om1, a1, hh, s)
+            s * th1 >= 0.0 and hh > 1e-9 * h_max  # (the halving must end)
+            and may_hide_crossing(th, om, a0, th1, om1, a1, hh, s)
             and dips_below(th, om, a0, th1, om1, a1, hh, s)):
         return hh, hit_bp, th1, om1, a1, False, 0.5 * hh
     fac = 0.9 * err ** -0.2 if err > 0.0 else 5.0
